@@ -1,0 +1,125 @@
+#include "cli/cli.hpp"
+
+#include <fstream>
+#include <iostream>
+
+#include <opencv2/core.hpp>
+
+#include "core/error.hpp"
+
+namespace rdsf::cli {
+
+bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
+           po::variables_map& values, const po::positional_options_description* positional) {
+  po::options_description general("General");
+  general.add_options()("help,h", "show this help with every default and exit")(
+      "config", po::value<std::string>(), "read options from an INI file (name = value); the command line wins");
+  po::options_description all;
+  all.add(general).add(options);
+  try {
+    po::command_line_parser parser(argc, argv);
+    parser.options(all);
+    if (positional != nullptr) parser.positional(*positional);
+    po::store(parser.run(), values);
+    if (values.count("help")) {
+      std::cout << "Usage: " << info.name << " " << info.usage << "\n\n" << info.summary << "\n\n" << all << "\n";
+      return false;
+    }
+    if (values.count("config")) {
+      const std::string path = values["config"].as<std::string>();
+      std::ifstream in(path);
+      if (!in) throw UsageError(path + ": config file cannot be opened");
+      try {
+        po::store(po::parse_config_file(in, options), values);
+      } catch (const po::error& e) {
+        throw UsageError(path + ": " + e.what());
+      }
+    }
+    po::notify(values);
+  } catch (const po::error& e) {
+    throw UsageError(std::string(e.what()) + " (see " + info.name + " --help)");
+  }
+  return true;
+}
+
+po::options_description detector_options(DetectorParams& p) {
+  po::options_description segmentation("Segmentation (depth layers)");
+  auto& s = p.segmentation;
+  segmentation.add_options()
+      ("row_step", po::value(&s.row_step)->default_value(s.row_step), "scan every row_step-th row for depth jumps")
+      ("depth_threshold", po::value(&s.depth_threshold_mm)->default_value(s.depth_threshold_mm),
+       "a depth jump larger than this (mm) starts a depth candidate")
+      ("n", po::value(&s.n)->default_value(s.n), "pixels after the jump that must stay within range_threshold")
+      ("range_threshold", po::value(&s.range_threshold_mm)->default_value(s.range_threshold_mm),
+       "tolerance (mm) of the n pixels after a jump")
+      ("candidate_threshold", po::value(&s.candidate_threshold_mm)->default_value(s.candidate_threshold_mm),
+       "sorted depth candidates are averaged in runs spanning at most this (mm)")
+      ("kmeans_iterations", po::value(&s.max_iterations)->default_value(s.max_iterations),
+       "upper bound of k-means iterations");
+  po::options_description candidates("Candidates (shape)");
+  auto& c = p.candidates;
+  candidates.add_options()
+      ("k", po::value(&c.k)->default_value(c.k), "gap tolerance (pixels) inside a column's run")
+      ("relaxed", po::bool_switch()->notifier([&c](bool on) { if (on) c.mode = HeightMode::relaxed; }),
+       "relaxed threshold_height: near_height everywhere (default strict)")
+      ("near_height", po::value(&c.near_height_cm)->default_value(c.near_height_cm),
+       "threshold_height (cm) for near layers and in relaxed mode")
+      ("far_height", po::value(&c.far_height_cm)->default_value(c.far_height_cm),
+       "threshold_height (cm) for far layers in strict mode")
+      ("near_far_boundary", po::value(&c.near_far_boundary_mm)->default_value(c.near_far_boundary_mm),
+       "layers nearer than this (mm) are near")
+      ("column_gap", po::value(&c.column_gap)->default_value(c.column_gap),
+       "gap tolerance (columns) when joining columns into an object")
+      ("min_width", po::value(&c.min_width_cm)->default_value(c.min_width_cm),
+       "minimum real width (cm) of a candidate")
+      ("window_scale", po::value(&c.window_scale)->default_value(c.window_scale),
+       "window = strict box enlarged by this factor");
+  po::options_description all;
+  all.add(segmentation).add(candidates);
+  return all;
+}
+
+po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration) {
+  po::options_description o("Camera model (default: Kinect v1, depth registered to colour)");
+  o.add_options()
+      ("fx", po::value(&camera.fx_px)->default_value(camera.fx_px), "focal length x (px) at 640x480")
+      ("fy", po::value(&camera.fy_px)->default_value(camera.fy_px), "focal length y (px) at 640x480")
+      ("cx", po::value(&camera.cx_px)->default_value(camera.cx_px), "principal point x (px)")
+      ("cy", po::value(&camera.cy_px)->default_value(camera.cy_px), "principal point y (px)")
+      ("calibration_width", po::value(&calibration.surface_width_cm),
+       "thesis calibration: width (cm) of a surface that fills the image ...")
+      ("calibration_height", po::value(&calibration.surface_height_cm), "... its height (cm) ...")
+      ("calibration_distance", po::value(&calibration.distance_mm), "... at this distance (mm); overrides fx/fy");
+  return o;
+}
+
+void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration) {
+  const bool any = calibration.surface_width_cm != 0 || calibration.surface_height_cm != 0 ||
+                   calibration.distance_mm != 0;
+  if (!any) return;
+  try {
+    camera = CameraModel::from_empirical(calibration, camera.width_px, camera.height_px);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+}
+
+int run(const std::string& program_name, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const UsageError& e) {
+    std::cerr << program_name << ": usage error: " << e.what() << "\n";
+    return 2;
+  } catch (const Error& e) {
+    std::cerr << program_name << ": error: " << e.what() << "\n";
+    return 1;
+  } catch (const cv::Exception& e) {
+    std::cerr << program_name << ": error: OpenCV: " << e.err << " (" << e.func << ")\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << program_name << ": error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace rdsf::cli

@@ -1,0 +1,46 @@
+#pragma once
+// What every program shares on the command line: option parsing with --help (every default shown) and
+// --config FILE (INI; the command line wins), the detector-core options declared once, and the top-level
+// error handling that turns any failure into one line and a non-zero exit.
+#include <functional>
+#include <string>
+
+#include <boost/program_options.hpp>
+
+#include "detector/detector_core.hpp"
+#include "frame/camera_model.hpp"
+
+namespace rdsf::cli {
+
+namespace po = boost::program_options;
+
+/// Thrown for a wrong command line; programs exit 2 on it (1 on every other error).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ProgramInfo {
+  std::string name;     ///< "rdsf-detect"
+  std::string usage;    ///< "--source SRC --out FILE.csv [options]"
+  std::string summary;  ///< one paragraph shown by --help
+};
+
+/// Parses argv against `options` (plus --help and --config). Returns false when --help was printed (the
+/// program then exits 0). Throws UsageError on unknown options, bad values or a bad config file.
+bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
+           po::variables_map& values, const po::positional_options_description* positional = nullptr);
+
+/// Options of the detector core (segmentation, candidates), bound to `params`, with the thesis's names.
+po::options_description detector_options(DetectorParams& params);
+
+/// Options of the camera model (Kinect v1 defaults, or the thesis's empirical calibration).
+po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration);
+/// Applies a given empirical calibration to `camera` (call after parse()).
+void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration);
+
+/// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
+/// (0 success, 1 error, 2 usage error).
+int run(const std::string& program_name, const std::function<int()>& body);
+
+}  // namespace rdsf::cli

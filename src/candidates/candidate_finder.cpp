@@ -1,0 +1,121 @@
+#include "candidates/candidate_finder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "candidates/column_heights.hpp"
+
+namespace rdsf {
+
+double iou(const cv::Rect& a, const cv::Rect& b) {
+  const double inter = (a & b).area();
+  const double uni = static_cast<double>(a.area()) + b.area() - inter;
+  return uni > 0 ? inter / uni : 0.0;
+}
+
+void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
+               cv::Size crop_size, Candidate& candidate) {
+  candidate.depth_crop.create(crop_size);
+  const bool colour = frame.has_colour();
+  if (colour) {
+    candidate.colour_crop.create(crop_size);
+  } else {
+    candidate.colour_crop.release();
+  }
+  // Nearest neighbour: output pixel u samples source column window.x + floor((u + 0.5) * w / W).
+  std::vector<int> source_x(static_cast<std::size_t>(crop_size.width));
+  for (int u = 0; u < crop_size.width; ++u) {
+    source_x[static_cast<std::size_t>(u)] =
+        window.x + static_cast<int>(std::floor((u + 0.5) * window.width / crop_size.width));
+  }
+  const cv::Vec3b black(0, 0, 0);
+  for (int v = 0; v < crop_size.height; ++v) {
+    const int y = window.y + static_cast<int>(std::floor((v + 0.5) * window.height / crop_size.height));
+    std::uint16_t* depth_out = candidate.depth_crop.ptr<std::uint16_t>(v);
+    cv::Vec3b* colour_out = colour ? candidate.colour_crop.ptr<cv::Vec3b>(v) : nullptr;
+    const bool row_inside = y >= 0 && y < frame.depth_mm.rows;
+    const std::uint8_t* label_row = row_inside ? labels.ptr<std::uint8_t>(y) : nullptr;
+    const std::uint16_t* depth_row = row_inside ? frame.depth_mm.ptr<std::uint16_t>(y) : nullptr;
+    const cv::Vec3b* colour_row = (row_inside && colour) ? frame.bgr.ptr<cv::Vec3b>(y) : nullptr;
+    for (int u = 0; u < crop_size.width; ++u) {
+      const int x = source_x[static_cast<std::size_t>(u)];
+      const bool inside = row_inside && x >= 0 && x < frame.depth_mm.cols && label_row[x] == layer;
+      depth_out[u] = inside ? depth_row[x] : 0;
+      if (colour) colour_out[u] = inside ? colour_row[x] : black;
+    }
+  }
+}
+
+std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentation& segmentation,
+                                       const CandidateParams& params, cv::Size crop_size) {
+  std::vector<Candidate> candidates;
+  const int layer_count = static_cast<int>(segmentation.layers.size());
+  if (layer_count == 0) return candidates;
+  const auto runs = column_runs(segmentation.labels, layer_count, params.k);
+  const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);
+  const int width = frame.depth_mm.cols;
+
+  for (const DepthLayer& layer : segmentation.layers) {
+    const auto& column = runs[static_cast<std::size_t>(layer.label)];
+    const double depth_mm = layer.mean_depth_mm;
+    const double min_height_cm = params.threshold_height_cm(depth_mm);
+    auto passes = [&](int c) {
+      return frame.camera.height_cm(column[static_cast<std::size_t>(c)].length(), depth_mm) >= min_height_cm;
+    };
+    int c = 0;
+    while (c < width) {
+      if (!passes(c)) {
+        ++c;
+        continue;
+      }
+      // An object: passing columns joined across gaps of at most column_gap columns.
+      const int first = c;
+      int last = c;
+      for (int next = c + 1; next < width && next - last - 1 <= params.column_gap; ++next) {
+        if (passes(next)) last = next;
+      }
+      c = last + 1;
+      const double width_cm = frame.camera.width_cm(last - first + 1, depth_mm);
+      if (width_cm < params.min_width_cm) continue;
+
+      int top = frame.depth_mm.rows, bottom = -1, tallest = 0;
+      for (int x = first; x <= last; ++x) {
+        if (!passes(x)) continue;
+        const ColumnRun& run = column[static_cast<std::size_t>(x)];
+        top = std::min(top, run.top);
+        bottom = std::max(bottom, run.bottom);
+        tallest = std::max(tallest, run.length());
+      }
+      // The highest point's column: the middle of the passing columns that reach the top row.
+      std::vector<int> at_top;
+      for (int x = first; x <= last; ++x) {
+        if (passes(x) && column[static_cast<std::size_t>(x)].top == top) at_top.push_back(x);
+      }
+      const int highest = at_top[at_top.size() / 2];
+
+      Candidate candidate;
+      const int box_height = bottom - top + 1;
+      const int box_width = std::max(1, static_cast<int>(std::lround(box_height / 2.0)));
+      const cv::Rect strict(highest - box_width / 2, top, box_width, box_height);
+      candidate.strict_box = strict & image;
+      const double cx = strict.x + strict.width / 2.0;
+      const double cy = strict.y + strict.height / 2.0;
+      const int window_width = std::max(1, static_cast<int>(std::lround(strict.width * params.window_scale)));
+      const int window_height = std::max(1, static_cast<int>(std::lround(strict.height * params.window_scale)));
+      candidate.window_unclipped = cv::Rect(static_cast<int>(std::lround(cx - window_width / 2.0)),
+                                            static_cast<int>(std::lround(cy - window_height / 2.0)),
+                                            window_width, window_height);
+      candidate.window = candidate.window_unclipped & image;
+      candidate.layer = layer.label;
+      candidate.layer_depth_mm = depth_mm;
+      candidate.height_cm = frame.camera.height_cm(tallest, depth_mm);
+      candidate.width_cm = width_cm;
+      candidate.highest_column = highest;
+      cut_crops(frame, segmentation.labels, layer.label, candidate.window_unclipped, crop_size, candidate);
+      candidates.push_back(std::move(candidate));
+    }
+  }
+  return candidates;
+}
+
+}  // namespace rdsf

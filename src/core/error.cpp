@@ -1,0 +1,7 @@
+#include "core/error.hpp"
+
+namespace rdsf {
+
+void fail(const std::string& where, const std::string& what) { throw Error(where + ": " + what); }
+
+}  // namespace rdsf

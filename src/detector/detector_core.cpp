@@ -1,0 +1,47 @@
+#include "detector/detector_core.hpp"
+
+#include <chrono>
+
+#include "candidates/candidate_finder.hpp"
+#include "core/error.hpp"
+
+namespace rdsf {
+namespace {
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+DetectorCore::DetectorCore(DetectorParams params) : params_(params), extractor_(params.features) {}
+
+FrameAnalysis DetectorCore::analyse(const DepthFrame& frame, bool with_features) const {
+  if (frame.depth_mm.empty()) throw Error("frame " + frame.name + ": empty depth image");
+  FrameAnalysis analysis;
+  auto start = std::chrono::steady_clock::now();
+  analysis.segmentation = segment_depth(frame.depth_mm, params_.segmentation);
+  analysis.times.segmentation_ms = milliseconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
+  analysis.candidates = find_candidates(frame, analysis.segmentation, params_.candidates, crop);
+  analysis.times.candidates_ms = milliseconds_since(start);
+
+  if (with_features) {
+    start = std::chrono::steady_clock::now();
+    analysis.features = features(analysis.candidates);
+    analysis.times.features_ms = milliseconds_since(start);
+  }
+  return analysis;
+}
+
+cv::Mat1f DetectorCore::features(const std::vector<Candidate>& candidates) const {
+  cv::Mat1f rows(static_cast<int>(candidates.size()), extractor_.dimension());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    extractor_.compute(candidates[i].depth_crop, rows.ptr<float>(static_cast<int>(i)));
+  }
+  return rows;
+}
+
+}  // namespace rdsf

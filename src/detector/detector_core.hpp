@@ -1,0 +1,57 @@
+#pragma once
+// The detector core shared by every program, as a pipeline:
+//   depth frame -> segmentation (depth layers) -> candidates (boxes, 64x128 crops) -> RDSF features
+// Classification and tracking build on its output.
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "candidates/candidate.hpp"
+#include "candidates/candidate_params.hpp"
+#include "features/feature_spec.hpp"
+#include "features/rdsf_extractor.hpp"
+#include "frame/depth_frame.hpp"
+#include "segmentation/depth_layers.hpp"
+#include "segmentation/segmentation_params.hpp"
+
+namespace rdsf {
+
+struct DetectorParams {
+  SegmentationParams segmentation;
+  CandidateParams candidates;
+  FeatureSpec features;
+};
+
+/// Wall-clock time of each stage for one frame, in milliseconds.
+struct StageTimes {
+  double segmentation_ms = 0;
+  double candidates_ms = 0;
+  double features_ms = 0;
+};
+
+struct FrameAnalysis {
+  Segmentation segmentation;
+  std::vector<Candidate> candidates;
+  cv::Mat1f features;  ///< one row of RDSF values per candidate (empty when not asked for)
+  StageTimes times;
+};
+
+class DetectorCore {
+ public:
+  explicit DetectorCore(DetectorParams params = {});
+
+  const DetectorParams& params() const { return params_; }
+  const RdsfExtractor& extractor() const { return extractor_; }
+
+  /// Segments the frame and shapes its candidates; with `with_features`, also computes their RDSF.
+  FrameAnalysis analyse(const DepthFrame& frame, bool with_features = true) const;
+
+  /// RDSF rows for the given candidates (candidates.size() x dimension()).
+  cv::Mat1f features(const std::vector<Candidate>& candidates) const;
+
+ private:
+  DetectorParams params_;
+  RdsfExtractor extractor_;
+};
+
+}  // namespace rdsf

@@ -1,0 +1,64 @@
+#include "detector/overlay.hpp"
+
+#include <cstdio>
+
+#include <opencv2/imgproc.hpp>
+
+namespace rdsf {
+namespace {
+
+cv::Vec3b layer_colour(int index, int count) {
+  // Hue from red (near) to blue (far), full saturation, in BGR.
+  const double t = count > 1 ? static_cast<double>(index) / (count - 1) : 0.0;
+  cv::Mat3b hsv(1, 1, cv::Vec3b(static_cast<std::uint8_t>(120 * t), 200, 255));
+  cv::Mat3b bgr;
+  cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
+  return bgr(0, 0);
+}
+
+}  // namespace
+
+cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm) {
+  cv::Mat1b scaled;
+  depth_mm.convertTo(scaled, CV_8U, -255.0 / max_depth_mm, 255.0);
+  cv::Mat3b coloured;
+  cv::applyColorMap(scaled, coloured, cv::COLORMAP_JET);
+  coloured.setTo(cv::Scalar::all(0), depth_mm == 0);
+  return coloured;
+}
+
+cv::Mat3b render_layers(const DepthFrame& frame, const Segmentation& segmentation) {
+  const int count = static_cast<int>(segmentation.layers.size());
+  std::vector<cv::Vec3b> palette(static_cast<std::size_t>(count) + 1, cv::Vec3b(0, 0, 0));
+  for (int i = 0; i < count; ++i) palette[static_cast<std::size_t>(i) + 1] = layer_colour(i, count);
+  cv::Mat3b picture(segmentation.labels.size());
+  for (int r = 0; r < picture.rows; ++r) {
+    const std::uint8_t* label = segmentation.labels.ptr<std::uint8_t>(r);
+    cv::Vec3b* out = picture.ptr<cv::Vec3b>(r);
+    for (int c = 0; c < picture.cols; ++c) out[c] = palette[label[c]];
+  }
+  if (frame.has_colour()) cv::addWeighted(picture, 0.55, frame.bgr, 0.45, 0.0, picture);
+  return picture;
+}
+
+cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segmentation,
+                            const std::vector<Candidate>& candidates, const std::vector<double>* scores) {
+  cv::Mat3b picture = render_layers(frame, segmentation);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Candidate& c = candidates[i];
+    cv::rectangle(picture, c.window, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+    cv::rectangle(picture, c.strict_box, cv::Scalar(0, 255, 255), 2, cv::LINE_AA);
+    char text[96];
+    if (scores != nullptr && i < scores->size()) {
+      std::snprintf(text, sizeof text, "#%zu %.1fm H=%.1f", i, c.layer_depth_mm / 1000.0, (*scores)[i]);
+    } else {
+      std::snprintf(text, sizeof text, "#%zu %.1fm", i, c.layer_depth_mm / 1000.0);
+    }
+    const cv::Point at(c.strict_box.x + 2, std::max(12, c.strict_box.y - 4));
+    cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
+    cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 255, 255), 1, cv::LINE_AA);
+  }
+  return picture;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,19 @@
+#include "frame/frame_source.hpp"
+
+#include "frame/openni_source.hpp"
+#include "frame/png_folder_source.hpp"
+
+namespace rdsf {
+
+bool is_openni_spec(const std::string& spec) {
+  const bool oni_file = spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".oni") == 0;
+  return oni_file || spec == "openni" || spec.find("://") != std::string::npos ||
+         (!spec.empty() && spec[0] == '#');
+}
+
+std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const CameraModel& camera) {
+  if (is_openni_spec(spec)) return std::make_unique<OpenNISource>(spec, camera);
+  return std::make_unique<PngFolderSource>(spec, camera);
+}
+
+}  // namespace rdsf

@@ -1,0 +1,112 @@
+#include "frame/png_folder_source.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "frame/depth_png.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rdsf {
+namespace {
+
+const std::string kDepthSuffix = ".depth.png";
+const std::string kColourSuffix = ".rgb.png";
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string> list_folder(const std::string& folder) {
+  std::vector<std::string> paths;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (ends_with(name, kDepthSuffix)) paths.push_back(entry.path().string());
+  }
+  if (ec) fail(folder, "cannot list folder: " + ec.message());
+  std::sort(paths.begin(), paths.end());
+  if (paths.empty()) fail(folder, "folder holds no *" + kDepthSuffix + " frames");
+  return paths;
+}
+
+std::vector<std::string> read_list_file(const std::string& list_path) {
+  std::ifstream in(list_path);
+  if (!in) fail(list_path, "cannot be opened for reading");
+  const fs::path base = fs::path(list_path).parent_path();
+  std::vector<std::string> paths;
+  std::string line;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    line = trim(line);
+    if (line.empty() || line[0] == '#') continue;
+    if (line.find('\0') != std::string::npos || !ends_with(line, ".png")) {
+      fail(list_path, "line " + std::to_string(line_number) +
+                          ": not a PNG path (a list file names one NAME.depth.png a line)");
+    }
+    fs::path path(line);
+    if (path.is_relative()) path = base / path;
+    paths.push_back(path.string());
+  }
+  if (paths.empty()) fail(list_path, "list file names no frames");
+  return paths;
+}
+
+}  // namespace
+
+PngFolderSource::PngFolderSource(const std::string& spec, const CameraModel& camera)
+    : spec_(spec), camera_(camera) {
+  std::error_code ec;
+  if (!fs::exists(spec, ec)) fail(spec, "no such file or folder");
+  if (fs::is_directory(spec, ec)) {
+    depth_paths_ = list_folder(spec);
+  } else if (ends_with(spec, ".png")) {
+    depth_paths_ = {spec};
+  } else {
+    depth_paths_ = read_list_file(spec);
+  }
+}
+
+std::string PngFolderSource::frame_name(const std::string& depth_path) {
+  std::string name = fs::path(depth_path).filename().string();
+  if (ends_with(name, kDepthSuffix)) return name.substr(0, name.size() - kDepthSuffix.size());
+  if (ends_with(name, ".png")) return name.substr(0, name.size() - 4);
+  return name;
+}
+
+bool PngFolderSource::next(DepthFrame& frame) {
+  if (next_ >= depth_paths_.size()) return false;
+  const std::string& depth_path = depth_paths_[next_];
+  frame.depth_mm = read_depth_png(depth_path);
+  frame.bgr.release();
+  if (ends_with(depth_path, kDepthSuffix)) {
+    const std::string colour_path =
+        depth_path.substr(0, depth_path.size() - kDepthSuffix.size()) + kColourSuffix;
+    std::error_code ec;
+    if (fs::exists(colour_path, ec)) frame.bgr = read_colour_png(colour_path, frame.depth_mm.size());
+  }
+  frame.index = static_cast<std::int64_t>(next_);
+  frame.name = frame_name(depth_path);
+  frame.timestamp_us = frame.index * 33333;  // image folders carry no clock: 30 frames per second
+  frame.camera = (frame.depth_mm.cols == camera_.width_px && frame.depth_mm.rows == camera_.height_px)
+                     ? camera_
+                     : camera_.scaled_to(frame.depth_mm.cols, frame.depth_mm.rows);
+  ++next_;
+  return true;
+}
+
+std::string PngFolderSource::description() const {
+  return spec_ + " (" + std::to_string(depth_paths_.size()) + " frames)";
+}
+
+}  // namespace rdsf

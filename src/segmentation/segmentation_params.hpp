@@ -1,0 +1,23 @@
+#pragma once
+// Parameters of the depth segmentation (thesis names). The thesis does not publish its values; these
+// defaults were chosen on ../shared/realdata (people found, layers that separate a person from the wall
+// behind) and are documented in README.md.
+
+namespace rdsf {
+
+struct SegmentationParams {
+  /// Scan every row_step-th row of the depth map for depth jumps.
+  int row_step = 10;
+  /// A jump between neighbouring pixels larger than this (mm) starts a depth candidate.
+  int depth_threshold_mm = 150;
+  /// The jump must hold: the next n pixels stay within range_threshold_mm of the pixel after the jump.
+  int n = 5;
+  /// See n.
+  int range_threshold_mm = 60;
+  /// Sorted depth candidates are averaged in runs that span at most this much depth (mm).
+  int candidate_threshold_mm = 300;
+  /// Upper bound of k-means iterations; it stops earlier when no pixel changes layer.
+  int max_iterations = 30;
+};
+
+}  // namespace rdsf
