@@ -21,7 +21,7 @@ struct CandidateParams {
   /// Gap tolerance (columns) when joining passing columns into one object.
   int column_gap = 6;
   /// An object narrower than this in real centimetres is not a candidate.
-  double min_width_cm = 15.0;
+  double min_width_cm = 10.0;
   /// The window is the strict box enlarged by this factor in both directions (thesis: 25%).
   double window_scale = 1.25;
   /// threshold_height for a layer at the given depth.

@@ -1,5 +1,7 @@
 #include "frame/depth_png.hpp"
 
+#include <array>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +18,49 @@ namespace {
 
 const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
+std::uint32_t crc32(const unsigned char* data, std::size_t size) {
+  static const std::array<std::uint32_t, 256> table = [] {
+    std::array<std::uint32_t, 256> t{};
+    for (std::uint32_t n = 0; n < 256; ++n) {
+      std::uint32_t c = n;
+      for (int k = 0; k < 8; ++k) c = (c & 1U) ? 0xedb88320U ^ (c >> 1) : c >> 1;
+      t[n] = c;
+    }
+    return t;
+  }();
+  std::uint32_t c = 0xffffffffU;
+  for (std::size_t i = 0; i < size; ++i) c = table[(c ^ data[i]) & 0xffU] ^ (c >> 8);
+  return c ^ 0xffffffffU;
+}
+
+std::uint32_t big_endian(const unsigned char* p) {
+  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | p[3];
+}
+
+// Walks the PNG chunks and checks every CRC, so that a truncated or damaged file is reported here in one
+// line, before libpng would print its own messages.
+void check_png_structure(const std::string& path, const std::vector<unsigned char>& bytes) {
+  if (bytes.size() < 8 || !std::equal(kPngSignature, kPngSignature + 8, bytes.begin())) {
+    fail(path, "not a PNG file");
+  }
+  std::size_t at = 8;
+  while (true) {
+    if (at + 12 > bytes.size()) {
+      fail(path, "truncated PNG (file ends at byte " + std::to_string(bytes.size()) + " before the IEND chunk)");
+    }
+    const std::size_t length = big_endian(&bytes[at]);
+    if (length > bytes.size() - at - 12) {
+      fail(path, "truncated PNG (chunk at byte " + std::to_string(at) + " runs past the end of the file)");
+    }
+    const std::string type(reinterpret_cast<const char*>(&bytes[at + 4]), 4);
+    if (crc32(&bytes[at + 4], length + 4) != big_endian(&bytes[at + 8 + length])) {
+      fail(path, "corrupt PNG (CRC error in " + type + " chunk at byte " + std::to_string(at) + ")");
+    }
+    at += length + 12;
+    if (type == "IEND") return;
+  }
+}
+
 // Reads the whole file and decodes it, so that a missing, non-PNG or corrupt file is told apart.
 cv::Mat decode_png(const std::string& path) {
   std::error_code ec;
@@ -24,14 +69,7 @@ cv::Mat decode_png(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot be opened for reading");
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 8 || !std::equal(kPngSignature, kPngSignature + 8, bytes.begin())) {
-    fail(path, "not a PNG file");
-  }
-  // A PNG ends with an IEND chunk; without it the file was cut short (libpng would decode garbage rows).
-  static const unsigned char kIend[8] = {'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
-  if (bytes.size() < 20 || !std::equal(kIend, kIend + 8, bytes.end() - 8)) {
-    fail(path, "truncated or corrupt PNG (no IEND chunk at the end)");
-  }
+  check_png_structure(path, bytes);
   cv::Mat image;
   try {
     image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);

@@ -13,11 +13,14 @@ namespace rdsf {
 namespace {
 
 std::string openni_error() {
-  std::string text = openni::OpenNI::getExtendedError();
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';  // keep every message on one line
+  // OpenNI2's messages come with tabs and newlines; keep every message on one line.
+  std::string text;
+  for (const char* c = openni::OpenNI::getExtendedError(); c != nullptr && *c != '\0'; ++c) {
+    const bool space = *c == '\n' || *c == '\r' || *c == '\t' || *c == ' ';
+    if (space && (text.empty() || text.back() == ' ')) continue;
+    text += space ? ' ' : *c;
   }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
   return text.empty() ? "no details from OpenNI2" : text;
 }
 

@@ -15,7 +15,7 @@ struct SegmentationParams {
   /// See n.
   int range_threshold_mm = 60;
   /// Sorted depth candidates are averaged in runs that span at most this much depth (mm).
-  int candidate_threshold_mm = 300;
+  int candidate_threshold_mm = 700;
   /// Upper bound of k-means iterations; it stops earlier when no pixel changes layer.
   int max_iterations = 30;
 };

@@ -1,0 +1,93 @@
+// Speed of the detector core's stages on one core, on the real frames of ../shared/realdata when present
+// (else a hand-built scene). Targets (issue 2): segmentation < 10 ms per 640x480 frame (thesis 200-320 ms),
+// candidate shaping < 1 ms per candidate (thesis 10 ms), RDSF < 100 us per candidate (thesis ~16 ms with the
+// classifier). Run: build/bench/bench_core
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <vector>
+
+#include "candidates/candidate_finder.hpp"
+#include "detector/detector_core.hpp"
+#include "frame/frame_source.hpp"
+#include "segmentation/depth_layers.hpp"
+
+namespace {
+
+const std::vector<rdsf::DepthFrame>& frames() {
+  static const std::vector<rdsf::DepthFrame> loaded = [] {
+    std::vector<rdsf::DepthFrame> all;
+    const std::filesystem::path real = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata";
+    for (const char* group : {"people", "empty"}) {
+      if (!std::filesystem::is_directory(real / group)) continue;
+      auto source = rdsf::open_frame_source((real / group).string());
+      rdsf::DepthFrame frame;
+      while (source->next(frame)) all.push_back(frame);
+    }
+    if (all.empty()) {  // no real frames here: a person before a wall
+      rdsf::DepthFrame frame;
+      frame.depth_mm = cv::Mat1w(480, 640, std::uint16_t{4000});
+      frame.depth_mm(cv::Rect(300, 100, 40, 360)).setTo(2000);
+      all.push_back(frame);
+    }
+    return all;
+  }();
+  return loaded;
+}
+
+void BM_Segmentation(benchmark::State& state) {
+  const rdsf::SegmentationParams params;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const rdsf::DepthFrame& frame = frames()[i++ % frames().size()];
+    benchmark::DoNotOptimize(rdsf::segment_depth(frame.depth_mm, params));
+  }
+}
+BENCHMARK(BM_Segmentation)->Unit(benchmark::kMillisecond);
+
+void BM_CandidateShaping(benchmark::State& state) {
+  std::vector<rdsf::Segmentation> segmentations;
+  for (const auto& frame : frames()) segmentations.push_back(rdsf::segment_depth(frame.depth_mm, {}));
+  const rdsf::CandidateParams params;
+  std::size_t i = 0;
+  std::int64_t candidates = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % frames().size();
+    const auto found = rdsf::find_candidates(frames()[k], segmentations[k], params);
+    candidates += static_cast<std::int64_t>(found.size());
+    benchmark::DoNotOptimize(found.data());
+  }
+  state.counters["candidates_per_frame"] =
+      static_cast<double>(candidates) / static_cast<double>(state.iterations());
+  // Seconds per candidate (shown with an SI prefix: 150u = 150 microseconds).
+  state.counters["time_per_candidate"] = benchmark::Counter(
+      static_cast<double>(candidates), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_CandidateShaping)->Unit(benchmark::kMillisecond);
+
+void BM_RdsfPerCandidate(benchmark::State& state) {
+  std::vector<cv::Mat1w> crops;
+  const rdsf::DetectorCore core;
+  for (const auto& frame : frames()) {
+    for (const auto& c : core.analyse(frame, false).candidates) crops.push_back(c.depth_crop);
+  }
+  const rdsf::RdsfExtractor extractor;
+  std::vector<float> out(static_cast<std::size_t>(extractor.dimension()));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    extractor.compute(crops[i++ % crops.size()], out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_RdsfPerCandidate)->Unit(benchmark::kMicrosecond);
+
+void BM_WholeCoreFrame(benchmark::State& state) {
+  const rdsf::DetectorCore core;
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(core.analyse(frames()[i++ % frames().size()], true));
+}
+BENCHMARK(BM_WholeCoreFrame)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

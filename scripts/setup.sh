@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the workbench needs (only those missing; uses sudo when not root), then
+# configures and builds everything into build/ (or $RDSF_BUILD_DIR). Safe to run again: it only does
+# what is left to do.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  g++ cmake make pkg-config
+  libopencv-dev libeigen3-dev libopenni2-dev libboost-program-options-dev
+  libgtest-dev libbenchmark-dev
+  xvfb xauth xdotool x11-apps
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+build_dir="${RDSF_BUILD_DIR:-build}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+log="$build_dir/build.log"
+echo "setup: building with $jobs jobs (log: $log)"
+if ! cmake --build "$build_dir" -j"$jobs" >"$log" 2>&1; then
+  grep -E -A5 "error" "$log" | head -60
+  echo "setup: build failed (full log: $log)" >&2
+  exit 1
+fi
+grep -E "warning:" "$log" | head -20 || true
+echo "setup: built into $build_dir"

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Runs every test: installs what is missing, builds, then CTest (GoogleTest programs). Tests that read the
+# real frames in ../shared/realdata skip with a message when that folder is absent.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+build_dir="${RDSF_BUILD_DIR:-build}"
+ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc 2>/dev/null || echo 2)" --timeout 900

@@ -1,0 +1,172 @@
+#include <gtest/gtest.h>
+
+#include "candidates/candidate_finder.hpp"
+#include "candidates/column_heights.hpp"
+#include "detector/detector_core.hpp"
+#include "support/depth_scenes.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+FrameAnalysis analyse(const DepthFrame& frame, DetectorParams params = {}) {
+  return DetectorCore(params).analyse(frame, false);
+}
+
+const Candidate* find_at_depth(const std::vector<Candidate>& candidates, double depth_mm, int highest_column) {
+  for (const Candidate& c : candidates) {
+    if (std::abs(c.layer_depth_mm - depth_mm) < 1 && c.highest_column == highest_column) return &c;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(ColumnRuns, LongestRunToleratesGapsOfK) {
+  cv::Mat1b labels = cv::Mat1b::zeros(40, 3);
+  labels(cv::Rect(0, 2, 1, 5)).setTo(1);    // column 0: rows 2..6
+  labels(cv::Rect(0, 10, 1, 20)).setTo(1);  // rows 10..29 after a gap of 3 rows -> one run 2..29 with k=3
+  labels(cv::Rect(1, 0, 1, 4)).setTo(1);    // column 1: rows 0..3, gap of 5, rows 9..10
+  labels(cv::Rect(1, 9, 1, 2)).setTo(1);
+  const auto runs = column_runs(labels, 1, 3);
+  EXPECT_EQ(runs[1][0].top, 2);
+  EXPECT_EQ(runs[1][0].bottom, 29);
+  EXPECT_EQ(runs[1][1].top, 0);  // the gap of 5 > k breaks it: 0..3 is longer than 9..10
+  EXPECT_EQ(runs[1][1].bottom, 3);
+  EXPECT_EQ(runs[1][2].length(), 0);
+}
+
+TEST(CandidateFinder, PersonBeforeWall) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  const FrameAnalysis a = analyse(frame);
+  // The person, and the wall left and right of it (the wall behind the person is too short there).
+  ASSERT_EQ(a.candidates.size(), 3u);
+  const Candidate& person = a.candidates[0];
+  EXPECT_DOUBLE_EQ(person.layer_depth_mm, 2000.0);
+  EXPECT_EQ(person.highest_column, 320);  // middle of columns 300..339
+  EXPECT_EQ(person.strict_box, cv::Rect(230, 100, 180, 360));  // height 360, width 180 about column 320
+  EXPECT_EQ(person.window_unclipped, cv::Rect(208, 55, 225, 450));  // +25% both ways about the centre
+  EXPECT_EQ(person.window, cv::Rect(208, 55, 225, 425));             // clipped at the bottom edge
+  EXPECT_NEAR(person.height_cm, 360 * 2000.0 / 525.0 / 10.0, 1e-9);
+  EXPECT_NEAR(person.width_cm, 40 * 2000.0 / 525.0 / 10.0, 1e-9);
+  // Crop: only the layer's pixels; columns 26..37 and rows 13..114 of the 64x128 crop sample the block.
+  ASSERT_EQ(person.depth_crop.size(), cv::Size(64, 128));
+  EXPECT_EQ(cv::countNonZero(person.depth_crop), 12 * 102);
+  EXPECT_EQ(person.depth_crop(13, 26), 2000);
+  EXPECT_EQ(person.depth_crop(114, 37), 2000);
+  EXPECT_EQ(person.depth_crop(12, 26), 0);
+  EXPECT_EQ(person.depth_crop(13, 25), 0);
+  EXPECT_EQ(person.depth_crop(115, 37), 0);
+  EXPECT_EQ(person.depth_crop(13, 38), 0);
+  EXPECT_TRUE(person.colour_crop.empty());
+  // The wall pieces: full height at 4000 mm.
+  EXPECT_EQ(a.candidates[1].strict_box, cv::Rect(30, 0, 240, 480));
+  EXPECT_EQ(a.candidates[2].strict_box, cv::Rect(370, 0, 240, 480));
+}
+
+TEST(CandidateFinder, TwoPeopleAtOneDepth) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {150, 100, 40, 360}, 2000);
+  test::paint(frame, {400, 60, 40, 400}, 2000);  // the taller one
+  const FrameAnalysis a = analyse(frame);
+  ASSERT_EQ(a.segmentation.layers.size(), 2u);
+  const Candidate* left = find_at_depth(a.candidates, 2000, 170);
+  const Candidate* right = find_at_depth(a.candidates, 2000, 420);
+  ASSERT_NE(left, nullptr);
+  ASSERT_NE(right, nullptr);
+  EXPECT_EQ(left->strict_box, cv::Rect(80, 100, 180, 360));
+  EXPECT_EQ(right->strict_box, cv::Rect(320, 60, 200, 400));
+  int at_2000 = 0;
+  for (const Candidate& c : a.candidates) at_2000 += std::abs(c.layer_depth_mm - 2000) < 1 ? 1 : 0;
+  EXPECT_EQ(at_2000, 2);
+}
+
+TEST(CandidateFinder, MissingReadingsInsideThePersonAreTolerated) {
+  DepthFrame clean = test::wall_frame(4000);
+  test::paint(clean, {300, 100, 40, 360}, 2000);
+  DepthFrame noisy = clean;
+  noisy.depth_mm = clean.depth_mm.clone();
+  // Zeros scattered through the person, never more than k rows in a column.
+  for (int y = 100; y < 460; y += 4) {
+    for (int x = 300 + (y % 5); x < 340; x += 5) noisy.depth_mm(y, x) = 0;
+  }
+  const FrameAnalysis a = analyse(noisy);
+  const Candidate* person = nullptr;
+  for (const Candidate& c : a.candidates) {
+    if (std::abs(c.layer_depth_mm - 2000) < 1) person = &c;
+  }
+  ASSERT_NE(person, nullptr);
+  // Same height; the highest point's column may move by a pixel where a zero hits the top row.
+  EXPECT_EQ(person->strict_box.y, 100);
+  EXPECT_EQ(person->strict_box.height, 360);
+  EXPECT_NEAR(person->strict_box.x, 230, 2);
+  // The zeros stay zeros in the crop: no blending of missing readings into depths.
+  for (int v = 0; v < 128; ++v) {
+    for (int u = 0; u < 64; ++u) {
+      const auto d = person->depth_crop(v, u);
+      EXPECT_TRUE(d == 0 || d == 2000);
+    }
+  }
+}
+
+TEST(CandidateFinder, PersonAtTheImageBorder) {
+  DepthFrame centred = test::wall_frame(4000);
+  test::paint(centred, {300, 100, 40, 360}, 2000);
+  DepthFrame border = test::wall_frame(4000);
+  test::paint(border, {0, 100, 40, 360}, 2000);
+  const FrameAnalysis a = analyse(border);
+  const Candidate* person = find_at_depth(a.candidates, 2000, 20);
+  ASSERT_NE(person, nullptr);
+  EXPECT_EQ(person->strict_box, cv::Rect(0, 100, 110, 360));  // (-70, 100, 180, 360) clipped
+  EXPECT_EQ(person->window_unclipped, cv::Rect(-93, 55, 225, 450));
+  EXPECT_EQ(person->window, cv::Rect(0, 55, 132, 425));
+  // Outside the image reads 0, so the crop shows the person where a centred person appears.
+  const FrameAnalysis centred_analysis = analyse(centred);
+  const Candidate* reference = find_at_depth(centred_analysis.candidates, 2000, 320);
+  ASSERT_NE(reference, nullptr);
+  EXPECT_EQ(cv::norm(person->depth_crop, reference->depth_crop, cv::NORM_INF), 0.0);
+}
+
+TEST(CandidateFinder, ShortAndNarrowObjectsAreNotCandidates) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {100, 300, 60, 100}, 2000);  // 100 rows at 2 m = 38 cm: below 90 cm
+  test::paint(frame, {400, 100, 10, 360}, 2000);  // 10 columns at 2 m = 3.8 cm: narrower than 10 cm
+  const FrameAnalysis a = analyse(frame);
+  for (const Candidate& c : a.candidates) EXPECT_NEAR(c.layer_depth_mm, 4000.0, 1.0);
+}
+
+TEST(CandidateFinder, StrictAndRelaxedThresholdHeight) {
+  // A 70 cm tall object at 2 m: fails strict (90 cm beyond 1.5 m), passes relaxed (50 cm).
+  DepthFrame frame = test::wall_frame(4000);
+  const int rows = static_cast<int>(70.0 * 10.0 * 525.0 / 2000.0) + 1;
+  test::paint(frame, {300, 470 - rows, 60, rows}, 2000);
+  DetectorParams strict;
+  DetectorParams relaxed;
+  relaxed.candidates.mode = HeightMode::relaxed;
+  EXPECT_EQ(find_at_depth(analyse(frame, strict).candidates, 2000, 330), nullptr);
+  EXPECT_NE(find_at_depth(analyse(frame, relaxed).candidates, 2000, 330), nullptr);
+  EXPECT_DOUBLE_EQ(strict.candidates.threshold_height_cm(1400), 50.0);
+  EXPECT_DOUBLE_EQ(strict.candidates.threshold_height_cm(1600), 90.0);
+  EXPECT_DOUBLE_EQ(relaxed.candidates.threshold_height_cm(1600), 50.0);
+}
+
+TEST(CandidateFinder, ColourCropIsMaskedByTheLayer) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  frame.bgr = cv::Mat3b(480, 640, cv::Vec3b(10, 20, 30));
+  frame.bgr(cv::Rect(300, 100, 40, 360)).setTo(cv::Scalar(200, 100, 50));
+  const FrameAnalysis a = analyse(frame);
+  const Candidate* person = find_at_depth(a.candidates, 2000, 320);
+  ASSERT_NE(person, nullptr);
+  ASSERT_EQ(person->colour_crop.size(), cv::Size(64, 128));
+  EXPECT_EQ(person->colour_crop(50, 30), cv::Vec3b(200, 100, 50));
+  EXPECT_EQ(person->colour_crop(50, 5), cv::Vec3b(0, 0, 0));  // the wall is another layer: black
+}
+
+TEST(CandidateFinder, IntersectionOverUnion) {
+  EXPECT_DOUBLE_EQ(iou({0, 0, 10, 10}, {0, 0, 10, 10}), 1.0);
+  EXPECT_DOUBLE_EQ(iou({0, 0, 10, 10}, {5, 0, 10, 10}), 50.0 / 150.0);
+  EXPECT_DOUBLE_EQ(iou({0, 0, 10, 10}, {20, 20, 5, 5}), 0.0);
+  EXPECT_DOUBLE_EQ(iou({0, 0, 0, 0}, {0, 0, 0, 0}), 0.0);
+}

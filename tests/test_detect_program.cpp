@@ -1,0 +1,175 @@
+// rdsf-detect as a user meets it: --help, the CSV, the pictures, and one-line errors with exit codes.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "frame/depth_png.hpp"
+#include "support/depth_scenes.hpp"
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::string detect() { return test::quote(test::program("rdsf-detect")); }
+
+int count_lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A folder with one hand-built frame: a person-sized block before a wall.
+void write_scene(const test::TempDir& dir) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  write_png_atomically(dir / "scene.depth.png", frame.depth_mm);
+}
+
+}  // namespace
+
+TEST(DetectProgram, HelpShowsEveryDefault) {
+  const test::RunResult r = test::run(detect() + " --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* text : {"--source", "--out", "--save-dir", "--config", "--depth_threshold arg (=150)",
+                           "--candidate_threshold arg (=700)", "--row_step arg (=10)", "--k arg (=6)",
+                           "--far_height arg (=90)", "--fx arg (=525)"}) {
+    EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+  }
+}
+
+TEST(DetectProgram, WritesCsvAndPictures) {
+  test::TempDir dir;
+  write_scene(dir);
+  const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
+                                      test::quote(dir / "out.csv") + " --save-dir " + test::quote(dir / "pics"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = read_file(dir / "out.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "frame,candidate,x,y,w,h,depth_mm,score");
+  EXPECT_NE(csv.find("scene,0,230,100,180,360,2000,\n"), std::string::npos) << csv;
+  EXPECT_EQ(count_lines(csv), 1 + 3);  // header, the person, two wall pieces
+  const cv::Mat picture = cv::imread(dir / "pics/scene.candidates.png");
+  ASSERT_FALSE(picture.empty());
+  EXPECT_EQ(picture.size(), cv::Size(640, 480));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv.partial"));
+}
+
+TEST(DetectProgram, ConfigFileAndCommandLineOverride) {
+  test::TempDir dir;
+  write_scene(dir);
+  std::ofstream(dir / "detect.ini") << "# raise the width needed so that the person (15 cm) is dropped\nmin_width = 20\n";
+  const std::string base = detect() + " --source " + test::quote(dir.path().string()) + " --config " +
+                           test::quote(dir / "detect.ini") + " --force --out " + test::quote(dir / "out.csv");
+  ASSERT_EQ(test::run(base).exit_code, 0);
+  EXPECT_EQ(read_file(dir / "out.csv").find(",2000,"), std::string::npos);
+  ASSERT_EQ(test::run(base + " --min_width 10").exit_code, 0);  // the command line wins
+  EXPECT_NE(read_file(dir / "out.csv").find(",2000,"), std::string::npos);
+}
+
+TEST(DetectProgram, RefusesToOverwriteWithoutForce) {
+  test::TempDir dir;
+  write_scene(dir);
+  std::ofstream(dir / "out.csv") << "precious\n";
+  const test::RunResult r =
+      test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " + test::quote(dir / "out.csv"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(dir / "out.csv"), "precious\n");
+}
+
+struct BadInput {
+  std::string name;
+  std::function<std::string(const test::TempDir&)> make;  // returns the --source argument
+  std::string message;
+};
+
+class DetectBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(DetectBadInput, OneLineErrorAndNonZeroExit) {
+  test::TempDir dir;
+  const std::string source = GetParam().make(dir);
+  const test::RunResult r =
+      test::run(detect() + " --source " + test::quote(source) + " --out " + test::quote(dir / "out.csv"));
+  EXPECT_EQ(r.exit_code, 1);
+  // The error is the last line, names the input, and says what is wrong.
+  const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+  EXPECT_EQ(last.rfind("rdsf-detect: error: ", 0), 0u) << r.err;
+  EXPECT_NE(last.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("libpng"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));  // never a CSV that looks complete
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, DetectBadInput,
+    ::testing::Values(
+        BadInput{"missing_path", [](const test::TempDir& d) { return d / "nothing-here"; }, "nothing-here: no such file"},
+        BadInput{"eight_bit",
+                 [](const test::TempDir& d) {
+                   cv::imwrite(d / "f.depth.png", cv::Mat1b(480, 640, std::uint8_t{9}));
+                   return d.path().string();
+                 },
+                 "f.depth.png: 8-bit image given as depth"},
+        BadInput{"colour_as_depth",
+                 [](const test::TempDir& d) {
+                   cv::imwrite(d / "f.depth.png", cv::Mat3b(480, 640, cv::Vec3b(1, 2, 3)));
+                   return d.path().string();
+                 },
+                 "f.depth.png: 3-channel image given as depth"},
+        BadInput{"size_mismatch",
+                 [](const test::TempDir& d) {
+                   cv::imwrite(d / "f.depth.png", cv::Mat1w(480, 640, std::uint16_t{1000}));
+                   cv::imwrite(d / "f.rgb.png", cv::Mat3b(240, 320, cv::Vec3b(1, 2, 3)));
+                   return d.path().string();
+                 },
+                 "f.rgb.png: colour image is 320x240 but its depth image is 640x480"},
+        BadInput{"corrupt_png",
+                 [](const test::TempDir& d) {
+                   std::vector<unsigned char> bytes;
+                   cv::imencode(".png", cv::Mat1w(480, 640, std::uint16_t{1000}), bytes);
+                   bytes[bytes.size() / 2] ^= 0x5a;
+                   std::ofstream(d / "f.depth.png", std::ios::binary)
+                       .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+                   return d.path().string();
+                 },
+                 "f.depth.png: corrupt PNG"},
+        BadInput{"truncated_png",
+                 [](const test::TempDir& d) {
+                   std::vector<unsigned char> bytes;
+                   cv::imencode(".png", cv::Mat1w(480, 640, std::uint16_t{1000}), bytes);
+                   std::ofstream(d / "f.depth.png", std::ios::binary)
+                       .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size() / 2));
+                   return d.path().string();
+                 },
+                 "f.depth.png: truncated PNG"},
+        BadInput{"not_oni",
+                 [](const test::TempDir& d) {
+                   std::ofstream(d / "take.oni", std::ios::binary) << std::string(5000, 'z');
+                   return d / "take.oni";
+                 },
+                 "take.oni: not a readable OpenNI recording"},
+        BadInput{"no_device", [](const test::TempDir&) { return std::string("openni"); }, "no device attached"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
+
+TEST(DetectProgram, UnknownOptionIsAUsageError) {
+  const test::RunResult r = test::run(detect() + " --source x --no-such-option");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no-such-option"), std::string::npos) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1);
+}
+
+TEST(DetectProgram, ShowWithoutDisplayExplainsInsteadOfCrashing) {
+  test::TempDir dir;
+  write_scene(dir);
+  const test::RunResult r = test::run("env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + detect() +
+                                      " --source " + test::quote(dir.path().string()) + " --show");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
+}

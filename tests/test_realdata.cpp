@@ -1,0 +1,97 @@
+// The detector core on the real Kinect frames of ../shared/realdata: recall of the candidates against the
+// people in boxes.csv, per frame group, and the number of candidates in people-free rooms.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "candidates/candidate_finder.hpp"
+#include "detector/detector_core.hpp"
+#include "frame/frame_source.hpp"
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::map<std::string, std::vector<cv::Rect>> read_boxes(const std::filesystem::path& csv) {
+  std::map<std::string, std::vector<cv::Rect>> boxes;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header: frame,person,x,y,w,h
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::string frame, person, x, y, w, h;
+    std::getline(fields, frame, ',');
+    std::getline(fields, person, ',');
+    std::getline(fields, x, ',');
+    std::getline(fields, y, ',');
+    std::getline(fields, w, ',');
+    std::getline(fields, h, ',');
+    boxes[frame].emplace_back(std::stoi(x), std::stoi(y), std::stoi(w), std::stoi(h));
+  }
+  return boxes;
+}
+
+}  // namespace
+
+TEST(RealData, CandidatesCoverAtLeast85PercentOfThePeople) {
+  RDSF_REQUIRE_REALDATA();
+  const auto truth = read_boxes(test::realdata_dir() / "people" / "boxes.csv");
+  ASSERT_FALSE(truth.empty());
+  const DetectorCore core;
+  auto source = open_frame_source((test::realdata_dir() / "people").string());
+  std::map<std::string, std::pair<int, int>> per_group;  // group -> (found, people)
+  int found = 0, people = 0;
+  DepthFrame frame;
+  while (source->next(frame)) {
+    const FrameAnalysis analysis = core.analyse(frame, false);
+    const std::string group = frame.name.substr(0, frame.name.find('_'));
+    const auto it = truth.find(frame.name);
+    if (it == truth.end()) continue;
+    for (const cv::Rect& person : it->second) {
+      double best = 0;
+      for (const Candidate& c : analysis.candidates) best = std::max(best, iou(person, c.strict_box));
+      const bool hit = best >= 0.5;
+      found += hit;
+      ++people;
+      per_group[group].first += hit;
+      ++per_group[group].second;
+      if (!hit) std::cout << "  missed " << frame.name << " (best IoU " << best << ")\n";
+    }
+  }
+  for (const auto& [group, counts] : per_group) {
+    std::cout << "  " << group << ": " << counts.first << "/" << counts.second << " people have a candidate\n";
+    RecordProperty("recall_" + group, std::to_string(counts.first) + "/" + std::to_string(counts.second));
+  }
+  const double recall = static_cast<double>(found) / people;
+  std::cout << "  all: " << found << "/" << people << " = " << recall << "\n";
+  EXPECT_EQ(people, 35);
+  EXPECT_GE(recall, 0.85);
+}
+
+TEST(RealData, CandidatesPerFrameInEmptyRooms) {
+  RDSF_REQUIRE_REALDATA();
+  const DetectorCore core;
+  auto source = open_frame_source((test::realdata_dir() / "empty").string());
+  DepthFrame frame;
+  int frames = 0;
+  std::size_t total = 0;
+  while (source->next(frame)) {
+    const FrameAnalysis analysis = core.analyse(frame);
+    std::cout << "  " << frame.name << ": " << analysis.candidates.size() << " candidates, "
+              << analysis.segmentation.layers.size() << " layers\n";
+    // Every candidate is a valid 64x128 sample with 8128 features.
+    for (const Candidate& c : analysis.candidates) {
+      EXPECT_EQ(c.depth_crop.size(), cv::Size(64, 128));
+      EXPECT_GT(cv::countNonZero(c.depth_crop), 0);
+    }
+    EXPECT_EQ(analysis.features.cols, 8128);
+    total += analysis.candidates.size();
+    ++frames;
+  }
+  std::cout << "  mean: " << static_cast<double>(total) / frames << " candidates per frame\n";
+  EXPECT_EQ(frames, 9);
+  EXPECT_GT(total, 0u);  // rooms have person-sized things: the classifier's negatives
+}
