@@ -1,0 +1,81 @@
+#include "evaluation/detection_metrics.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "candidates/candidate_finder.hpp"
+
+namespace rdsf {
+namespace {
+
+constexpr double kMinIou = 0.5;
+
+bool has_candidate(const FrameCandidates& frame, const cv::Rect& person) {
+  return std::any_of(frame.candidates.begin(), frame.candidates.end(),
+                     [&](const ScoredCandidate& c) { return iou(c.box, person) >= kMinIou; });
+}
+
+}  // namespace
+
+std::vector<double> thesis_thresholds() { return {40, 20, 10, 0, -5, -10, -15, -20, -25, -30, -40, -60}; }
+
+void compute_rates(DetectionFigures& f) {
+  f.tar = f.n_people > 0 ? static_cast<double>(f.n_det) / static_cast<double>(f.n_people) : 0.0;
+  f.frr = f.n_people > 0 ? static_cast<double>(f.n_miss) / static_cast<double>(f.n_people) : 0.0;
+  f.far = (f.n_fp + f.n_frames) > 0 ? static_cast<double>(f.n_fp) / static_cast<double>(f.n_fp + f.n_frames) : 0.0;
+  f.trr = 1.0 - f.far;
+  f.fppf = f.n_frames > 0 ? static_cast<double>(f.n_fp) / static_cast<double>(f.n_frames) : 0.0;
+  f.mpf = f.n_frames > 0 ? static_cast<double>(f.n_miss) / static_cast<double>(f.n_frames) : 0.0;
+}
+
+long segmentation_errors(const std::vector<FrameCandidates>& frames, const GroundTruth& truth) {
+  long errors = 0;
+  for (const FrameCandidates& frame : frames) {
+    for (const TruthBox& person : truth.in(frame.frame)) errors += has_candidate(frame, person.box) ? 0 : 1;
+  }
+  return errors;
+}
+
+DetectionFigures detection_figures(const std::vector<FrameCandidates>& frames, const GroundTruth& truth,
+                                   double threshold, bool without_segmentation_errors) {
+  DetectionFigures f;
+  f.threshold = threshold;
+  for (const FrameCandidates& frame : frames) {
+    ++f.n_frames;
+    std::vector<cv::Rect> people;
+    for (const TruthBox& person : truth.in(frame.frame)) {
+      if (without_segmentation_errors && !has_candidate(frame, person.box)) continue;
+      people.push_back(person.box);
+    }
+    std::vector<const ScoredCandidate*> detections;
+    for (const ScoredCandidate& c : frame.candidates) {
+      if (c.score >= threshold) detections.push_back(&c);
+    }
+    std::stable_sort(detections.begin(), detections.end(),
+                     [](const ScoredCandidate* a, const ScoredCandidate* b) { return a->score > b->score; });
+    std::vector<bool> matched(people.size(), false);
+    for (const ScoredCandidate* d : detections) {
+      double best = kMinIou;
+      int best_person = -1;
+      for (std::size_t p = 0; p < people.size(); ++p) {
+        const double overlap = iou(d->box, people[p]);
+        if (!matched[p] && overlap >= best) {
+          best = overlap;
+          best_person = static_cast<int>(p);
+        }
+      }
+      if (best_person < 0) {
+        ++f.n_fp;
+      } else {
+        matched[static_cast<std::size_t>(best_person)] = true;
+        ++f.n_det;
+      }
+    }
+    f.n_people += static_cast<long>(people.size());
+    f.n_miss += static_cast<long>(std::count(matched.begin(), matched.end(), false));
+  }
+  compute_rates(f);
+  return f;
+}
+
+}  // namespace rdsf

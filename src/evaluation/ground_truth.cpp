@@ -1,0 +1,103 @@
+#include "evaluation/ground_truth.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace rdsf {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::stringstream in(line);
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+long parse_int(const std::string& text, const std::string& where, const std::string& column) {
+  if (text.empty()) fail(where, "empty " + column);
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (*end != '\0' || errno != 0 || value < -1000000 || value > 1000000) {
+    fail(where, column + " is not a whole number: '" + text + "'");
+  }
+  return value;
+}
+
+double parse_fraction(const std::string& text, const std::string& where) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value >= 0.0 && value <= 1.0)) {
+    fail(where, "visible_fraction is not a number in [0, 1]: '" + text + "'");
+  }
+  return value;
+}
+
+}  // namespace
+
+std::size_t GroundTruth::people() const {
+  std::size_t n = 0;
+  for (const auto& [frame, boxes] : frames) n += boxes.size();
+  return n;
+}
+
+const std::vector<TruthBox>& GroundTruth::in(const std::string& frame) const {
+  static const std::vector<TruthBox> none;
+  const auto it = frames.find(frame);
+  return it == frames.end() ? none : it->second;
+}
+
+GroundTruth parse_ground_truth(const std::string& text, const std::string& name) {
+  std::stringstream in(text);
+  std::string line;
+  if (!std::getline(in, line)) fail(name, "empty file (expected a header frame,person,x,y,w,h)");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const std::vector<std::string> header = split(line);
+  std::map<std::string, std::size_t> column;
+  for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
+  for (const char* required : {"frame", "person", "x", "y", "w", "h"}) {
+    if (!column.count(required)) fail(name, std::string("line 1: header has no '") + required + "' column");
+  }
+  GroundTruth truth;
+  int line_number = 1;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::string where = name + ": line " + std::to_string(line_number);
+    const std::vector<std::string> fields = split(line);
+    if (fields.size() != header.size()) {
+      fail(where, std::to_string(fields.size()) + " fields, the header has " + std::to_string(header.size()));
+    }
+    TruthBox box;
+    const std::string& frame = fields[column["frame"]];
+    if (frame.empty()) fail(where, "empty frame name");
+    box.person = static_cast<int>(parse_int(fields[column["person"]], where, "person"));
+    box.box = cv::Rect(static_cast<int>(parse_int(fields[column["x"]], where, "x")),
+                       static_cast<int>(parse_int(fields[column["y"]], where, "y")),
+                       static_cast<int>(parse_int(fields[column["w"]], where, "w")),
+                       static_cast<int>(parse_int(fields[column["h"]], where, "h")));
+    if (box.box.width <= 0 || box.box.height <= 0) fail(where, "box has no area");
+    box.track = column.count("track") ? static_cast<int>(parse_int(fields[column["track"]], where, "track"))
+                                      : box.person;
+    if (column.count("visible_fraction")) box.visible_fraction = parse_fraction(fields[column["visible_fraction"]], where);
+    truth.frames[frame].push_back(box);
+  }
+  return truth;
+}
+
+GroundTruth read_ground_truth(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot be opened for reading");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_ground_truth(text.str(), path);
+}
+
+}  // namespace rdsf

@@ -1,0 +1,32 @@
+#pragma once
+// Ground truth boxes from a boxes.csv: a header line naming the columns, then one person per line.
+// Required columns: frame, person, x, y, w, h (pixels, the tight box around the person's visible pixels).
+// Optional: visible_fraction (0..1), track (the identity across frames; defaults to person).
+// This is the layout of ../shared/realdata/people/boxes.csv and of rdsf-synth's output.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace rdsf {
+
+struct TruthBox {
+  cv::Rect box;
+  int person = 0;
+  int track = 0;
+  double visible_fraction = 1.0;
+};
+
+struct GroundTruth {
+  std::map<std::string, std::vector<TruthBox>> frames;  ///< frame name -> people in it
+  std::size_t people() const;
+  const std::vector<TruthBox>& in(const std::string& frame) const;
+};
+
+/// Reads and checks a boxes.csv; throws Error naming the file and the first bad line.
+GroundTruth read_ground_truth(const std::string& path);
+/// The same from text (for tests and fuzzing); `name` is used in messages.
+GroundTruth parse_ground_truth(const std::string& text, const std::string& name);
+
+}  // namespace rdsf

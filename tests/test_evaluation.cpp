@@ -1,0 +1,139 @@
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/error.hpp"
+#include "evaluation/clear_mot.hpp"
+#include "evaluation/curve_plot.hpp"
+#include "evaluation/detection_metrics.hpp"
+#include "evaluation/ground_truth.hpp"
+
+using namespace rdsf;
+
+TEST(GroundTruth, ParsesRealAndSyntheticLayouts) {
+  const GroundTruth real = parse_ground_truth("frame,person,x,y,w,h\na,1,10,20,30,40\na,2,1,2,3,4\nb,1,5,5,5,5\n", "t");
+  EXPECT_EQ(real.people(), 3u);
+  EXPECT_EQ(real.in("a")[1].box, cv::Rect(1, 2, 3, 4));
+  EXPECT_EQ(real.in("a")[1].track, 2);  // track defaults to person
+  EXPECT_TRUE(real.in("zzz").empty());
+  const GroundTruth synth =
+      parse_ground_truth("frame,person,x,y,w,h,visible_fraction,track\r\n000001,1,1,2,3,4,0.75,9\r\n", "s");
+  EXPECT_EQ(synth.in("000001")[0].track, 9);
+  EXPECT_DOUBLE_EQ(synth.in("000001")[0].visible_fraction, 0.75);
+}
+
+TEST(GroundTruth, BadLinesAreNamed) {
+  auto message = [](const std::string& text) {
+    try {
+      parse_ground_truth(text, "boxes.csv");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(""), "boxes.csv: empty file (expected a header frame,person,x,y,w,h)");
+  EXPECT_EQ(message("frame,x,y,w,h\n"), "boxes.csv: line 1: header has no 'person' column");
+  EXPECT_EQ(message("frame,person,x,y,w,h\na,1,2,3,4,5\na,1,2,3\n"), "boxes.csv: line 3: 4 fields, the header has 6");
+  EXPECT_EQ(message("frame,person,x,y,w,h\na,1,2,x3,4,5\n"), "boxes.csv: line 2: y is not a whole number: 'x3'");
+  EXPECT_EQ(message("frame,person,x,y,w,h\na,1,2,3,0,5\n"), "boxes.csv: line 2: box has no area");
+  EXPECT_EQ(message("frame,person,x,y,w,h,visible_fraction\na,1,2,3,4,5,1.5\n"),
+            "boxes.csv: line 2: visible_fraction is not a number in [0, 1]: '1.5'");
+}
+
+TEST(DetectionMetrics, ThesisFarDefinition) {
+  DetectionFigures f;
+  f.n_frames = 608;
+  f.n_fp = 33;
+  f.n_people = 600;
+  f.n_det = 540;
+  f.n_miss = 60;
+  compute_rates(f);
+  EXPECT_NEAR(f.far, 0.051482, 5e-7);  // the thesis's tree2 row at threshold 0
+  EXPECT_NEAR(f.trr, 1 - 0.051482, 5e-7);
+  EXPECT_NEAR(f.tar, 0.9, 1e-12);
+  EXPECT_NEAR(f.frr, 0.1, 1e-12);
+  EXPECT_NEAR(f.fppf, 33.0 / 608.0, 1e-12);
+  EXPECT_NEAR(f.mpf, 60.0 / 608.0, 1e-12);
+}
+
+TEST(DetectionMetrics, HandWorkedFrames) {
+  const GroundTruth truth = parse_ground_truth(
+      "frame,person,x,y,w,h\n"
+      "f1,1,0,0,100,200\n"
+      "f1,2,300,0,100,200\n"
+      "f2,1,0,0,100,200\n",
+      "t");
+  // f1: a good detection of person 1 (score 5), a duplicate of person 1 (score 3), a detection far from
+  // everyone (score 1); person 2 has no candidate at all (segmentation error).
+  // f2: person 1 found with score -2. f3: no people, one candidate with score 0.
+  const std::vector<FrameCandidates> frames = {
+      {"f1", {{cv::Rect(0, 0, 100, 200), 5}, {cv::Rect(10, 0, 100, 200), 3}, {cv::Rect(500, 0, 50, 50), 1}}},
+      {"f2", {{cv::Rect(0, 10, 100, 200), -2}}},
+      {"f3", {{cv::Rect(0, 0, 10, 10), 0}}}};
+  const DetectionFigures at0 = detection_figures(frames, truth, 0);
+  EXPECT_EQ(at0.n_frames, 3);
+  EXPECT_EQ(at0.n_people, 3);
+  EXPECT_EQ(at0.n_det, 1);   // person 1 in f1
+  EXPECT_EQ(at0.n_fp, 3);    // the duplicate, the stray one, f3's
+  EXPECT_EQ(at0.n_miss, 2);  // person 2 in f1, person 1 in f2 (score below 0)
+  EXPECT_NEAR(at0.far, 3.0 / 6.0, 1e-12);
+  const DetectionFigures low = detection_figures(frames, truth, -5);
+  EXPECT_EQ(low.n_det, 2);
+  EXPECT_EQ(low.n_miss, 1);
+  EXPECT_EQ(segmentation_errors(frames, truth), 1);
+  const DetectionFigures clean = detection_figures(frames, truth, -5, true);
+  EXPECT_EQ(clean.n_people, 2);
+  EXPECT_EQ(clean.n_miss, 0);
+  EXPECT_DOUBLE_EQ(clean.tar, 1.0);
+  EXPECT_EQ(thesis_thresholds().size(), 12u);
+}
+
+TEST(ClearMot, HandWorkedSequence) {
+  // Two people over four frames. Truth tracks 1 and 2; the tracker's ids 7, 8, then a swap, a miss and a
+  // false positive. Worked by hand:
+  //  frame 1: t1-h7 (IoU 1), t2-h8 (IoU 1)                 -> 2 matches
+  //  frame 2: t1-h7 (IoU 0.8), t2-h8 (IoU 1)                -> 2 matches
+  //  frame 3: t1-h8 (IoU 1), t2 missed, h9 false positive   -> 1 match, 1 mismatch (t1 was h7), 1 miss, 1 fp
+  //  frame 4: t1-h8 (IoU 1), t2-h7 (IoU 1)                  -> 2 matches, 1 mismatch (t2 was h8)
+  // matches 7, misses 1, false positives 1, mismatches 2, truth 8; IoU sum 6.8 (0.8 = 80/100 overlap)
+  const cv::Rect a(0, 0, 100, 100), b(300, 0, 100, 100);
+  const cv::Rect a_shift(0, 0, 80, 100);  // IoU with a: 8000 / 10000 = 0.8
+  ClearMot mot;
+  mot.add_frame({{a, 1}, {b, 2}}, {{a, 7}, {b, 8}});
+  mot.add_frame({{a, 1}, {b, 2}}, {{a_shift, 7}, {b, 8}});
+  mot.add_frame({{a, 1}, {b, 2}}, {{a, 8}, {cv::Rect(600, 0, 50, 50), 9}});
+  mot.add_frame({{a, 1}, {b, 2}}, {{a, 8}, {b, 7}});
+  const MotFigures& f = mot.figures();
+  EXPECT_EQ(f.truth, 8);
+  EXPECT_EQ(f.matches, 7);
+  EXPECT_EQ(f.misses, 1);
+  EXPECT_EQ(f.false_positives, 1);
+  EXPECT_EQ(f.mismatches, 2);
+  EXPECT_NEAR(f.motp(), 100.0 * 6.8 / 7.0, 1e-9);
+  EXPECT_NEAR(f.mota(), 1.0 - 4.0 / 8.0, 1e-12);
+}
+
+TEST(ClearMot, KeepsCorrespondenceWhileItHolds) {
+  // A hypothesis that overlaps two truths: the previous frame's correspondence is kept, so no mismatch.
+  ClearMot mot;
+  mot.add_frame({{cv::Rect(0, 0, 100, 100), 1}}, {{cv::Rect(0, 0, 100, 100), 5}});
+  mot.add_frame({{cv::Rect(0, 0, 100, 100), 1}},
+                {{cv::Rect(30, 0, 100, 100), 5}, {cv::Rect(0, 0, 100, 100), 6}});  // 5 still at IoU 0.54
+  EXPECT_EQ(mot.figures().mismatches, 0);
+  EXPECT_EQ(mot.figures().false_positives, 1);
+}
+
+TEST(CurvePlot, DrawsAxesCurvesAndLegend) {
+  PlotAxes axes;
+  axes.title = "ROC";
+  axes.x_label = "FAR";
+  axes.y_label = "TAR";
+  const cv::Mat3b empty = draw_plot(axes, {});
+  const cv::Mat3b plot = draw_plot(axes, {{"tree", {{0, 0}, {0.1, 0.8}, {1, 1}}, cv::Point2d(0.1, 0.8), "T=0"}});
+  ASSERT_EQ(plot.size(), cv::Size(900, 650));
+  EXPECT_GT(cv::norm(plot, empty, cv::NORM_L1), 0.0);  // the curve changed pixels
+  axes.log_x = axes.log_y = true;
+  axes.x_min = axes.y_min = 1e-3;
+  const cv::Mat3b log_plot = draw_plot(axes, {{"tree", {{0.0, 0.5}, {0.01, 0.1}, {1, 0.01}}, {}, ""}});
+  EXPECT_EQ(log_plot.size(), cv::Size(900, 650));
+}
