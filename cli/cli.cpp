@@ -1,6 +1,8 @@
 #include "cli/cli.hpp"
 
+#include <cmath>
 #include <fstream>
+#include <sstream>
 #include <iostream>
 
 #include <opencv2/core.hpp>
@@ -77,6 +79,50 @@ po::options_description detector_options(DetectorParams& p) {
   po::options_description all;
   all.add(segmentation).add(candidates);
   return all;
+}
+
+po::options_description tracking_options(TrackingParams& t) {
+  po::options_description o("Tracking");
+  o.add_options()
+      ("threshold_lkh", po::value(&t.threshold_lkh)->default_value(t.threshold_lkh),
+       "a detection matches a person when lkh = Bhattacharyya distance + d_cm/98 - 1/49 <= this")
+      ("max_missed_frames", po::value(&t.max_missed_frames)->default_value(t.max_missed_frames),
+       "a person unmatched for more frames is not matched again (0: never forgotten)")
+      ("histogram_bins", po::value(&t.histogram_bins)->default_value(t.histogram_bins),
+       "colour histogram bins per channel");
+  return o;
+}
+
+std::vector<double> parse_thresholds(const std::string& text) {
+  if (text.empty()) return {40, 20, 10, 0, -5, -10, -15, -20, -25, -30, -40, -60};
+  std::vector<double> values;
+  auto number = [&](const std::string& part) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || !std::isfinite(v)) {
+      throw UsageError("--thresholds: '" + part + "' is not a number (give 40,20,0 or from:to:step)");
+    }
+    return v;
+  };
+  if (text.find(':') != std::string::npos) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
+    if (parts.size() != 3) throw UsageError("--thresholds: a range is from:to:step, got '" + text + "'");
+    const double from = number(parts[0]), to = number(parts[1]), step = std::abs(number(parts[2]));
+    if (step <= 0 || std::abs(to - from) / step > 10000) throw UsageError("--thresholds: bad step in '" + text + "'");
+    const double direction = to >= from ? 1.0 : -1.0;
+    for (double v = from; direction * (to - v) >= -1e-9; v += direction * step) values.push_back(v);
+    return values;
+  }
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ',');) values.push_back(number(part));
+  return values;
 }
 
 po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration) {

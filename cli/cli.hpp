@@ -8,6 +8,7 @@
 #include <boost/program_options.hpp>
 
 #include "detector/detector_core.hpp"
+#include "tracking/tracker.hpp"
 #include "frame/camera_model.hpp"
 
 namespace rdsf::cli {
@@ -33,6 +34,12 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
 
 /// Options of the detector core (segmentation, candidates), bound to `params`, with the thesis's names.
 po::options_description detector_options(DetectorParams& params);
+
+/// Options of the tracker (thesis names), bound to `params`.
+po::options_description tracking_options(TrackingParams& params);
+
+/// Parses a threshold list: "40,20,10,0" or "from:to:step" (e.g. "-60:40:5"); empty = the thesis's sweep.
+std::vector<double> parse_thresholds(const std::string& text);
 
 /// Options of the camera model (Kinect v1 defaults, or the thesis's empirical calibration).
 po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration);

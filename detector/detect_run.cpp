@@ -1,5 +1,6 @@
 #include "detector/detect_run.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -11,42 +12,101 @@
 #include "core/error.hpp"
 #include "detector/detection_csv.hpp"
 #include "detector/overlay.hpp"
+#include "evaluation/ground_truth.hpp"
+#include "evaluation/threshold_sweep.hpp"
 #include "frame/depth_png.hpp"
 #include "frame/frame_source.hpp"
 #include "gui/display.hpp"
+#include "pipeline/people_overlay.hpp"
 
 namespace rdsf {
+namespace {
+
+void print_times(const PipelineTimes& t, std::int64_t frames, std::int64_t candidates, double wall_s) {
+  const double n = static_cast<double>(std::max<std::int64_t>(1, frames));
+  std::fprintf(stderr,
+               "rdsf-detect: %lld frames, %.2f candidates per frame, %.1f frames/s overall\n"
+               "  per frame: segmentation %.2f ms, candidates %.2f ms, features %.2f ms, classifier %.3f ms, "
+               "tracking %.3f ms (system %.2f ms)\n",
+               static_cast<long long>(frames), static_cast<double>(candidates) / n,
+               wall_s > 0 ? static_cast<double>(frames) / wall_s : 0.0, t.segmentation_ms / n, t.candidates_ms / n,
+               t.features_ms / n, t.classifier_ms / n, t.tracking_ms / n, t.total_ms() / n);
+}
+
+std::string model_label(const BoostedModel& model) {
+  return model.name().empty() ? model.path() : model.name() + " v" + std::to_string(model.version());
+}
+
+}  // namespace
 
 int run_detect(const DetectOptions& o) {
-  if (o.out_csv.empty() && o.save_dir.empty() && !o.show) {
-    throw Error("nothing to do: give --out FILE.csv, --save-dir DIR or --show");
+  const bool evaluate = !o.truth_csv.empty();
+  if (evaluate && o.report_dir.empty()) throw Error("--truth needs --report-dir DIR for the evaluation report");
+  if (!o.report_dir.empty() && !evaluate) throw Error("--report-dir needs --truth boxes.csv");
+  if (evaluate && o.models.empty()) throw Error("--truth needs at least one --model to evaluate");
+  if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate) {
+    throw Error("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
+  }
+  if (!o.report_dir.empty() && !o.force && std::filesystem::exists(std::filesystem::path(o.report_dir) / "metrics.csv")) {
+    throw Error(o.report_dir + ": already holds a report (pass --force to replace it)");
   }
   if (o.show) gui::require_display("rdsf-detect --show", "drop --show or use --save-dir to get pictures");
-  const DetectorCore core(o.detector);
+
+  std::vector<BoostedModel> models;
+  for (const std::string& m : o.models) models.push_back(BoostedModel::load(m, o.models_dir));
+  GroundTruth truth;
+  if (evaluate) truth = read_ground_truth(o.truth_csv);
+
+  PeoplePipeline pipeline(o.pipeline, models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.camera);
   std::unique_ptr<DetectionCsv> csv;
-  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force);
+  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty());
   if (!o.save_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(o.save_dir, ec);
     if (ec) fail(o.save_dir, "cannot create folder: " + ec.message());
   }
-  std::cerr << "rdsf-detect: " << source->description() << "\n";
+  std::cerr << "rdsf-detect: " << source->description();
+  for (const BoostedModel& m : models) std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
+  std::cerr << "\n";
 
+  std::vector<std::vector<EvaluatedFrame>> evaluated(models.size());
   cli::Progress progress(std::cerr, "frames", source->frame_count());
   DepthFrame frame;
-  std::int64_t frames = 0, candidates = 0;
-  StageTimes total;
+  std::int64_t frames = 0, candidates = 0, detections = 0;
+  PipelineTimes total;
+  const auto start = std::chrono::steady_clock::now();
   while (source->next(frame)) {
-    const FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);
-    total.segmentation_ms += analysis.times.segmentation_ms;
-    total.candidates_ms += analysis.times.candidates_ms;
-    if (csv) csv->write_frame(frame.name, analysis.candidates);
+    const PipelineFrame processed = pipeline.process(frame);
+    total += processed.times;
+    const auto& found = processed.analysis.candidates;
+    std::vector<CandidateOutcome> outcomes;
+    for (std::size_t i = 0; i < processed.scores.size(); ++i) {
+      const TrackedPerson* person = pipeline.tracker().person(processed.person[i]);
+      outcomes.push_back({processed.scores[i], processed.person[i], person != nullptr ? person->distance_cm : 0.0});
+      detections += processed.person[i] != 0 ? 1 : 0;
+    }
+    if (csv) csv->write_frame(frame.name, found, outcomes);
+    if (evaluate) {
+      std::vector<EvaluatedCandidate> base;
+      for (std::size_t i = 0; i < found.size(); ++i) {
+        base.push_back({found[i].strict_box, found[i].layer_depth_mm, 0.0,
+                        ColourHistogram::of(found[i].colour_crop, found[i].depth_crop,
+                                            o.pipeline.tracking.histogram_bins)});
+      }
+      for (std::size_t m = 0; m < models.size(); ++m) {
+        const std::vector<double> scores = m == 0 ? processed.scores : models[m].score(processed.analysis.features);
+        EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
+        for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
+        evaluated[m].push_back(std::move(e));
+      }
+    }
     if (!o.save_dir.empty() || o.show) {
-      const cv::Mat3b picture = render_candidates(frame, analysis.segmentation, analysis.candidates);
+      const cv::Mat3b picture = models.empty()
+                                    ? render_candidates(frame, processed.analysis.segmentation, found)
+                                    : render_people(frame, processed, pipeline.tracker());
       if (!o.save_dir.empty()) {
-        write_png_atomically((std::filesystem::path(o.save_dir) / (frame.name + ".candidates.png")).string(),
-                             picture);
+        write_png_atomically((std::filesystem::path(o.save_dir) / (frame.name + ".detections.png")).string(), picture);
       }
       if (o.show) {
         cv::imshow("rdsf-detect", picture);
@@ -55,21 +115,28 @@ int run_detect(const DetectOptions& o) {
       }
     }
     ++frames;
-    candidates += static_cast<std::int64_t>(analysis.candidates.size());
-    progress.update(frames, "candidates " + std::to_string(candidates));
+    candidates += static_cast<std::int64_t>(found.size());
+    progress.update(frames, "candidates " + std::to_string(candidates) +
+                                (models.empty() ? "" : ", detections " + std::to_string(detections)));
   }
-  progress.finish(frames, "candidates " + std::to_string(candidates));
+  progress.finish(frames, "candidates " + std::to_string(candidates) +
+                              (models.empty() ? "" : ", detections " + std::to_string(detections)));
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (csv) csv->commit();
-  if (frames > 0) {
-    std::fprintf(stderr,
-                 "rdsf-detect: %lld frames, %.2f candidates per frame; per frame: segmentation %.2f ms, "
-                 "candidates %.2f ms\n",
-                 static_cast<long long>(frames), static_cast<double>(candidates) / static_cast<double>(frames),
-                 total.segmentation_ms / static_cast<double>(frames),
-                 total.candidates_ms / static_cast<double>(frames));
-  }
+  print_times(total, frames, candidates, wall_s);
+  if (!models.empty()) std::cerr << "rdsf-detect: " << pipeline.tracker().people().size() << " people tracked\n";
   if (!o.out_csv.empty()) std::cerr << "rdsf-detect: wrote " << o.out_csv << "\n";
   if (!o.save_dir.empty()) std::cerr << "rdsf-detect: pictures in " << o.save_dir << "\n";
+
+  if (evaluate) {
+    std::vector<SweepResult> results;
+    for (std::size_t m = 0; m < models.size(); ++m) {
+      results.push_back(sweep_thresholds(evaluated[m], truth, o.thresholds, o.pipeline.tracking, model_label(models[m])));
+      results.back().fps = wall_s > 0 ? static_cast<double>(frames) / wall_s : 0.0;
+    }
+    std::cout << write_evaluation_report(results, o.report_dir, o.pipeline.threshold_classifier);
+    std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, summary.txt, roc.png, det.png)\n";
+  }
   return 0;
 }
 

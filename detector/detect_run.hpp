@@ -1,20 +1,27 @@
 #pragma once
-// rdsf-detect's work: run the detector core over a frame source, write the CSV, save or show pictures.
+// rdsf-detect's work: run the whole system over a frame source, write the CSV, save or show pictures, and
+// with --truth evaluate one or more models over a threshold sweep.
 #include <string>
+#include <vector>
 
-#include "detector/detector_core.hpp"
 #include "frame/camera_model.hpp"
+#include "pipeline/people_pipeline.hpp"
 
 namespace rdsf {
 
 struct DetectOptions {
   std::string source;
-  std::string out_csv;   ///< empty: no CSV
-  std::string save_dir;  ///< empty: no pictures
+  std::vector<std::string> models;  ///< files or names; the first drives CSV, pictures and tracking output
+  std::string models_dir = "models";
+  std::string out_csv;     ///< empty: no CSV
+  std::string save_dir;    ///< empty: no pictures
   bool show = false;
-  bool force = false;    ///< replace an existing CSV
+  bool force = false;      ///< replace an existing CSV or report
+  std::string truth_csv;   ///< boxes.csv: evaluate
+  std::string report_dir;  ///< where the evaluation goes
+  std::vector<double> thresholds;  ///< the sweep
   CameraModel camera;
-  DetectorParams detector;
+  PipelineParams pipeline;
 };
 
 /// Returns the process exit code.

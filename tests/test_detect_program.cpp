@@ -56,7 +56,7 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "frame,candidate,x,y,w,h,depth_mm,score");
   EXPECT_NE(csv.find("scene,0,230,100,180,360,2000,\n"), std::string::npos) << csv;
   EXPECT_EQ(count_lines(csv), 1 + 3);  // header, the person, two wall pieces
-  const cv::Mat picture = cv::imread(dir / "pics/scene.candidates.png");
+  const cv::Mat picture = cv::imread(dir / "pics/scene.detections.png");
   ASSERT_FALSE(picture.empty());
   EXPECT_EQ(picture.size(), cv::Size(640, 480));
   EXPECT_FALSE(std::filesystem::exists(dir / "out.csv.partial"));

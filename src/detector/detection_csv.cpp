@@ -1,22 +1,53 @@
 #include "detector/detection_csv.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace rdsf {
 
-DetectionCsv::DetectionCsv(const std::string& path, bool overwrite) : file_(path, overwrite) {
-  file_.stream() << header() << "\n";
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+std::string DetectionCsv::header(bool with_model) {
+  return with_model ? "frame,candidate,x,y,w,h,depth_mm,score,person,distance_cm"
+                    : "frame,candidate,x,y,w,h,depth_mm,score";
+}
+
+DetectionCsv::DetectionCsv(const std::string& path, bool overwrite, bool with_model)
+    : file_(path, overwrite), with_model_(with_model) {
+  file_.stream() << header(with_model) << "\n";
   file_.flush();
 }
 
 void DetectionCsv::write_frame(const std::string& frame, const std::vector<Candidate>& candidates,
-                               const std::vector<double>& scores) {
+                               const std::vector<CandidateOutcome>& outcomes) {
   auto& out = file_.stream();
+  const std::string name = csv_field(frame);
+  char number[32];
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const cv::Rect& b = candidates[i].strict_box;
-    out << frame << ',' << i << ',' << b.x << ',' << b.y << ',' << b.width << ',' << b.height << ','
+    out << name << ',' << i << ',' << b.x << ',' << b.y << ',' << b.width << ',' << b.height << ','
         << std::lround(candidates[i].layer_depth_mm) << ',';
-    if (i < scores.size()) out << scores[i];
+    if (i < outcomes.size()) {
+      std::snprintf(number, sizeof number, "%.4f", outcomes[i].score);
+      out << number;
+    }
+    if (with_model_) {
+      out << ',';
+      if (i < outcomes.size() && outcomes[i].person != 0) {
+        std::snprintf(number, sizeof number, "%.1f", outcomes[i].distance_cm);
+        out << outcomes[i].person << ',' << number;
+      } else {
+        out << ',';
+      }
+    }
     out << '\n';
   }
   file_.flush();

@@ -1,7 +1,10 @@
 #pragma once
-// The detector's CSV output: frame,candidate,x,y,w,h,depth_mm,score (strict box in pixels; score empty
-// without a model). Written through AtomicTextFile, flushed after every frame.
-#include <optional>
+// The detector's CSV output, one row per candidate:
+//   frame,candidate,x,y,w,h,depth_mm,score                       (no model: score empty)
+//   frame,candidate,x,y,w,h,depth_mm,score,person,distance_cm    (with a model)
+// x,y,w,h = strict box in pixels; person = tracked person id when the candidate is a detection (score >=
+// threshold), else empty; distance_cm = distance that person has covered so far. Written through
+// AtomicTextFile (FILE.partial, renamed when complete), flushed after every frame.
 #include <string>
 #include <vector>
 
@@ -10,18 +13,28 @@
 
 namespace rdsf {
 
+struct CandidateOutcome {
+  double score = 0;
+  int person = 0;          ///< 0: not a detection
+  double distance_cm = 0;  ///< of that person so far
+};
+
 class DetectionCsv {
  public:
-  DetectionCsv(const std::string& path, bool overwrite);
-  /// Writes one row per candidate of a frame and flushes. `scores` empty or one per candidate.
+  DetectionCsv(const std::string& path, bool overwrite, bool with_model);
+  /// Writes one row per candidate and flushes. `outcomes` is empty without a model, else one per candidate.
   void write_frame(const std::string& frame, const std::vector<Candidate>& candidates,
-                   const std::vector<double>& scores = {});
+                   const std::vector<CandidateOutcome>& outcomes = {});
   void commit() { file_.commit(); }
 
-  static const char* header() { return "frame,candidate,x,y,w,h,depth_mm,score"; }
+  static std::string header(bool with_model);
 
  private:
   AtomicTextFile file_;
+  bool with_model_;
 };
+
+/// A CSV field: quoted (with doubled quotes) when it holds a comma, quote or line break.
+std::string csv_field(const std::string& text);
 
 }  // namespace rdsf

@@ -1,0 +1,64 @@
+#include "pipeline/people_pipeline.hpp"
+
+#include <chrono>
+
+#include "core/error.hpp"
+
+namespace rdsf {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+PipelineTimes& PipelineTimes::operator+=(const PipelineTimes& o) {
+  segmentation_ms += o.segmentation_ms;
+  candidates_ms += o.candidates_ms;
+  features_ms += o.features_ms;
+  classifier_ms += o.classifier_ms;
+  tracking_ms += o.tracking_ms;
+  return *this;
+}
+
+PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
+    : params_(params), model_(model), core_(params.detector), tracker_(params.tracking) {
+  if (model_ != nullptr && model_->feature_spec() != params_.detector.features) {
+    throw Error(model_->path() + ": model feature spec " + model_->feature_spec().hash() +
+                " differs from the detector's " + params_.detector.features.hash());
+  }
+}
+
+PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
+  PipelineFrame out;
+  out.analysis = core_.analyse(frame, model_ != nullptr);
+  out.times.segmentation_ms = out.analysis.times.segmentation_ms;
+  out.times.candidates_ms = out.analysis.times.candidates_ms;
+  out.times.features_ms = out.analysis.times.features_ms;
+  const std::size_t n = out.analysis.candidates.size();
+  out.person.assign(n, 0);
+  if (model_ == nullptr) return out;
+
+  auto start = std::chrono::steady_clock::now();
+  out.scores = model_->score(out.analysis.features);
+  out.times.classifier_ms = ms_since(start);
+
+  start = std::chrono::steady_clock::now();
+  std::vector<TrackInput> detections;
+  std::vector<std::size_t> which;
+  out.histograms.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (out.scores[i] < params_.threshold_classifier) continue;
+    const Candidate& c = out.analysis.candidates[i];
+    out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
+    detections.push_back({c.strict_box, c.layer_depth_mm, out.histograms[i]});
+    which.push_back(i);
+  }
+  const std::vector<int> ids = tracker_.update(detections, frame.camera, frame.index);
+  for (std::size_t k = 0; k < which.size(); ++k) out.person[which[k]] = ids[k];
+  out.times.tracking_ms = ms_since(start);
+  return out;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,61 @@
+#pragma once
+// The whole system for one frame, as the thesis ran it:
+//   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) -> person when H(x) >= threshold
+//         -> tracking (colour histogram + centroid, lkh matching)
+// with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "classifier/boosted_model.hpp"
+#include "detector/detector_core.hpp"
+#include "frame/depth_frame.hpp"
+#include "tracking/tracker.hpp"
+
+namespace rdsf {
+
+struct PipelineParams {
+  DetectorParams detector;
+  TrackingParams tracking;
+  /// A candidate is a person when H(x) >= threshold_classifier.
+  double threshold_classifier = 0.0;
+};
+
+/// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
+struct PipelineTimes {
+  double segmentation_ms = 0;
+  double candidates_ms = 0;     ///< candidate initialisation and filtering (column scan, boxes, crops)
+  double features_ms = 0;       ///< RDSF of every candidate
+  double classifier_ms = 0;
+  double tracking_ms = 0;       ///< colour histograms and matching
+  double total_ms() const { return segmentation_ms + candidates_ms + features_ms + classifier_ms + tracking_ms; }
+  PipelineTimes& operator+=(const PipelineTimes& o);
+};
+
+struct PipelineFrame {
+  FrameAnalysis analysis;                 ///< layers, candidates, features
+  std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
+  std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
+  std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
+  PipelineTimes times;
+};
+
+class PeoplePipeline {
+ public:
+  /// `model` may be null (candidates only); it must outlive the pipeline. Throws Error when the model's
+  /// feature spec differs from the detector's.
+  PeoplePipeline(PipelineParams params, const BoostedModel* model);
+
+  PipelineFrame process(const DepthFrame& frame);
+
+  const Tracker& tracker() const { return tracker_; }
+  const PipelineParams& params() const { return params_; }
+
+ private:
+  PipelineParams params_;
+  const BoostedModel* model_;
+  DetectorCore core_;
+  Tracker tracker_;
+};
+
+}  // namespace rdsf
