@@ -1,0 +1,311 @@
+// Training speed at hugeTree size: the native Real AdaBoost trainer against OpenCV's cv::ml::Boost (REAL,
+// stumps) on the same feature matrix, in one run on the same machine.
+//
+// Data: real RDSF vectors (RdsfExtractor) of generated 64x128 masked depth crops. Positives are a
+// person-like silhouette (head, torso, swinging arms, legs) at a random depth, scale and offset, with
+// noise, missing readings, partial occlusion and clutter from the same layer; negatives are clutter
+// (boxes, poles, chair- and table-like shapes, wall pieces, blobs), some of it person-sized. 28,082
+// training rows (5,628 positives, 22,454 negatives, as the thesis's hugeTree) plus a separate validation
+// set of 20 % of that size.
+//
+// OpenCV trains all its rounds in one call without progress, so it is timed at two round counts (1 and 3
+// by default) and its cost per round is the difference divided by the extra rounds (its fixed set-up cost
+// cancels out); the time for N rounds is extrapolated linearly from that. Validation AUCs are compared at
+// the rounds OpenCV ran, and the native AUC after all its rounds is reported too.
+//
+// Options (before Google Benchmark's own): --positives=N --negatives=N --native-rounds=N
+// --opencv-rounds=A,B (0,0 skips OpenCV) --threads=N.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include <opencv2/imgproc.hpp>
+
+#include "classifier/binned_matrix.hpp"
+#include "classifier/boost_training.hpp"
+#include "classifier/opencv_boost.hpp"
+#include "classifier/real_adaboost.hpp"
+#include "classifier/roc_metrics.hpp"
+#include "features/rdsf_extractor.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Config {
+  int positives = 5628, negatives = 22454;
+  int native_rounds = 100;
+  int opencv_a = 1, opencv_b = 3;
+  int threads = 0;
+} config;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double peak_rss_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return 0.0;
+}
+
+// ---- crop generation ----
+
+void noisy_fill(cv::Mat1w& crop, const cv::Mat1b& mask, double depth_mm, double slope_x, std::mt19937_64& rng) {
+  std::normal_distribution<double> noise(0.0, 25.0);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int y = 0; y < crop.rows; ++y) {
+    for (int x = 0; x < crop.cols; ++x) {
+      if (!mask(y, x)) continue;
+      if (u(rng) < 0.04) continue;  // missing reading
+      const double d = depth_mm + slope_x * (x - 32) + noise(rng);
+      crop(y, x) = static_cast<std::uint16_t>(std::clamp(d, 400.0, 9000.0));
+    }
+  }
+}
+
+void add_clutter(cv::Mat1b& mask, std::mt19937_64& rng, int pieces) {
+  std::uniform_int_distribution<int> x(0, 63), y(0, 127), w(3, 20), h(3, 40);
+  for (int i = 0; i < pieces; ++i) {
+    cv::rectangle(mask, cv::Rect(x(rng), y(rng), w(rng), h(rng)), 255, cv::FILLED);
+  }
+}
+
+cv::Mat1w person_crop(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  cv::Mat1b mask(128, 64, std::uint8_t{0});
+  const double s = 0.8 + 0.3 * u(rng);
+  const double cx = 32 + (u(rng) - 0.5) * 10, top = 4 + u(rng) * 10;
+  auto P = [&](double dx, double dy) { return cv::Point(static_cast<int>(cx + dx * s), static_cast<int>(top + dy * s)); };
+  cv::ellipse(mask, P(0, 9), cv::Size(static_cast<int>(7 * s), static_cast<int>(9 * s)), 0, 0, 360, 255, cv::FILLED);
+  const double torso_w = 10 + 4 * u(rng);
+  cv::rectangle(mask, P(-torso_w, 19), P(torso_w, 62), 255, cv::FILLED);
+  const double swing_l = (u(rng) - 0.5) * 14, swing_r = (u(rng) - 0.5) * 14;
+  cv::line(mask, P(-torso_w - 2, 22), P(-torso_w - 4 + swing_l, 64), 255, static_cast<int>(5 * s));
+  cv::line(mask, P(torso_w + 2, 22), P(torso_w + 4 + swing_r, 64), 255, static_cast<int>(5 * s));
+  const double stride = (u(rng) - 0.5) * 22;
+  cv::line(mask, P(-5, 62), P(-5 - stride, 112), 255, static_cast<int>(8 * s));
+  cv::line(mask, P(5, 62), P(5 + stride, 112), 255, static_cast<int>(8 * s));
+  if (u(rng) < 0.3) {  // occluded from below or the side (a table, a chair)
+    const int y0 = 60 + static_cast<int>(u(rng) * 50);
+    cv::rectangle(mask, cv::Rect(0, y0, 64, 128 - y0), 0, cv::FILLED);
+  }
+  if (u(rng) < 0.5) add_clutter(mask, rng, 1 + static_cast<int>(u(rng) * 3));
+  if (u(rng) < 0.15) add_clutter(mask, rng, 4 + static_cast<int>(u(rng) * 4));  // crowded
+  cv::Mat1w crop(128, 64, std::uint16_t{0});
+  noisy_fill(crop, mask, 1200 + u(rng) * 5000, (u(rng) - 0.5) * 6, rng);
+  return crop;
+}
+
+cv::Mat1w clutter_crop(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  cv::Mat1b mask(128, 64, std::uint8_t{0});
+  const int kind = static_cast<int>(u(rng) * 7);
+  if (kind == 0) {  // pole or door frame: a tall narrow shape, sometimes with a round top (a lamp, a coat stand)
+    const int w = 6 + static_cast<int>(u(rng) * 18), x = static_cast<int>(u(rng) * (64 - w));
+    cv::rectangle(mask, cv::Rect(x, static_cast<int>(u(rng) * 20), w, 128), 255, cv::FILLED);
+    if (u(rng) < 0.5) cv::circle(mask, cv::Point(x + w / 2, 12), 8, 255, cv::FILLED);
+  } else if (kind == 1) {  // chair: seat, back, legs
+    const int seat = 60 + static_cast<int>(u(rng) * 30);
+    cv::rectangle(mask, cv::Rect(8, seat, 48, 8), 255, cv::FILLED);
+    cv::rectangle(mask, cv::Rect(8, seat - 40, 8, 40), 255, cv::FILLED);
+    cv::rectangle(mask, cv::Rect(8, seat, 5, 128 - seat), 255, cv::FILLED);
+    cv::rectangle(mask, cv::Rect(50, seat, 5, 128 - seat), 255, cv::FILLED);
+  } else if (kind == 2) {  // table with something on it
+    const int top = 50 + static_cast<int>(u(rng) * 40);
+    cv::rectangle(mask, cv::Rect(0, top, 64, 10), 255, cv::FILLED);
+    cv::rectangle(mask, cv::Rect(4, top, 6, 128 - top), 255, cv::FILLED);
+    cv::rectangle(mask, cv::Rect(54, top, 6, 128 - top), 255, cv::FILLED);
+    cv::ellipse(mask, cv::Point(20 + static_cast<int>(u(rng) * 24), top - 10), cv::Size(10, 10), 0, 0, 360, 255,
+                cv::FILLED);
+  } else if (kind == 3) {  // wall piece or cupboard
+    const int x0 = static_cast<int>(u(rng) * 40);
+    cv::rectangle(mask, cv::Rect(x0, 0, 64 - x0, static_cast<int>(60 + u(rng) * 68)), 255, cv::FILLED);
+  } else if (kind == 4) {  // blobs (plants, bags, coats on a hook): can look person-sized
+    for (int i = 0; i < 2 + static_cast<int>(u(rng) * 4); ++i) {
+      cv::ellipse(mask, cv::Point(static_cast<int>(u(rng) * 64), static_cast<int>(u(rng) * 128)),
+                  cv::Size(5 + static_cast<int>(u(rng) * 14), 8 + static_cast<int>(u(rng) * 30)), u(rng) * 180, 0,
+                  360, 255, cv::FILLED);
+    }
+  } else if (kind == 5) {  // random boxes
+    add_clutter(mask, rng, 2 + static_cast<int>(u(rng) * 5));
+  } else {  // person-like: a coat on a stand, a mannequin-ish column with a round top, no legs
+    const double cx = 32 + (u(rng) - 0.5) * 12, top = 4 + u(rng) * 16;
+    cv::ellipse(mask, cv::Point(static_cast<int>(cx), static_cast<int>(top + 9)), cv::Size(7, 9), 0, 0, 360, 255,
+                cv::FILLED);
+    const int half = 8 + static_cast<int>(u(rng) * 10);
+    cv::rectangle(mask, cv::Point(static_cast<int>(cx) - half, static_cast<int>(top + 19)),
+                  cv::Point(static_cast<int>(cx) + half, static_cast<int>(top + 60 + u(rng) * 60)), 255, cv::FILLED);
+  }
+  if (u(rng) < 0.5) add_clutter(mask, rng, 1 + static_cast<int>(u(rng) * 2));
+  cv::Mat1w crop(128, 64, std::uint16_t{0});
+  noisy_fill(crop, mask, 1000 + u(rng) * 5500, (u(rng) - 0.5) * 20, rng);
+  return crop;
+}
+
+struct Data {
+  cv::Mat1f train, validation;
+  std::vector<int> train_labels, validation_labels;
+  double generate_s = 0.0;
+};
+
+void make_rows(int positives, int negatives, std::uint64_t seed, cv::Mat1f& rows, std::vector<int>& labels) {
+  const rdsf::RdsfExtractor extractor;
+  rows.create(positives + negatives, extractor.dimension());
+  labels.assign(static_cast<std::size_t>(positives + negatives), 0);
+  std::mt19937_64 order_rng(seed);
+  for (int i = 0; i < positives; ++i) labels[static_cast<std::size_t>(i)] = 1;
+  std::shuffle(labels.begin(), labels.end(), order_rng);
+  cv::parallel_for_(cv::Range(0, rows.rows), [&](const cv::Range& range) {
+    for (int r = range.start; r < range.end; ++r) {
+      std::mt19937_64 rng(seed * 1000003ULL + static_cast<std::uint64_t>(r));
+      const cv::Mat1w crop = labels[static_cast<std::size_t>(r)] == 1 ? person_crop(rng) : clutter_crop(rng);
+      extractor.compute(crop, rows[r]);
+    }
+  });
+}
+
+Data& data() {
+  static Data d = [] {
+    Data out;
+    const Clock::time_point start = Clock::now();
+    make_rows(config.positives, config.negatives, 1, out.train, out.train_labels);
+    make_rows(config.positives / 5, config.negatives / 5, 2, out.validation, out.validation_labels);
+    out.generate_s = seconds_since(start);
+    std::fprintf(stderr, "bench_train: %d + %d training rows, %d validation rows of %d features generated in %.1f s\n",
+                 config.positives, config.negatives, out.validation.rows, out.train.cols, out.generate_s);
+    return out;
+  }();
+  return d;
+}
+
+// Validation AUC of the first `rounds` weak classifiers.
+double validation_auc(const std::vector<rdsf::WeakClassifier>& weak, std::size_t rounds, const rdsf::BinScheme& bins) {
+  std::vector<double> scores(data().validation_labels.size(), 0.0);
+  for (std::size_t k = 0; k < std::min(rounds, weak.size()); ++k) {
+    for (std::size_t i = 0; i < scores.size(); ++i) {
+      scores[i] += weak[k].respond(data().validation(static_cast<int>(i), weak[k].feature), bins);
+    }
+  }
+  return rdsf::roc_auc(scores, data().validation_labels);
+}
+
+struct Results {
+  double native_s_per_round = 0, native_total_s = 0, native_bin_s = 0, native_peak_mib = 0;
+  std::vector<rdsf::WeakClassifier> native_weak;
+  double opencv_a_s = 0, opencv_b_s = 0;
+  std::vector<rdsf::WeakClassifier> opencv_weak;
+  double opencv_peak_mib = 0;
+} results;
+
+void BM_NativeRealAdaBoost(benchmark::State& state) {
+  Data& d = data();
+  for (auto _ : state) {
+    const Clock::time_point start = Clock::now();
+    const std::vector<std::size_t> order = rdsf::positives_first_order(d.train_labels);
+    const rdsf::BinnedMatrix binned(d.train, rdsf::BinScheme{}, order, config.threads);
+    std::vector<int> labels;
+    for (std::size_t i : order) labels.push_back(d.train_labels[i]);
+    results.native_bin_s = seconds_since(start);
+    rdsf::RealAdaBoostParams params;
+    params.threads = config.threads;
+    rdsf::RealAdaBoost booster(binned, labels, params);
+    const Clock::time_point rounds_start = Clock::now();
+    for (int r = 0; r < config.native_rounds; ++r) booster.next_round();
+    const double rounds_s = seconds_since(rounds_start);
+    results.native_total_s = seconds_since(start);
+    results.native_s_per_round = rounds_s / config.native_rounds;
+    results.native_weak = booster.weak_classifiers();
+    state.SetIterationTime(results.native_total_s);
+  }
+  results.native_peak_mib = peak_rss_mib();
+  state.counters["rounds"] = config.native_rounds;
+  state.counters["s_per_round"] = results.native_s_per_round;
+  state.counters["binning_s"] = results.native_bin_s;
+  state.counters["val_auc"] = validation_auc(results.native_weak, results.native_weak.size(), rdsf::BinScheme{});
+  state.counters["peak_rss_MiB"] = results.native_peak_mib;
+}
+
+void BM_OpenCvBoost(benchmark::State& state) {
+  Data& d = data();
+  const int rounds = static_cast<int>(state.range(0));
+  double seconds = 0;
+  for (auto _ : state) {
+    const Clock::time_point start = Clock::now();
+    rdsf::OpenCvBoostParams params;
+    params.rounds = rounds;
+    const rdsf::OpenCvBoostResult result = rdsf::train_opencv_boost(d.train, d.train_labels, params);
+    seconds = seconds_since(start);
+    state.SetIterationTime(seconds);
+    if (rounds == config.opencv_b) results.opencv_weak = result.stumps;
+  }
+  (rounds == config.opencv_a ? results.opencv_a_s : results.opencv_b_s) = seconds;
+  results.opencv_peak_mib = peak_rss_mib();
+  state.counters["rounds"] = rounds;
+  state.counters["peak_rss_MiB"] = results.opencv_peak_mib;
+}
+
+void parse_own_flags(int& argc, char** argv) {
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](const char* name) -> const char* {
+      const std::size_t n = std::strlen(name);
+      return a.compare(0, n, name) == 0 ? a.c_str() + n : nullptr;
+    };
+    if (const char* v = value("--positives=")) config.positives = std::atoi(v);
+    else if (const char* v2 = value("--negatives=")) config.negatives = std::atoi(v2);
+    else if (const char* v3 = value("--native-rounds=")) config.native_rounds = std::atoi(v3);
+    else if (const char* v4 = value("--threads=")) config.threads = std::atoi(v4);
+    else if (const char* v5 = value("--opencv-rounds=")) std::sscanf(v5, "%d,%d", &config.opencv_a, &config.opencv_b);
+    else argv[kept++] = argv[i];
+  }
+  argc = kept;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  parse_own_flags(argc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RegisterBenchmark("native_real_adaboost", BM_NativeRealAdaBoost)
+      ->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+  const bool opencv = config.opencv_b > config.opencv_a && config.opencv_a > 0;
+  if (opencv) {
+    benchmark::RegisterBenchmark("opencv_boost_real_stumps", BM_OpenCvBoost)
+        ->Arg(config.opencv_a)->Arg(config.opencv_b)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+
+  const rdsf::BinScheme bins;
+  std::printf("\nSummary (%d x %d training rows, %d validation rows):\n", data().train.rows, data().train.cols,
+              data().validation.rows);
+  std::printf("  native: %d rounds in %.1f s (binning %.1f s + %.3f s per round), peak RSS %.0f MiB, validation AUC %.4f\n",
+              config.native_rounds, results.native_total_s, results.native_bin_s, results.native_s_per_round,
+              results.native_peak_mib, validation_auc(results.native_weak, results.native_weak.size(), bins));
+  if (opencv && results.opencv_b_s > 0) {
+    const double per_round = (results.opencv_b_s - results.opencv_a_s) / (config.opencv_b - config.opencv_a);
+    const double setup = std::max(0.0, results.opencv_a_s - per_round * config.opencv_a);
+    std::printf("  opencv: %d rounds %.1f s, %d rounds %.1f s -> %.2f s per round (difference / %d), set-up %.1f s;\n"
+                "          extrapolated %d rounds: %.0f s; peak RSS %.0f MiB\n",
+                config.opencv_a, results.opencv_a_s, config.opencv_b, results.opencv_b_s, per_round,
+                config.opencv_b - config.opencv_a, setup, config.native_rounds, setup + per_round * config.native_rounds,
+                results.opencv_peak_mib);
+    std::printf("  per round: native is %.0fx faster\n", per_round / results.native_s_per_round);
+    const std::size_t k = static_cast<std::size_t>(config.opencv_b);
+    std::printf("  validation AUC after %zu rounds: native %.4f, opencv %.4f (difference %+.4f)\n", k,
+                validation_auc(results.native_weak, k, bins), validation_auc(results.opencv_weak, k, bins),
+                validation_auc(results.native_weak, k, bins) - validation_auc(results.opencv_weak, k, bins));
+  }
+  return 0;
+}

@@ -1,0 +1,266 @@
+#include "classifier/boost_training.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "classifier/binned_matrix.hpp"
+#include "classifier/opencv_boost.hpp"
+#include "classifier/real_adaboost.hpp"
+#include "classifier/roc_metrics.hpp"
+#include "classifier/seeded_sampling.hpp"
+#include "core/error.hpp"
+
+namespace rdsf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+// Validation samples: rows of a matrix, by index.
+struct ValidationView {
+  const cv::Mat1f* rows = nullptr;
+  std::vector<std::size_t> index;
+  std::vector<int> labels;
+  bool empty() const { return labels.empty(); }
+};
+
+std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTrainingParams& p) {
+  std::vector<std::pair<std::string, std::string>> out;
+  out.emplace_back("backend", p.backend);
+  out.emplace_back("rounds", std::to_string(p.rounds));
+  if (p.backend == "native") {
+    out.emplace_back("bins", std::to_string(p.bins.count));
+    out.emplace_back("bin_min", number_text(p.bins.min_value));
+    out.emplace_back("bin_max", number_text(p.bins.max_value));
+    out.emplace_back("smoothing", p.smoothing > 0.0 ? number_text(p.smoothing) : "auto (1/N)");
+  }
+  out.emplace_back("weight_trim", number_text(p.weight_trim));
+  out.emplace_back("validation_fraction", number_text(p.validation_fraction));
+  out.emplace_back("seed", std::to_string(p.seed));
+  out.emplace_back("report_every", std::to_string(p.report_every));
+  out.emplace_back("early_stopping", std::to_string(p.early_stopping));
+  return out;
+}
+
+}  // namespace
+
+void validate_training_params(const BoostTrainingParams& p) {
+  if (p.backend != "native" && p.backend != "opencv") {
+    throw Error("backend '" + p.backend + "' is not known (native or opencv)");
+  }
+  if (p.rounds < 1) throw Error("rounds must be at least 1 (" + std::to_string(p.rounds) + " given)");
+  p.bins.validate();
+  if (!(p.weight_trim >= 0.0 && p.weight_trim < 1.0)) throw Error("weight trim must be in [0, 1)");
+  if (!(p.validation_fraction >= 0.0 && p.validation_fraction < 1.0)) {
+    throw Error("validation fraction must be in [0, 1)");
+  }
+  if (p.report_every < 1) throw Error("report-every must be at least 1");
+  if (p.early_stopping < 0) throw Error("early stopping must be 0 (off) or a number of rounds");
+}
+
+BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& labels,
+                                 const BoostTrainingParams& params, const TrainingProgressFn& progress,
+                                 const cv::Mat1f* validation_rows, const std::vector<int>* validation_labels) {
+  validate_training_params(params);
+  const Clock::time_point start = Clock::now();
+  if (rows.rows != static_cast<int>(labels.size())) {
+    throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
+  }
+  const FeatureSpec spec;
+  if (rows.cols != spec.dimension()) {
+    throw Error("training: rows of " + std::to_string(rows.cols) + " features, the feature spec has " +
+                std::to_string(spec.dimension()));
+  }
+
+  // Training and validation samples.
+  std::vector<std::size_t> train_index;
+  ValidationView validation;
+  std::string validation_source = "none";
+  if (validation_rows != nullptr && validation_labels != nullptr && !validation_labels->empty()) {
+    if (validation_rows->rows != static_cast<int>(validation_labels->size()) || validation_rows->cols != rows.cols) {
+      throw Error("training: validation rows and labels do not match");
+    }
+    for (std::size_t i = 0; i < labels.size(); ++i) train_index.push_back(i);
+    validation.rows = validation_rows;
+    validation.labels = *validation_labels;
+    for (std::size_t i = 0; i < validation.labels.size(); ++i) validation.index.push_back(i);
+    validation_source = "separate sets";
+  } else {
+    const HoldOutSplit split = stratified_split(labels, params.validation_fraction, params.seed);
+    train_index = split.train;
+    validation.rows = &rows;
+    validation.index = split.validation;
+    for (std::size_t i : split.validation) validation.labels.push_back(labels[i]);
+    if (!validation.index.empty()) {
+      validation_source = "held-out " + number_text(params.validation_fraction * 100.0) + "% per class (seed " +
+                          std::to_string(params.seed) + ")";
+    }
+  }
+  const bool validating = std::count(validation.labels.begin(), validation.labels.end(), 1) > 0 &&
+                          std::count(validation.labels.begin(), validation.labels.end(), 0) > 0;
+  if (params.early_stopping > 0 && !validating) {
+    throw Error("early stopping needs validation samples of both classes (a validation fraction or set)");
+  }
+  train_index = positives_first_order(labels, train_index);  // the native trainer's faster layout
+  std::vector<int> train_labels;
+  train_labels.reserve(train_index.size());
+  for (std::size_t i : train_index) train_labels.push_back(labels[i]);
+  const auto train_pos = static_cast<std::size_t>(std::count(train_labels.begin(), train_labels.end(), 1));
+  if (train_pos == 0 || train_pos == train_labels.size()) {
+    throw Error("training: both positive and negative training samples are needed (" + std::to_string(train_pos) +
+                " positives, " + std::to_string(train_labels.size() - train_pos) + " negatives)");
+  }
+
+  TrainingRecord record;
+  record.backend = params.backend;
+  record.parameters = parameter_record(params);
+  record.train_positives = train_pos;
+  record.train_negatives = train_labels.size() - train_pos;
+  record.validation.source = validation_source;
+  record.validation.positives =
+      static_cast<std::size_t>(std::count(validation.labels.begin(), validation.labels.end(), 1));
+  record.validation.negatives = validation.labels.size() - record.validation.positives;
+
+  std::vector<double> validation_scores(validation.labels.size(), 0.0);
+  std::vector<RoundFigures> all_rounds;
+  double best_auc = -1.0;
+  int best_round = 0;
+  std::string stopped = "all " + std::to_string(params.rounds) + " rounds";
+  BinScheme bins = params.bins;
+
+  // Called after each weak classifier; returns false to stop early.
+  auto after_round = [&](int round, const WeakClassifier& weak, double train_error, double round_s,
+                         double mean_round_s) {
+    RoundFigures figures;
+    figures.round = round;
+    figures.feature = weak.feature;
+    figures.train_error = train_error;
+    TrainingProgress report;
+    report.round = round;
+    report.rounds = params.rounds;
+    report.feature = weak.feature;
+    report.train_error = train_error;
+    if (validating) {
+      for (std::size_t k = 0; k < validation.index.size(); ++k) {
+        validation_scores[k] += weak.respond((*validation.rows)(static_cast<int>(validation.index[k]), weak.feature), bins);
+      }
+      const RocSummary s = summarise_roc(validation_scores, validation.labels);
+      figures.roc = roc_at_far_levels(roc_curve(validation_scores, validation.labels));
+      figures.validation_error = s.error_rate;
+      figures.auc = s.auc;
+      figures.tar_at_far_1 = s.tar_at_far_1;
+      figures.tar_at_far_5 = s.tar_at_far_5;
+      report.validation_error = s.error_rate;
+      report.validation_auc = s.auc;
+      if (s.auc > best_auc + 1e-9) {
+        best_auc = s.auc;
+        best_round = round;
+      }
+    }
+    all_rounds.push_back(figures);
+    report.round_s = round_s;
+    report.elapsed_s = seconds_since(start);
+    report.left_s = mean_round_s * (params.rounds - round);
+    if (progress) progress(report);
+    if (validating && params.early_stopping > 0 && round - best_round >= params.early_stopping) {
+      stopped = "early stopping at round " + std::to_string(round) + ": no better validation AUC for " +
+                std::to_string(params.early_stopping) + " rounds; kept the best, round " + std::to_string(best_round);
+      return false;
+    }
+    return true;
+  };
+
+  std::vector<WeakClassifier> weak;
+  std::string opencv_yaml;
+  std::size_t opencv_trees = 0;
+  if (params.backend == "native") {
+    const BinnedMatrix binned(rows, bins, train_index, params.threads);
+    RealAdaBoostParams rp;
+    rp.smoothing = params.smoothing;
+    rp.weight_trim = params.weight_trim;
+    rp.threads = params.threads;
+    RealAdaBoost booster(binned, train_labels, rp);
+    const Clock::time_point boost_start = Clock::now();
+    for (int round = 1; round <= params.rounds; ++round) {
+      const Clock::time_point round_start = Clock::now();
+      const RealAdaBoostRound r = booster.next_round();
+      const double round_s = seconds_since(round_start);
+      if (!after_round(round, booster.weak_classifiers().back(), r.train_error, round_s,
+                       seconds_since(boost_start) / round)) {
+        break;
+      }
+    }
+    weak = booster.weak_classifiers();
+  } else {
+    cv::Mat1f train_rows(static_cast<int>(train_index.size()), rows.cols);
+    for (std::size_t k = 0; k < train_index.size(); ++k) {
+      rows.row(static_cast<int>(train_index[k])).copyTo(train_rows.row(static_cast<int>(k)));
+    }
+    OpenCvBoostParams op;
+    op.rounds = params.rounds;
+    op.weight_trim = params.weight_trim;
+    const Clock::time_point boost_start = Clock::now();
+    OpenCvBoostResult result = train_opencv_boost(train_rows, train_labels, op);
+    const double mean_round_s = seconds_since(boost_start) / std::max<std::size_t>(1, result.stumps.size());
+    opencv_yaml = std::move(result.yaml);
+    opencv_trees = result.stumps.size();
+    // Per-round figures after the fact: OpenCV trains all rounds in one call.
+    std::vector<double> train_scores(train_labels.size(), 0.0);
+    int round = 0;
+    for (const WeakClassifier& w : result.stumps) {
+      ++round;
+      std::size_t wrong = 0;
+      for (std::size_t k = 0; k < train_scores.size(); ++k) {
+        train_scores[k] += w.respond(train_rows(static_cast<int>(k), w.feature), bins);
+        wrong += ((train_scores[k] > 0.0) != (train_labels[k] == 1)) ? 1 : 0;
+      }
+      weak.push_back(w);
+      if (!after_round(round, w, static_cast<double>(wrong) / static_cast<double>(train_scores.size()), mean_round_s,
+                       0.0)) {
+        break;
+      }
+    }
+  }
+
+  if (params.early_stopping > 0 && validating && stopped.rfind("early", 0) == 0 &&
+      static_cast<std::size_t>(best_round) < weak.size()) {
+    weak.resize(static_cast<std::size_t>(best_round));
+  }
+  if (!opencv_yaml.empty() && weak.size() != opencv_trees) {
+    opencv_yaml.clear();  // the embedded model would no longer match the kept stumps
+  }
+  record.stopped = stopped;
+
+  // Figures kept in the file: every report_every rounds and the last kept round.
+  for (const RoundFigures& f : all_rounds) {
+    if (f.round > static_cast<int>(weak.size())) break;
+    if (f.round % params.report_every == 0 || f.round == static_cast<int>(weak.size())) {
+      record.validation.rounds.push_back(f);
+    }
+  }
+
+  BoostedModel model(spec, bins, std::move(weak));
+  if (validating) {
+    std::vector<double> final_scores(validation.labels.size(), 0.0);
+    for (std::size_t k = 0; k < validation.index.size(); ++k) {
+      final_scores[k] = model.score((*validation.rows)[static_cast<int>(validation.index[k])]);
+    }
+    record.validation.summary = summarise_roc(final_scores, validation.labels);
+    record.validation.roc = roc_at_far_levels(roc_curve(final_scores, validation.labels));
+  }
+  model.training() = record;
+  model.set_opencv_model_yaml(std::move(opencv_yaml));
+  return model;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,366 @@
+#include "classifier/model_file.hpp"
+
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include <opencv2/core.hpp>
+
+#include "classifier/yaml_node_copy.hpp"
+#include "core/error.hpp"
+
+namespace rdsf {
+namespace {
+
+using cv::FileNode;
+using cv::FileStorage;
+
+void write_feature_spec(FileStorage& fs, const FeatureSpec& spec) {
+  fs.startWriteStruct("feature_spec", FileNode::MAP);
+  cv::write(fs, "canonical", spec.canonical());
+  cv::write(fs, "hash", spec.hash());
+  cv::write(fs, "window_width_px", spec.window_width_px);
+  cv::write(fs, "window_height_px", spec.window_height_px);
+  cv::write(fs, "cell_px", spec.cell_px);
+  cv::write(fs, "bin_width_mm", spec.bin_width_mm);
+  cv::write(fs, "max_depth_mm", spec.max_depth_mm);
+  cv::write(fs, "dimension", spec.dimension());
+  fs.endWriteStruct();
+}
+
+void write_roc_point(FileStorage& fs, const RocPoint& p) {
+  fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
+  cv::write(fs, "far", p.far);
+  cv::write(fs, "tar", p.tar);
+  cv::write(fs, "threshold", p.threshold);
+  fs.endWriteStruct();
+}
+
+void write_training(FileStorage& fs, const TrainingRecord& t) {
+  fs.startWriteStruct("training", FileNode::MAP);
+  cv::write(fs, "recipe", t.recipe);
+  cv::write(fs, "backend", t.backend);
+  fs.startWriteStruct("parameters", FileNode::MAP);
+  for (const auto& [key, value] : t.parameters) cv::write(fs, key, value);
+  fs.endWriteStruct();
+  fs.startWriteStruct("sample_sets", FileNode::SEQ);
+  for (const SampleSetUse& s : t.sample_sets) {
+    fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
+    cv::write(fs, "role", s.role);
+    cv::write(fs, "path", s.path);
+    cv::write(fs, "manifest_hash", s.manifest_hash);
+    cv::write(fs, "available", static_cast<int>(s.available));
+    cv::write(fs, "used", static_cast<int>(s.used));
+    fs.endWriteStruct();
+  }
+  fs.endWriteStruct();
+  cv::write(fs, "train_positives", static_cast<int>(t.train_positives));
+  cv::write(fs, "train_negatives", static_cast<int>(t.train_negatives));
+  cv::write(fs, "stopped", t.stopped);
+  const ValidationFigures& v = t.validation;
+  fs.startWriteStruct("validation", FileNode::MAP);
+  cv::write(fs, "source", v.source);
+  cv::write(fs, "positives", static_cast<int>(v.positives));
+  cv::write(fs, "negatives", static_cast<int>(v.negatives));
+  cv::write(fs, "auc", v.summary.auc);
+  cv::write(fs, "tar_at_far_1", v.summary.tar_at_far_1);
+  cv::write(fs, "tar_at_far_5", v.summary.tar_at_far_5);
+  cv::write(fs, "error_rate", v.summary.error_rate);
+  fs.startWriteStruct("roc", FileNode::SEQ);
+  for (const RocPoint& p : v.roc) write_roc_point(fs, p);
+  fs.endWriteStruct();
+  fs.startWriteStruct("rounds", FileNode::SEQ);
+  for (const RoundFigures& r : v.rounds) {
+    fs.startWriteStruct("", FileNode::MAP);
+    cv::write(fs, "round", r.round);
+    cv::write(fs, "feature", r.feature);
+    cv::write(fs, "train_error", r.train_error);
+    cv::write(fs, "validation_error", r.validation_error);
+    cv::write(fs, "auc", r.auc);
+    cv::write(fs, "tar_at_far_1", r.tar_at_far_1);
+    cv::write(fs, "tar_at_far_5", r.tar_at_far_5);
+    fs.startWriteStruct("roc", FileNode::SEQ);
+    for (const RocPoint& p : r.roc) write_roc_point(fs, p);
+    fs.endWriteStruct();
+    fs.endWriteStruct();
+  }
+  fs.endWriteStruct();
+  fs.endWriteStruct();
+  fs.endWriteStruct();
+}
+
+void write_classifier(FileStorage& fs, const BoostedModel& model) {
+  fs.startWriteStruct("classifier", FileNode::MAP);
+  fs.startWriteStruct("bins", FileNode::MAP | FileNode::FLOW);
+  cv::write(fs, "scheme", std::string("uniform"));
+  cv::write(fs, "count", model.bins().count);
+  cv::write(fs, "min", static_cast<double>(model.bins().min_value));
+  cv::write(fs, "max", static_cast<double>(model.bins().max_value));
+  fs.endWriteStruct();
+  cv::write(fs, "weak_count", static_cast<int>(model.weak_classifiers().size()));
+  fs.startWriteStruct("weak_classifiers", FileNode::SEQ);
+  for (const WeakClassifier& w : model.weak_classifiers()) {
+    fs.startWriteStruct("", FileNode::MAP);
+    if (w.kind == WeakClassifier::Kind::Lut) {
+      cv::write(fs, "kind", std::string("lut"));
+      cv::write(fs, "feature", w.feature);
+      cv::write(fs, "responses", w.responses);
+    } else {
+      cv::write(fs, "kind", std::string("stump"));
+      cv::write(fs, "feature", w.feature);
+      cv::write(fs, "threshold", w.threshold);
+      cv::write(fs, "left", w.left);
+      cv::write(fs, "right", w.right);
+    }
+    fs.endWriteStruct();
+  }
+  fs.endWriteStruct();
+  fs.endWriteStruct();
+}
+
+// ---- reading ----
+
+struct Reader {
+  std::string path;
+
+  [[noreturn]] void bad(const std::string& what) const { fail(path, what); }
+
+  FileNode need(const FileNode& parent, const std::string& key, const std::string& context) const {
+    const FileNode node = parent[key];
+    if (node.empty() || node.isNone()) bad("missing '" + context + key + "'");
+    return node;
+  }
+  std::string text(const FileNode& parent, const std::string& key, const std::string& context) const {
+    const FileNode node = need(parent, key, context);
+    if (!node.isString()) bad("'" + context + key + "' is not text");
+    return static_cast<std::string>(node);
+  }
+  int integer(const FileNode& parent, const std::string& key, const std::string& context) const {
+    const FileNode node = need(parent, key, context);
+    if (!node.isInt()) bad("'" + context + key + "' is not an integer");
+    return static_cast<int>(node);
+  }
+  double real(const FileNode& parent, const std::string& key, const std::string& context) const {
+    const FileNode node = need(parent, key, context);
+    if (!node.isInt() && !node.isReal()) bad("'" + context + key + "' is not a number");
+    return static_cast<double>(node);
+  }
+  // Optional fields (informational parts of the training record).
+  static std::string opt_text(const FileNode& n) { return n.isString() ? static_cast<std::string>(n) : ""; }
+  static double opt_real(const FileNode& n) { return (n.isInt() || n.isReal()) ? static_cast<double>(n) : 0.0; }
+  static int opt_int(const FileNode& n) { return n.isInt() ? static_cast<int>(n) : 0; }
+};
+
+FeatureSpec read_feature_spec_v1(const Reader& r, const FileNode& root, const FeatureSpec& expected) {
+  const FileNode node = r.need(root, "feature_spec", "");
+  FeatureSpec spec;
+  spec.window_width_px = r.integer(node, "window_width_px", "feature_spec.");
+  spec.window_height_px = r.integer(node, "window_height_px", "feature_spec.");
+  spec.cell_px = r.integer(node, "cell_px", "feature_spec.");
+  spec.bin_width_mm = r.integer(node, "bin_width_mm", "feature_spec.");
+  spec.max_depth_mm = r.integer(node, "max_depth_mm", "feature_spec.");
+  const std::string canonical = r.text(node, "canonical", "feature_spec.");
+  const std::string hash = r.text(node, "hash", "feature_spec.");
+  if (spec.canonical() != canonical) {
+    r.bad("feature_spec numbers give '" + spec.canonical() + "' but its canonical text says '" + canonical +
+          "' (damaged file?)");
+  }
+  if (hash != expected.hash()) {
+    r.bad("feature spec differs: the model was trained on '" + canonical + "' (hash " + hash +
+          "), this build computes '" + expected.canonical() + "' (hash " + expected.hash() + ")");
+  }
+  return spec;
+}
+
+std::vector<RocPoint> read_roc_points(const FileNode& node) {
+  std::vector<RocPoint> out;
+  if (!node.isSeq()) return out;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    const FileNode p = *it;
+    out.push_back({Reader::opt_real(p["far"]), Reader::opt_real(p["tar"]), Reader::opt_real(p["threshold"])});
+  }
+  return out;
+}
+
+TrainingRecord read_training_v1(const FileNode& node) {
+  TrainingRecord t;
+  if (!node.isMap()) return t;
+  t.recipe = Reader::opt_text(node["recipe"]);
+  t.backend = Reader::opt_text(node["backend"]);
+  const FileNode params = node["parameters"];
+  if (params.isMap()) {
+    for (auto it = params.begin(); it != params.end(); ++it) {
+      const FileNode p = *it;
+      std::string value = p.isString() ? static_cast<std::string>(p) : "";
+      if (p.isInt()) value = std::to_string(static_cast<int>(p));
+      if (p.isReal()) value = std::to_string(static_cast<double>(p));
+      t.parameters.emplace_back(p.name(), value);
+    }
+  }
+  const FileNode sets = node["sample_sets"];
+  if (sets.isSeq()) {
+    for (auto it = sets.begin(); it != sets.end(); ++it) {
+      const FileNode s = *it;
+      SampleSetUse use;
+      use.role = Reader::opt_text(s["role"]);
+      use.path = Reader::opt_text(s["path"]);
+      use.manifest_hash = Reader::opt_text(s["manifest_hash"]);
+      use.available = static_cast<std::size_t>(Reader::opt_int(s["available"]));
+      use.used = static_cast<std::size_t>(Reader::opt_int(s["used"]));
+      t.sample_sets.push_back(use);
+    }
+  }
+  t.train_positives = static_cast<std::size_t>(Reader::opt_int(node["train_positives"]));
+  t.train_negatives = static_cast<std::size_t>(Reader::opt_int(node["train_negatives"]));
+  t.stopped = Reader::opt_text(node["stopped"]);
+  const FileNode v = node["validation"];
+  if (v.isMap()) {
+    ValidationFigures& f = t.validation;
+    f.source = Reader::opt_text(v["source"]);
+    f.positives = static_cast<std::size_t>(Reader::opt_int(v["positives"]));
+    f.negatives = static_cast<std::size_t>(Reader::opt_int(v["negatives"]));
+    f.summary.auc = Reader::opt_real(v["auc"]);
+    f.summary.tar_at_far_1 = Reader::opt_real(v["tar_at_far_1"]);
+    f.summary.tar_at_far_5 = Reader::opt_real(v["tar_at_far_5"]);
+    f.summary.error_rate = Reader::opt_real(v["error_rate"]);
+    f.roc = read_roc_points(v["roc"]);
+    const FileNode rounds = v["rounds"];
+    if (rounds.isSeq()) {
+      for (auto it = rounds.begin(); it != rounds.end(); ++it) {
+        const FileNode p = *it;
+        RoundFigures r;
+        r.round = Reader::opt_int(p["round"]);
+        r.feature = Reader::opt_int(p["feature"]);
+        r.train_error = Reader::opt_real(p["train_error"]);
+        r.validation_error = Reader::opt_real(p["validation_error"]);
+        r.auc = Reader::opt_real(p["auc"]);
+        r.tar_at_far_1 = Reader::opt_real(p["tar_at_far_1"]);
+        r.tar_at_far_5 = Reader::opt_real(p["tar_at_far_5"]);
+        r.roc = read_roc_points(p["roc"]);
+        f.rounds.push_back(r);
+      }
+    }
+  }
+  return t;
+}
+
+BoostedModel read_v1(const Reader& r, const FileNode& root, const FeatureSpec& expected) {
+  const FeatureSpec spec = read_feature_spec_v1(r, root, expected);
+  const FileNode classifier = r.need(root, "classifier", "");
+  const FileNode bins_node = r.need(classifier, "bins", "classifier.");
+  const std::string scheme = r.text(bins_node, "scheme", "classifier.bins.");
+  if (scheme != "uniform") r.bad("bin scheme '" + scheme + "' is not known (format 1 has 'uniform')");
+  BinScheme bins;
+  bins.count = r.integer(bins_node, "count", "classifier.bins.");
+  bins.min_value = static_cast<float>(r.real(bins_node, "min", "classifier.bins."));
+  bins.max_value = static_cast<float>(r.real(bins_node, "max", "classifier.bins."));
+  const FileNode weak_node = r.need(classifier, "weak_classifiers", "classifier.");
+  if (!weak_node.isSeq()) r.bad("'classifier.weak_classifiers' is not a list");
+  std::vector<WeakClassifier> weak;
+  int index = 0;
+  for (auto it = weak_node.begin(); it != weak_node.end(); ++it, ++index) {
+    const FileNode n = *it;
+    const std::string context = "classifier.weak_classifiers[" + std::to_string(index) + "].";
+    WeakClassifier w;
+    const std::string kind = r.text(n, "kind", context);
+    w.feature = r.integer(n, "feature", context);
+    if (kind == "lut") {
+      w.kind = WeakClassifier::Kind::Lut;
+      const FileNode responses = r.need(n, "responses", context);
+      if (!responses.isSeq()) r.bad("'" + context + "responses' is not a list");
+      responses >> w.responses;
+    } else if (kind == "stump") {
+      w.kind = WeakClassifier::Kind::Stump;
+      w.threshold = r.real(n, "threshold", context);
+      w.left = r.real(n, "left", context);
+      w.right = r.real(n, "right", context);
+    } else {
+      r.bad("'" + context + "kind' is '" + kind + "' (known: lut, stump)");
+    }
+    weak.push_back(std::move(w));
+  }
+  const FileNode count = classifier["weak_count"];
+  if (count.isInt() && static_cast<int>(count) != index) {
+    r.bad("weak_count says " + std::to_string(static_cast<int>(count)) + " but " + std::to_string(index) +
+          " weak classifiers are listed (truncated file?)");
+  }
+  BoostedModel model;
+  try {
+    model = BoostedModel(spec, bins, std::move(weak));
+  } catch (const Error& e) {
+    r.bad(e.what());
+  }
+  model.set_identity(r.text(root, "name", ""), r.integer(root, "version", ""), r.path, r.text(root, "created", ""));
+  model.training() = read_training_v1(root["training"]);
+  model.set_format_version(1);
+  const FileNode opencv = root["opencv_model"];
+  if (opencv.isMap()) {
+    FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
+    copy_yaml_node(out, "opencv_model", opencv);
+    model.set_opencv_model_yaml(out.releaseAndGetString());
+  }
+  return model;
+}
+
+}  // namespace
+
+std::string iso_utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+std::string model_file_text(const BoostedModel& model) {
+  FileStorage fs(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
+  cv::write(fs, "format", std::string(kModelFormat));
+  cv::write(fs, "format_version", kModelFormatVersion);
+  cv::write(fs, "name", model.name());
+  cv::write(fs, "version", model.version());
+  cv::write(fs, "created", model.created());
+  write_feature_spec(fs, model.feature_spec());
+  write_training(fs, model.training());
+  write_classifier(fs, model);
+  if (!model.opencv_model_yaml().empty()) {
+    FileStorage embedded(model.opencv_model_yaml(), FileStorage::READ | FileStorage::MEMORY);
+    copy_yaml_node(fs, "opencv_model", embedded["opencv_model"]);
+  }
+  return fs.releaseAndGetString();
+}
+
+BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected) {
+  Reader r{path};
+  {
+    std::ifstream probe(path);
+    if (!probe) r.bad("cannot be read (missing or no permission)");
+  }
+  FileStorage fs;
+  try {
+    if (!fs.open(path, FileStorage::READ | FileStorage::FORMAT_YAML)) r.bad("cannot be opened as YAML");
+  } catch (const cv::Exception& e) {
+    r.bad("is not a readable YAML file (" + std::string(e.err) + ")");
+  }
+  const FileNode root = fs.root();
+  const FileNode format = root["format"];
+  if (!format.isString() || static_cast<std::string>(format) != kModelFormat) {
+    r.bad("not an rdsf model file (no 'format: " + std::string(kModelFormat) + "')");
+  }
+  const FileNode version = root["format_version"];
+  if (!version.isInt()) r.bad("missing or non-integer 'format_version'");
+  const int format_version = static_cast<int>(version);
+  try {
+    switch (format_version) {
+      case 1:
+        return read_v1(r, root, expected);
+      default:
+        r.bad("model format version " + std::to_string(format_version) + " is not known (this build reads " +
+              "version 1 only; a newer rdsf wrote it?)");
+    }
+  } catch (const cv::Exception& e) {
+    r.bad("unreadable model (" + std::string(e.err) + ")");
+  }
+}
+
+}  // namespace rdsf

@@ -1,0 +1,36 @@
+#pragma once
+// The model file: YAML written with cv::FileStorage, self-describing and versioned.
+//
+//   format: "rdsf-model"            format_version: 1
+//   name, version (N of vN), created (ISO 8601 UTC)
+//   feature_spec: canonical text, hash, and the numbers (window, cell, bins)
+//   training: recipe, backend, parameters, sample_sets (role, path, manifest_hash, available, used),
+//             train_positives/negatives, stopped, validation (source, counts, auc, tar_at_far_1/5,
+//             error_rate, roc points, per-round figures each with its roc points)
+//   classifier: bins (scheme uniform, count, min, max) and weak_classifiers, each
+//             { kind: lut, feature, responses: [count values] } or
+//             { kind: stump, feature, threshold, left, right }
+//   opencv_model: (OpenCV backend only) the cv::ml::Boost exactly as it wrote itself
+//
+// Reading has one branch per known format version and refuses any other, and refuses a model whose
+// feature spec differs from the one this build computes; each message names the file and what differs.
+#include <string>
+
+#include "classifier/boosted_model.hpp"
+#include "features/feature_spec.hpp"
+
+namespace rdsf {
+
+inline constexpr const char* kModelFormat = "rdsf-model";
+inline constexpr int kModelFormatVersion = 1;  ///< the version written
+
+/// The file text of `model` (its name, version and created time included as they are set).
+std::string model_file_text(const BoostedModel& model);
+
+/// Reads a model file (any known format version). `expected` is the feature spec the caller computes.
+BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected = FeatureSpec{});
+
+/// Current time as ISO 8601 UTC ("2026-11-22T05:30:00Z").
+std::string iso_utc_now();
+
+}  // namespace rdsf

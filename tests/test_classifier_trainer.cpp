@@ -1,0 +1,197 @@
+// rdsf-train as a user runs it: sample sets in, versioned model files out; recipes with too few samples,
+// --inspect, --export-text and bad command lines.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+#include "classifier/boosted_model.hpp"
+#include "classifier/roc_metrics.hpp"
+#include "dataset/sample_set.hpp"
+#include "dataset/sample_set_writer.hpp"
+#include "support/test_support.hpp"
+
+namespace rdsf {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A standing figure (head, body, legs) or a box at some depth: easy to tell apart.
+cv::Mat1w crop(bool person, std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> shift(-4, 4), depth(1500, 4500), size(10, 40);
+  cv::Mat1w out(128, 64, std::uint16_t{0});
+  const auto d = static_cast<std::uint16_t>(depth(rng));
+  const int dx = shift(rng);
+  if (person) {
+    cv::ellipse(out, cv::Point(32 + dx, 14), cv::Size(7, 9), 0, 0, 360, d, cv::FILLED);
+    cv::rectangle(out, cv::Rect(20 + dx, 24, 24, 46), d, cv::FILLED);
+    cv::rectangle(out, cv::Rect(22 + dx, 70, 8, 54), d, cv::FILLED);
+    cv::rectangle(out, cv::Rect(34 + dx, 70, 8, 54), d, cv::FILLED);
+  } else {
+    const int w = size(rng), h = size(rng);
+    cv::rectangle(out, cv::Rect(16 + dx, 128 - h - 2 * size(rng), w, h), d, cv::FILLED);
+  }
+  return out;
+}
+
+void make_set(const std::string& dir, int label, int count, std::uint64_t seed) {
+  SampleSetWriter writer = SampleSetWriter::open_or_create(dir, FeatureSpec{}, CameraModel{}, "test");
+  std::mt19937_64 rng(seed);
+  for (int i = 0; i < count; ++i) {
+    SampleRecord r;
+    r.label = label;
+    r.origin = "labeler";
+    r.source = "test";
+    r.frame = std::to_string(i);
+    r.strict_box = cv::Rect(i, 0, 10, 20);
+    r.window = r.strict_box;
+    writer.append(r, crop(label == 1, rng));
+  }
+}
+
+class TrainerProgram : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    people = dir / "people";
+    negatives = dir / "negatives";
+    models = dir / "models";
+    make_set(people, 1, 60, 1);
+    make_set(negatives, 0, 90, 2);
+  }
+  test::RunResult train(const std::string& arguments) {
+    return test::run(test::quote(test::program("rdsf-train")) + " --models-dir " + test::quote(models) + " " + arguments);
+  }
+  test::TempDir dir{"rdsf-trainer"};
+  std::string people, negatives, models;
+};
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST_F(TrainerProgram, AdHocTrainingWritesNumberedVersions) {
+  const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives);
+  const test::RunResult first = train(sets + " --name toy --rounds 5");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.err.find("round 5/5"), std::string::npos) << first.err;
+  EXPECT_NE(first.err.find("AUC"), std::string::npos) << first.err;
+  EXPECT_NE(first.err.find("wrote " + models + "/toy/v1.yml"), std::string::npos) << first.err;
+  const std::string v1 = read_text(models + "/toy/v1.yml");
+  const test::RunResult second = train(sets + " --name toy --rounds 3 --backend opencv");
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_EQ(read_text(models + "/toy/v1.yml"), v1);
+
+  const BoostedModel model = BoostedModel::load("toy", models);
+  EXPECT_EQ(model.version(), 2);
+  EXPECT_EQ(model.training().backend, "opencv");
+  EXPECT_EQ(model.weak_classifiers().size(), 3u);
+  const BoostedModel native = BoostedModel::load("toy/v1", models);
+  EXPECT_EQ(native.weak_classifiers().size(), 5u);
+  ASSERT_EQ(native.training().sample_sets.size(), 2u);
+  EXPECT_EQ(native.training().sample_sets[0].role, "pos");
+  EXPECT_EQ(native.training().sample_sets[0].used, 60u);
+  EXPECT_EQ(native.training().sample_sets[0].manifest_hash, SampleSet::open_read(people).manifest_hash());
+  EXPECT_EQ(native.training().sample_sets[1].used, 90u);
+  // The model tells the two kinds apart on the sets' own samples.
+  const SampleSet pos = SampleSet::open_read(people), neg = SampleSet::open_read(negatives);
+  const RdsfExtractor extractor;
+  std::vector<double> scores = native.score(pos.features(extractor));
+  const std::vector<double> neg_scores = native.score(neg.features(extractor));
+  std::vector<int> labels(scores.size(), 1);
+  scores.insert(scores.end(), neg_scores.begin(), neg_scores.end());
+  labels.resize(scores.size(), 0);
+  EXPECT_GT(roc_auc(scores, labels), 0.95);
+}
+
+TEST_F(TrainerProgram, RecipeWarnsWhenASetHoldsFewerThanAsked) {
+  fs::create_directories(models + "/recipes");
+  std::ofstream(models + "/recipes/small.yml") << "%YAML:1.0\n---\nrecipe: small\npositives: 100\nnegatives: 50\n"
+                                               << "pos_sets: [ \"" << people << "\" ]\nneg_sets: [ \"" << negatives
+                                               << "\" ]\nrounds: 4\nseed: 3\n";
+  const test::RunResult r = train("--recipe small");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: recipe small asks for 100 positives but the sets hold 60: using all 60"),
+            std::string::npos)
+      << r.err;
+  const BoostedModel model = BoostedModel::load("small", models);
+  EXPECT_EQ(model.version(), 1);
+  EXPECT_EQ(model.training().train_positives + model.training().validation.positives, 60u);
+  EXPECT_EQ(model.training().train_negatives + model.training().validation.negatives, 50u);
+  EXPECT_EQ(model.training().recipe.rfind("small (", 0), 0u) << model.training().recipe;
+  // The same recipe and seed pick the same samples and give the same model.
+  ASSERT_EQ(train("--recipe small").exit_code, 0);
+  const BoostedModel again = BoostedModel::load("small", models);
+  EXPECT_EQ(again.version(), 2);
+  EXPECT_EQ(again.weak_classifiers(), model.weak_classifiers());
+}
+
+TEST_F(TrainerProgram, InspectShowsHeaderFiguresAndCellPairs) {
+  ASSERT_EQ(train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name toy --rounds 6")
+                .exit_code,
+            0);
+  const test::RunResult r = train("--inspect toy --top 3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("model        toy v1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("format       rdsf-model version 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("AUC"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("most used features"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(row "), std::string::npos) << r.out;
+  const test::RunResult missing = train("--inspect nothing-here");
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("nothing-here"), std::string::npos) << missing.err;
+}
+
+TEST_F(TrainerProgram, ExportTextWritesTheChosenSamples) {
+  const std::string out = dir / "samples.txt";
+  const std::string args = "--pos " + test::quote(people) + " --neg " + test::quote(negatives) +
+                           " --positives 10 --negatives 20 --export-text " + test::quote(out);
+  const test::RunResult r = train(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(out);
+  std::string line;
+  int lines = 0, positives = 0;
+  while (std::getline(in, line)) {
+    std::istringstream tokens(line);
+    int label = -1;
+    tokens >> label;
+    positives += label == 1 ? 1 : 0;
+    int values = 0;
+    float v = 0;
+    while (tokens >> v) ++values;
+    EXPECT_EQ(values, 8128);
+    ++lines;
+  }
+  EXPECT_EQ(lines, 30);
+  EXPECT_EQ(positives, 10);
+  EXPECT_EQ(train(args).exit_code, 1);  // never replaced without --force
+  EXPECT_EQ(train(args + " --force").exit_code, 0);
+}
+
+TEST_F(TrainerProgram, BadCommandLinesFailWithOneLine) {
+  const test::RunResult none = train("");
+  EXPECT_EQ(none.exit_code, 2);
+  const test::RunResult recipe = train("--recipe nonexistent");
+  EXPECT_EQ(recipe.exit_code, 1);
+  EXPECT_NE(recipe.err.find("no such recipe"), std::string::npos) << recipe.err;
+  const test::RunResult name = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives));
+  EXPECT_EQ(name.exit_code, 1);
+  EXPECT_NE(name.err.find("--name"), std::string::npos) << name.err;
+  const test::RunResult backend =
+      train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name x --backend gpu");
+  EXPECT_EQ(backend.exit_code, 1);
+  EXPECT_NE(backend.err.find("backend 'gpu'"), std::string::npos) << backend.err;
+  const test::RunResult set = train("--pos " + test::quote(dir / "nope") + " --neg " + test::quote(negatives) + " --name x");
+  EXPECT_EQ(set.exit_code, 1);
+  EXPECT_NE(set.err.find("nope"), std::string::npos) << set.err;
+  EXPECT_FALSE(fs::exists(models + "/x"));
+}
+
+}  // namespace
+}  // namespace rdsf

@@ -1,0 +1,238 @@
+// Model files: save/load round trip, version numbering without overwriting, NAME resolution, refusal of
+// unknown format versions and foreign feature specs, and the reference files every release must load.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "classifier/boost_training.hpp"
+#include "classifier/boosted_model.hpp"
+#include "classifier/model_file.hpp"
+#include "classifier/model_registry.hpp"
+#include "classifier_support/toy_data.hpp"
+#include "core/error.hpp"
+#include "support/test_support.hpp"
+
+namespace rdsf {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+BoostedModel small_model(int rounds = 6, const std::string& backend = "native") {
+  const test::ToyData toy = test::noisy_toy(300, 99);
+  BoostTrainingParams params;
+  params.rounds = rounds;
+  params.backend = backend;
+  BoostedModel model = train_boosted_model(toy.rows, toy.labels, params);
+  model.training().recipe = "ad hoc";
+  model.training().sample_sets.push_back({"pos", "datasets/toy", "0123456789abcdef", 150, 140});
+  return model;
+}
+
+std::string message_of(const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ModelFile, SaveLoadGivesIdenticalScores) {
+  const test::TempDir dir("rdsf-model-file");
+  BoostedModel model = small_model();
+  const std::string path = save_new_model_version(model, "toy", dir.path().string());
+  EXPECT_EQ(path, (dir.path() / "toy" / "v1.yml").string());
+  EXPECT_EQ(model.version(), 1);
+  const BoostedModel loaded = BoostedModel::load(path);
+  EXPECT_EQ(loaded.name(), "toy");
+  EXPECT_EQ(loaded.version(), 1);
+  EXPECT_EQ(loaded.path(), path);
+  EXPECT_EQ(loaded.created(), model.created());
+  EXPECT_EQ(loaded.feature_spec(), FeatureSpec{});
+  EXPECT_EQ(loaded.weak_classifiers(), model.weak_classifiers());
+  const test::ToyData probe = test::noisy_toy(50, 1234);
+  const std::vector<double> a = model.score(probe.rows), b = loaded.score(probe.rows);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << i;  // bit-identical
+  // The training record survives too, and writing the loaded model gives the same text.
+  EXPECT_EQ(loaded.training().recipe, "ad hoc");
+  ASSERT_EQ(loaded.training().sample_sets.size(), 1u);
+  EXPECT_EQ(loaded.training().sample_sets[0].manifest_hash, "0123456789abcdef");
+  EXPECT_EQ(loaded.training().validation.summary.auc, model.training().validation.summary.auc);
+  ASSERT_FALSE(loaded.training().validation.rounds.empty());
+  EXPECT_FALSE(loaded.training().validation.rounds.back().roc.empty());
+  EXPECT_EQ(loaded.training().validation.rounds.back().roc.size(), model.training().validation.rounds.back().roc.size());
+  EXPECT_EQ(model_file_text(loaded), model_file_text(model));
+  EXPECT_THROW(loaded.score(probe.rows.colRange(0, 10).clone()), Error);
+}
+
+TEST(ModelFile, OpenCvModelRoundTripKeepsTheEmbeddedModel) {
+  const test::TempDir dir("rdsf-model-file");
+  BoostedModel model = small_model(3, "opencv");
+  const std::string path = save_new_model_version(model, "cv", dir.path().string());
+  const BoostedModel loaded = BoostedModel::load(path);
+  EXPECT_FALSE(loaded.opencv_model_yaml().empty());
+  EXPECT_EQ(loaded.weak_classifiers(), model.weak_classifiers());
+  const test::ToyData probe = test::noisy_toy(30, 77);
+  EXPECT_EQ(loaded.score(probe.rows), model.score(probe.rows));
+  EXPECT_NE(read_text(path).find("opencv_model:"), std::string::npos);
+}
+
+TEST(ModelRegistry, VersionsCountUpAndNeverOverwrite) {
+  const test::TempDir dir("rdsf-model-registry");
+  const std::string models = dir.path().string();
+  EXPECT_EQ(latest_model_version(models, "toy"), 0);
+  BoostedModel first = small_model(2);
+  const std::string v1 = save_new_model_version(first, "toy", models);
+  const std::string v1_text = read_text(v1);
+  BoostedModel second = small_model(3);
+  const std::string v2 = save_new_model_version(second, "toy", models);
+  EXPECT_EQ(fs::path(v2).filename(), "v2.yml");
+  EXPECT_EQ(read_text(v1), v1_text);  // untouched
+  // Somebody else's v3 is kept: the next save becomes v4.
+  write_text(dir / "toy/v3.yml", "not mine\n");
+  BoostedModel third = small_model(2);
+  const std::string v4 = save_new_model_version(third, "toy", models);
+  EXPECT_EQ(fs::path(v4).filename(), "v4.yml");
+  EXPECT_EQ(read_text(dir / "toy/v3.yml"), "not mine\n");
+  EXPECT_EQ(latest_model_version(models, "toy"), 4);
+  // No temporary files are left behind.
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "toy")) {
+    EXPECT_EQ(entry.path().extension(), ".yml") << entry.path();
+    ++files;
+  }
+  EXPECT_EQ(files, 4);
+  EXPECT_THROW(save_new_model_version(third, "../escape", models), Error);
+  EXPECT_THROW(save_new_model_version(third, "", models), Error);
+  EXPECT_THROW(save_new_model_version(third, "recipes", models), Error);
+}
+
+TEST(ModelRegistry, NameResolvesToItsNewestVersion) {
+  const test::TempDir dir("rdsf-model-registry");
+  const std::string models = dir.path().string();
+  BoostedModel a = small_model(2), b = small_model(4);
+  save_new_model_version(a, "tree2", models);
+  save_new_model_version(b, "tree2", models);
+  EXPECT_EQ(BoostedModel::load("tree2", models).version(), 2);
+  EXPECT_EQ(BoostedModel::load("tree2", models).weak_classifiers().size(), 4u);
+  EXPECT_EQ(BoostedModel::load("tree2/v1", models).version(), 1);
+  EXPECT_EQ(BoostedModel::load("tree2/v1.yml", models).version(), 1);
+  EXPECT_EQ(BoostedModel::load((dir.path() / "tree2").string()).version(), 2);
+  EXPECT_NE(message_of([&] { BoostedModel::load("tree3", models); }).find("no model versions under"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { BoostedModel::load("tree2/v9", models); }).find("no such model version"),
+            std::string::npos);
+}
+
+TEST(ModelFile, UnknownFormatVersionIsRefused) {
+  const test::TempDir dir("rdsf-model-file");
+  BoostedModel model = small_model(2);
+  const std::string path = save_new_model_version(model, "toy", dir.path().string());
+  const std::string bad = dir / "future.yml";
+  write_text(bad, replace_once(read_text(path), "format_version: 1", "format_version: 7"));
+  const std::string message = message_of([&] { BoostedModel::load(bad); });
+  EXPECT_NE(message.find(bad + ": model format version 7 is not known"), std::string::npos) << message;
+  const std::string other = dir / "other.yml";
+  write_text(other, replace_once(read_text(path), "format: rdsf-model", "format: something-else"));
+  EXPECT_NE(message_of([&] { BoostedModel::load(other); }).find("not an rdsf model file"), std::string::npos);
+  write_text(other, "]]] not yaml {{{\n");
+  EXPECT_NE(message_of([&] { BoostedModel::load(other); }).find(other + ":"), std::string::npos);
+}
+
+TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
+  const test::TempDir dir("rdsf-model-file");
+  // A model made for 16-pixel cells (32 cells, 496 features).
+  FeatureSpec coarse;
+  coarse.cell_px = 16;
+  WeakClassifier w;
+  w.feature = 3;
+  w.responses.assign(64, 0.25);
+  BoostedModel model(coarse, BinScheme{}, {w});
+  const std::string path = save_new_model_version(model, "coarse", dir.path().string());
+  const std::string message = message_of([&] { BoostedModel::load(path); });
+  EXPECT_NE(message.find("feature spec differs"), std::string::npos) << message;
+  EXPECT_NE(message.find("cell=16"), std::string::npos) << message;
+  EXPECT_NE(message.find("cell=8"), std::string::npos) << message;
+  EXPECT_NE(message.find(coarse.hash()), std::string::npos) << message;
+  // A build that computes 16-pixel cells reads it.
+  EXPECT_EQ(read_model_file(path, coarse).feature_spec(), coarse);
+  // And a default model refused by a build computing something else.
+  BoostedModel normal = small_model(2);
+  const std::string normal_path = save_new_model_version(normal, "normal", dir.path().string());
+  EXPECT_NE(message_of([&] { read_model_file(normal_path, coarse); }).find("this build computes"),
+            std::string::npos);
+  // A damaged spec (numbers and canonical text disagree) is named as such.
+  const std::string damaged = dir / "damaged.yml";
+  write_text(damaged, replace_once(read_text(normal_path), "cell_px: 8", "cell_px: 4"));
+  EXPECT_NE(message_of([&] { BoostedModel::load(damaged); }).find("damaged"), std::string::npos);
+}
+
+TEST(ModelFile, TruncatedWeakListIsRefused) {
+  const test::TempDir dir("rdsf-model-file");
+  BoostedModel model = small_model(2);
+  const std::string path = save_new_model_version(model, "toy", dir.path().string());
+  const std::string bad = dir / "cut.yml";
+  write_text(bad, replace_once(read_text(path), "weak_count: 2", "weak_count: 3"));
+  EXPECT_NE(message_of([&] { BoostedModel::load(bad); }).find("truncated"), std::string::npos);
+}
+
+// The fixed input of the reference files: value i = ((i * 37) % 101) / 100.
+cv::Mat1f reference_input() {
+  cv::Mat1f row(1, 8128);
+  for (int i = 0; i < 8128; ++i) row(0, i) = static_cast<float>((i * 37) % 101) / 100.0f;
+  return row;
+}
+
+std::string reference_path(const std::string& name) {
+  return (fs::path(RDSF_SOURCE_DIR) / "tests" / "reference_models" / name).string();
+}
+
+// Format version 1 must load, forever, with these scores. Do not regenerate these files: add new ones for
+// new format versions (see tests/reference_models/README.md).
+TEST(ReferenceModels, FormatVersion1NativeLoadsWithKnownScores) {
+  const BoostedModel model = BoostedModel::load(reference_path("rdsf-model-v1-native.yml"));
+  EXPECT_EQ(model.name(), "reference-native");
+  EXPECT_EQ(model.version(), 1);
+  EXPECT_EQ(model.weak_classifiers().size(), 5u);
+  EXPECT_EQ(model.training().backend, "native");
+  ASSERT_EQ(model.training().validation.rounds.size(), 3u);  // rounds 2, 4 and the last, 5
+  EXPECT_EQ(model.training().validation.rounds.back().round, 5);
+  EXPECT_FALSE(model.training().validation.rounds.back().roc.empty());
+  const cv::Mat1f input = reference_input();
+  EXPECT_NEAR(model.score(input[0]), -1.2211271644717994, 1e-9);
+}
+
+TEST(ReferenceModels, FormatVersion1OpenCvLoadsWithKnownScores) {
+  const BoostedModel model = BoostedModel::load(reference_path("rdsf-model-v1-opencv.yml"));
+  EXPECT_EQ(model.name(), "reference-opencv");
+  EXPECT_EQ(model.weak_classifiers().size(), 3u);
+  EXPECT_EQ(model.weak_classifiers().front().kind, WeakClassifier::Kind::Stump);
+  EXPECT_FALSE(model.opencv_model_yaml().empty());
+  const cv::Mat1f input = reference_input();
+  EXPECT_NEAR(model.score(input[0]), -0.4877636329465857, 1e-9);
+}
+
+}  // namespace
+}  // namespace rdsf

@@ -1,0 +1,106 @@
+// rdsf-train --inspect: what a model file says about itself, and which features it uses most.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <ostream>
+
+#include "classifier/boosted_model.hpp"
+#include "classifier/model_file.hpp"
+#include "trainer/train_run.hpp"
+
+namespace rdsf {
+namespace {
+
+struct FeatureUse {
+  int feature = 0;
+  int uses = 0;
+  double spread = 0.0;  // sum over its weak classifiers of (highest - lowest response) / 2
+};
+
+std::string cell_text(const FeatureSpec& spec, int cell) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%3d (row %2d, col %d)", cell, cell / spec.cells_x(), cell % spec.cells_x());
+  return text;
+}
+
+}  // namespace
+
+int run_inspect(const TrainOptions& o, std::ostream& out) {
+  const BoostedModel model = BoostedModel::load(o.inspect, o.models_dir);
+  const TrainingRecord& t = model.training();
+  const FeatureSpec& spec = model.feature_spec();
+  char line[512];
+  out << "model        " << model.name() << " v" << model.version() << "  (" << model.path() << ")\n";
+  out << "format       " << kModelFormat << " version " << model.format_version() << ", created " << model.created()
+      << "\n";
+  out << "features     " << spec.canonical() << "  (hash " << spec.hash() << ")\n";
+  const bool lut = !model.weak_classifiers().empty() && model.weak_classifiers().front().kind == WeakClassifier::Kind::Lut;
+  out << "classifier   " << model.weak_classifiers().size() << " weak classifiers, "
+      << (lut ? "look-up tables of " + std::to_string(model.bins().count) + " bins" : std::string("stumps"))
+      << (model.opencv_model_yaml().empty() ? "" : ", embedded OpenCV model") << "\n";
+  out << "backend      " << t.backend << "\n";
+  out << "recipe       " << t.recipe << "\n";
+  out << "parameters  ";
+  for (const auto& [key, value] : t.parameters) out << " " << key << "=" << value;
+  out << "\n";
+  out << "sample sets\n";
+  for (const SampleSetUse& s : t.sample_sets) {
+    std::snprintf(line, sizeof line, "  %-15s %-40s manifest %-16s used %zu of %zu\n", s.role.c_str(), s.path.c_str(),
+                  s.manifest_hash.empty() ? "-" : s.manifest_hash.c_str(), s.used, s.available);
+    out << line;
+  }
+  out << "training     " << t.train_positives << " positives, " << t.train_negatives << " negatives; " << t.stopped
+      << "\n";
+  const ValidationFigures& v = t.validation;
+  out << "validation   " << v.source << ": " << v.positives << " positives, " << v.negatives << " negatives\n";
+  if (v.positives > 0 && v.negatives > 0) {
+    std::snprintf(line, sizeof line, "             AUC %.4f   TAR %.4f at FAR 1%%   TAR %.4f at FAR 5%%   error %.4f\n",
+                  v.summary.auc, v.summary.tar_at_far_1, v.summary.tar_at_far_5, v.summary.error_rate);
+    out << line;
+    out << "ROC          ";
+    for (const RocPoint& p : v.roc) {
+      std::snprintf(line, sizeof line, " FAR %.4f->TAR %.4f", p.far, p.tar);
+      out << line;
+    }
+    out << "\n";
+  }
+  if (!v.rounds.empty()) {
+    out << "rounds        round  feature  train err  val err     AUC   TAR@1%  TAR@5%\n";
+    for (const RoundFigures& r : v.rounds) {
+      std::snprintf(line, sizeof line, "             %6d  %7d   %.4f    %.4f   %.4f  %.4f  %.4f\n", r.round, r.feature,
+                    r.train_error, r.validation_error, r.auc, r.tar_at_far_1, r.tar_at_far_5);
+      out << line;
+    }
+  }
+
+  std::map<int, FeatureUse> uses;
+  for (const WeakClassifier& w : model.weak_classifiers()) {
+    FeatureUse& u = uses[w.feature];
+    u.feature = w.feature;
+    ++u.uses;
+    if (w.kind == WeakClassifier::Kind::Lut) {
+      const auto [lo, hi] = std::minmax_element(w.responses.begin(), w.responses.end());
+      u.spread += (*hi - *lo) / 2.0;
+    } else {
+      u.spread += std::abs(w.right - w.left) / 2.0;
+    }
+  }
+  std::vector<FeatureUse> ranked;
+  for (const auto& [feature, use] : uses) ranked.push_back(use);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const FeatureUse& a, const FeatureUse& b) {
+    return a.uses != b.uses ? a.uses > b.uses : a.spread > b.spread;
+  });
+  out << "most used features (" << ranked.size() << " distinct; spread = sum of (max - min response) / 2)\n";
+  out << "  rank  feature  uses  spread   cell pair\n";
+  for (std::size_t k = 0; k < ranked.size() && k < static_cast<std::size_t>(std::max(0, o.top)); ++k) {
+    int i = 0, j = 0;
+    spec.pair_at(ranked[k].feature, i, j);
+    std::snprintf(line, sizeof line, "  %4zu  %7d  %4d  %6.3f   %s - %s\n", k + 1, ranked[k].feature, ranked[k].uses,
+                  ranked[k].spread, cell_text(spec, i).c_str(), cell_text(spec, j).c_str());
+    out << line;
+  }
+  return 0;
+}
+
+}  // namespace rdsf

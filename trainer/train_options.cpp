@@ -1,0 +1,58 @@
+// rdsf-train's command-line options, bound to TrainOptions.
+#include "trainer/train_options.hpp"
+
+namespace rdsf {
+namespace {
+
+namespace po = cli::po;
+
+// Binds an optional override: set only when the option was given.
+template <typename T>
+po::typed_value<T>* optional_into(std::optional<T>& target) {
+  return po::value<T>()->notifier([&target](const T& v) { target = v; });
+}
+
+}  // namespace
+
+po::options_description train_options(TrainOptions& o) {
+  po::options_description what("What to train on");
+  what.add_options()
+      ("recipe", po::value(&o.recipe), "recipe NAME (models/recipes/NAME.yml: tree, tree2, hugeTree, treeLast) or file")
+      ("pos", po::value(&o.pos_sets)->multitoken(), "sample set(s) whose positives to use (replaces the recipe's)")
+      ("neg", po::value(&o.neg_sets)->multitoken(), "sample set(s) whose negatives to use (replaces the recipe's)")
+      ("validation-pos", po::value(&o.validation_pos_sets)->multitoken(),
+       "separate validation set(s) for positives (instead of a held-out fraction)")
+      ("validation-neg", po::value(&o.validation_neg_sets)->multitoken(), "separate validation set(s) for negatives")
+      ("positives", optional_into(o.positives),
+       "positives to take (seeded subset; 0 = all). Default: the recipe's, else all")
+      ("negatives", optional_into(o.negatives),
+       "negatives to take (seeded subset; 0 = all). Default: the recipe's, else all")
+      ("name", po::value(&o.name), "model name (default: the recipe's name); saved as MODELS/NAME/vN.yml")
+      ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "folder of models and recipes/");
+  po::options_description how("Boosting (default: the recipe's value, else the one shown)");
+  how.add_options()
+      ("backend", optional_into(o.backend), "native (Real AdaBoost, look-up tables) or opencv (cv::ml::Boost REAL stumps). Default native")
+      ("rounds", optional_into(o.rounds), "boosting rounds. Default 100")
+      ("bins", optional_into(o.bins), "native: bins per feature over [0, 1] (2-256). Default 64")
+      ("seed", optional_into(o.seed), "seed of the subsets and the validation split. Default 1")
+      ("validation-fraction", optional_into(o.validation_fraction),
+       "fraction of each class held out for validation (0 = none). Default 0.2")
+      ("weight-trim", optional_into(o.weight_trim),
+       "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05). Default 0")
+      ("early-stopping", optional_into(o.early_stopping),
+       "stop after this many rounds without a better validation AUC, keep the best (0 = off). Default 0")
+      ("report-every", optional_into(o.report_every), "rounds between the figures kept in the model file. Default 10")
+      ("threads", po::value(&o.threads)->default_value(o.threads), "threads for features and histograms (0 = all cores)");
+  po::options_description other("Instead of training");
+  other.add_options()
+      ("inspect", po::value(&o.inspect), "print a model's header, figures and most used features (file, NAME or NAME/vN)")
+      ("top", po::value(&o.top)->default_value(o.top), "--inspect: features to list")
+      ("export-text", po::value(&o.export_text),
+       "write the chosen samples to this file in the thesis's text format (label f1 ... f8128)")
+      ("force", po::bool_switch(&o.force), "--export-text may replace an existing file");
+  po::options_description options;
+  options.add(what).add(how).add(other);
+  return options;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,155 @@
+#include "trainer/train_run.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "classifier/boosted_model.hpp"
+#include "classifier/model_registry.hpp"
+#include "core/error.hpp"
+#include "trainer/recipe.hpp"
+#include "trainer/training_samples.hpp"
+
+namespace rdsf {
+namespace {
+
+// The recipe (when given) with the command line's overrides applied.
+Recipe effective_recipe(const TrainOptions& o) {
+  Recipe r;
+  if (!o.recipe.empty()) {
+    r = load_recipe(o.recipe, o.models_dir);
+  } else {
+    r.name = o.name;
+  }
+  // --pos / --neg replace the recipe's sets of that role.
+  if (!o.pos_sets.empty()) r.pos_sets = o.pos_sets;
+  if (!o.neg_sets.empty()) r.neg_sets = o.neg_sets;
+  if (!o.validation_pos_sets.empty()) r.validation_pos_sets = o.validation_pos_sets;
+  if (!o.validation_neg_sets.empty()) r.validation_neg_sets = o.validation_neg_sets;
+  if (o.positives) r.positives = *o.positives;
+  if (o.negatives) r.negatives = *o.negatives;
+  BoostTrainingParams& p = r.params;
+  if (o.rounds) p.rounds = *o.rounds;
+  if (o.bins) p.bins.count = *o.bins;
+  if (o.early_stopping) p.early_stopping = *o.early_stopping;
+  if (o.report_every) p.report_every = *o.report_every;
+  if (o.backend) p.backend = *o.backend;
+  if (o.seed) p.seed = *o.seed;
+  if (o.validation_fraction) p.validation_fraction = *o.validation_fraction;
+  if (o.weight_trim) p.weight_trim = *o.weight_trim;
+  p.threads = o.threads;
+  validate_training_params(p);
+  if (r.pos_sets.empty() || r.neg_sets.empty()) {
+    throw Error("give a --recipe, or sample sets with --pos SET and --neg SET");
+  }
+  if (r.validation_pos_sets.empty() != r.validation_neg_sets.empty()) {
+    throw Error("a separate validation set needs both --validation-pos and --validation-neg");
+  }
+  return r;
+}
+
+SampleChoice training_choice(const Recipe& r, const TrainOptions& o) {
+  SampleChoice c;
+  c.pos_sets = r.pos_sets;
+  c.neg_sets = r.neg_sets;
+  c.positives = r.positives;
+  c.negatives = r.negatives;
+  c.seed = r.params.seed;
+  c.asked_by = o.recipe.empty() || o.positives || o.negatives ? std::string("the command line")
+                                                               : "recipe " + r.name;
+  return c;
+}
+
+std::string cells_text(int feature) {
+  const FeatureSpec spec;
+  int i = 0, j = 0;
+  spec.pair_at(feature, i, j);
+  char text[64];
+  std::snprintf(text, sizeof text, "cells %d-%d", i, j);
+  return text;
+}
+
+std::string duration_text(double seconds) {
+  char text[32];
+  if (seconds < 120) {
+    std::snprintf(text, sizeof text, "%.0f s", seconds);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f min", seconds / 60.0);
+  }
+  return text;
+}
+
+}  // namespace
+
+int run_train(const TrainOptions& o) {
+  const Recipe recipe = effective_recipe(o);
+  const std::string name = o.name.empty() ? recipe.name : o.name;
+  if (name.empty()) throw Error("ad hoc training needs a model name: give --name NAME");
+  validate_model_name(name);
+  std::cerr << "rdsf-train: model " << name << " (next version v" << latest_model_version(o.models_dir, name) + 1
+            << " under " << o.models_dir << "), " << recipe.params.backend << " backend, " << recipe.params.rounds
+            << " rounds\n";
+
+  const ChosenSamples train = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
+  ChosenSamples validation;
+  if (!recipe.validation_pos_sets.empty()) {
+    SampleChoice v;
+    v.pos_sets = recipe.validation_pos_sets;
+    v.neg_sets = recipe.validation_neg_sets;
+    v.seed = recipe.params.seed;
+    v.asked_by = "validation";
+    v.role_prefix = "validation-";
+    validation = choose_samples(v, std::cerr, o.threads);
+  }
+  const std::size_t positives = static_cast<std::size_t>(std::count(train.labels.begin(), train.labels.end(), 1));
+  std::cerr << "rdsf-train: " << positives << " positives, " << train.labels.size() - positives
+            << " negatives x " << train.rows.cols << " features\n";
+  if (recipe.params.backend == "opencv") {
+    std::cerr << "rdsf-train: OpenCV trains all rounds in one call: no progress until it is done (about 16-33 s "
+                 "per round at 28,000 samples)\n";
+  }
+
+  const auto progress = [](const TrainingProgress& p) {
+    char line[256];
+    int n = std::snprintf(line, sizeof line, "round %d/%d  feature %d (%s)  train err %.4f", p.round, p.rounds,
+                          p.feature, cells_text(p.feature).c_str(), p.train_error);
+    if (p.validation_error && n > 0 && n < static_cast<int>(sizeof line)) {
+      n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), "  val err %.4f  AUC %.4f",
+                         *p.validation_error, *p.validation_auc);
+    }
+    std::cerr << "rdsf-train: " << line << "  " << (p.round_s < 1 ? std::to_string(static_cast<int>(p.round_s * 1000)) + " ms"
+                                                                  : duration_text(p.round_s))
+              << "/round  " << duration_text(p.left_s) << " left\n";
+  };
+  const bool separate = !validation.labels.empty();
+  BoostedModel model = train_boosted_model(train.rows, train.labels, recipe.params, progress,
+                                           separate ? &validation.rows : nullptr,
+                                           separate ? &validation.labels : nullptr);
+  TrainingRecord& record = model.training();
+  record.recipe = o.recipe.empty() ? "ad hoc" : recipe.name + " (" + recipe.path + ")";
+  record.sample_sets = train.sets;
+  record.sample_sets.insert(record.sample_sets.end(), validation.sets.begin(), validation.sets.end());
+  record.parameters.insert(record.parameters.begin(), {"positives_wanted", std::to_string(recipe.positives)});
+  record.parameters.insert(record.parameters.begin() + 1, {"negatives_wanted", std::to_string(recipe.negatives)});
+
+  const std::string path = save_new_model_version(model, name, o.models_dir);
+  const ValidationFigures& v = record.validation;
+  std::fprintf(stderr, "rdsf-train: %zu weak classifiers (%s); validation: %s\n", model.weak_classifiers().size(),
+               record.stopped.c_str(), v.source.c_str());
+  if (v.positives > 0 && v.negatives > 0) {
+    std::fprintf(stderr, "rdsf-train: validation AUC %.4f, TAR %.3f at FAR 1%%, %.3f at FAR 5%%, error %.4f\n",
+                 v.summary.auc, v.summary.tar_at_far_1, v.summary.tar_at_far_5, v.summary.error_rate);
+  }
+  std::cerr << "rdsf-train: wrote " << path << "\n";
+  return 0;
+}
+
+int run_export_text(const TrainOptions& o) {
+  const Recipe recipe = effective_recipe(o);
+  const ChosenSamples samples = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
+  const std::size_t lines = write_thesis_text(samples, o.export_text, o.force);
+  std::cerr << "rdsf-train: wrote " << lines << " samples to " << o.export_text << "\n";
+  return 0;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,40 @@
+#pragma once
+// rdsf-train's pieces: train a model from a recipe or from sets given on the command line, inspect a model
+// file, export the chosen samples in the thesis's text format.
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "classifier/boost_training.hpp"
+
+namespace rdsf {
+
+struct TrainOptions {
+  std::string recipe;  ///< name (models_dir/recipes/NAME.yml) or file
+  std::vector<std::string> pos_sets, neg_sets, validation_pos_sets, validation_neg_sets;
+  std::optional<std::size_t> positives, negatives;  ///< override the recipe; 0 = all
+  std::string name;  ///< model name; default the recipe's name
+  std::string models_dir = "models";
+  // Overrides of the recipe's (or the defaults') boosting parameters.
+  std::optional<int> rounds, bins, early_stopping, report_every;
+  std::optional<std::string> backend;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> validation_fraction, weight_trim;
+  int threads = 0;
+  std::string inspect;      ///< model to describe instead of training
+  int top = 20;             ///< --inspect: features listed
+  std::string export_text;  ///< write the chosen samples here instead of training
+  bool force = false;       ///< --export-text may replace a file
+};
+
+/// Trains and saves models_dir/NAME/vN.yml; progress on stderr. Returns the exit code.
+int run_train(const TrainOptions& options);
+
+/// Prints the header, figures and most used features of a model file (or NAME, NAME/vN) to `out`.
+int run_inspect(const TrainOptions& options, std::ostream& out);
+
+/// Writes the samples a training run would use in the thesis's text format.
+int run_export_text(const TrainOptions& options);
+
+}  // namespace rdsf

@@ -1,0 +1,38 @@
+#pragma once
+// The samples a training run uses: the wanted class taken from each given sample set (positives from the
+// --pos sets, negatives from the --neg sets), a seeded subset when fewer are asked for than the sets hold
+// (with a clear warning when they hold fewer than asked), and their feature rows.
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "classifier/training_record.hpp"
+
+namespace rdsf {
+
+struct SampleChoice {
+  std::vector<std::string> pos_sets, neg_sets;
+  std::size_t positives = 0, negatives = 0;  ///< wanted; 0 = all
+  std::uint64_t seed = 1;
+  std::string asked_by;  ///< "recipe tree2" or "--positives", for the warning
+  std::string role_prefix;  ///< "" for training, "validation-" for a separate validation set
+};
+
+struct ChosenSamples {
+  cv::Mat1f rows;           ///< one feature row per sample, positives first
+  std::vector<int> labels;  ///< 1 / 0
+  std::vector<SampleSetUse> sets;  ///< per set and role: path, manifest hash, available, used
+};
+
+/// Reads the sets, picks the samples and computes (or reads) their features. Warnings go to `log`.
+/// Throws Error when a set cannot be read, has another feature spec, or a class ends up empty.
+ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads = 0);
+
+/// Writes `samples` in the thesis's text format ("label f1 ... f8128", shortest round-trip floats) through
+/// a temporary file; refuses an existing file unless `overwrite`. Returns the number of lines.
+std::size_t write_thesis_text(const ChosenSamples& samples, const std::string& path, bool overwrite);
+
+}  // namespace rdsf
