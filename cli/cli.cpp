@@ -74,6 +74,10 @@ po::options_description detector_options(DetectorParams& p) {
        "gap tolerance (columns) when joining columns into an object")
       ("min_width", po::value(&c.min_width_cm)->default_value(c.min_width_cm),
        "minimum real width (cm) of a candidate")
+      ("occlusion_gap", po::value(&c.occlusion_gap_cm)->default_value(c.occlusion_gap_cm),
+       "a column's run goes on across nearer things up to this height (cm); 0 = thesis")
+      ("floor_tolerance", po::value(&c.floor_tolerance_mm)->default_value(c.floor_tolerance_mm),
+       "cut bottom rows nearer than the object's median depth by more than this (mm): floor; 0 = thesis")
       ("window_scale", po::value(&c.window_scale)->default_value(c.window_scale),
        "window = strict box enlarged by this factor");
   po::options_description all;

@@ -13,6 +13,39 @@ double iou(const cv::Rect& a, const cv::Rect& b) {
   return uni > 0 ? inter / uni : 0.0;
 }
 
+namespace {
+
+// The lowest row of the object that is not floor in front of it: scanning up from the bottom, a row whose
+// farthest layer pixel (in the object's passing columns) is nearer than the object's median depth by more
+// than `tolerance_mm` holds only floor that lies before the object.
+template <typename Passes>
+int trim_floor(const cv::Mat1w& depth_mm, const cv::Mat1b& labels, int layer, int first, int last, int top,
+               int bottom, double tolerance_mm, const Passes& passes) {
+  std::vector<std::uint16_t> depths;
+  for (int r = top; r <= bottom; r += 2) {
+    const std::uint8_t* label = labels.ptr<std::uint8_t>(r);
+    const std::uint16_t* depth = depth_mm.ptr<std::uint16_t>(r);
+    for (int c = first; c <= last; ++c) {
+      if (label[c] == layer && passes(c)) depths.push_back(depth[c]);
+    }
+  }
+  if (depths.empty()) return bottom;
+  std::nth_element(depths.begin(), depths.begin() + static_cast<std::ptrdiff_t>(depths.size() / 2), depths.end());
+  const double floor_below = depths[depths.size() / 2] - tolerance_mm;
+  for (int r = bottom; r > top; --r) {
+    const std::uint8_t* label = labels.ptr<std::uint8_t>(r);
+    const std::uint16_t* depth = depth_mm.ptr<std::uint16_t>(r);
+    int farthest = 0;
+    for (int c = first; c <= last; ++c) {
+      if (label[c] == layer && passes(c)) farthest = std::max(farthest, static_cast<int>(depth[c]));
+    }
+    if (farthest >= floor_below) return r;
+  }
+  return bottom;
+}
+
+}  // namespace
+
 void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
                cv::Size crop_size, Candidate& candidate) {
   candidate.depth_crop.create(crop_size);
@@ -51,7 +84,12 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
   std::vector<Candidate> candidates;
   const int layer_count = static_cast<int>(segmentation.layers.size());
   if (layer_count == 0) return candidates;
-  const auto runs = column_runs(segmentation.labels, layer_count, params.k);
+  std::vector<int> occlusion_px(static_cast<std::size_t>(layer_count) + 1, 0);
+  for (const DepthLayer& layer : segmentation.layers) {
+    occlusion_px[static_cast<std::size_t>(layer.label)] = static_cast<int>(
+        params.occlusion_gap_cm * 10.0 * frame.camera.fy_px / std::max(1.0, layer.mean_depth_mm));
+  }
+  const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px);
   const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);
   const int width = frame.depth_mm.cols;
 
@@ -92,6 +130,10 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
         if (passes(x) && column[static_cast<std::size_t>(x)].top == top) at_top.push_back(x);
       }
       const int highest = at_top[at_top.size() / 2];
+      if (params.floor_tolerance_mm > 0) {
+        bottom = trim_floor(frame.depth_mm, segmentation.labels, layer.label, first, last, top, bottom,
+                            params.floor_tolerance_mm, passes);
+      }
 
       Candidate candidate;
       const int box_height = bottom - top + 1;

@@ -22,6 +22,14 @@ struct CandidateParams {
   int column_gap = 6;
   /// An object narrower than this in real centimetres is not a candidate.
   double min_width_cm = 10.0;
+  /// A column's run goes on across things standing in front of the layer (pixels of nearer layers only)
+  /// up to this real height (cm): a table before a person's legs does not cut the person in two. 0 turns
+  /// it off (the thesis's behaviour).
+  double occlusion_gap_cm = 60.0;
+  /// Floor trimming: rows at the bottom of an object whose farthest layer pixel is nearer than the object's
+  /// median depth by more than this (mm) are floor in front of the feet, not the object, and are cut off
+  /// the box. 0 turns it off (the thesis's behaviour).
+  double floor_tolerance_mm = 150.0;
   /// The window is the strict box enlarged by this factor in both directions (thesis: 25%).
   double window_scale = 1.25;
   /// threshold_height for a layer at the given depth.

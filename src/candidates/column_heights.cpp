@@ -1,27 +1,61 @@
 #include "candidates/column_heights.hpp"
 
 namespace rdsf {
+namespace {
 
-std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int layer_count, int k) {
-  const int width = labels.cols;
+struct Segment {
+  int label, first, last;  // rows first..last of one label
+};
+
+}  // namespace
+
+std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int layer_count, int k,
+                                                const std::vector<int>& occlusion_gap_px) {
+  const int width = labels.cols, height = labels.rows;
   std::vector<std::vector<ColumnRun>> best(static_cast<std::size_t>(layer_count) + 1,
                                            std::vector<ColumnRun>(static_cast<std::size_t>(width)));
-  // The run in progress per (label, column): its first row and its last occupied row.
-  std::vector<int> start(best.size() * static_cast<std::size_t>(width), -1);
-  std::vector<int> last(best.size() * static_cast<std::size_t>(width), -1);
-  for (int r = 0; r < labels.rows; ++r) {
-    const std::uint8_t* row = labels.ptr<std::uint8_t>(r);
-    for (int c = 0; c < width; ++c) {
-      const int label = row[c];
-      if (label == 0 || label > layer_count) continue;
-      const std::size_t at = static_cast<std::size_t>(label) * static_cast<std::size_t>(width) +
-                             static_cast<std::size_t>(c);
-      if (last[at] < 0 || r - last[at] - 1 > k) start[at] = r;
-      last[at] = r;
+  // Columns as rows: one contiguous pass each.
+  cv::Mat1b columns;
+  cv::transpose(labels, columns);
+  std::vector<Segment> segments;
+  std::vector<char> present(static_cast<std::size_t>(layer_count) + 1);
+  for (int c = 0; c < width; ++c) {
+    const std::uint8_t* column = columns.ptr<std::uint8_t>(c);
+    segments.clear();
+    std::fill(present.begin(), present.end(), 0);
+    for (int r = 0; r < height;) {
+      const int label = column[r];
+      int end = r;
+      while (end + 1 < height && column[end + 1] == label) ++end;
+      segments.push_back({label, r, end});
+      if (label > 0 && label <= layer_count) present[static_cast<std::size_t>(label)] = 1;
+      r = end + 1;
+    }
+    for (int label = 1; label <= layer_count; ++label) {
+      if (!present[static_cast<std::size_t>(label)]) continue;
+      const int occlusion_limit =
+          static_cast<std::size_t>(label) < occlusion_gap_px.size() ? occlusion_gap_px[static_cast<std::size_t>(label)] : 0;
       ColumnRun& b = best[static_cast<std::size_t>(label)][static_cast<std::size_t>(c)];
-      if (r - start[at] + 1 > b.length()) {
-        b.top = start[at];
-        b.bottom = r;
+      int start = -1, last = -1;
+      // Since `last`: no pixel of a farther layer, and some of a nearer one (missing readings are allowed
+      // too: a Kinect leaves a shadow of no reading beside what stands in front).
+      bool nothing_farther = true, something_nearer = false;
+      for (const Segment& s : segments) {
+        if (s.label != label) {
+          if (s.label > label) nothing_farther = false;
+          if (s.label > 0 && s.label < label) something_nearer = true;
+          continue;
+        }
+        const int gap = s.first - last - 1;
+        const bool occluded = nothing_farther && something_nearer && gap <= occlusion_limit;
+        if (start < 0 || (gap > k && !occluded)) start = s.first;
+        last = s.last;
+        nothing_farther = true;
+        something_nearer = false;
+        if (last - start + 1 > b.length()) {
+          b.top = start;
+          b.bottom = last;
+        }
       }
     }
   }

@@ -12,8 +12,13 @@ struct ColumnRun {
   int length() const { return top < 0 ? 0 : bottom - top + 1; }
 };
 
-/// runs[layer_label][column] for every label 1..layer_count in one pass over the label image. A run goes
-/// on through gaps of at most `k` rows without the layer's pixels; its length counts the gaps.
-std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int layer_count, int k);
+/// runs[layer_label][column] for every label 1..layer_count. A run goes on through gaps of at most `k` rows
+/// without the layer's pixels; its length counts the gaps. Labels are ordered nearest first, so a gap with
+/// pixels of nearer layers and no pixel of a farther one is something standing in front of the layer (a
+/// table before a person's legs, with its shadow of missing readings): such an occlusion gap does not break
+/// the run while it is at most occlusion_gap_px[label] rows (index 0 unused; an empty vector or 0 allows
+/// none beyond `k`).
+std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int layer_count, int k,
+                                                const std::vector<int>& occlusion_gap_px = {});
 
 }  // namespace rdsf

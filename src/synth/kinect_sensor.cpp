@@ -1,0 +1,151 @@
+#include "synth/kinect_sensor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "synth/random.hpp"
+
+namespace rdsf::synth {
+
+KinectSensor::KinectSensor(const CameraModel& camera, KinectSensorParams params)
+    : camera_(camera), params_(params) {
+  const double sx = camera.width_px / 640.0, sy = camera.height_px / 480.0;
+  band_left_ = static_cast<int>(std::lround(params.band_left_px * sx));
+  band_right_ = static_cast<int>(std::lround(params.band_right_px * sx));
+  band_top_ = static_cast<int>(std::lround(params.band_top_px * sy));
+  band_bottom_ = static_cast<int>(std::lround(params.band_bottom_px * sy));
+}
+
+bool KinectSensor::in_band(int x, int y) const {
+  return x < band_left_ || x >= camera_.width_px - band_right_ || y < band_top_ ||
+         y >= camera_.height_px - band_bottom_;
+}
+
+cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed) const {
+  const int width = camera_.width_px, height = camera_.height_px;
+  const KinectSensorParams& p = params_;
+  Rng rng(seed);
+
+  // a table of normal numbers, indexed by random bits per pixel (faster than Box-Muller per pixel)
+  constexpr int table_size = 4096;
+  std::vector<float> normals(table_size);
+  for (float& value : normals) value = static_cast<float>(rng.normal());
+
+  // dropout per surface: room surfaces, then shapes
+  // (in RoomSurface order: floor, ceiling, left, right, front, back, window, unused; then the shapes)
+  const float wall = scene.room.wall_dropout;
+  std::vector<float> dropout = {scene.room.floor_dropout, wall, wall, wall, wall, wall,
+                                2.0f /* glass */,         0.0f};
+  for (const Shape& shape : scene.shapes) dropout.push_back(shape.dropout);
+  for (float& d : dropout) d += static_cast<float>(p.base_dropout);
+
+  // a smooth random field in [0, 1): two octaves of bilinear value noise; pixels lose their reading where
+  // the field is below their surface's dropout, which makes blobby patches
+  const int cell = std::max(4, static_cast<int>(std::lround(p.patch_cell_px * width / 640.0)));
+  const int grid_w = width / cell + 2, grid_h = height / cell + 2;
+  const int fine = std::max(2, cell / 3);
+  const int fine_w = width / fine + 2, fine_h = height / fine + 2;
+  std::vector<float> coarse(static_cast<std::size_t>(grid_w * grid_h)),
+      detail(static_cast<std::size_t>(fine_w * fine_h));
+  for (float& value : coarse) value = static_cast<float>(rng.uniform());
+  for (float& value : detail) value = static_cast<float>(rng.uniform());
+  // bilinear interpolation, with the column lookups computed once per image
+  std::vector<int> coarse_x(static_cast<std::size_t>(width)), fine_x(static_cast<std::size_t>(width));
+  std::vector<float> coarse_fx(static_cast<std::size_t>(width)), fine_fx(static_cast<std::size_t>(width));
+  for (int u = 0; u < width; ++u) {
+    const std::size_t i = static_cast<std::size_t>(u);
+    coarse_x[i] = u / cell;
+    coarse_fx[i] = static_cast<float>(u - coarse_x[i] * cell) / static_cast<float>(cell);
+    fine_x[i] = u / fine;
+    fine_fx[i] = static_cast<float>(u - fine_x[i] * fine) / static_cast<float>(fine);
+  }
+  auto lerp_row = [](const float* g0, int grid_width, float fy, int gx, float fx) {
+    const float* a = g0 + gx;
+    const float* b = a + grid_width;
+    return (a[0] + (a[1] - a[0]) * fx) * (1 - fy) + (b[0] + (b[1] - b[0]) * fx) * fy;
+  };
+
+  // the field is roughly normal around 0.5 (sigma about 0.13): a dropout d removes about d of a surface
+  // when the field is thresholded at its d-quantile (logistic approximation of the normal quantile)
+  auto field_threshold = [](double d) {
+    if (d >= 0.999) return 2.0;
+    if (d <= 0.0) return -1.0;
+    return 0.5 + 0.13 * 0.5513 * std::log(d / (1.0 - d));
+  };
+  cv::Mat1w out(height, width, static_cast<std::uint16_t>(0));
+  const double fb = camera_.fx_px * p.baseline_m;
+  std::vector<unsigned char> shadow(static_cast<std::size_t>(width));
+  for (int v = 0; v < height; ++v) {
+    const float* z = buffers.depth_m.ptr<float>(v);
+    const float* z_up = buffers.depth_m.ptr<float>(std::max(0, v - 1));
+    const float* z_down = buffers.depth_m.ptr<float>(std::min(height - 1, v + 1));
+    const std::uint16_t* surface = buffers.surface.ptr<std::uint16_t>(v);
+    const float* incidence = buffers.incidence.ptr<float>(v);
+    std::uint16_t* depth_mm = out.ptr<std::uint16_t>(v);
+    const int coarse_y = v / cell, fine_y = v / fine;
+    const float coarse_fy = static_cast<float>(v - coarse_y * cell) / static_cast<float>(cell);
+    const float fine_fy = static_cast<float>(v - fine_y * fine) / static_cast<float>(fine);
+    const float* coarse_row = coarse.data() + static_cast<std::size_t>(coarse_y * grid_w);
+    const float* fine_row = detail.data() + static_cast<std::size_t>(fine_y * fine_w);
+
+    // projector shadow: scanning right to left, a pixel is hidden from the projector when a pixel to its
+    // right reaches further left in the projector's image
+    const double jitter = 0.7 * std::abs(rng.normal());
+    double reach = 1e18;
+    for (int u = width - 1; u >= 0; --u) {
+      const double up = u - fb / z[u];
+      shadow[static_cast<std::size_t>(u)] = up > reach + 1.0 + jitter ? 1 : 0;
+      reach = std::min(reach, up);
+    }
+
+    std::uint64_t bits = rng.next();
+    int bits_left = 2;
+    for (int u = 0; u < width; ++u) {
+      if (bits_left == 0) {
+        bits = rng.next();
+        bits_left = 2;
+      }
+      const std::uint32_t r = static_cast<std::uint32_t>(bits & 0xffffffffU);
+      bits >>= 32;
+      --bits_left;
+      if (u < band_left_ || u >= width - band_right_ || v < band_top_ || v >= height - band_bottom_) continue;
+      if (shadow[static_cast<std::size_t>(u)]) continue;
+      const double ideal = z[u];
+      if (ideal < p.min_range_m || ideal > p.max_range_m) continue;
+      // depth edges: a neighbour much nearer (we are the far side) or much farther (near side)
+      const float limit = static_cast<float>(p.edge_jump * ideal);
+      const float left = u > 0 ? z[u - 1] : z[u], right = u + 1 < width ? z[u + 1] : z[u];
+      const float zd = z[u];
+      const bool far_side =
+          zd - left > limit || zd - right > limit || zd - z_up[u] > limit || zd - z_down[u] > limit;
+      const bool near_side =
+          left - zd > limit || right - zd > limit || z_up[u] - zd > limit || z_down[u] - zd > limit;
+      const double chance = static_cast<double>(r & 0xff) / 256.0;
+      if (far_side && chance < p.edge_far_hole) continue;
+      if (near_side && chance < p.edge_near_hole) continue;
+      // block matching smears the near surface over the edge: ragged, slightly fattened silhouettes
+      double depth = zd;
+      if (far_side && static_cast<double>((r >> 20) & 0xff) / 256.0 < p.edge_fatten) {
+        depth = std::min(std::min(left, right), std::min(z_up[u], z_down[u]));
+      }
+      // blobby dropout by material and viewing angle
+      double drop = dropout[surface[u]];
+      if (incidence[u] < p.grazing_cosine) drop += 1.2 * (p.grazing_cosine - incidence[u]) / p.grazing_cosine;
+      if (drop > 0) {
+        const std::size_t i = static_cast<std::size_t>(u);
+        const float f = 0.7f * lerp_row(coarse_row, grid_w, coarse_fy, coarse_x[i], coarse_fx[i]) +
+                        0.3f * lerp_row(fine_row, fine_w, fine_fy, fine_x[i], fine_fx[i]);
+        if (f < field_threshold(drop)) continue;
+      }
+      // noise and disparity quantisation, both growing with z^2
+      const double noisy = depth + p.noise_per_m2 * depth * depth * normals[(r >> 8) & (table_size - 1)];
+      const double steps = std::max(1.0, std::round(p.disparity_scale / noisy));
+      const double measured = p.disparity_scale / steps;
+      if (measured < p.min_range_m || measured > p.max_range_m) continue;
+      depth_mm[u] = static_cast<std::uint16_t>(std::lround(measured * 1000.0));
+    }
+  }
+  return out;
+}
+
+}  // namespace rdsf::synth

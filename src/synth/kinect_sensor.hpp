@@ -1,0 +1,61 @@
+#pragma once
+// A model of the Kinect v1 (PrimeSense PS1080) depth sensor applied to an ideal rendering:
+//  - range: no reading (0) nearer than 0.5 m or farther than 8 m;
+//  - projector shadow: the IR projector sits baseline_m to the right of the IR camera, so the background
+//    just left of every near object is not lit by the pattern and has no reading (band width
+//    fx * baseline * (1/z_near - 1/z_far) pixels);
+//  - noise and quantisation growing with the square of the distance: Gaussian noise of sigma
+//    noise_per_m2 * z^2, then depth quantised in disparity steps (z = disparity_scale / k), i.e. steps of
+//    z^2 / disparity_scale (2.9 mm at 1 m, 4.6 cm at 4 m);
+//  - ragged depth edges: far-side edge pixels are lost or take the near depth (the near surface spreads
+//    over the edge, as with block matching); missing readings in blobby patches on dark or
+//    shiny materials and surfaces seen at a grazing angle (a smooth random field thresholded by the
+//    surface's dropout), and on glass (windows);
+//  - the band without readings at the image border left by depth-to-colour registration.
+// Defaults reproduce the statistics measured on ../shared/realdata (see docs/synth.md).
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "frame/camera_model.hpp"
+#include "synth/renderer.hpp"
+#include "synth/scene.hpp"
+
+namespace rdsf::synth {
+
+struct KinectSensorParams {
+  double min_range_m = 0.5;
+  double max_range_m = 8.0;
+  double baseline_m = 0.075;       ///< IR projector to IR camera
+  double disparity_scale = 348.0;  ///< 8 sub-pixel steps * 580 px (IR focal length) * 0.075 m
+  double noise_per_m2 = 0.0012;    ///< depth noise sigma = noise_per_m2 * z^2 (metres)
+  double edge_far_hole = 0.3;      ///< probability of losing a pixel on the far side of a depth edge
+  double edge_near_hole = 0.1;     ///< ... on the near side
+  double edge_fatten = 0.35;       ///< probability that a far-side edge pixel takes the near depth
+  double edge_jump = 0.05;         ///< a depth edge: neighbours differ by more than this fraction of z
+  int patch_cell_px = 20;          ///< scale of the blobby dropout field (at 640 px wide)
+  double grazing_cosine = 0.3;     ///< surfaces seen at a cosine below this lose readings increasingly
+  double base_dropout = 0.0;       ///< dropout of every surface in addition to its material's
+  /// Border band without readings (registration), in pixels at 640x480; scaled with the image.
+  int band_left_px = 18, band_right_px = 30, band_top_px = 20, band_bottom_px = 8;
+};
+
+class KinectSensor {
+ public:
+  KinectSensor(const CameraModel& camera, KinectSensorParams params = {});
+  const KinectSensorParams& params() const { return params_; }
+
+  /// The depth image (mm, 0 = no reading) the sensor delivers for `buffers` rendered from `scene`;
+  /// `seed` drives its noise (same seed, same image).
+  cv::Mat1w measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed) const;
+
+  /// True when pixel (x, y) lies in the registration band (never has a reading).
+  bool in_band(int x, int y) const;
+
+ private:
+  CameraModel camera_;
+  KinectSensorParams params_;
+  int band_left_, band_right_, band_top_, band_bottom_;
+};
+
+}  // namespace rdsf::synth

@@ -1,0 +1,32 @@
+#pragma once
+// Where the people of one clip are in every frame: each walks on a smooth path between free spots of the
+// room (turning gradually, around furniture, in and out of the camera's view) and stands still for a
+// while in between, facing any way (front, back, side). The gait phase advances with the distance walked.
+#include <vector>
+
+#include "synth/person_model.hpp"
+#include "synth/random.hpp"
+#include "synth/scene.hpp"
+
+namespace rdsf::synth {
+
+struct PeopleParams {
+  double speed_min_mps = 0.7, speed_max_mps = 1.5;  ///< walking speed
+  double stride_m = 1.35;                           ///< distance of one gait cycle (two steps) at 1.75 m
+  double nearest_m = 1.0, farthest_m = 7.0;         ///< distance range (Z) the paths stay in
+  double frame_interval_s = 1.0 / 30.0;
+  /// Share of walks that head mostly towards or away from the camera (the rest go anywhere).
+  double along_room_share = 0.75;
+};
+
+struct PersonTrack {
+  int track = 0;
+  PersonBody body;
+  std::vector<PersonPose> poses;  ///< one per frame of the clip
+};
+
+/// Plans `count` people over `frames` frames in `room`, with track ids first_track, first_track+1, ...
+std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int frames, int first_track,
+                                     const PeopleParams& params = {});
+
+}  // namespace rdsf::synth

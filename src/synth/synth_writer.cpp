@@ -1,0 +1,118 @@
+#include "synth/synth_writer.hpp"
+
+#include <filesystem>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+#include "frame/depth_png.hpp"
+
+namespace rdsf::synth {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool ends_with(const std::string& text, const std::string& tail) {
+  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
+
+void prepare_output_folder(const std::string& dir, bool force) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) fail(dir, "exists and is not a folder");
+  if (!fs::exists(dir, ec)) {
+    fs::create_directories(dir, ec);
+    if (ec) fail(dir, "cannot create folder: " + ec.message());
+    return;
+  }
+  const std::regex ours(R"(\d{6}\.(depth|rgb)\.png)");
+  std::vector<fs::path> our_files;
+  int foreign_frames = 0;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, ours) || name == "boxes.csv" || name == "synth.yml") {
+      our_files.push_back(entry.path());
+    } else if (ends_with(name, ".depth.png") || ends_with(name, ".rgb.png")) {
+      ++foreign_frames;
+    }
+  }
+  if (ec) fail(dir, "cannot list folder: " + ec.message());
+  if (!force && (!our_files.empty() || foreign_frames > 0)) {
+    fail(dir, "already holds frames or boxes.csv (" + std::to_string(our_files.size() + foreign_frames) +
+                  " files); give --force to replace them, or choose another folder");
+  }
+  if (foreign_frames > 0) {
+    fail(dir,
+         "holds " + std::to_string(foreign_frames) +
+             " depth/colour images not named like rdsf-synth output; --force only replaces NNNNNN.depth.png, "
+             "NNNNNN.rgb.png, boxes.csv and synth.yml: empty the folder yourself");
+  }
+  for (const fs::path& path : our_files) {
+    fs::remove(path, ec);
+    if (ec) fail(path.string(), "cannot remove: " + ec.message());
+  }
+}
+
+SynthWriter::SynthWriter(std::string dir, const SynthParams& params, bool force)
+    : dir_(std::move(dir)), params_(params), force_(force) {
+  boxes_ = std::make_unique<AtomicTextFile>((fs::path(dir_) / "boxes.csv").string(), force_);
+  boxes_->stream() << "frame,person,x,y,w,h,visible_fraction,track\n";
+}
+
+void SynthWriter::write(const SynthFrame& frame) {
+  const fs::path base = fs::path(dir_) / frame.name;
+  write_png_atomically(base.string() + ".depth.png", frame.depth_mm);
+  if (!frame.bgr.empty()) write_png_atomically(base.string() + ".rgb.png", frame.bgr);
+  std::ostream& out = boxes_->stream();
+  for (const PersonTruth& p : frame.people) {
+    char fraction[32];
+    std::snprintf(fraction, sizeof fraction, "%.3f", p.visible_fraction);
+    out << frame.name << ',' << p.track << ',' << p.box.x << ',' << p.box.y << ',' << p.box.width << ','
+        << p.box.height << ',' << fraction << ',' << p.track << '\n';
+  }
+  boxes_->flush();
+}
+
+std::string SynthWriter::describe(const SynthParams& p, const std::string& command_line) {
+  std::ostringstream out;
+  const KinectSensorParams& s = p.sensor;
+  std::string command = command_line;
+  for (char& c : command) {
+    if (c == '"' || c == '\\' || c == '\n') c = '\'';
+  }
+  out << "# Synthetic Kinect v1 recording made by rdsf-synth (same options and seed give the same bytes)\n"
+      << "generator: rdsf-synth 1\n"
+      << "command: \"" << command << "\"\n"
+      << "seed: " << p.seed << "\n"
+      << "frames: " << p.frames << "\n"
+      << "people: " << p.people_min << ".." << p.people_max << "\n"
+      << "empty: " << (p.empty ? "true" : "false") << "\n"
+      << "size: " << p.width_px << "x" << p.height_px << "\n"
+      << "rgb: " << (p.rgb ? "true" : "false") << "\n"
+      << "clip_frames: " << p.clip_frames << "\n"
+      << "frame_interval_s: " << p.people.frame_interval_s << "\n"
+      << "camera: \"" << p.camera().describe() << "\"\n"
+      << "sensor:\n"
+      << "  range_m: [" << s.min_range_m << ", " << s.max_range_m << "]\n"
+      << "  baseline_m: " << s.baseline_m << "\n"
+      << "  disparity_scale: " << s.disparity_scale << "\n"
+      << "  noise_sigma_m: \"" << s.noise_per_m2 << " * z^2\"\n"
+      << "  edge_hole_probability: {far: " << s.edge_far_hole << ", near: " << s.edge_near_hole << "}\n"
+      << "  edge_fatten_probability: " << s.edge_fatten << "\n"
+      << "  border_band_px_at_640x480: {left: " << s.band_left_px << ", right: " << s.band_right_px
+      << ", top: " << s.band_top_px << ", bottom: " << s.band_bottom_px << "}\n"
+      << "boxes: \"boxes.csv: frame,person,x,y,w,h,visible_fraction,track (tight box of the visible pixels; "
+         "person = track id)\"\n";
+  return out.str();
+}
+
+void SynthWriter::commit(const std::string& command_line) {
+  AtomicTextFile info((fs::path(dir_) / "synth.yml").string(), force_);
+  info.stream() << describe(params_, command_line);
+  info.commit();
+  boxes_->commit();
+}
+
+}  // namespace rdsf::synth

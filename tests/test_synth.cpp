@@ -1,0 +1,232 @@
+// The synthetic Kinect generator as a library: its random numbers, determinism, ground-truth boxes, the
+// --empty rooms, smooth tracks, the sensor's range and quantisation, and that the detector core finds
+// the people it renders.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "candidates/candidate_finder.hpp"
+#include "core/stable_hash.hpp"
+#include "detector/detector_core.hpp"
+#include "synth/people_planner.hpp"
+#include "synth/random.hpp"
+#include "synth/room_generator.hpp"
+#include "synth/synth_sequence.hpp"
+
+namespace {
+
+using rdsf::synth::SynthFrame;
+using rdsf::synth::SynthParams;
+using rdsf::synth::SynthSequence;
+
+SynthParams small_params(std::uint64_t seed) {
+  SynthParams p;
+  p.frames = 24;
+  p.people_min = 1;
+  p.people_max = 3;
+  p.seed = seed;
+  p.clip_frames = 8;
+  p.width_px = 320;
+  p.height_px = 240;
+  return p;
+}
+
+std::uint64_t hash_frame(const SynthFrame& f) {
+  std::uint64_t h = rdsf::fnv1a64(std::string_view(reinterpret_cast<const char*>(f.depth_mm.data),
+                                                   f.depth_mm.total() * f.depth_mm.elemSize()));
+  for (const auto& p : f.people) {
+    const std::string row = std::to_string(p.track) + "," + std::to_string(p.box.x) + "," +
+                            std::to_string(p.box.y) + "," + std::to_string(p.box.width) + "," +
+                            std::to_string(p.box.height);
+    h = rdsf::fnv1a64(row, h);
+  }
+  return h;
+}
+
+TEST(SynthRandom, SameSeedSameNumbersAndSaneNormals) {
+  rdsf::synth::Rng a(123), b(123), c(124);
+  bool differs = false;
+  for (int i = 0; i < 100; ++i) {
+    const std::uint64_t x = a.next();
+    EXPECT_EQ(x, b.next());
+    differs |= x != c.next();
+  }
+  EXPECT_TRUE(differs);
+  rdsf::synth::Rng r(7);
+  double sum = 0, sum2 = 0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const double v = r.normal();
+    sum += v;
+    sum2 += v * v;
+  }
+  EXPECT_NEAR(sum / n, 0.0, 0.05);
+  EXPECT_NEAR(sum2 / n, 1.0, 0.05);
+  EXPECT_NE(rdsf::synth::derive_seed(1, 2, 3), rdsf::synth::derive_seed(1, 2, 4));
+}
+
+TEST(SynthSequence, SameSeedSameFramesOtherSeedOtherFrames) {
+  SynthSequence a(small_params(5)), b(small_params(5)), c(small_params(6));
+  std::uint64_t ha = 0, hb = 0, hc = 0;
+  for (int i = 0; i < 24; i += 3) {  // also out of order for b: frames do not depend on what came before
+    ha = rdsf::fnv1a64(std::to_string(hash_frame(a.frame(i))), ha);
+    hc = rdsf::fnv1a64(std::to_string(hash_frame(c.frame(i))), hc);
+  }
+  std::map<int, std::uint64_t> out_of_order;
+  for (int i = 21; i >= 0; i -= 3) out_of_order[i] = hash_frame(b.frame(i));
+  for (const auto& [i, h] : out_of_order) hb = rdsf::fnv1a64(std::to_string(h), hb);
+  EXPECT_EQ(ha, hb);
+  EXPECT_NE(ha, hc);
+}
+
+TEST(SynthSequence, BoxesLieInsideTheFrameAndCoverPixelsNearerThanTheEmptyRoom) {
+  SynthParams with_people = small_params(21);
+  SynthParams empty = with_people;
+  empty.empty = true;
+  SynthSequence people(with_people), rooms(empty);
+  int boxes = 0;
+  const cv::Rect image(0, 0, with_people.width_px, with_people.height_px);
+  for (int i = 0; i < with_people.frames; ++i) {
+    const SynthFrame f = people.frame(i);
+    const SynthFrame e = rooms.frame(i);
+    EXPECT_TRUE(e.people.empty()) << "an --empty frame has a box";
+    // the same room: most pixels are identical
+    const double same = static_cast<double>(cv::countNonZero(f.depth_mm == e.depth_mm)) /
+                        static_cast<double>(f.depth_mm.total());
+    EXPECT_GT(same, 0.5) << "frame " << i << ": empty room differs from the room with people";
+    for (const auto& p : f.people) {
+      ++boxes;
+      EXPECT_EQ(p.box & image, p.box) << "box outside the frame";
+      EXPECT_GT(p.visible_fraction, 0.0);
+      EXPECT_LE(p.visible_fraction, 1.0);
+      long long nearer = 0;
+      for (int y = p.box.y; y < p.box.y + p.box.height; ++y) {
+        for (int x = p.box.x; x < p.box.x + p.box.width; ++x) {
+          const int d = f.depth_mm(y, x), background = e.depth_mm(y, x);
+          if (d > 0 && background > 0 && d < background - 50) ++nearer;
+        }
+      }
+      if (p.visible_px < 200) continue;  // slivers at the image edge are mostly edge holes
+      EXPECT_GE(static_cast<double>(nearer), 0.3 * static_cast<double>(p.visible_px))
+          << "frame " << i << " track " << p.track << ": the box does not cover pixels nearer than the room";
+    }
+  }
+  EXPECT_GT(boxes, 10);
+}
+
+TEST(SynthPeople, PathsAreSmoothAndStayInTheRoom) {
+  rdsf::synth::Rng room_rng(5), people_rng(6);
+  rdsf::synth::CameraPose camera;
+  const rdsf::synth::Room room = rdsf::synth::generate_room(room_rng, {}, camera);
+  const rdsf::synth::PeopleParams params;
+  const auto tracks = rdsf::synth::plan_people(people_rng, room, 4, 300, 11, params);
+  ASSERT_EQ(tracks.size(), 4U);
+  double walked_m = 0;
+  for (std::size_t t = 0; t < tracks.size(); ++t) {
+    EXPECT_EQ(tracks[t].track, 11 + static_cast<int>(t));
+    EXPECT_GE(tracks[t].body.height_m, 1.5);
+    EXPECT_LE(tracks[t].body.height_m, 1.95);
+    for (std::size_t f = 0; f < tracks[t].poses.size(); ++f) {
+      const auto& pose = tracks[t].poses[f];
+      if (!pose.present) continue;
+      EXPECT_TRUE(room.walkable(pose.position.x, pose.position.z, 0.3)) << "track " << t << " frame " << f;
+      if (f == 0) continue;
+      const auto& before = tracks[t].poses[f - 1];
+      const double step =
+          std::hypot(pose.position.x - before.position.x, pose.position.z - before.position.z);
+      walked_m += step;
+      EXPECT_LE(step, params.speed_max_mps * params.frame_interval_s + 1e-9) << "jump at frame " << f;
+      double turn = std::abs(pose.yaw_rad - before.yaw_rad);
+      turn = std::min(turn, 2 * 3.14159265358979 - turn);
+      EXPECT_LE(turn, 3.0 * params.frame_interval_s + 1e-9) << "sudden turn at frame " << f;
+    }
+  }
+  EXPECT_GT(walked_m, 4.0) << "nobody walks";
+}
+
+TEST(SynthSensor, ReadingsInRangeAndQuantisedCoarserWithDistance) {
+  SynthParams p = small_params(9);
+  p.width_px = 640;
+  p.height_px = 480;
+  SynthSequence sequence(p);
+  std::set<int> values;
+  for (int i = 0; i < 24; i += 4) {
+    const SynthFrame f = sequence.frame(i);
+    for (int y = 0; y < f.depth_mm.rows; ++y) {
+      for (int x = 0; x < f.depth_mm.cols; ++x) {
+        const int d = f.depth_mm(y, x);
+        if (d == 0) continue;
+        ASSERT_GE(d, 500);
+        ASSERT_LE(d, 8000);
+        values.insert(d);
+      }
+    }
+  }
+  // every reading lies on the disparity grid z = 348 / k metres (k whole): steps of z^2 / 348 m,
+  // about 3 mm at 1 m and 4.6 cm at 4 m
+  for (int d : values) {
+    const double k = std::round(348000.0 / d);
+    EXPECT_LE(std::abs(348000.0 / k - d), 0.51) << d << " mm is not a disparity step";
+  }
+  int between_3_and_6_m = 0;
+  for (int d : values) between_3_and_6_m += (d >= 3000 && d <= 6000) ? 1 : 0;
+  EXPECT_LE(between_3_and_6_m, 59);  // 348/3 - 348/6 + 1 steps
+  EXPECT_GT(values.size(), 100U);
+}
+
+// The detector core must find the people the generator renders: people with visible_fraction >= 0.8 at
+// 1.5-6 m need a candidate whose strict box has IoU >= 0.5 with their box (issue: at least 90%). The strict
+// box is height x height/2 (the thesis's), so a person seen from the side (box narrower than 0.26 x its
+// height) cannot reach IoU 0.5 even when found exactly; they are about a tenth of the rendered people and
+// are counted apart too. Four seeds, 690 frames, so that the figure does not hang on one room.
+TEST(SynthDetector, DetectorCoreFindsRenderedPeople) {
+  const rdsf::DetectorCore core;
+  int eligible = 0, found = 0, upright = 0, upright_found = 0;
+  for (const std::uint64_t seed : {2024, 11, 12, 13}) {
+    SynthParams p;
+    p.frames = seed == 2024 ? 240 : 150;
+    p.people_min = 2;
+    p.people_max = 5;
+    p.seed = seed;
+    p.clip_frames = 15;
+    SynthSequence sequence(p);
+    for (int i = 0; i < p.frames; ++i) {
+      const SynthFrame f = sequence.frame(i);
+      rdsf::DepthFrame frame;
+      frame.depth_mm = f.depth_mm;
+      frame.index = i;
+      frame.name = f.name;
+      frame.camera = p.camera();
+      const rdsf::FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);
+      for (const auto& person : f.people) {
+        if (person.visible_fraction < 0.8 || person.distance_mm < 1500 || person.distance_mm > 6000) continue;
+        double best = 0;
+        for (const auto& c : analysis.candidates) best = std::max(best, rdsf::iou(c.strict_box, person.box));
+        const bool hit = best >= 0.5;
+        const bool side_on = person.box.width < 0.26 * person.box.height;
+        ++eligible;
+        found += hit ? 1 : 0;
+        if (!side_on) {
+          ++upright;
+          upright_found += hit ? 1 : 0;
+        }
+      }
+    }
+  }
+  const double recall = eligible > 0 ? static_cast<double>(found) / eligible : 0.0;
+  const double upright_recall = upright > 0 ? static_cast<double>(upright_found) / upright : 0.0;
+  std::printf(
+      "detector core on synthetic frames: %d of %d people found (recall %.3f); without side-on people "
+      "%d of %d (recall %.3f)\n",
+      found, eligible, recall, upright_found, upright, upright_recall);
+  // Measured: 508 of 559 (0.909); without side-on people 502 of 509 (0.986).
+  EXPECT_GE(eligible, 500);
+  EXPECT_GE(recall, 0.90);
+  EXPECT_GE(upright_recall, 0.97);
+}
+
+}  // namespace

@@ -1,0 +1,130 @@
+// rdsf-synth as a user runs it: the frame-source layout it writes, same seed same bytes, --empty, and
+// one-line errors without touching anything for impossible arguments and occupied folders.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/stable_hash.hpp"
+#include "frame/frame_source.hpp"
+#include "support/test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rdsf::test::program;
+using rdsf::test::quote;
+using rdsf::test::run;
+using rdsf::test::TempDir;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string synth(const std::string& arguments) { return quote(program("rdsf-synth")) + " " + arguments; }
+
+/// Hash of every file of a set except synth.yml (which records the command line), in name order.
+std::string hash_set(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().filename() != "synth.yml") names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  std::uint64_t h = 0;
+  for (const auto& name : names) h = rdsf::fnv1a64(name + slurp((dir / name).string()), h);
+  return rdsf::to_hex16(h);
+}
+
+int count_lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(SynthProgram, WritesAFrameSourceWithBoxesAndItsRecipe) {
+  TempDir dir("rdsf-synth");
+  const std::string out = dir / "set";
+  const auto r = run(synth("--out " + quote(out) +
+                           " --frames 12 --clip-frames 3 --people 2..3 --seed 4 --size 320x240 --rgb"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out + "/000000.depth.png"));
+  EXPECT_TRUE(fs::exists(out + "/000011.rgb.png"));
+  const std::string boxes = slurp(out + "/boxes.csv");
+  EXPECT_EQ(boxes.rfind("frame,person,x,y,w,h,visible_fraction,track\n", 0), 0U) << boxes;
+  EXPECT_GT(count_lines(boxes), 1);
+  const std::string info = slurp(out + "/synth.yml");
+  EXPECT_NE(info.find("seed: 4"), std::string::npos) << info;
+  EXPECT_NE(info.find("fx="), std::string::npos) << info;
+  auto source = rdsf::open_frame_source(out);
+  ASSERT_EQ(source->frame_count().value_or(0), 12);
+  rdsf::DepthFrame frame;
+  ASSERT_TRUE(source->next(frame));
+  EXPECT_EQ(frame.name, "000000");
+  EXPECT_EQ(frame.depth_mm.cols, 320);
+  EXPECT_TRUE(frame.has_colour());
+  EXPECT_DOUBLE_EQ(frame.camera.fx_px, 262.5);
+}
+
+TEST(SynthProgram, SameSeedSameBytesOtherSeedOtherBytes) {
+  TempDir dir("rdsf-synth");
+  const std::string args = " --frames 4 --people 1..2 --size 320x240 --rgb --seed ";
+  ASSERT_EQ(run(synth("--out " + quote(dir / "a") + args + "9")).exit_code, 0);
+  ASSERT_EQ(run(synth("--out " + quote(dir / "b") + args + "9")).exit_code, 0);
+  ASSERT_EQ(run(synth("--out " + quote(dir / "c") + args + "10")).exit_code, 0);
+  EXPECT_EQ(hash_set(dir.path() / "a"), hash_set(dir.path() / "b"));
+  EXPECT_NE(hash_set(dir.path() / "a"), hash_set(dir.path() / "c"));
+}
+
+TEST(SynthProgram, EmptyWritesNoBoxes) {
+  TempDir dir("rdsf-synth");
+  const auto r = run(synth("--out " + quote(dir / "e") + " --frames 3 --people 2..3 --empty --size 160x120"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(dir / "e/boxes.csv"), "frame,person,x,y,w,h,visible_fraction,track\n");
+  EXPECT_TRUE(fs::exists(dir / "e/000002.depth.png"));
+}
+
+TEST(SynthProgram, ImpossibleArgumentsGiveOneLineAndTouchNothing) {
+  TempDir dir("rdsf-synth");
+  for (const std::string bad :
+       {"--people 5..2", "--people two", "--size 100x75", "--size 640", "--frames 0"}) {
+    const auto r = run(synth("--out " + quote(dir / "x") + " " + bad));
+    EXPECT_NE(r.exit_code, 0) << bad;
+    EXPECT_EQ(count_lines(r.err), 1) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find(bad.substr(0, bad.find(' '))), std::string::npos) << bad << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x")) << bad << " created the output folder";
+  }
+}
+
+TEST(SynthProgram, AnOccupiedFolderIsReplacedOnlyWithForce) {
+  TempDir dir("rdsf-synth");
+  const std::string out = dir / "set";
+  ASSERT_EQ(run(synth("--out " + quote(out) + " --frames 3 --people 1..1 --size 160x120 --seed 1")).exit_code,
+            0);
+  const std::string before = slurp(out + "/000000.depth.png");
+  const std::string boxes_before = slurp(out + "/boxes.csv");
+  const auto refused =
+      run(synth("--out " + quote(out) + " --frames 2 --people 1..1 --size 160x120 --seed 2"));
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_EQ(count_lines(refused.err), 1) << refused.err;
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  EXPECT_EQ(slurp(out + "/000000.depth.png"), before);
+  EXPECT_EQ(slurp(out + "/boxes.csv"), boxes_before);
+  EXPECT_TRUE(fs::exists(out + "/000002.depth.png"));
+
+  // a folder of other frames is refused too
+  fs::create_directories(dir / "other");
+  std::ofstream(dir / "other/kitchen.depth.png") << "x";
+  EXPECT_NE(run(synth("--out " + quote(dir / "other") + " --frames 1 --size 160x120")).exit_code, 0);
+  EXPECT_EQ(slurp(dir / "other/kitchen.depth.png"), "x");
+
+  const auto forced =
+      run(synth("--out " + quote(out) + " --frames 2 --people 1..1 --size 160x120 --seed 2 --force"));
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_NE(slurp(out + "/000000.depth.png"), before);
+  EXPECT_FALSE(fs::exists(out + "/000002.depth.png")) << "a frame of the replaced set was left behind";
+}
+
+}  // namespace

@@ -1,0 +1,122 @@
+// Synthetic frames must look like real Kinect frames where it matters to a detector: how much of the
+// image has a reading, the range of the readings, and missing readings along depth edges (the Kinect's
+// shadow). The ranges below were measured on ../shared/realdata (32 people frames and 10 empty frames,
+// 640x480, with rdsf::synth::depth_statistics):
+//   valid fraction          per frame 0.61-0.88 (people 0.61-0.84, mean 0.67; empty 0.67-0.88, mean 0.79)
+//   depth percentiles       p5 0.43-2.35 m, median 0.88-4.35 m, p95 1.46-8.08 m
+//   edge-hole fraction      per frame 0.15-0.73 (mean 0.58): the share of depth edges along rows
+//                           (jump > 300 mm and > 10%) that pass through missing readings
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "frame/depth_png.hpp"
+#include "support/test_support.hpp"
+#include "synth/depth_statistics.hpp"
+#include "synth/synth_sequence.hpp"
+
+namespace {
+
+using rdsf::synth::DepthStatistics;
+
+// The accepted ranges: the real frames' ranges, slightly widened.
+constexpr double valid_mean_min = 0.60, valid_mean_max = 0.88;
+constexpr double valid_frame_min = 0.45, valid_frame_max = 0.95;
+constexpr double edge_holes_mean_min = 0.40, edge_holes_mean_max = 0.75;
+constexpr double median_mean_min_mm = 880, median_mean_max_mm = 4350;
+constexpr double p95_max_mm = 8080;
+
+struct Summary {
+  double valid = 0, edge_holes = 0, median_mm = 0, p95_max_mm = 0;
+  int frames = 0;
+};
+
+Summary summarise(const std::vector<DepthStatistics>& stats) {
+  Summary s;
+  for (const auto& f : stats) {
+    s.valid += f.valid_fraction;
+    s.edge_holes += f.edge_hole_fraction;
+    s.median_mm += f.p50_mm;
+    s.p95_max_mm = std::max(s.p95_max_mm, f.p95_mm);
+  }
+  s.frames = static_cast<int>(stats.size());
+  if (s.frames > 0) {
+    s.valid /= s.frames;
+    s.edge_holes /= s.frames;
+    s.median_mm /= s.frames;
+  }
+  return s;
+}
+
+void print(const char* what, const Summary& s) {
+  std::printf("%s: %d frames, valid %.3f, edge holes %.3f, mean median %.0f mm, largest p95 %.0f mm\n", what,
+              s.frames, s.valid, s.edge_holes, s.median_mm, s.p95_max_mm);
+}
+
+TEST(SynthRealism, DepthStatisticsMatchRealKinectFrames) {
+  rdsf::synth::SynthParams p;
+  p.frames = 24;
+  p.clip_frames = 3;  // 8 rooms
+  p.people_min = 0;
+  p.people_max = 3;
+  p.seed = 31;
+  rdsf::synth::SynthSequence sequence(p);
+  std::vector<DepthStatistics> stats;
+  for (int i = 0; i < p.frames; ++i) {
+    const auto f = sequence.frame(i);
+    stats.push_back(rdsf::synth::depth_statistics(f.depth_mm));
+    EXPECT_GE(stats.back().valid_fraction, valid_frame_min) << "frame " << i;
+    EXPECT_LE(stats.back().valid_fraction, valid_frame_max) << "frame " << i;
+    EXPECT_GT(stats.back().edges, 50) << "frame " << i << " has hardly any depth edges";
+  }
+  const Summary s = summarise(stats);
+  print("synthetic", s);
+  EXPECT_GE(s.valid, valid_mean_min);
+  EXPECT_LE(s.valid, valid_mean_max);
+  EXPECT_GE(s.edge_holes, edge_holes_mean_min);
+  EXPECT_LE(s.edge_holes, edge_holes_mean_max);
+  EXPECT_GE(s.median_mm, median_mean_min_mm);
+  EXPECT_LE(s.median_mm, median_mean_max_mm);
+  EXPECT_LE(s.p95_max_mm, p95_max_mm);
+}
+
+// Keeps the ranges above honest: the real frames' own statistics fall inside them.
+TEST(SynthRealism, RealFramesFallInTheAcceptedRanges) {
+  RDSF_REQUIRE_REALDATA();
+  std::vector<DepthStatistics> stats;
+  for (const char* folder : {"people", "empty"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(rdsf::test::realdata_dir() / folder)) {
+      const std::string name = entry.path().filename().string();
+      if (name.size() < 10 || name.compare(name.size() - 10, 10, ".depth.png") != 0) continue;
+      if (name.rfind("floor_", 0) == 0) continue;  // close-range table-top frames, not rooms
+      stats.push_back(rdsf::synth::depth_statistics(rdsf::read_depth_png(entry.path().string())));
+    }
+  }
+  ASSERT_GT(stats.size(), 20U);
+  const Summary s = summarise(stats);
+  print("real", s);
+  EXPECT_GE(s.valid, valid_mean_min);
+  EXPECT_LE(s.valid, valid_mean_max);
+  EXPECT_GE(s.edge_holes, edge_holes_mean_min);
+  EXPECT_LE(s.edge_holes, edge_holes_mean_max);
+  EXPECT_GE(s.median_mm, median_mean_min_mm);
+  EXPECT_LE(s.median_mm, median_mean_max_mm);
+  EXPECT_LE(s.p95_max_mm, 8100.0);
+}
+
+TEST(SynthRealism, DepthStatisticsOfAKnownImage) {
+  cv::Mat1w depth(10, 20, static_cast<std::uint16_t>(3000));
+  depth(cv::Rect(10, 0, 10, 10)) = 1000;  // an edge at column 10 in every row
+  depth(cv::Rect(8, 0, 2, 5)) = 0;        // missing readings beside it in half the rows
+  const DepthStatistics s = rdsf::synth::depth_statistics(depth);
+  EXPECT_EQ(s.edges, 10);
+  EXPECT_DOUBLE_EQ(s.edge_hole_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(s.valid_fraction, 190.0 / 200.0);
+  EXPECT_EQ(s.p50_mm, 1000);  // 95 readings of 3000 and 100 of 1000 -> median 1000
+  EXPECT_EQ(s.p95_mm, 3000);
+}
+
+}  // namespace
