@@ -91,6 +91,9 @@ struct BadInput {
   std::string message;
 };
 
+// Test names show the case's name, not a dump of its bytes.
+void PrintTo(const BadInput& input, std::ostream* out) { *out << input.name; }
+
 class DetectBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(DetectBadInput, OneLineErrorAndNonZeroExit) {

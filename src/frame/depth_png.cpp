@@ -1,5 +1,6 @@
 #include "frame/depth_png.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -66,9 +67,12 @@ cv::Mat decode_png(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, expected a PNG file");
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) fail(path, "cannot be opened for reading");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::streamsize size = in.tellg();
+  in.seekg(0);
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(std::max<std::streamsize>(0, size)));
+  if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size)) fail(path, "cannot be read");
   check_png_structure(path, bytes);
   cv::Mat image;
   try {

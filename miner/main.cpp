@@ -1,0 +1,52 @@
+// rdsf-mine: mines negatives (every candidate of people-free frames, or a model's false positives) into a
+// sample set; --merge joins sample sets (e.g. the shards of a job array).
+#include "cli/cli.hpp"
+#include "miner/mine_run.hpp"
+
+int main(int argc, char** argv) {
+  return rdsf::cli::run("rdsf-mine", [&] {
+    namespace po = rdsf::cli::po;
+    rdsf::MineOptions o;
+    rdsf::EmpiricalCalibration calibration;
+    po::options_description options("rdsf-mine");
+    options.add_options()
+        ("source", po::value(&o.mine.sources)->multitoken(),
+         "people-free frames, one or more: folders of NAME.depth.png, list files, PNGs, .oni files, devices")
+        ("out", po::value(&o.out)->required(), "the sample set folder to append to (created when absent)")
+        ("model", po::value(&o.model), "hard-negative mode: keep only candidates this model scores >= --min-score "
+                                       "(a model file, NAME or NAME/vN)")
+        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
+        ("min-score", po::value(&o.min_score)->default_value(o.min_score), "hard-negative mode: score threshold")
+        ("stride", po::value(&o.mine.stride)->default_value(o.mine.stride), "use every N-th frame of each source")
+        ("max", po::value(&o.mine.max_negatives)->default_value(0),
+         "stop once the set holds N negatives (0: no limit; a resumed run stops at the same total)")
+        ("max-frames", po::value(&o.mine.max_frames)->default_value(0), "stop after N frames (0: no limit)")
+        ("shard", po::value(&o.shard)->default_value(o.shard),
+         "mine slice i of n (1-based): of the strided frames k = index / stride, those with k % n == i - 1; "
+         "e.g. --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
+        ("threads", po::value(&o.mine.threads)->default_value(0), "worker threads (0: one per core)")
+        ("depth-only", po::bool_switch(&o.mine.depth_only),
+         "do not read the frames' colour: crops without colour, faster (decoding colour PNGs dominates)")
+        ("merge", po::value(&o.merge)->multitoken(),
+         "merge mode: append these sample sets to --out (feature specs must match; duplicates skipped)");
+    options.add(rdsf::cli::camera_options(o.mine.camera, calibration));
+    options.add(rdsf::cli::detector_options(o.mine.detector));
+    po::variables_map values;
+    const rdsf::cli::ProgramInfo info{
+        "rdsf-mine",
+        "--source SRC... --out SET [--model M --min-score T] [--stride N] [--max N] [--shard i/n]\n"
+        "       rdsf-mine --merge SET1 SET2 ... --out SET",
+        "Runs the detector core on people-free frames and appends every candidate to the sample set SET as a\n"
+        "negative (label 0, origin miner); with --model only the candidates the model scores at or above\n"
+        "--min-score (its false positives). Exact duplicates are skipped, so a run killed midway continues\n"
+        "when started again with the same options. --merge joins sample sets, e.g. shard outputs."};
+    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    rdsf::cli::apply_calibration(o.mine.camera, calibration);
+    o.min_score_given = !values["min-score"].defaulted();
+    if (!o.merge.empty()) {
+      if (!o.mine.sources.empty()) throw rdsf::cli::UsageError("give either --source or --merge, not both");
+      return rdsf::run_merge(o);
+    }
+    return rdsf::run_mine(o);
+  });
+}

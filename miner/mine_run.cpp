@@ -1,0 +1,130 @@
+#include "miner/mine_run.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "classifier/boosted_model.hpp"
+#include "cli/cli.hpp"
+#include "cli/progress.hpp"
+#include "core/error.hpp"
+#include "dataset/sample_set.hpp"
+#include "dataset/sample_set_merge.hpp"
+#include "dataset/sample_set_writer.hpp"
+
+namespace rdsf {
+
+namespace {
+
+void report_open(const SampleSetWriter& writer, const char* program) {
+  if (writer.took_over_stale_lock()) {
+    std::cerr << program << ": " << writer.dir() << ": took over the lock left by a killed writer ("
+              << writer.stale_holder() << ")\n";
+  }
+  if (writer.recovered_torn_row()) {
+    std::cerr << program << ": " << writer.dir() << ": cut off a sample row torn by a killed writer\n";
+  }
+  if (!writer.records().empty()) {
+    std::cerr << program << ": " << writer.dir() << " already holds " << writer.records().size()
+              << " samples; continuing (exact duplicates are skipped)\n";
+  }
+}
+
+}  // namespace
+
+void parse_shard(const std::string& text, MineParams& params) {
+  const std::size_t slash = text.find('/');
+  int index = 0, count = 0;
+  bool ok = slash != std::string::npos;
+  if (ok) {
+    const char* begin = text.data();
+    const auto a = std::from_chars(begin, begin + slash, index);
+    const auto b = std::from_chars(begin + slash + 1, begin + text.size(), count);
+    ok = a.ec == std::errc() && a.ptr == begin + slash && b.ec == std::errc() && b.ptr == begin + text.size() &&
+         count >= 1 && index >= 1 && index <= count;
+  }
+  if (!ok) throw cli::UsageError("--shard '" + text + "' must be i/n with 1 <= i <= n, e.g. 3/8");
+  params.shard_index = index;
+  params.shard_count = count;
+}
+
+int run_mine(MineOptions& o) {
+  MineParams& p = o.mine;
+  parse_shard(o.shard, p);
+  if (p.stride < 1) throw cli::UsageError("--stride must be at least 1");
+  if (p.max_frames < 0 || p.max_negatives < 0) throw cli::UsageError("--max and --max-frames must not be negative");
+  if (p.sources.empty()) throw cli::UsageError("give at least one --source");
+  if (o.model.empty() && o.min_score_given) {
+    throw cli::UsageError("--min-score needs --model (hard-negative mode)");
+  }
+  std::optional<BoostedModel> model;
+  if (!o.model.empty()) {
+    model = BoostedModel::load(o.model, o.models_dir);
+    if (model->feature_spec() != p.detector.features) {
+      fail(model->path(), "model feature spec " + model->feature_spec().hash() + " differs from the detector's " +
+                              p.detector.features.hash());
+    }
+    const BoostedModel& m = *model;
+    p.scorer = [&m](const float* features) { return m.score(features); };
+    p.min_score = o.min_score;
+    p.model = m.name().empty() ? m.path() : m.name() + "/v" + std::to_string(m.version());
+    std::cerr << "rdsf-mine: hard-negative mode: keeping candidates that " << p.model << " (" << m.path()
+              << ") scores >= " << p.min_score << "\n";
+  }
+
+  NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.detector.features, p.camera, "rdsf-mine");
+  report_open(writer, "rdsf-mine");
+  std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
+            << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";
+
+  std::optional<cli::Progress> progress;
+  auto extra = [](const MineStats& s) {
+    return "candidates " + std::to_string(s.candidates) + "  kept " + std::to_string(s.kept) + "  duplicates " +
+           std::to_string(s.duplicates);
+  };
+  const MineStats stats = miner.run(writer, [&](const MineStats& s) {
+    if (!progress) {
+      progress.emplace(std::cerr, "frames", s.total_frames);
+    } else {
+      progress->update(s.frames, extra(s));
+    }
+  });
+  if (!progress) progress.emplace(std::cerr, "frames", stats.total_frames);
+  progress->finish(stats.frames, extra(stats));
+  const double seconds = progress->elapsed_s();
+  const double frames = static_cast<double>(stats.frames);
+  std::fprintf(stderr,
+               "rdsf-mine: %lld frames, %.2f candidates per frame, kept %lld, duplicates skipped %lld, %.1f s "
+               "(%.1f frames/s)\n",
+               static_cast<long long>(stats.frames),
+               stats.frames > 0 ? static_cast<double>(stats.candidates) / frames : 0.0,
+               static_cast<long long>(stats.kept), static_cast<long long>(stats.duplicates), seconds,
+               seconds > 0 ? frames / seconds : 0.0);
+  if (p.scorer) {
+    const std::int64_t scored = stats.candidates;
+    std::fprintf(stderr, "rdsf-mine: hard negatives: %lld of %lld candidates scored >= %g (acceptance ratio %.4f)\n",
+                 static_cast<long long>(scored - stats.below_score), static_cast<long long>(scored), p.min_score,
+                 scored > 0 ? static_cast<double>(scored - stats.below_score) / static_cast<double>(scored) : 0.0);
+  }
+  if (stats.reached_max) std::cerr << "rdsf-mine: stopped: the set holds --max " << p.max_negatives << " negatives\n";
+  std::cerr << "rdsf-mine: " << o.out << " holds " << writer.records().size() << " samples\n";
+  return 0;
+}
+
+int run_merge(const MineOptions& o) {
+  if (o.merge.empty()) throw cli::UsageError("--merge needs at least one input sample set");
+  if (o.out.empty()) throw cli::UsageError("--merge needs --out SET");
+  const SampleSet first = SampleSet::open_read(o.merge.front());
+  SampleSetWriter writer =
+      SampleSetWriter::open_or_create(o.out, first.feature_spec(), first.manifest().camera, "rdsf-mine --merge");
+  report_open(writer, "rdsf-mine");
+  const MergeResult result = merge_sample_sets(o.merge, writer);
+  std::cerr << "rdsf-mine: merged " << result.inputs << " sets into " << o.out << ": added " << result.added
+            << ", duplicates skipped " << result.duplicates << "; it holds " << writer.records().size()
+            << " samples\n";
+  return 0;
+}
+
+}  // namespace rdsf

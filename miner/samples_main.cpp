@@ -1,0 +1,27 @@
+// rdsf-samples: describes a sample set, imports or exports the thesis's text format ("label f1 ... f8128").
+#include "cli/cli.hpp"
+#include "miner/samples_run.hpp"
+
+int main(int argc, char** argv) {
+  return rdsf::cli::run("rdsf-samples", [&] {
+    namespace po = rdsf::cli::po;
+    rdsf::SamplesOptions o;
+    po::options_description options("rdsf-samples");
+    options.add_options()
+        ("set", po::value(&o.set)->required(), "the sample set folder")
+        ("import", po::value(&o.import_file),
+         "append the samples of this thesis text file (label f1 ... f8128 a line) to the set, creating it when "
+         "absent; every line is checked first")
+        ("export", po::value(&o.export_file), "write the set's samples to this thesis text file")
+        ("force", po::bool_switch(&o.force), "replace an existing --export file");
+    po::variables_map values;
+    const rdsf::cli::ProgramInfo info{
+        "rdsf-samples", "--set SET [--import FILE | --export FILE [--force]]",
+        "Without --import or --export, describes the sample set SET (counts, feature spec, camera). --import\n"
+        "reads the thesis's text format (one sample a line: label 1 or 0, then 8128 feature values in [0, 1]);\n"
+        "imported samples have no crop, their vectors are stored. --export writes it, features computed from\n"
+        "the crops."};
+    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    return rdsf::run_samples(o);
+  });
+}

@@ -1,0 +1,320 @@
+#include "dataset/negative_miner.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "core/error.hpp"
+#include "dataset/sample_crop.hpp"
+#include "frame/depth_png.hpp"
+#include "frame/frame_source.hpp"
+#include "frame/png_folder_source.hpp"
+
+namespace rdsf {
+
+namespace {
+
+struct MinedCandidate {
+  SampleRecord record;
+  EncodedCrop crop;
+  bool below_score = false;
+};
+
+struct FrameResult {
+  std::vector<MinedCandidate> items;
+};
+
+}  // namespace
+
+/// Hands out the selected frames of one source in order, each with its sequence number. Image folders are
+/// decoded by the calling worker (in parallel); other sources are read under the feeder's lock.
+class FrameFeeder {
+ public:
+  FrameFeeder(const std::string& spec, const MineParams& params, std::int64_t limit)
+      : params_(params), limit_(limit), source_(open_frame_source(spec, params.camera)) {
+    if (const auto* folder = dynamic_cast<const PngFolderSource*>(source_.get())) {
+      const std::vector<std::string>& paths = folder->depth_paths();
+      for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (frame_selected(static_cast<std::int64_t>(i), params)) {
+          selected_.emplace_back(static_cast<std::int64_t>(i), paths[i]);
+        }
+      }
+      random_access_ = true;
+    }
+  }
+
+  std::string description() const { return source_->description(); }
+  void set_limit(std::int64_t limit) { limit_ = limit; }
+
+  std::optional<std::int64_t> selected_count() const {
+    if (random_access_) return std::min<std::int64_t>(static_cast<std::int64_t>(selected_.size()), limit_);
+    const std::optional<std::int64_t> count = source_->frame_count();
+    if (!count) return std::nullopt;
+    std::int64_t selected = 0;
+    for (std::int64_t i = 0; i < *count; ++i) selected += frame_selected(i, params_) ? 1 : 0;
+    return std::min(selected, limit_);
+  }
+
+  /// Fills the next selected frame; false at the end, at the limit or when stopped. Thread-safe.
+  bool next(const std::atomic<bool>& stop, std::int64_t& seq, DepthFrame& frame) {
+    if (random_access_) {
+      std::pair<std::int64_t, std::string> job;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (stop || issued_ >= limit_ || issued_ >= static_cast<std::int64_t>(selected_.size())) return false;
+        seq = issued_++;
+        job = selected_[static_cast<std::size_t>(seq)];
+      }
+      if (params_.depth_only) {  // as PngFolderSource::next, without the colour image
+        frame.depth_mm = read_depth_png(job.second);
+        frame.bgr.release();
+        frame.name = PngFolderSource::frame_name(job.second);
+        const CameraModel& camera = params_.camera;
+        frame.camera = frame.depth_mm.size() == cv::Size(camera.width_px, camera.height_px)
+                           ? camera
+                           : camera.scaled_to(frame.depth_mm.cols, frame.depth_mm.rows);
+      } else {
+        auto single = open_frame_source(job.second, params_.camera);
+        if (!single->next(frame)) fail(job.second, "delivered no frame");
+      }
+      frame.index = job.first;
+      frame.timestamp_us = job.first * 33333;  // as PngFolderSource: image folders carry no clock
+      return true;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    while (!stop && issued_ < limit_) {
+      if (!source_->next(frame)) return false;
+      if (frame_selected(frame.index, params_)) {
+        seq = issued_++;
+        if (params_.depth_only) frame.bgr.release();
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  const MineParams& params_;
+  std::int64_t limit_;
+  std::unique_ptr<FrameSource> source_;
+  bool random_access_ = false;
+  std::vector<std::pair<std::int64_t, std::string>> selected_;
+  std::mutex mutex_;
+  std::int64_t issued_ = 0;
+};
+
+namespace {
+
+FrameResult analyse_frame(const DetectorCore& core, const MineParams& params, const std::string& source,
+                          const DepthFrame& frame) {
+  const bool hard = static_cast<bool>(params.scorer);
+  const FrameAnalysis analysis = core.analyse(frame, /*with_features=*/hard);
+  FrameResult result;
+  result.items.resize(analysis.candidates.size());
+  for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
+    const Candidate& c = analysis.candidates[i];
+    MinedCandidate& m = result.items[i];
+    m.record.label = 0;
+    m.record.origin = "miner";
+    m.record.source = source;
+    m.record.frame = frame.name;
+    m.record.strict_box = c.strict_box;
+    m.record.window = c.window;
+    m.record.layer_depth_mm = c.layer_depth_mm;
+    if (hard) {
+      const double score = params.scorer(analysis.features.ptr<float>(static_cast<int>(i)));
+      m.record.model = params.model;
+      m.record.score = score;
+      m.below_score = score < params.min_score;
+    }
+    if (!m.below_score) {
+      m.crop = EncodedCrop::encode(c.depth_crop, c.colour_crop);
+      m.record.crop_hash = m.crop.hash;
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+bool frame_selected(std::int64_t index, const MineParams& params) {
+  if (index % params.stride != 0) return false;
+  return (index / params.stride) % params.shard_count == params.shard_index - 1;
+}
+
+void check_mine_params(const MineParams& p) {
+  if (p.sources.empty()) throw Error("mining: no frame source given");
+  if (p.stride < 1) throw Error("mining: stride " + std::to_string(p.stride) + " must be at least 1");
+  if (p.shard_count < 1 || p.shard_index < 1 || p.shard_index > p.shard_count) {
+    throw Error("mining: shard " + std::to_string(p.shard_index) + "/" + std::to_string(p.shard_count) +
+                " must be i/n with 1 <= i <= n");
+  }
+  if (p.max_frames < 0 || p.max_negatives < 0) throw Error("mining: limits must not be negative");
+}
+
+std::string source_name(const std::string& spec) {
+  if (is_openni_spec(spec) && !std::filesystem::exists(spec)) return spec;
+  std::string name = std::filesystem::path(spec).lexically_normal().string();
+  while (name.size() > 1 && name.back() == '/') name.pop_back();
+  return name;
+}
+
+NegativeMiner::NegativeMiner(MineParams params) : params_(std::move(params)) {
+  check_mine_params(params_);
+  // Open every source first: a wrong spec fails before anything is mined; the total is known for progress.
+  const std::int64_t no_limit = std::numeric_limits<std::int64_t>::max();
+  std::optional<std::int64_t> total = 0;
+  for (const std::string& spec : params_.sources) {
+    feeders_.push_back(std::make_unique<FrameFeeder>(spec, params_, no_limit));
+    const std::optional<std::int64_t> count = feeders_.back()->selected_count();
+    if (total && count) {
+      *total += *count;
+    } else {
+      total.reset();
+    }
+  }
+  if (total && params_.max_frames > 0) *total = std::min(*total, params_.max_frames);
+  total_frames_ = total;
+}
+
+NegativeMiner::~NegativeMiner() = default;
+
+MineStats mine_negatives(const MineParams& params, SampleSetWriter& out,
+                         const std::function<void(const MineStats&)>& on_frame) {
+  return NegativeMiner(params).run(out, on_frame);
+}
+
+MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(const MineStats&)>& on_frame) {
+  const MineParams& params = params_;
+  const DetectorCore core(params.detector);
+  if (core.params().features != out.manifest().feature_spec) {
+    fail(out.dir(), "sample set has feature spec " + out.manifest().feature_spec.hash() +
+                        ", the detector computes " + core.params().features.hash());
+  }
+  int workers = params.threads > 0 ? params.threads : static_cast<int>(std::thread::hardware_concurrency());
+  workers = std::max(1, workers);
+
+  MineStats stats;
+  stats.total_frames = total_frames_;
+  std::int64_t negatives = static_cast<std::int64_t>(
+      std::count_if(out.records().begin(), out.records().end(), [](const SampleRecord& r) { return r.label == 0; }));
+  std::int64_t frames_left =
+      params.max_frames > 0 ? params.max_frames : std::numeric_limits<std::int64_t>::max();
+  if (params.max_negatives > 0 && negatives >= params.max_negatives) {
+    stats.reached_max = true;
+    return stats;
+  }
+  if (on_frame) on_frame(stats);  // frames 0: the start, with the total known
+
+  for (std::size_t s = 0; s < params.sources.size() && frames_left > 0 && !stats.reached_max; ++s) {
+    const std::string name = source_name(params.sources[s]);
+    FrameFeeder& feeder = *feeders_[s];
+    feeder.set_limit(frames_left);
+
+    std::mutex mutex;
+    std::condition_variable ready, space;
+    std::map<std::int64_t, FrameResult> results;
+    std::int64_t next_to_write = 0;
+    int finished_workers = 0;
+    std::atomic<bool> stop{false};
+    std::exception_ptr error;
+    const std::int64_t window = 4 * static_cast<std::int64_t>(workers);
+
+    auto work = [&] {
+      try {
+        DepthFrame frame;
+        std::int64_t seq = 0;
+        while (feeder.next(stop, seq, frame)) {
+          {
+            std::unique_lock<std::mutex> lock(mutex);
+            space.wait(lock, [&] { return stop || seq < next_to_write + window; });
+            if (stop) break;
+          }
+          FrameResult result = analyse_frame(core, params, name, frame);
+          {
+            std::lock_guard<std::mutex> lock(mutex);
+            results.emplace(seq, std::move(result));
+          }
+          ready.notify_all();
+        }
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        stop = true;
+      }
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        ++finished_workers;
+      }
+      ready.notify_all();
+      space.notify_all();
+    };
+    std::vector<std::thread> pool;
+    for (int w = 0; w < workers; ++w) pool.emplace_back(work);
+
+    auto stop_workers = [&] {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        stop = true;
+      }
+      space.notify_all();
+      for (std::thread& thread : pool) thread.join();
+    };
+    try {
+      while (true) {
+        FrameResult result;
+        {
+          std::unique_lock<std::mutex> lock(mutex);
+          ready.wait(lock, [&] { return error || results.count(next_to_write) != 0 || finished_workers == workers; });
+          if (error) break;
+          const auto found = results.find(next_to_write);
+          if (found == results.end()) break;  // every worker finished and nothing is left
+          result = std::move(found->second);
+          results.erase(found);
+        }
+        const std::int64_t kept_before = stats.kept;
+        for (MinedCandidate& m : result.items) {
+          ++stats.candidates;
+          if (m.below_score) {
+            ++stats.below_score;
+            continue;
+          }
+          if (stats.reached_max) continue;
+          if (out.is_duplicate(m.record)) {
+            ++stats.duplicates;
+            continue;
+          }
+          out.append_encoded(m.record, m.crop, /*sync=*/false);  // one disk flush per frame, below
+          ++stats.kept;
+          ++negatives;
+          if (params.max_negatives > 0 && negatives >= params.max_negatives) stats.reached_max = true;
+        }
+        if (stats.kept != kept_before) out.sync();
+        ++stats.frames;
+        --frames_left;
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          ++next_to_write;
+        }
+        space.notify_all();
+        if (on_frame) on_frame(stats);
+        if (stats.reached_max) break;
+      }
+    } catch (...) {
+      stop_workers();
+      throw;
+    }
+    stop_workers();
+    if (error) std::rethrow_exception(error);
+  }
+  return stats;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,79 @@
+#include "dataset/sample_crop.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string_view>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/error.hpp"
+#include "core/stable_hash.hpp"
+
+namespace rdsf {
+
+std::string depth_crop_hash(const cv::Mat1w& depth_crop_mm) {
+  const std::string size = std::to_string(depth_crop_mm.cols) + "x" + std::to_string(depth_crop_mm.rows) + ":";
+  std::uint64_t h = fnv1a64(size);
+  std::vector<char> bytes(static_cast<std::size_t>(depth_crop_mm.cols) * 2);
+  for (int y = 0; y < depth_crop_mm.rows; ++y) {
+    const std::uint16_t* row = depth_crop_mm.ptr<std::uint16_t>(y);
+    for (int x = 0; x < depth_crop_mm.cols; ++x) {  // little-endian whatever the machine
+      bytes[2 * static_cast<std::size_t>(x)] = static_cast<char>(row[x] & 0xff);
+      bytes[2 * static_cast<std::size_t>(x) + 1] = static_cast<char>(row[x] >> 8);
+    }
+    h = fnv1a64(std::string_view(bytes.data(), bytes.size()), h);
+  }
+  return to_hex16(h);
+}
+
+EncodedCrop EncodedCrop::encode(const cv::Mat1w& depth_crop_mm, const cv::Mat3b& colour_crop) {
+  if (depth_crop_mm.empty()) throw Error("sample crop: empty depth crop");
+  if (!colour_crop.empty() && colour_crop.size() != depth_crop_mm.size()) {
+    throw Error("sample crop: colour crop " + std::to_string(colour_crop.cols) + "x" +
+                std::to_string(colour_crop.rows) + " differs in size from the depth crop " +
+                std::to_string(depth_crop_mm.cols) + "x" + std::to_string(depth_crop_mm.rows));
+  }
+  EncodedCrop crop;
+  // Fast, still lossless: crops are small and written at mining speed.
+  const std::vector<int> params = {cv::IMWRITE_PNG_COMPRESSION, 1};
+  if (!cv::imencode(".png", depth_crop_mm, crop.depth_png, params)) throw Error("sample crop: PNG encoding failed");
+  if (!colour_crop.empty() && !cv::imencode(".png", colour_crop, crop.colour_png, params)) {
+    throw Error("sample crop: PNG encoding of the colour crop failed");
+  }
+  crop.hash = depth_crop_hash(depth_crop_mm);
+  crop.size = depth_crop_mm.size();
+  return crop;
+}
+
+std::string crop_stem(std::int64_t id) {
+  char text[48];
+  std::snprintf(text, sizeof text, "crops/%08lld", static_cast<long long>(id));
+  return text;
+}
+
+void write_bytes_atomically(const std::string& path, const std::vector<unsigned char>& bytes) {
+  const std::string temporary = path + ".tmp";
+  const int fd = open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail(temporary, std::string("cannot be created: ") + std::strerror(errno));
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = errno;
+      close(fd);
+      fail(temporary, std::string("write failed: ") + std::strerror(error));
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (close(fd) != 0) fail(temporary, std::string("write failed: ") + std::strerror(errno));
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    fail(path, std::string("cannot rename the temporary file into place: ") + std::strerror(errno));
+  }
+}
+
+}  // namespace rdsf

@@ -1,0 +1,34 @@
+#pragma once
+// The crops of a sample in a sample set: crops/NNNNNNNN.depth.png (16-bit depth in millimetres, window
+// sized, 64x128 by default) and crops/NNNNNNNN.rgb.png (8-bit colour) when the frame had colour; NNNNNNNN
+// is the sample id, zero-padded to 8 digits. Encoding is split from writing so that it can run in parallel.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace rdsf {
+
+/// Stable hash (16 hex digits) of a depth crop's size and values; equal crops give equal hashes on every
+/// machine.
+std::string depth_crop_hash(const cv::Mat1w& depth_crop_mm);
+
+struct EncodedCrop {
+  std::vector<unsigned char> depth_png;   ///< the depth crop as PNG bytes
+  std::vector<unsigned char> colour_png;  ///< the colour crop as PNG bytes, empty without colour
+  std::string hash;                       ///< depth_crop_hash() of the depth crop
+  cv::Size size;                          ///< size of the crops
+
+  /// Encodes a depth crop (CV_16UC1) and an optional colour crop (CV_8UC3, same size); throws Error when
+  /// the crop is empty or the sizes differ.
+  static EncodedCrop encode(const cv::Mat1w& depth_crop_mm, const cv::Mat3b& colour_crop = {});
+};
+
+/// "crops/00000042" relative to the set: add ".depth.png" or ".rgb.png".
+std::string crop_stem(std::int64_t id);
+
+/// Writes bytes to `path` through "<path>.tmp" and a rename; throws Error naming the file.
+void write_bytes_atomically(const std::string& path, const std::vector<unsigned char>& bytes);
+
+}  // namespace rdsf

@@ -1,0 +1,147 @@
+#include "dataset/sample_set.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "core/error.hpp"
+#include "core/stable_hash.hpp"
+#include "dataset/feature_vector_file.hpp"
+#include "dataset/retraction_log.hpp"
+#include "dataset/sample_crop.hpp"
+#include "dataset/sample_tsv.hpp"
+#include "frame/depth_png.hpp"
+
+namespace rdsf {
+
+namespace fs = std::filesystem;
+
+SampleSet SampleSet::open_read(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) fail(dir, "is not a sample set folder (it does not exist)");
+  SampleSet set;
+  set.dir_ = dir;
+  std::string text;
+  set.manifest_ = SampleSetManifest::read((fs::path(dir) / "manifest.yml").string(), &text);
+  set.manifest_hash_ = to_hex16(fnv1a64(text));
+  SampleTsvContents contents = read_sample_tsv((fs::path(dir) / "samples.tsv").string());
+  set.torn_tail_ = contents.torn_tail;
+  const RetractionLog retracted = read_retraction_log((fs::path(dir) / "retracted.tsv").string());
+  for (SampleRecord& record : contents.records) {
+    if (retracted.ids.count(record.id) != 0) {
+      ++set.retracted_;
+    } else {
+      set.records_.push_back(std::move(record));
+    }
+  }
+  return set;
+}
+
+std::size_t SampleSet::count(int label) const {
+  return static_cast<std::size_t>(
+      std::count_if(records_.begin(), records_.end(), [label](const SampleRecord& r) { return r.label == label; }));
+}
+
+std::string SampleSet::depth_crop_path(std::size_t index) const {
+  return (fs::path(dir_) / (crop_stem(records_.at(index).id) + ".depth.png")).string();
+}
+
+std::string SampleSet::colour_crop_path(std::size_t index) const {
+  return (fs::path(dir_) / (crop_stem(records_.at(index).id) + ".rgb.png")).string();
+}
+
+cv::Mat1w SampleSet::depth_crop(std::size_t index) const {
+  const SampleRecord& record = records_.at(index);
+  if (!record.has_crop) {
+    fail(dir_, "sample " + std::to_string(record.id) + " has no crop (imported as a feature vector)");
+  }
+  const std::string path = depth_crop_path(index);
+  cv::Mat1w crop = read_depth_png(path);
+  const FeatureSpec& spec = manifest_.feature_spec;
+  if (crop.cols != spec.window_width_px || crop.rows != spec.window_height_px) {
+    fail(path, "crop is " + std::to_string(crop.cols) + "x" + std::to_string(crop.rows) + ", the set's window is " +
+                   std::to_string(spec.window_width_px) + "x" + std::to_string(spec.window_height_px));
+  }
+  return crop;
+}
+
+cv::Mat3b SampleSet::colour_crop(std::size_t index) const {
+  const SampleRecord& record = records_.at(index);
+  if (!record.has_colour) return {};
+  const FeatureSpec& spec = manifest_.feature_spec;
+  return read_colour_png(colour_crop_path(index), cv::Size(spec.window_width_px, spec.window_height_px));
+}
+
+cv::Mat1f SampleSet::features(const RdsfExtractor& extractor, const std::vector<std::size_t>& indices,
+                              int threads) const {
+  std::vector<std::size_t> chosen = indices;
+  if (chosen.empty()) {
+    chosen.resize(records_.size());
+    for (std::size_t i = 0; i < chosen.size(); ++i) chosen[i] = i;
+  }
+  for (std::size_t index : chosen) {
+    if (index >= records_.size()) {
+      fail(dir_, "record index " + std::to_string(index) + " is out of range (" + std::to_string(records_.size()) +
+                     " samples)");
+    }
+  }
+  const int dimension = extractor.dimension();
+  cv::Mat1f rows(static_cast<int>(chosen.size()), dimension);
+  if (chosen.empty()) return rows;
+
+  // Stored vectors of samples without crop, only for the spec they were written with.
+  std::unique_ptr<FeatureVectorFile> vectors;
+  const bool any_without_crop =
+      std::any_of(chosen.begin(), chosen.end(), [this](std::size_t i) { return !records_[i].has_crop; });
+  if (any_without_crop) {
+    vectors = std::make_unique<FeatureVectorFile>(FeatureVectorFile::path_in(dir_, extractor.spec().hash()),
+                                                  dimension);
+  }
+
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), chosen.size()));
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto work = [&] {
+    try {
+      constexpr std::size_t kChunk = 64;
+      while (!failed) {
+        const std::size_t begin = next.fetch_add(kChunk);
+        if (begin >= chosen.size()) break;
+        const std::size_t end = std::min(chosen.size(), begin + kChunk);
+        for (std::size_t k = begin; k < end; ++k) {
+          const std::size_t index = chosen[k];
+          const SampleRecord& record = records_[index];
+          float* out = rows.ptr<float>(static_cast<int>(k));
+          if (record.has_crop) {
+            extractor.compute(depth_crop(index), out);
+          } else if (vectors->contains(record.id)) {
+            vectors->read(record.id, out);
+          } else {
+            fail(dir_, "sample " + std::to_string(record.id) +
+                           " has no crop and no stored feature vector for feature spec " + extractor.spec().hash() +
+                           " (" + vectors->path() + "); it was imported under spec " + manifest_.feature_spec.hash());
+          }
+        }
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+      failed = true;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
+  return rows;
+}
+
+}  // namespace rdsf

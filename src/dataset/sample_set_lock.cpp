@@ -1,0 +1,103 @@
+#include "dataset/sample_set_lock.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <utility>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/error.hpp"
+
+namespace rdsf {
+
+namespace {
+
+std::string read_holder(int fd) {
+  char text[256] = {};
+  const ssize_t n = pread(fd, text, sizeof text - 1, 0);
+  std::string holder = n > 0 ? std::string(text, static_cast<std::size_t>(n)) : std::string();
+  while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
+  return holder.empty() ? "an unknown process" : holder;
+}
+
+std::string this_process() {
+  char host[256] = {};
+  if (gethostname(host, sizeof host - 1) != 0) std::strcpy(host, "unknown");
+  return "pid " + std::to_string(getpid()) + " on host " + host;
+}
+
+}  // namespace
+
+SampleSetLock::SampleSetLock(const std::string& dir) : path_((std::filesystem::path(dir) / "lock").string()) {
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    bool created = true;
+    int fd = open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0 && errno == EEXIST) {
+      created = false;
+      fd = open(path_.c_str(), O_RDWR | O_CLOEXEC);
+      if (fd < 0 && errno == ENOENT) continue;  // released meanwhile: try again
+    }
+    if (fd < 0) fail(path_, std::string("cannot create the sample set's lock file: ") + std::strerror(errno));
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int error = errno;
+      const std::string holder = read_holder(fd);
+      close(fd);
+      if (error == EWOULDBLOCK) {
+        fail(dir, "sample set is being written by another program (" + holder + ", lock file " + path_ +
+                      "); wait for it to finish or stop it first");
+      }
+      fail(path_, std::string("cannot lock: ") + std::strerror(error));
+    }
+    // The file we locked must still be the one under the name (a releasing holder unlinks it).
+    struct stat opened {}, named {};
+    if (fstat(fd, &opened) != 0 || stat(path_.c_str(), &named) != 0 || opened.st_ino != named.st_ino ||
+        opened.st_dev != named.st_dev) {
+      close(fd);
+      continue;
+    }
+    if (!created) {
+      took_over_stale_ = true;
+      stale_holder_ = read_holder(fd);
+    }
+    const std::string me = this_process() + "\n";
+    if (ftruncate(fd, 0) != 0 || pwrite(fd, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
+      close(fd);
+      fail(path_, "cannot write the lock file");
+    }
+    fd_ = fd;
+    return;
+  }
+  fail(path_, "lock file keeps changing under this program; is another writer starting and stopping?");
+}
+
+SampleSetLock::~SampleSetLock() { release(); }
+
+SampleSetLock::SampleSetLock(SampleSetLock&& other) noexcept
+    : path_(std::move(other.path_)),
+      fd_(std::exchange(other.fd_, -1)),
+      took_over_stale_(other.took_over_stale_),
+      stale_holder_(std::move(other.stale_holder_)) {}
+
+SampleSetLock& SampleSetLock::operator=(SampleSetLock&& other) noexcept {
+  if (this != &other) {
+    release();
+    path_ = std::move(other.path_);
+    fd_ = std::exchange(other.fd_, -1);
+    took_over_stale_ = other.took_over_stale_;
+    stale_holder_ = std::move(other.stale_holder_);
+  }
+  return *this;
+}
+
+void SampleSetLock::release() {
+  if (fd_ < 0) return;
+  unlink(path_.c_str());  // while still holding the flock, so nobody locks the old file meanwhile
+  close(fd_);
+  fd_ = -1;
+}
+
+}  // namespace rdsf
