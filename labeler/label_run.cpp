@@ -1,0 +1,177 @@
+#include "label_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include <opencv2/highgui.hpp>
+
+#include "core/error.hpp"
+#include "gui/display.hpp"
+#include "label_keys.hpp"
+#include "label_screen.hpp"
+
+namespace rdsf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Scripted keys from a file or stdin, read as they are needed (so that keys typed or piped in one by one
+// are answered one by one): whitespace-separated tokens; a token of several key letters is several keys
+// ("yynsu"), and "space", "backspace" and "esc" name those keys.
+class ScriptedKeys {
+ public:
+  explicit ScriptedKeys(const std::string& path) : path_(path) {
+    if (path != "-") {
+      file_.open(path);
+      if (!file_) fail(path, "answers file cannot be opened");
+    }
+  }
+  bool next(char& key) {
+    while (pending_.empty()) {
+      std::string token;
+      if (!(in() >> token)) return false;
+      const char named = label_keys::from_token(token);
+      if (named != label_keys::kNone) {
+        pending_.push_back(named);
+        continue;
+      }
+      for (char c : token) {
+        const char k = label_keys::from_key_code(static_cast<unsigned char>(c));
+        if (k == label_keys::kNone) {
+          fail(path_ == "-" ? "standard input" : path_, "unknown key '" + std::string(1, c) + "' (keys: y n s u q)");
+        }
+        pending_.push_back(k);
+      }
+    }
+    key = pending_.front();
+    pending_.erase(pending_.begin());
+    return true;
+  }
+
+ private:
+  std::istream& in() { return path_ == "-" ? std::cin : file_; }
+  std::string path_;
+  std::ifstream file_;
+  std::vector<char> pending_;
+};
+
+struct Latency {
+  std::vector<double> ms;
+  void add(Clock::time_point since) { ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - since).count()); }
+  std::string summary() const {
+    if (ms.empty()) return "no candidate followed a key";
+    std::vector<double> sorted = ms;
+    std::sort(sorted.begin(), sorted.end());
+    double sum = 0;
+    for (double v : sorted) sum += v;
+    char text[160];
+    std::snprintf(text, sizeof text, "key to next candidate: mean %.1f ms, 95%% %.1f ms, max %.1f ms over %zu keys",
+                  sum / static_cast<double>(sorted.size()), sorted[sorted.size() * 95 / 100], sorted.back(),
+                  sorted.size());
+    return text;
+  }
+};
+
+ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Clock::time_point start,
+                       const std::string& message) {
+  const LabelingStats& st = session.stats();
+  ScreenStatus s;
+  s.frame_ordinal = p.frame->ordinal;
+  s.total_frames = session.total_frames();
+  s.candidate = p.index + 1;
+  s.candidates = p.frame->analysis.candidates.size();
+  s.positives = st.positives + st.auto_positives;
+  s.negatives = st.negatives + st.auto_negatives;
+  const double minutes = std::chrono::duration<double>(Clock::now() - start).count() / 60.0;
+  s.rate_per_minute = minutes > 0 ? static_cast<double>(st.answers()) / minutes : 0.0;
+  if (!p.frame->scores.empty()) s.score = p.frame->scores[p.index];
+  if (!p.frame->truth_iou.empty()) s.truth_iou = p.frame->truth_iou[p.index];
+  s.message = message;
+  return s;
+}
+
+}  // namespace
+
+int run_label(const LabelOptions& o) {
+  const bool headless = !o.answers.empty();
+  if (!headless) {
+    gui::require_display("rdsf-label", "label on this machine with --answers FILE (or - for stdin) instead");
+  }
+  std::unique_ptr<BoostedModel> model;
+  if (!o.model.empty()) model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
+  std::unique_ptr<GroundTruth> truth;
+  if (!o.truth_csv.empty()) truth = std::make_unique<GroundTruth>(read_ground_truth(o.truth_csv));
+  std::unique_ptr<ScriptedKeys> scripted;
+  if (headless) scripted = std::make_unique<ScriptedKeys>(o.answers);
+
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.detector.features, o.session.camera,
+                                                           "rdsf-label");
+  LabelingSession session(o.session, writer, model.get(), truth.get());
+  const char* window = "rdsf-label";
+  if (!headless) cv::namedWindow(window, cv::WINDOW_AUTOSIZE);
+
+  const auto start = Clock::now();
+  Latency latency;
+  std::optional<Clock::time_point> key_time;
+  std::string message;
+  bool quit = false, answers_ran_out = false;
+  while (!quit) {
+    const PresentedCandidate* p = session.current();
+    if (p == nullptr) break;
+    if (answers_ran_out) {  // headless and out of keys: the rest stays unanswered, the run completes
+      session.leave_unanswered();
+      continue;
+    }
+    char key = label_keys::kNone;
+    if (headless) {
+      if (key_time) latency.add(*key_time);
+      if (!scripted->next(key)) {
+        answers_ran_out = true;
+        continue;
+      }
+    } else {
+      cv::imshow(window, render_label_screen(*p, status_of(session, *p, start, message)));
+      if (key_time) latency.add(*key_time);
+      while (key == label_keys::kNone) {
+        const int code = cv::waitKeyEx(100);
+        if (cv::getWindowProperty(window, cv::WND_PROP_VISIBLE) < 1) {
+          std::cerr << "rdsf-label: window closed: every answer is saved; run again to resume\n";
+          key = label_keys::kQuit;
+          break;
+        }
+        key = label_keys::from_key_code(code);
+      }
+    }
+    key_time = Clock::now();
+    message.clear();
+    if (key == label_keys::kQuit) {
+      quit = true;
+    } else if (!session.answer(key) && key == label_keys::kUndo) {
+      message = "nothing to undo in this session";
+      key_time.reset();
+    } else if (key == label_keys::kUndo) {
+      message = "undone: answer again";
+    }
+  }
+  if (!headless) cv::destroyAllWindows();
+
+  const LabelingStats& st = session.stats();
+  std::fprintf(stderr,
+               "rdsf-label: %lld frames; answered %ld (positives %ld, not people %ld of which stored %ld, skipped %ld, "
+               "undone %ld); assisted: %ld positives, %ld negatives; %ld answered before; %ld left unanswered%s\n",
+               static_cast<long long>(st.frames_loaded), st.answers(), st.positives, st.negatives, st.rejected,
+               st.skipped, st.undone, st.auto_positives, st.auto_negatives, st.already_answered,
+               st.unanswered + (quit ? static_cast<long>(session.pending_in_frame()) : 0L),
+               quit ? " (quit: run again to resume)" : "");
+  std::fprintf(stderr, "rdsf-label: %s\n", latency.summary().c_str());
+  std::fprintf(stderr, "rdsf-label: sample set %s now holds %zu samples\n", o.out_set.c_str(), writer.records().size());
+  return 0;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,20 @@
+#pragma once
+// rdsf-label's work: a window (or an --answers file) in front of a LabelingSession.
+#include <string>
+
+#include "labeling/labeling_session.hpp"
+
+namespace rdsf {
+
+struct LabelOptions {
+  LabelingConfig session;
+  std::string out_set;
+  std::string model;           ///< empty: no model
+  std::string models_dir = "models";
+  std::string truth_csv;       ///< empty: no assisted mode
+  std::string answers;         ///< empty: window; "-": stdin; else a file
+};
+
+int run_label(const LabelOptions& options);
+
+}  // namespace rdsf

@@ -1,0 +1,85 @@
+#include "label_screen.hpp"
+
+#include <cstdio>
+
+#include <opencv2/imgproc.hpp>
+
+#include "detector/overlay.hpp"
+#include "label_keys.hpp"
+
+namespace rdsf {
+namespace {
+
+const cv::Scalar kBackground(38, 34, 30);
+const cv::Scalar kText(235, 235, 235);
+const cv::Scalar kDim(150, 150, 150);
+const cv::Scalar kHighlight(0, 215, 255);  // amber
+
+void put(cv::Mat3b& canvas, const std::string& text, cv::Point at, double scale, const cv::Scalar& colour,
+         int thickness = 1) {
+  cv::putText(canvas, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, thickness, cv::LINE_AA);
+}
+
+}  // namespace
+
+cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s) {
+  constexpr int kMargin = 16, kCropScale = 3, kStatusHeight = 92;
+  const LoadedFrame& loaded = *p.frame;
+  const DepthFrame& frame = loaded.frame;
+  const Candidate& candidate = p.candidate();
+  const int crop_w = candidate.depth_crop.cols * kCropScale, crop_h = candidate.depth_crop.rows * kCropScale;
+  const int panel_w = crop_w * 2 + kMargin;
+  cv::Mat3b canvas(std::max(frame.height_px(), crop_h + 30) + kMargin * 2 + kStatusHeight,
+                   frame.width_px() + panel_w + kMargin * 3, cv::Vec3b(38, 34, 30));
+  canvas.setTo(kBackground);
+
+  // The frame with every candidate faint and this one highlighted.
+  cv::Mat3b view = frame.has_colour() ? frame.bgr.clone() : colourise_depth(frame.depth_mm);
+  for (std::size_t i = 0; i < loaded.analysis.candidates.size(); ++i) {
+    if (i != p.index) cv::rectangle(view, loaded.analysis.candidates[i].strict_box, cv::Scalar(190, 190, 190), 1);
+  }
+  cv::rectangle(view, candidate.window, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+  cv::rectangle(view, candidate.strict_box, kHighlight, 3, cv::LINE_AA);
+  view.copyTo(canvas(cv::Rect(kMargin, kMargin, view.cols, view.rows)));
+
+  // The crops, enlarged: depth as the classifier sees it (colourised, black = no reading / other layer).
+  const int panel_x = frame.width_px() + kMargin * 2;
+  cv::Mat3b depth_crop = colourise_depth(candidate.depth_crop);
+  cv::resize(depth_crop, depth_crop, {crop_w, crop_h}, 0, 0, cv::INTER_NEAREST);
+  depth_crop.copyTo(canvas(cv::Rect(panel_x, kMargin + 22, crop_w, crop_h)));
+  put(canvas, "depth crop (64x128)", {panel_x, kMargin + 14}, 0.45, kDim);
+  if (!candidate.colour_crop.empty()) {
+    cv::Mat3b colour_crop;
+    cv::resize(candidate.colour_crop, colour_crop, {crop_w, crop_h}, 0, 0, cv::INTER_NEAREST);
+    colour_crop.copyTo(canvas(cv::Rect(panel_x + crop_w + kMargin, kMargin + 22, crop_w, crop_h)));
+    put(canvas, "colour crop", {panel_x + crop_w + kMargin, kMargin + 14}, 0.45, kDim);
+  }
+  char text[256];
+  std::snprintf(text, sizeof text, "%.2f m away, %.0f cm tall", candidate.layer_depth_mm / 1000.0, candidate.height_cm);
+  put(canvas, text, {panel_x, kMargin + 22 + crop_h + 24}, 0.5, kText);
+
+  // Status and keys.
+  const int status_y = canvas.rows - kStatusHeight;
+  cv::line(canvas, {0, status_y}, {canvas.cols, status_y}, cv::Scalar(80, 80, 80), 1);
+  std::string frames = std::to_string(s.frame_ordinal);
+  if (s.total_frames) frames += "/" + std::to_string(*s.total_frames);
+  std::snprintf(text, sizeof text, "frame %s  %s   candidate %zu/%zu   positives %ld   negatives %ld   %.1f answers/min",
+                frames.c_str(), frame.name.c_str(), s.candidate, s.candidates, s.positives, s.negatives,
+                s.rate_per_minute);
+  put(canvas, text, {kMargin, status_y + 28}, 0.55, kText);
+  std::string extra;
+  if (s.score) {
+    std::snprintf(text, sizeof text, "model score H(x) = %.2f", *s.score);
+    extra += text;
+  }
+  if (s.truth_iou) {
+    std::snprintf(text, sizeof text, "%sIoU with ground truth %.2f (uncertain)", extra.empty() ? "" : "   ", *s.truth_iou);
+    extra += text;
+  }
+  if (!s.message.empty()) extra += (extra.empty() ? "" : "   ") + s.message;
+  if (!extra.empty()) put(canvas, extra, {kMargin, status_y + 54}, 0.55, kHighlight);
+  put(canvas, label_keys::legend(), {kMargin, status_y + 80}, 0.55, kDim);
+  return canvas;
+}
+
+}  // namespace rdsf
