@@ -55,7 +55,12 @@ int run_detect(const DetectOptions& o) {
   std::vector<BoostedModel> models;
   for (const std::string& m : o.models) models.push_back(BoostedModel::load(m, o.models_dir));
   GroundTruth truth;
-  if (evaluate) truth = read_ground_truth(o.truth_csv);
+  if (evaluate) {
+    truth = read_ground_truth(o.truth_csv);
+    const std::size_t ignored = ignore_hardly_visible(truth, o.min_visible);
+    std::cerr << "rdsf-detect: " << o.truth_csv << ": " << truth.people() << " people, " << ignored
+              << " of them less than " << o.min_visible * 100 << "% visible (ignored: no miss, no false positive)\n";
+  }
 
   PeoplePipeline pipeline(o.pipeline, models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.camera);
@@ -135,7 +140,7 @@ int run_detect(const DetectOptions& o) {
       results.back().fps = wall_s > 0 ? static_cast<double>(frames) / wall_s : 0.0;
     }
     std::cout << write_evaluation_report(results, o.report_dir, o.pipeline.threshold_classifier);
-    std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, summary.txt, roc.png, det.png)\n";
+    std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, summary.txt, summary.md, roc.png, det.png)\n";
   }
   return 0;
 }

@@ -20,6 +20,7 @@ struct DetectOptions {
   std::string truth_csv;   ///< boxes.csv: evaluate
   std::string report_dir;  ///< where the evaluation goes
   std::vector<double> thresholds;  ///< the sweep
+  double min_visible = 0.5;        ///< people less visible than this are "don't care" in the evaluation
   CameraModel camera;
   PipelineParams pipeline;
 };

@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
         ("report-dir", po::value(&o.report_dir), "write metrics.csv, summary.txt, roc.png, det.png here")
         ("thresholds", po::value(&thresholds),
          "evaluation sweep: 40,20,0 or from:to:step (default the thesis's 40 20 10 0 -5 ... -40 -60)")
+        ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible),
+         "evaluation: people with visible_fraction below this are don't-care (no miss, no false positive)")
         ("force", po::bool_switch(&o.force), "replace an existing --out file or report");
     options.add(rdsf::cli::camera_options(o.camera, calibration));
     options.add(rdsf::cli::detector_options(o.pipeline.detector));

@@ -114,7 +114,8 @@ int run_label(const LabelOptions& o) {
                                                            "rdsf-label");
   LabelingSession session(o.session, writer, model.get(), truth.get());
   const char* window = "rdsf-label";
-  if (!headless) cv::namedWindow(window, cv::WINDOW_AUTOSIZE);
+  // No toolbar or status bar of Qt's: the picture is the whole window, keys go straight to the labeler.
+  if (!headless) cv::namedWindow(window, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
 
   const auto start = Clock::now();
   Latency latency;

@@ -23,11 +23,14 @@ void put(cv::Mat3b& canvas, const std::string& text, cv::Point at, double scale,
 }  // namespace
 
 cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s) {
-  constexpr int kMargin = 16, kCropScale = 3, kStatusHeight = 92;
+  // Fits a 1280-pixel-wide screen: 640 frame + two crops at 2.5x (160x320) + margins = 1056 pixels.
+  constexpr int kMargin = 16, kStatusHeight = 92;
+  constexpr double kCropScale = 2.5;
   const LoadedFrame& loaded = *p.frame;
   const DepthFrame& frame = loaded.frame;
   const Candidate& candidate = p.candidate();
-  const int crop_w = candidate.depth_crop.cols * kCropScale, crop_h = candidate.depth_crop.rows * kCropScale;
+  const int crop_w = static_cast<int>(candidate.depth_crop.cols * kCropScale);
+  const int crop_h = static_cast<int>(candidate.depth_crop.rows * kCropScale);
   const int panel_w = crop_w * 2 + kMargin;
   cv::Mat3b canvas(std::max(frame.height_px(), crop_h + 30) + kMargin * 2 + kStatusHeight,
                    frame.width_px() + panel_w + kMargin * 3, cv::Vec3b(38, 34, 30));
@@ -63,10 +66,10 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   cv::line(canvas, {0, status_y}, {canvas.cols, status_y}, cv::Scalar(80, 80, 80), 1);
   std::string frames = std::to_string(s.frame_ordinal);
   if (s.total_frames) frames += "/" + std::to_string(*s.total_frames);
-  std::snprintf(text, sizeof text, "frame %s  %s   candidate %zu/%zu   positives %ld   negatives %ld   %.1f answers/min",
+  std::snprintf(text, sizeof text, "frame %s (%s)   candidate %zu/%zu   positives %ld   negatives %ld   %.0f/min",
                 frames.c_str(), frame.name.c_str(), s.candidate, s.candidates, s.positives, s.negatives,
                 s.rate_per_minute);
-  put(canvas, text, {kMargin, status_y + 28}, 0.55, kText);
+  put(canvas, text, {kMargin, status_y + 28}, 0.5, kText);
   std::string extra;
   if (s.score) {
     std::snprintf(text, sizeof text, "model score H(x) = %.2f", *s.score);

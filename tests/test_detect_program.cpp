@@ -159,7 +159,7 @@ INSTANTIATE_TEST_SUITE_P(
                  },
                  "take.oni: not a readable OpenNI recording"},
         BadInput{"no_device", [](const test::TempDir&) { return std::string("openni"); }, "no device attached"}),
-    [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<BadInput>& param_info) { return param_info.param.name; });
 
 TEST(DetectProgram, UnknownOptionIsAUsageError) {
   const test::RunResult r = test::run(detect() + " --source x --no-such-option");

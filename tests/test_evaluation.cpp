@@ -137,3 +137,21 @@ TEST(CurvePlot, DrawsAxesCurvesAndLegend) {
   const cv::Mat3b log_plot = draw_plot(axes, {{"tree", {{0.0, 0.5}, {0.01, 0.1}, {1, 0.01}}, {}, ""}});
   EXPECT_EQ(log_plot.size(), cv::Size(900, 650));
 }
+
+TEST(DetectionMetrics, HardlyVisiblePeopleAreDontCare) {
+  GroundTruth truth = parse_ground_truth(
+      "frame,person,x,y,w,h,visible_fraction,track\n"
+      "f1,1,0,0,100,200,0.9,1\n"
+      "f1,2,300,0,100,200,0.1,2\n",
+      "t");
+  EXPECT_EQ(ignore_hardly_visible(truth, 0.5), 1u);
+  // Person 2 (10% visible) is detected once and missed nowhere: neither a detection nor a false positive.
+  const std::vector<FrameCandidates> frames = {
+      {"f1", {{cv::Rect(300, 0, 100, 200), 2}, {cv::Rect(600, 0, 10, 10), 1}}}};
+  const DetectionFigures f = detection_figures(frames, truth, 0);
+  EXPECT_EQ(f.n_people, 1);
+  EXPECT_EQ(f.n_det, 0);
+  EXPECT_EQ(f.n_fp, 1);  // only the stray one
+  EXPECT_EQ(f.n_miss, 1);
+  EXPECT_EQ(segmentation_errors(frames, truth), 1);  // person 1 has no candidate; person 2 does not count
+}

@@ -12,6 +12,9 @@
 // e.g. n_fp = 33 over 608 frames gives FAR = 33 / 641 = 0.051482 (thesis, tree2 at threshold 0). The
 // thesis's text misprints n_miss; the tables' definitions are the ones implemented.
 //
+// People marked ignored (hardly visible, see ignore_hardly_visible()) count neither as misses nor as
+// people, and a detection of one counts neither as a detection nor as a false positive.
+//
 // "Without segmentation errors": a person no candidate overlaps with IoU >= 0.5 was never shown to the
 // classifier; that table leaves such people out of n_people and n_miss.
 #include <string>

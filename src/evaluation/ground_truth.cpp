@@ -53,6 +53,17 @@ const std::vector<TruthBox>& GroundTruth::in(const std::string& frame) const {
   return it == frames.end() ? none : it->second;
 }
 
+std::size_t ignore_hardly_visible(GroundTruth& truth, double min_visible_fraction) {
+  std::size_t ignored = 0;
+  for (auto& [frame, boxes] : truth.frames) {
+    for (TruthBox& box : boxes) {
+      box.ignored = box.visible_fraction < min_visible_fraction;
+      ignored += box.ignored ? 1 : 0;
+    }
+  }
+  return ignored;
+}
+
 GroundTruth parse_ground_truth(const std::string& text, const std::string& name) {
   std::stringstream in(text);
   std::string line;

@@ -16,6 +16,9 @@ struct TruthBox {
   int person = 0;
   int track = 0;
   double visible_fraction = 1.0;
+  /// "Don't care": too little of the person is visible to demand a detection. An ignored person is no
+  /// miss when not found, and a detection of them is no false positive (see ignore_hardly_visible()).
+  bool ignored = false;
 };
 
 struct GroundTruth {
@@ -23,6 +26,9 @@ struct GroundTruth {
   std::size_t people() const;
   const std::vector<TruthBox>& in(const std::string& frame) const;
 };
+
+/// Marks people whose visible_fraction is below `min_visible_fraction` as ignored; returns how many.
+std::size_t ignore_hardly_visible(GroundTruth& truth, double min_visible_fraction);
 
 /// Reads and checks a boxes.csv; throws Error naming the file and the first bad line.
 GroundTruth read_ground_truth(const std::string& path);

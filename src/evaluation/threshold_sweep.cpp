@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "candidates/candidate_finder.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "evaluation/curve_plot.hpp"
@@ -55,8 +56,19 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
       }
       const std::vector<int> ids = tracker.update(detections, f.camera, f.index);
       std::vector<TrackedBox> hypotheses, people;
-      for (std::size_t i = 0; i < detections.size(); ++i) hypotheses.push_back({detections[i].box, ids[i]});
-      for (const TruthBox& t : truth.in(f.frame)) people.push_back({t.box, t.track});
+      for (const TruthBox& t : truth.in(f.frame)) {
+        if (!t.ignored) people.push_back({t.box, t.track});
+      }
+      for (std::size_t i = 0; i < detections.size(); ++i) {
+        // A hypothesis on an ignored (hardly visible) person, and on no counted one, is left out.
+        bool on_ignored = false, on_counted = false;
+        for (const TruthBox& t : truth.in(f.frame)) {
+          if (iou(detections[i].box, t.box) < 0.5) continue;
+          (t.ignored ? on_ignored : on_counted) = true;
+        }
+        if (on_ignored && !on_counted) continue;
+        hypotheses.push_back({detections[i].box, ids[i]});
+      }
       mot.add_frame(people, hypotheses);
     }
     row.mot = mot.figures();
@@ -135,6 +147,21 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   AtomicTextFile text((folder / "summary.txt").string(), true);
   text.stream() << summary.str();
   text.commit();
+
+  // The one-table view: models x TAR at FPPF 0.1, best MOTA, fps.
+  AtomicTextFile table((folder / "summary.md").string(), true);
+  table.stream() << "| model | TAR at FPPF <= 0.1 | best MOTA (threshold) | MOTP | segmentation errors | fps |\n"
+                    "| --- | --- | --- | --- | --- | --- |\n";
+  for (const SweepResult& r : results) {
+    if (r.rows.empty()) continue;
+    const SweepRow& best = r.best_mota();
+    char row[256];
+    std::snprintf(row, sizeof row, "| %s | %.3f | %.3f (%g) | %.1f | %ld of %ld | %.1f |\n", r.model.c_str(),
+                  r.tar_at_fppf(0.1), best.mot.mota(), best.all.threshold, best.mot.motp(), r.segmentation_errors,
+                  r.rows.front().all.n_people, r.fps);
+    table.stream() << row;
+  }
+  table.commit();
 
   // Charts: every model on one ROC and one DET chart, the operating threshold marked.
   PlotAxes roc;

@@ -50,7 +50,7 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
                              const std::vector<double>& thresholds, const TrackingParams& tracking,
                              const std::string& model_label);
 
-/// Writes metrics.csv, summary.txt, roc.png and det.png into `dir` (created when missing); returns the
+/// Writes metrics.csv, summary.txt, summary.md (one Markdown row per model), roc.png and det.png into `dir` (created when missing); returns the
 /// summary text (also what summary.txt holds).
 std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir,
                                     double operating_threshold);

@@ -7,8 +7,7 @@ namespace rdsf {
 
 bool is_openni_spec(const std::string& spec) {
   const bool oni_file = spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".oni") == 0;
-  return oni_file || spec == "openni" || spec.find("://") != std::string::npos ||
-         (!spec.empty() && spec[0] == '#');
+  return oni_file || spec == "openni" || spec.find("://") != std::string::npos;
 }
 
 std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const CameraModel& camera) {

@@ -3,7 +3,7 @@
 // rdsf::Error (one line naming the file or device) on bad input: no frame is ever skipped silently.
 //
 // open_frame_source() chooses the source from one --source argument:
-//   - "openni" or a device URI (contains "://" or starts with "#"): a live OpenNI2 device;
+//   - "openni" (the first attached device) or a device URI (contains "://"): a live OpenNI2 device;
 //   - a path ending in ".oni": an OpenNI2 recording, read frame by frame;
 //   - a folder: every NAME.depth.png in it (sorted by name), with NAME.rgb.png as colour when present;
 //   - a single NAME.depth.png file: that one frame;

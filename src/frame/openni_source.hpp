@@ -1,7 +1,17 @@
 #pragma once
 // Frames from OpenNI2: a recorded .oni file, read frame by frame as fast as the consumer asks (playback
 // speed "manual": no frame is dropped, none is repeated), or a live device with depth registered to colour
-// and depth/colour synchronisation on. This is the only place in the project that includes OpenNI.h.
+// and depth/colour synchronisation on. The library's only use of OpenNI.h (rdsf-record, a program, is the
+// other one).
+//
+// Recordings: every depth frame once, in order; index 0, 1, 2...; timestamp_us as recorded (OpenNI2's
+// recorder starts each stream's clock at 0); colour is the recorded colour frame nearest in time. A
+// recording whose depth stream lacks the cropping property (e.g. from OpenNI2's Dummy device) is refused
+// with a one-line error: OpenNI2's file player would deliver none of its frames (docs/openni.md).
+// Recorded frame numbers are checked, so a frame the player skips (damaged record) is an Error. Several
+// sources may be open on one file at once, each playing independently.
+// Live devices: the newest depth frame and the newest colour frame at each call.
+// Every wait is bounded by `wait_timeout_ms`; a recording that stops early (truncated) ends in an Error.
 #include <memory>
 #include <string>
 

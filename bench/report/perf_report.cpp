@@ -1,0 +1,51 @@
+// rdsf-perf-report: the performance report (issue 9). In one process and on the same data: the whole
+// system stage by stage against the thesis, native training per round against OpenCV's cv::ml::Boost,
+// mining and labelling throughput, and memory peaks. Prints the ratios and writes a Markdown table.
+#include <filesystem>
+#include <iostream>
+
+#include "cli/cli.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "perf_run.hpp"
+
+int main(int argc, char** argv) {
+  return rdsf::cli::run("rdsf-perf-report", [&] {
+    namespace po = rdsf::cli::po;
+    rdsf::perf::PerfOptions o;
+    po::options_description options("rdsf-perf-report");
+    options.add_options()
+        ("out", po::value(&o.out)->default_value(o.out), "Markdown report to write")
+        ("force", po::bool_switch(&o.force), "replace an existing --out file")
+        ("quick", po::bool_switch(&o.quick), "small sizes: a smoke run in well under a minute")
+        ("work", po::value(&o.work_dir), "empty scratch folder for PNG frames and sample sets (default: a temporary one, removed)")
+        ("threads", po::value(&o.threads)->default_value(o.threads), "threads of the parallel measurements")
+        ("frames", po::value(&o.frames), "frames with people for the whole system (default 240, quick 24)")
+        ("train-frames", po::value(&o.train_frames), "frames whose candidates train the pipeline's model (300, quick 40)")
+        ("model-rounds", po::value(&o.model_rounds), "rounds of the pipeline's model (100, quick 20)")
+        ("empty-frames", po::value(&o.empty_frames), "people-free frames mined (150, quick 16)")
+        ("answers", po::value(&o.answers), "answers timed in the labelling session (300, quick 30)")
+        ("positives", po::value(&o.positives), "training comparison: positive rows (5628 = hugeTree, quick 200)")
+        ("negatives", po::value(&o.negatives), "training comparison: negative rows (22454 = hugeTree, quick 800)")
+        ("native-rounds", po::value(&o.native_rounds), "native rounds timed (20, quick 5)")
+        ("opencv-rounds", po::value(&o.opencv_rounds), "OpenCV timed at A and B rounds: A,B (1,3, quick 1,2; 0,0 skips)");
+    po::variables_map values;
+    const rdsf::cli::ProgramInfo info{
+        "rdsf-perf-report", "[--out FILE.md] [--force] [--quick]",
+        "Measures the whole system (segmentation, candidates, RDSF, classifier, tracking) on synthetic 640x480\n"
+        "frames against the thesis's timing, native training against OpenCV's cv::ml::Boost per round at\n"
+        "hugeTree size, mining and labelling throughput and memory peaks; prints the ratios and writes a\n"
+        "Markdown report. A full run takes about 5-10 minutes on 2 cores."};
+    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    o.resolve();
+    if (!o.force && std::filesystem::exists(o.out)) {  // refused before measuring anything
+      throw rdsf::Error(o.out + ": already exists (use --force to replace it)");
+    }
+    const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
+    rdsf::AtomicTextFile out(o.out, o.force);
+    out.stream() << rdsf::perf::perf_markdown(results);
+    out.commit();
+    std::cout << rdsf::perf::perf_summary(results) << "report: " << o.out << "\n";
+    return 0;
+  });
+}

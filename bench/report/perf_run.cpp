@@ -1,0 +1,595 @@
+#include "perf_run.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include <sys/resource.h>
+
+#include "candidates/candidate_finder.hpp"
+#include "classifier/binned_matrix.hpp"
+#include "classifier/boost_training.hpp"
+#include "classifier/opencv_boost.hpp"
+#include "classifier/real_adaboost.hpp"
+#include "classifier/roc_metrics.hpp"
+#include "cli/progress.hpp"
+#include "core/error.hpp"
+#include "dataset/negative_miner.hpp"
+#include "dataset/sample_set_writer.hpp"
+#include "frame/depth_png.hpp"
+#include "frame/frame_source.hpp"
+#include "labeling/labeling_session.hpp"
+#include "memory_peak.hpp"
+#include "synth/synth_sequence.hpp"
+#include "synth/synth_writer.hpp"
+#include "training_crops.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rdsf::perf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Processor time of the whole process (every thread), seconds.
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+void say(const std::string& text) { std::cerr << "rdsf-perf-report: " << text << std::endl; }
+
+std::string first_line_value(const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(key, 0) != 0) continue;
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    std::string value = line.substr(colon + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    return value;
+  }
+  return {};
+}
+
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a.empty() ? std::string("unknown") : a + " / " + b + " / " + c;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char text[64];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &tm);
+  return text;
+}
+
+/// Records a phase's memory: construct at its start, call done() at its end.
+class MemoryPhase {
+ public:
+  MemoryPhase(PerfResults& r, std::string name) : r_(r), name_(std::move(name)), mark_(start_memory_phase()) {}
+  void done() { r_.memory.push_back({name_, mark_.rss_mib, peak_rss_mib(), mark_.reset}); }
+
+ private:
+  PerfResults& r_;
+  std::string name_;
+  MemoryMark mark_;
+};
+
+DepthFrame to_depth_frame(const synth::SynthFrame& f, const CameraModel& camera) {
+  DepthFrame frame;
+  frame.depth_mm = f.depth_mm;
+  frame.bgr = f.bgr;
+  frame.index = f.index;
+  frame.name = f.name;
+  frame.timestamp_us = f.index * 33333;
+  frame.camera = camera;
+  return frame;
+}
+
+synth::SynthParams sequence_params(const PerfOptions& o, int frames, std::uint64_t seed, bool empty) {
+  synth::SynthParams p;
+  p.frames = frames;
+  p.seed = seed;
+  p.people_min = 1;
+  p.people_max = 4;
+  p.empty = empty;
+  p.rgb = true;
+  p.clip_frames = o.quick ? 12 : 60;
+  return p;
+}
+
+/// One frame analysed off the tracking thread: candidates, RDSF, scores and the detections' histograms.
+struct Analysed {
+  DepthFrame frame;
+  FrameAnalysis analysis;
+  std::vector<double> scores;
+  std::vector<TrackInput> detections;
+  std::vector<std::size_t> which;  ///< candidate index of each detection
+};
+
+/// The whole system with frames analysed on `threads` threads (each its share of the frames, at most a
+/// few frames ahead) and tracking done in frame order on the calling thread: the same work and the same
+/// results as PeoplePipeline::process frame after frame. Returns the wall time; fills each frame's
+/// per-candidate person ids.
+double run_frames_in_parallel(int count, int threads, const std::function<DepthFrame(int)>& load,
+                              const PipelineParams& params, const BoostedModel& model,
+                              std::vector<std::vector<int>>& person) {
+  const DetectorCore core(params.detector);
+  Tracker tracker(params.tracking);
+  std::vector<std::unique_ptr<Analysed>> slots(static_cast<std::size_t>(count));
+  std::mutex mutex;
+  std::condition_variable changed;
+  int next = 0, consumed = 0;
+  const int ahead = 2 * threads + 2;
+  std::exception_ptr failure;
+  person.assign(static_cast<std::size_t>(count), {});
+
+  const Clock::time_point start = Clock::now();
+  auto worker = [&] {
+    while (true) {
+      int i = 0;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        changed.wait(lock, [&] { return next >= count || failure || next < consumed + ahead; });
+        if (next >= count || failure) return;
+        i = next++;
+      }
+      try {
+        auto a = std::make_unique<Analysed>();
+        a->frame = load(i);
+        a->analysis = core.analyse(a->frame, true);
+        a->scores = model.score(a->analysis.features);
+        for (std::size_t c = 0; c < a->scores.size(); ++c) {
+          if (a->scores[c] < params.threshold_classifier) continue;
+          const Candidate& cand = a->analysis.candidates[c];
+          a->detections.push_back({cand.strict_box, cand.layer_depth_mm,
+                                   ColourHistogram::of(cand.colour_crop, cand.depth_crop, params.tracking.histogram_bins)});
+          a->which.push_back(c);
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        slots[static_cast<std::size_t>(i)] = std::move(a);
+        changed.notify_all();
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        failure = std::current_exception();
+        changed.notify_all();
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  try {
+    for (int i = 0; i < count; ++i) {
+      std::unique_ptr<Analysed> a;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        changed.wait(lock, [&] { return failure || slots[static_cast<std::size_t>(i)] != nullptr; });
+        if (failure) break;
+        a = std::move(slots[static_cast<std::size_t>(i)]);
+      }
+      const std::vector<int> ids = tracker.update(a->detections, a->frame.camera, a->frame.index);
+      std::vector<int>& p = person[static_cast<std::size_t>(i)];
+      p.assign(a->analysis.candidates.size(), 0);
+      for (std::size_t k = 0; k < a->which.size(); ++k) p[a->which[k]] = ids[k];
+      std::lock_guard<std::mutex> lock(mutex);
+      consumed = i + 1;
+      changed.notify_all();
+    }
+  } catch (...) {  // stop the workers before passing the error on
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!failure) failure = std::current_exception();
+    changed.notify_all();
+  }
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return seconds_since(start);
+}
+
+double validation_auc(const std::vector<WeakClassifier>& weak, std::size_t rounds, const BinScheme& bins,
+                      const TrainingRows& validation) {
+  std::vector<double> scores(validation.labels.size(), 0.0);
+  for (std::size_t k = 0; k < std::min(rounds, weak.size()); ++k) {
+    for (std::size_t i = 0; i < scores.size(); ++i) {
+      scores[i] += weak[k].respond(validation.rows(static_cast<int>(i), weak[k].feature), bins);
+    }
+  }
+  return roc_auc(scores, validation.labels);
+}
+
+// ---- phases ----
+
+struct Workspace {
+  fs::path root;
+  bool remove = false;
+  ~Workspace() {
+    if (!remove) return;
+    std::error_code ec;
+    fs::remove_all(root, ec);
+  }
+};
+
+void machine(PerfResults& r, const PerfOptions& o) {
+  r.date_utc = utc_now();
+  r.mode = o.quick ? "quick" : "full";
+  r.cpu_model = first_line_value("/proc/cpuinfo", "model name");
+  if (r.cpu_model.empty()) r.cpu_model = "unknown";
+  r.cores = static_cast<int>(std::thread::hardware_concurrency());
+  const std::string mem = first_line_value("/proc/meminfo", "MemTotal");
+  r.memory_gib = mem.empty() ? 0.0 : std::stod(mem) / (1024.0 * 1024.0);
+  r.load_start = load_average();
+  r.threads = o.threads;
+}
+
+std::vector<DepthFrame> render_people(PerfResults& r, const PerfOptions& o, const fs::path& folder) {
+  MemoryPhase memory(r, "render and write synthetic frames");
+  const synth::SynthParams params = sequence_params(o, o.frames, 101, false);
+  r.frames = o.frames;
+  r.people_min = params.people_min;
+  r.people_max = params.people_max;
+  r.width_px = params.width_px;
+  r.height_px = params.height_px;
+  synth::SynthSequence sequence(params);
+  synth::prepare_output_folder(folder.string(), false);
+  synth::SynthWriter writer(folder.string(), params, false);
+  std::vector<DepthFrame> frames;
+  say("rendering " + std::to_string(o.frames) + " frames 640x480 with 1..4 people (kept in memory, written to " +
+      folder.string() + ")");
+  cli::Progress progress(std::cerr, "frames", o.frames);
+  double render_s = 0;
+  for (int i = 0; i < o.frames; ++i) {
+    const Clock::time_point t = Clock::now();
+    const synth::SynthFrame f = sequence.frame(i);
+    render_s += seconds_since(t);
+    writer.write(f);
+    frames.push_back(to_depth_frame(f, params.camera()));
+    progress.update(i + 1);
+  }
+  progress.finish(o.frames);
+  writer.commit("rdsf-perf-report");
+  r.render_ms_per_frame = 1000.0 * render_s / o.frames;
+  double bytes = 0;
+  for (const DepthFrame& f : frames) {
+    bytes += static_cast<double>(f.depth_mm.total() * f.depth_mm.elemSize() + f.bgr.total() * f.bgr.elemSize());
+  }
+  r.frames_mib = bytes / (1024.0 * 1024.0);
+
+  const synth::SynthParams empty = sequence_params(o, o.empty_frames, 303, true);
+  const fs::path empty_folder = folder.parent_path() / "empty";
+  synth::SynthSequence rooms(empty);
+  synth::prepare_output_folder(empty_folder.string(), false);
+  synth::SynthWriter empty_writer(empty_folder.string(), empty, false);
+  say("rendering " + std::to_string(o.empty_frames) + " people-free frames for mining");
+  cli::Progress empty_progress(std::cerr, "frames", o.empty_frames);
+  for (int i = 0; i < o.empty_frames; ++i) {
+    empty_writer.write(rooms.frame(i));
+    empty_progress.update(i + 1);
+  }
+  empty_progress.finish(o.empty_frames);
+  empty_writer.commit("rdsf-perf-report");
+  memory.done();
+  return frames;
+}
+
+BoostedModel train_pipeline_model(PerfResults& r, const PerfOptions& o) {
+  MemoryPhase memory(r, "train the pipeline's model (synthetic candidates)");
+  const synth::SynthParams params = sequence_params(o, o.train_frames, 202, false);
+  synth::SynthSequence sequence(params);
+  const DetectorCore core;
+  cv::Mat1f rows;
+  std::vector<int> labels;
+  say("labelling the candidates of " + std::to_string(o.train_frames) +
+      " other synthetic frames by their overlap with the true boxes");
+  cli::Progress progress(std::cerr, "frames", o.train_frames);
+  for (int i = 0; i < o.train_frames; ++i) {
+    const synth::SynthFrame f = sequence.frame(i);
+    const FrameAnalysis analysis = core.analyse(to_depth_frame(f, params.camera()), true);
+    for (std::size_t c = 0; c < analysis.candidates.size(); ++c) {
+      double best = 0.0;
+      for (const synth::PersonTruth& p : f.people) best = std::max(best, iou(analysis.candidates[c].strict_box, p.box));
+      if (best >= 0.3 && best < 0.5) continue;  // uncertain: left out, as the assisted labeller asks about it
+      rows.push_back(analysis.features.row(static_cast<int>(c)));
+      labels.push_back(best >= 0.5 ? 1 : 0);
+    }
+    progress.update(i + 1);
+  }
+  progress.finish(o.train_frames);
+  r.train_frames = o.train_frames;
+  r.train_positives = static_cast<int>(std::count(labels.begin(), labels.end(), 1));
+  r.train_negatives = static_cast<int>(std::count(labels.begin(), labels.end(), 0));
+  if (r.train_positives < 4 || r.train_negatives < 4) {
+    throw Error("too few training candidates (" + std::to_string(r.train_positives) + " people, " +
+                std::to_string(r.train_negatives) + " others): use more --train-frames");
+  }
+  BoostTrainingParams tp;
+  tp.rounds = o.model_rounds;
+  tp.bins.count = 16;
+  const Clock::time_point start = Clock::now();
+  BoostedModel model = train_boosted_model(rows, labels, tp);
+  r.model_train_s = seconds_since(start);
+  r.model_rounds = static_cast<int>(model.weak_classifiers().size());
+  r.model_validation_auc = model.training().validation.summary.auc;
+  say("model: " + std::to_string(r.train_positives) + " people, " + std::to_string(r.train_negatives) +
+      " others, " + std::to_string(r.model_rounds) + " rounds, validation AUC " +
+      std::to_string(r.model_validation_auc));
+  memory.done();
+  return model;
+}
+
+std::vector<std::vector<int>> whole_system_one_thread(PerfResults& r, const std::vector<DepthFrame>& frames,
+                                                      const BoostedModel& model) {
+  MemoryPhase memory(r, "whole system, 1 thread (frames in memory)");
+  say("whole system on 1 thread (PeoplePipeline: segmentation, candidates, RDSF, classifier, tracking)");
+  PeoplePipeline pipeline(PipelineParams{}, &model);
+  std::vector<std::vector<int>> person;
+  cli::Progress progress(std::cerr, "frames", static_cast<std::int64_t>(frames.size()));
+  double wall = 0;
+  for (const DepthFrame& frame : frames) {
+    const Clock::time_point t = Clock::now();
+    const PipelineFrame out = pipeline.process(frame);
+    wall += seconds_since(t);
+    r.stage_ms += out.times;
+    r.candidates += static_cast<long long>(out.analysis.candidates.size());
+    r.detections += std::count_if(out.person.begin(), out.person.end(), [](int id) { return id != 0; });
+    person.push_back(out.person);
+    progress.update(static_cast<std::int64_t>(person.size()));
+  }
+  progress.finish(static_cast<std::int64_t>(person.size()));
+  r.pipeline_wall_s = wall;
+  r.people_tracked = static_cast<int>(pipeline.tracker().people().size());
+  memory.done();
+  return person;
+}
+
+void whole_system_parallel(PerfResults& r, const PerfOptions& o, const std::vector<DepthFrame>& frames,
+                           const BoostedModel& model, const std::vector<std::vector<int>>& reference) {
+  MemoryPhase memory(r, "whole system, " + std::to_string(o.threads) + " threads (frames in memory)");
+  say("whole system on " + std::to_string(o.threads) + " threads (frames analysed in parallel, tracking in order)");
+  std::vector<std::vector<int>> person;
+  r.parallel_wall_s = run_frames_in_parallel(
+      static_cast<int>(frames.size()), o.threads, [&](int i) { return frames[static_cast<std::size_t>(i)]; },
+      PipelineParams{}, model, person);
+  r.parallel_identical = person == reference;
+  memory.done();
+}
+
+void png_reading(PerfResults& r, const PerfOptions& o, const fs::path& folder, const BoostedModel& model,
+                 const std::vector<std::vector<int>>& reference) {
+  MemoryPhase memory(r, "PNG reading and whole system from files");
+  say("reading the frames back from PNG files (depth + colour)");
+  const CameraModel camera = CameraModel::kinect_v1();
+  auto source = open_frame_source(folder.string(), camera);
+  DepthFrame frame;
+  int count = 0;
+  const Clock::time_point start = Clock::now();
+  while (source->next(frame)) ++count;
+  r.png_read_ms_per_frame = count > 0 ? 1000.0 * seconds_since(start) / count : 0.0;
+
+  say("whole system from the PNG files on " + std::to_string(o.threads) + " threads");
+  std::vector<std::vector<int>> person;
+  r.files_parallel_wall_s = run_frames_in_parallel(
+      count, o.threads,
+      [&](int i) {
+        DepthFrame f;
+        f.name = synth::SynthSequence::frame_name(i);
+        f.index = i;
+        f.timestamp_us = i * 33333LL;
+        f.depth_mm = read_depth_png((folder / (f.name + ".depth.png")).string());
+        f.bgr = read_colour_png((folder / (f.name + ".rgb.png")).string(), f.depth_mm.size());
+        f.camera = camera;
+        return f;
+      },
+      PipelineParams{}, model, person);
+  if (person != reference) say("warning: the frames read from PNG gave other results than those in memory");
+  memory.done();
+}
+
+void training_per_round(PerfResults& r, const PerfOptions& o) {
+  MemoryPhase memory(r, "training comparison (native and OpenCV)");
+  say("training rows: " + std::to_string(o.positives) + " + " + std::to_string(o.negatives) +
+      " generated crops and their RDSF (plus 20 % as validation)");
+  const Clock::time_point gen = Clock::now();
+  const TrainingRows train = make_training_rows(o.positives, o.negatives, 1);
+  const TrainingRows validation = make_training_rows(o.positives / 5, o.negatives / 5, 2);
+  r.rows_generate_s = seconds_since(gen);
+  r.train_rows_positive = o.positives;
+  r.train_rows_negative = o.negatives;
+  r.validation_rows = validation.rows.rows;
+  r.dimension = train.rows.cols;
+
+  say("native Real AdaBoost: " + std::to_string(o.native_rounds) + " rounds on " + std::to_string(o.threads) +
+      " threads");
+  const BinScheme bins;
+  const Clock::time_point start = Clock::now();
+  const std::vector<std::size_t> order = positives_first_order(train.labels);
+  const BinnedMatrix binned(train.rows, bins, order, o.threads);
+  std::vector<int> labels;
+  for (std::size_t i : order) labels.push_back(train.labels[i]);
+  r.native_binning_s = seconds_since(start);
+  RealAdaBoostParams params;
+  params.threads = o.threads;
+  RealAdaBoost booster(binned, labels, params);
+  const Clock::time_point rounds_start = Clock::now();
+  const double rounds_cpu = cpu_seconds();
+  for (int k = 0; k < o.native_rounds; ++k) booster.next_round();
+  r.native_s_per_round = seconds_since(rounds_start) / o.native_rounds;
+  r.native_cpu_s_per_round = (cpu_seconds() - rounds_cpu) / o.native_rounds;
+  r.native_rounds = o.native_rounds;
+  const std::vector<WeakClassifier>& native = booster.weak_classifiers();
+  r.native_auc_final = validation_auc(native, native.size(), bins, validation);
+
+  int a = 0, b = 0;
+  if (std::sscanf(o.opencv_rounds.c_str(), "%d,%d", &a, &b) == 2 && a > 0 && b > a) {
+    r.opencv_ran = true;
+    r.opencv_a = a;
+    r.opencv_b = b;
+    OpenCvBoostParams cv_params;
+    say("OpenCV cv::ml::Boost REAL stumps: " + std::to_string(a) + " round(s), then " + std::to_string(b) +
+        " rounds (one call each, timed whole)");
+    cv_params.rounds = a;
+    Clock::time_point t = Clock::now();
+    double cpu = cpu_seconds();
+    train_opencv_boost(train.rows, train.labels, cv_params);
+    r.opencv_a_s = seconds_since(t);
+    const double cpu_a = cpu_seconds() - cpu;
+    say("  " + std::to_string(a) + " round(s): " + std::to_string(r.opencv_a_s) + " s");
+    cv_params.rounds = b;
+    t = Clock::now();
+    cpu = cpu_seconds();
+    const OpenCvBoostResult result = train_opencv_boost(train.rows, train.labels, cv_params);
+    r.opencv_b_s = seconds_since(t);
+    r.opencv_cpu_s_per_round = (cpu_seconds() - cpu - cpu_a) / (b - a);
+    say("  " + std::to_string(b) + " rounds: " + std::to_string(r.opencv_b_s) + " s");
+    r.opencv_s_per_round = (r.opencv_b_s - r.opencv_a_s) / (b - a);
+    r.opencv_setup_s = std::max(0.0, r.opencv_a_s - r.opencv_s_per_round * a);
+    r.opencv_auc_at_b = validation_auc(result.stumps, static_cast<std::size_t>(b), bins, validation);
+    r.native_auc_at_b = validation_auc(native, static_cast<std::size_t>(b), bins, validation);
+    for (std::size_t k = 1; k <= native.size(); ++k) {
+      if (validation_auc(native, k, bins, validation) >= r.opencv_auc_at_b) {
+        r.native_rounds_to_opencv_auc = static_cast<int>(k);
+        break;
+      }
+    }
+  }
+  memory.done();
+}
+
+void mining(PerfResults& r, const PerfOptions& o, const fs::path& work) {
+  MemoryPhase memory(r, "mining negatives (" + std::to_string(o.threads) + " threads)");
+  say("mining negatives from " + std::to_string(o.empty_frames) + " people-free PNG frames on " +
+      std::to_string(o.threads) + " threads");
+  MineParams params;
+  params.sources = {(work / "empty").string()};
+  params.threads = o.threads;
+  params.camera = CameraModel::kinect_v1();
+  SampleSetWriter out =
+      SampleSetWriter::open_or_create((work / "mined").string(), FeatureSpec{}, params.camera, "rdsf-perf-report");
+  cli::Progress progress(std::cerr, "frames", o.empty_frames);
+  const Clock::time_point start = Clock::now();
+  const MineStats stats =
+      mine_negatives(params, out, [&](const MineStats& s) { progress.update(s.frames); });
+  r.mining_wall_s = seconds_since(start);
+  progress.finish(stats.frames);
+  r.mined_frames = stats.frames;
+  r.mined_candidates = stats.candidates;
+  r.mined_kept = stats.kept;
+  memory.done();
+}
+
+void labelling(PerfResults& r, const PerfOptions& o, const fs::path& work, const BoostedModel& model) {
+  MemoryPhase memory(r, "labelling session (headless)");
+  say("labelling headless: " + std::to_string(o.answers) +
+      " answers given at once, each timed from answer() to current() returning the next candidate");
+  LabelingConfig config;
+  config.sources = {(work / "people").string()};
+  config.camera = CameraModel::kinect_v1();
+  SampleSetWriter out =
+      SampleSetWriter::open_or_create((work / "labelled").string(), FeatureSpec{}, config.camera, "rdsf-perf-report");
+  LabelingSession session(config, out, &model, nullptr);
+  std::vector<double> latency_ms;
+  const PresentedCandidate* current = session.current();
+  while (current != nullptr && static_cast<int>(latency_ms.size()) < o.answers) {
+    const LoadedFrame* frame = current->frame.get();
+    const char key = current->frame->scores[current->index] >= 0.0 ? 'y' : 'n';  // the model's suggestion
+    const Clock::time_point t = Clock::now();
+    session.answer(key);
+    current = session.current();
+    latency_ms.push_back(1000.0 * seconds_since(t));
+    if (current != nullptr && current->frame.get() != frame) ++r.label_frame_waits;
+  }
+  r.label_answers = static_cast<int>(latency_ms.size());
+  if (!latency_ms.empty()) {
+    double sum = 0;
+    for (double v : latency_ms) sum += v;
+    r.label_mean_ms = sum / static_cast<double>(latency_ms.size());
+    std::vector<double> sorted = latency_ms;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t p95 = std::min(sorted.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(sorted.size())));
+    r.label_p95_ms = sorted[p95];
+    r.label_max_ms = sorted.back();
+  }
+  memory.done();
+}
+
+}  // namespace
+
+void PerfOptions::resolve() {
+  auto pick = [this](int& value, int full, int quick_value) {
+    if (value == 0) value = quick ? quick_value : full;
+  };
+  pick(frames, 240, 24);
+  pick(train_frames, 300, 40);
+  pick(model_rounds, 100, 20);
+  pick(empty_frames, 150, 16);
+  pick(answers, 300, 30);
+  pick(positives, 5628, 200);
+  pick(negatives, 22454, 800);
+  pick(native_rounds, 20, 5);
+  if (opencv_rounds.empty()) opencv_rounds = quick ? "1,2" : "1,3";
+  if (threads < 1) throw Error("--threads must be 1 or more");
+  for (int v : {frames, train_frames, model_rounds, empty_frames, answers, positives, negatives, native_rounds}) {
+    if (v < 1) throw Error("sizes (--frames, --train-frames, ...) must be 1 or more");
+  }
+  if (frames > 999999 || train_frames > 999999 || empty_frames > 999999) throw Error("at most 999999 frames");
+  int a = 0, b = 0;
+  if (std::sscanf(opencv_rounds.c_str(), "%d,%d", &a, &b) != 2 || !((a == 0 && b == 0) || (a > 0 && b > a))) {
+    throw Error("--opencv-rounds must be A,B with 0 < A < B (or 0,0 to skip OpenCV), not '" + opencv_rounds + "'");
+  }
+}
+
+PerfResults run_perf_report(const PerfOptions& options) {
+  PerfOptions o = options;
+  o.resolve();
+  PerfResults r;
+  machine(r, o);
+  Workspace work;
+  if (o.work_dir.empty()) {
+    std::string pattern = (fs::temp_directory_path() / "rdsf-perf-report-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw Error("cannot create a temporary folder under " + fs::temp_directory_path().string());
+    work.root = pattern;
+    work.remove = true;
+  } else {
+    work.root = o.work_dir;
+    if (fs::exists(work.root) && !fs::is_empty(work.root)) {
+      throw Error(o.work_dir + ": --work folder is not empty (its frames and sample sets would be mixed in)");
+    }
+    fs::create_directories(work.root);
+  }
+  say(std::string(o.quick ? "quick" : "full") + " run; scratch folder " + work.root.string() + "; load average " +
+      r.load_start);
+
+  std::vector<DepthFrame> frames = render_people(r, o, work.root / "people");
+  const BoostedModel model = train_pipeline_model(r, o);
+  const std::vector<std::vector<int>> reference = whole_system_one_thread(r, frames, model);
+  whole_system_parallel(r, o, frames, model, reference);
+  std::vector<DepthFrame>().swap(frames);  // the frames in memory are not part of the later phases
+  png_reading(r, o, work.root / "people", model, reference);
+  training_per_round(r, o);
+  mining(r, o, work.root);
+  labelling(r, o, work.root, model);
+  r.load_end = load_average();
+  return r;
+}
+
+}  // namespace rdsf::perf

@@ -1,0 +1,89 @@
+#pragma once
+// The performance report of rdsf-perf-report: every measurement in one process, on the same data, with
+// the figures of the thesis and the project's targets beside them.
+#include <string>
+#include <vector>
+
+#include "pipeline/people_pipeline.hpp"
+
+namespace rdsf::perf {
+
+/// Sizes of the run; 0 (or empty) means the mode's default (full, or --quick for a smoke run).
+struct PerfOptions {
+  std::string out = "perf-report.md";  ///< Markdown report
+  bool force = false;                  ///< replace an existing report
+  bool quick = false;                  ///< small sizes: a smoke run in well under a minute
+  std::string work_dir;                ///< scratch folder for PNG frames and sample sets; empty: a temporary one, removed
+  int threads = 2;                     ///< threads of the parallel measurements (the target is "on 2 cores")
+  int frames = 0;                      ///< frames with people for the whole system (full 240, quick 24)
+  int train_frames = 0;                ///< frames whose candidates train the pipeline's model (full 300, quick 40)
+  int model_rounds = 0;                ///< rounds of the pipeline's model (full 100, quick 20)
+  int empty_frames = 0;                ///< people-free frames for mining (full 150, quick 16)
+  int answers = 0;                     ///< answers given in the labelling session (full 300, quick 30)
+  int positives = 0, negatives = 0;    ///< training comparison rows (full 5628 + 22454 = hugeTree, quick 200 + 800)
+  int native_rounds = 0;               ///< native rounds timed (full 20, quick 5)
+  std::string opencv_rounds;           ///< "A,B": OpenCV timed at A and B rounds (full "1,3", quick "1,2"; "0,0" skips)
+
+  /// Fills every 0 / empty size with the mode's default; throws Error on impossible values.
+  void resolve();
+};
+
+struct PhaseMemory {
+  std::string phase;
+  double start_mib = 0;  ///< resident at the start of the phase
+  double peak_mib = 0;   ///< VmHWM over the phase
+  bool reset = false;    ///< peak reset at the start (else the process's peak so far)
+};
+
+struct PerfResults {
+  // Machine and run
+  std::string date_utc, mode, cpu_model, load_start, load_end;
+  int cores = 0;
+  double memory_gib = 0;
+  // Data
+  int frames = 0, people_min = 1, people_max = 4, width_px = 640, height_px = 480;
+  double render_ms_per_frame = 0, frames_mib = 0;
+  int train_frames = 0, train_positives = 0, train_negatives = 0, model_rounds = 0;
+  double model_validation_auc = 0, model_train_s = 0;
+  // Whole system, one thread (PeoplePipeline)
+  PipelineTimes stage_ms;          ///< sums over all frames
+  double pipeline_wall_s = 0;      ///< wall time of all process() calls
+  long long candidates = 0, detections = 0;
+  int people_tracked = 0;
+  // Whole system, frames analysed on `threads` threads, tracking in frame order
+  int threads = 2;
+  double parallel_wall_s = 0;
+  bool parallel_identical = false;  ///< same person ids as the one-thread run
+  // PNG reading
+  double png_read_ms_per_frame = 0;   ///< depth + colour, one thread, through open_frame_source
+  double files_parallel_wall_s = 0;   ///< whole system from the PNG files on `threads` threads
+  // Training per round at hugeTree size
+  int train_rows_positive = 0, train_rows_negative = 0, validation_rows = 0, dimension = 0;
+  double rows_generate_s = 0, native_binning_s = 0, native_s_per_round = 0;
+  int native_rounds = 0;
+  bool opencv_ran = false;
+  int opencv_a = 0, opencv_b = 0;
+  double opencv_a_s = 0, opencv_b_s = 0, opencv_s_per_round = 0, opencv_setup_s = 0;
+  /// Processor time (all threads of the process) per round: the cost without the wait for shared cores.
+  double native_cpu_s_per_round = 0, opencv_cpu_s_per_round = 0;
+  double native_auc_at_b = 0, opencv_auc_at_b = 0, native_auc_final = 0;
+  int native_rounds_to_opencv_auc = -1;  ///< first native round whose AUC >= OpenCV's after B rounds (-1: none)
+  // Mining
+  long long mined_frames = 0, mined_candidates = 0, mined_kept = 0;
+  double mining_wall_s = 0;
+  // Labelling
+  int label_answers = 0, label_frame_waits = 0;
+  double label_mean_ms = 0, label_p95_ms = 0, label_max_ms = 0;
+  // Memory
+  std::vector<PhaseMemory> memory;
+};
+
+/// Runs every phase (progress on stderr) and returns the figures.
+PerfResults run_perf_report(const PerfOptions& options);
+
+/// The Markdown report.
+std::string perf_markdown(const PerfResults& r);
+/// The short summary printed on stdout: ratios against the thesis and the targets.
+std::string perf_summary(const PerfResults& r);
+
+}  // namespace rdsf::perf

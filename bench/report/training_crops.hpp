@@ -1,0 +1,20 @@
+#pragma once
+// The training rows of the hugeTree-size comparison: real RDSF vectors of generated 64x128 masked depth
+// crops, made the way bench/bench_train.cpp makes them (person-like silhouettes against furniture-like
+// clutter, with noise, missing readings and occlusion), so that both reports train on the same kind of data.
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace rdsf::perf {
+
+struct TrainingRows {
+  cv::Mat1f rows;           ///< one RDSF vector per row
+  std::vector<int> labels;  ///< 1 person, 0 not (shuffled)
+};
+
+/// `positives` + `negatives` rows, deterministic for a seed, computed on all cores.
+TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed);
+
+}  // namespace rdsf::perf

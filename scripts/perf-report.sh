@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The performance report (issue 9): builds rdsf-perf-report if needed (scripts/setup.sh on a fresh
+# checkout, else just that program), runs it and writes its Markdown table.
+#
+#   scripts/perf-report.sh            full run (about 5-10 minutes on 2 cores) -> docs/perf-report.md
+#   scripts/perf-report.sh --quick    smoke run in well under a minute -> $build_dir/perf-report-quick.md
+#   scripts/perf-report.sh --out FILE [program options...]   (see: scripts/perf-report.sh --help)
+#
+# The report at the default place is the project's latest table and is replaced on every full run; any
+# other --out is refused when it exists unless --force is given. Build folder: $RDSF_BUILD_DIR or build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build_dir="${RDSF_BUILD_DIR:-build}"
+program="$build_dir/bench/report/rdsf-perf-report"
+
+quick=0
+out=""
+args=()
+while (($#)); do
+  case "$1" in
+    --quick) quick=1; args+=("$1") ;;
+    --out) out="${2:?--out needs a file}"; shift ;;
+    --out=*) out="${1#--out=}" ;;
+    *) args+=("$1") ;;
+  esac
+  shift
+done
+if [ -z "$out" ]; then
+  if ((quick)); then out="$build_dir/perf-report-quick.md"; else out="docs/perf-report.md"; fi
+  args+=(--force)  # the default report is regenerated on every run
+fi
+
+if [ ! -x "$program" ]; then
+  echo "perf-report: $program is not built: running scripts/setup.sh" >&2
+  scripts/setup.sh
+else
+  echo "perf-report: bringing $program up to date" >&2
+  cmake --build "$build_dir" -j"$(nproc 2>/dev/null || echo 2)" --target rdsf-perf-report >/dev/null
+fi
+
+echo "perf-report: load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+"$program" --out "$out" "${args[@]}"

@@ -1,0 +1,134 @@
+// rdsf-perf-report in --quick mode: it writes a Markdown report with every row, each with numbers, prints
+// its ratios, and refuses to overwrite a report without --force. No timing assertions: speed is what the
+// report measures, not what the test checks.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/test_support.hpp"
+
+namespace {
+
+using rdsf::test::quote;
+using rdsf::test::run;
+using rdsf::test::TempDir;
+
+std::string perf_program() {
+  return (std::filesystem::path(RDSF_BINARY_DIR) / "bench" / "report" / "rdsf-perf-report").string();
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// The table row (a line starting with "| " + label) or an empty string.
+std::string row(const std::string& markdown, const std::string& label) {
+  std::istringstream lines(markdown);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("| " + label, 0) == 0) return line;
+  }
+  return {};
+}
+
+class PerfReportQuick : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!std::filesystem::exists(perf_program())) return;
+    dir_ = new TempDir("rdsf-perf-report-test");
+    result_ = new rdsf::test::RunResult(
+        run(quote(perf_program()) + " --quick --out " + quote(*dir_ / "report.md") + " --work " +
+            quote(*dir_ / "work")));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete dir_;
+    result_ = nullptr;
+    dir_ = nullptr;
+  }
+  void SetUp() override {
+    if (result_ == nullptr) GTEST_SKIP() << perf_program() << " is not built (RDSF_BUILD_BENCH off)";
+  }
+  static TempDir* dir_;
+  static rdsf::test::RunResult* result_;
+};
+
+TempDir* PerfReportQuick::dir_ = nullptr;
+rdsf::test::RunResult* PerfReportQuick::result_ = nullptr;
+
+TEST_F(PerfReportQuick, WritesEveryRowWithNumbersAndPrintsTheRatios) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const std::string md = read_text(*dir_ / "report.md");
+  ASSERT_FALSE(md.empty());
+  for (const char* heading : {"# Performance report", "## Whole system per frame and per candidate",
+                              "## Training per round", "## Mining and labelling", "## Memory peaks",
+                              "## Targets", "**Machine:**", "**Load average**"}) {
+    EXPECT_NE(md.find(heading), std::string::npos) << heading;
+  }
+  const std::regex number("[0-9]+(\\.[0-9]+)?");
+  const std::vector<std::string> rows = {
+      "Segmentation per frame", "Candidate initialisation and filtering per candidate", "RDSF per candidate",
+      "Classifier per candidate", "RDSF and classifier per candidate", "Tracking per frame",
+      "Whole system, 1 thread", "Whole system, 2 threads (frames in memory)",
+      "PNG reading per frame (depth and colour), 1 thread", "Whole system from PNG files, 2 threads",
+      "Native Real AdaBoost", "OpenCV cv::ml::Boost REAL stumps", "Ratio (OpenCV / native)",
+      "Mining negatives, 2 threads", "Labelling: answer to next candidate, mean",
+      "Labelling: answer to next candidate, 95 %", "Labelling: answer to next candidate, max",
+      "render and write synthetic frames", "train the pipeline's model", "whole system, 1 thread",
+      "whole system, 2 threads", "PNG reading and whole system from files", "training comparison",
+      "mining negatives", "labelling session", "Segmentation >= 30x", "Whole system >= 30 fps",
+      "Training >= 100x", "Labelling: next candidate within 30 ms"};
+  for (const std::string& label : rows) {
+    const std::string line = row(md, label);
+    ASSERT_FALSE(line.empty()) << "no row '" << label << "' in\n" << md;
+    // The cells after the label hold measured numbers.
+    const std::string cells = line.substr(line.find('|', 2));
+    EXPECT_TRUE(std::regex_search(cells, number)) << line;
+    EXPECT_EQ(cells.find("nan"), std::string::npos) << line;
+    EXPECT_EQ(cells.find("inf"), std::string::npos) << line;
+  }
+  // The whole-system rows measured candidates, and the parallel run tracked the same people.
+  EXPECT_EQ(md.find("**different from**"), std::string::npos);
+  EXPECT_EQ(md.find("0.0 candidates per frame"), std::string::npos);
+  // Every target row ends with a verdict.
+  for (const char* target : {"Segmentation >= 30x", "Whole system >= 30 fps", "Training >= 100x"}) {
+    const std::string line = row(md, target);
+    EXPECT_TRUE(line.find("**yes**") != std::string::npos || line.find("**no**") != std::string::npos) << line;
+  }
+  // The ratios are printed too, and progress goes to stderr.
+  EXPECT_NE(result_->out.find("faster than the thesis's 200 ms"), std::string::npos) << result_->out;
+  EXPECT_NE(result_->out.find("training per round"), std::string::npos) << result_->out;
+  EXPECT_NE(result_->out.find("report: "), std::string::npos) << result_->out;
+  EXPECT_NE(result_->err.find("rdsf-perf-report:"), std::string::npos);
+}
+
+// These fail before measuring anything, so they do not need the quick run.
+TEST(PerfReport, RefusesToReplaceAReportWithoutForce) {
+  if (!std::filesystem::exists(perf_program())) GTEST_SKIP() << perf_program() << " is not built";
+  TempDir dir("rdsf-perf-report-test");
+  std::ofstream(dir / "report.md") << "an earlier report\n";
+  const rdsf::test::RunResult again = run(quote(perf_program()) + " --quick --out " + quote(dir / "report.md"));
+  EXPECT_EQ(again.exit_code, 1);
+  EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+  EXPECT_EQ(read_text(dir / "report.md"), "an earlier report\n");
+}
+
+TEST(PerfReport, RejectsBadOpenCvRounds) {
+  if (!std::filesystem::exists(perf_program())) GTEST_SKIP() << perf_program() << " is not built";
+  TempDir dir("rdsf-perf-report-test");
+  const rdsf::test::RunResult bad =
+      run(quote(perf_program()) + " --quick --opencv-rounds 3,1 --out " + quote(dir / "other.md"));
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--opencv-rounds"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "other.md"));
+}
+
+}  // namespace
