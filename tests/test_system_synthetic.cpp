@@ -1,0 +1,62 @@
+// The whole workbench through its programs on synthetic data, as a user would run it: render, label in
+// assisted mode, mine negatives, train, then detect, track and evaluate on a held-out sequence.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::string tool(const std::string& name) { return test::quote(test::program(name)); }
+
+void must_run(const std::string& command) {
+  const test::RunResult r = test::run(command);
+  ASSERT_EQ(r.exit_code, 0) << command << "\n" << r.err;
+}
+
+}  // namespace
+
+TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
+  test::TempDir dir;
+  const std::string d = dir.path().string();
+  must_run(tool("rdsf-synth") + " --out " + d + "/train --frames 600 --people 1..3 --seed 5 --clip-frames 10 --rgb");
+  must_run(tool("rdsf-synth") + " --out " + d + "/empty --frames 300 --people 1..3 --seed 5 --clip-frames 10 --empty");
+  must_run(tool("rdsf-synth") + " --out " + d + "/test --frames 150 --people 1..2 --seed 6 --clip-frames 50 --rgb");
+  must_run(tool("rdsf-label") + " --source " + d + "/train --out " + d + "/people --truth " + d +
+           "/train/boxes.csv --answers /dev/null");
+  must_run(tool("rdsf-mine") + " --source " + d + "/empty --out " + d + "/negatives");
+  must_run(tool("rdsf-train") + " --name system --models-dir " + d + "/models --pos " + d + "/people --neg " + d +
+           "/negatives --rounds 100");
+  const test::RunResult r = test::run(tool("rdsf-detect") + " --source " + d + "/test --truth " + d +
+                                      "/test/boxes.csv --model system --models-dir " + d + "/models --report-dir " +
+                                      d + "/report --thresholds=-30:30:1 --out " + d + "/detections.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::cout << r.out;
+  for (const char* file : {"metrics.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(d + "/report/" + file)) << file;
+  }
+  // Best MOTA over the sweep, from metrics.csv (column 15, table "all").
+  std::ifstream metrics(d + "/report/metrics.csv");
+  std::string line;
+  std::getline(metrics, line);
+  double best_mota = -1e9, tar_at_zero = 0;
+  while (std::getline(metrics, line)) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    ASSERT_EQ(f.size(), 20u) << line;
+    if (f[1] != "all") continue;
+    best_mota = std::max(best_mota, std::stod(f[14]));
+    if (std::stod(f[2]) == 0) tar_at_zero = std::stod(f[8]);
+  }
+  std::cout.precision(6);
+  std::cout << "best MOTA " << best_mota << ", TAR at threshold 0 " << tar_at_zero << "\n";
+  // Measured here (deterministic: same seeds, same bytes, same model): best MOTA 0.800 at threshold 7,
+  // TAR 0.84 at FPPF <= 0.1. The issue asks for MOTA >= 0.8 at the best threshold.
+  EXPECT_GE(best_mota, 0.8);
+  EXPECT_GE(tar_at_zero, 0.5);
+}
