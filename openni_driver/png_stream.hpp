@@ -2,7 +2,7 @@
 // One stream of the virtual sensor (depth in millimetres, or RGB colour), with the properties a real
 // sensor's stream reports. Among them is the cropping property: OpenNI2's recorder stores it only when
 // the stream offers it, and OpenNI2's file player (OniFile) drops every frame of a recording that lacks
-// it - the cause of "recorded fine, plays back no frames" (docs/openni.md).
+// it - the cause of "recorded fine, plays back no frames" (README.md, "What was wrong").
 #include <atomic>
 #include <cstdint>
 

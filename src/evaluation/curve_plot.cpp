@@ -112,7 +112,8 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
   }
 
   // Curves, operating points, legend.
-  int legend_y = frame.area.y + 22;
+  int legend_y = axes.legend_bottom_left ? frame.area.br().y - 22 * static_cast<int>(curves.size()) + 6
+                                         : frame.area.y + 22;
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const PlotCurve& curve = curves[i];
     const cv::Scalar colour = kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
@@ -125,7 +126,7 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
       cv::drawMarker(image, p, colour, cv::MARKER_DIAMOND, 18, 2, cv::LINE_AA);
       if (!curve.operating_label.empty()) text(image, curve.operating_label, p + cv::Point(10, -8), 0.45, colour);
     }
-    const int legend_x = frame.area.br().x - 230;
+    const int legend_x = axes.legend_bottom_left ? frame.area.x + 20 : frame.area.br().x - 230;
     cv::line(image, {legend_x, legend_y - 5}, {legend_x + 30, legend_y - 5}, colour, 3, cv::LINE_AA);
     text(image, curve.label, {legend_x + 38, legend_y}, 0.5, kInk);
     legend_y += 22;

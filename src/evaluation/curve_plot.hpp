@@ -20,6 +20,7 @@ struct PlotAxes {
   std::string title, x_label, y_label;
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
   bool log_x = false, log_y = false;        ///< log axes clamp values below the minimum to the minimum
+  bool legend_bottom_left = false;          ///< legend corner: bottom left instead of top right
 };
 
 cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, cv::Size size = {900, 650});

@@ -12,7 +12,7 @@
 //    shiny materials and surfaces seen at a grazing angle (a smooth random field thresholded by the
 //    surface's dropout), and on glass (windows);
 //  - the band without readings at the image border left by depth-to-colour registration.
-// Defaults reproduce the statistics measured on ../shared/realdata (see docs/synth.md).
+// Defaults reproduce the statistics measured on ../shared/realdata (see README.md, "Synthetic Kinect recordings").
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
