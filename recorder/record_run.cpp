@@ -11,22 +11,13 @@
 
 #include "cli/progress.hpp"
 #include "core/error.hpp"
+#include "frame/openni_source.hpp"
 #include "recorder/stop_request.hpp"
 
 namespace rdsf::recorder {
 namespace {
 
-// OpenNI2's messages come with tabs and newlines; keep every message on one line.
-std::string openni_error() {
-  std::string text;
-  for (const char* c = openni::OpenNI::getExtendedError(); c != nullptr && *c != '\0'; ++c) {
-    const bool space = *c == '\n' || *c == '\r' || *c == '\t' || *c == ' ';
-    if (space && (text.empty() || text.back() == ' ')) continue;
-    text += space ? ' ' : *c;
-  }
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text.empty() ? "no details from OpenNI2" : text;
-}
+std::string openni_error() { return openni_last_error(); }
 
 // Picks the 640x480 mode of `format` when the sensor offers it (a Kinect's default may be 320x240).
 void prefer_vga(openni::VideoStream& stream, openni::PixelFormat format) {

@@ -16,10 +16,9 @@
 #include "core/error.hpp"
 
 namespace rdsf {
-namespace {
 
-std::string openni_error() {
-  // OpenNI2's messages come with tabs and newlines; keep every message on one line.
+// OpenNI2's messages come with tabs and newlines; keep every message on one line.
+std::string openni_last_error() {
   std::string text;
   for (const char* c = openni::OpenNI::getExtendedError(); c != nullptr && *c != '\0'; ++c) {
     const bool space = *c == '\n' || *c == '\r' || *c == '\t' || *c == ' ';
@@ -29,6 +28,10 @@ std::string openni_error() {
   while (!text.empty() && text.back() == ' ') text.pop_back();
   return text.empty() ? "no details from OpenNI2" : text;
 }
+
+namespace {
+
+std::string openni_error() { return openni_last_error(); }
 
 void initialise_openni_once(const std::string& where) {
   static std::once_flag once;

@@ -19,6 +19,9 @@
 
 namespace rdsf {
 
+/// OpenNI2's last extended error on one line (its messages come with tabs and newlines).
+std::string openni_last_error();
+
 class OpenNISource : public FrameSource {
  public:
   /// `spec`: a path to an .oni file, "openni" for the first attached device, or a device URI.
