@@ -1,19 +1,36 @@
 #include "classifier/model_file.hpp"
 
+#include <cctype>
+#include <cfloat>
+#include <cmath>
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <opencv2/core.hpp>
 
 #include "classifier/yaml_node_copy.hpp"
 #include "core/error.hpp"
+#include "core/yaml_guard.hpp"
 
 namespace rdsf {
 namespace {
 
 using cv::FileNode;
 using cv::FileStorage;
+
+/// A key cv::FileStorage accepts when writing: a letter or '_' first, then letters, digits, '-', '_', ' '.
+/// Keys read back from a file (free-form training parameters) may be anything the YAML reader accepted.
+std::string writable_key(const std::string& key) {
+  std::string out = key.empty() ? "_" : key;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(out[i]);
+    const bool ok = std::isalpha(c) != 0 || c == '_' || (i > 0 && (std::isdigit(c) != 0 || c == '-' || c == ' '));
+    if (!ok) out[i] = '_';
+  }
+  return out;
+}
 
 void write_feature_spec(FileStorage& fs, const FeatureSpec& spec) {
   fs.startWriteStruct("feature_spec", FileNode::MAP);
@@ -41,7 +58,7 @@ void write_training(FileStorage& fs, const TrainingRecord& t) {
   cv::write(fs, "recipe", t.recipe);
   cv::write(fs, "backend", t.backend);
   fs.startWriteStruct("parameters", FileNode::MAP);
-  for (const auto& [key, value] : t.parameters) cv::write(fs, key, value);
+  for (const auto& [key, value] : t.parameters) cv::write(fs, writable_key(key), value);
   fs.endWriteStruct();
   fs.startWriteStruct("sample_sets", FileNode::SEQ);
   for (const SampleSetUse& s : t.sample_sets) {
@@ -123,9 +140,15 @@ void write_classifier(FileStorage& fs, const BoostedModel& model) {
 struct Reader {
   std::string path;
 
-  [[noreturn]] void bad(const std::string& what) const { fail(path, what); }
+  /// Throws Error("<path>: <what>"); `what` may quote text from the file, kept on one line.
+  [[noreturn]] void bad(const std::string& what) const { fail(path, one_line(what)); }
 
   FileNode need(const FileNode& parent, const std::string& key, const std::string& context) const {
+    if (!parent.isMap()) {
+      const std::string parent_name =
+          context.empty() ? std::string("the file") : "'" + context.substr(0, context.size() - 1) + "'";
+      bad("missing '" + context + key + "' (" + parent_name + " is not a mapping)");
+    }
     const FileNode node = parent[key];
     if (node.empty() || node.isNone()) bad("missing '" + context + key + "'");
     return node;
@@ -145,11 +168,21 @@ struct Reader {
     if (!node.isInt() && !node.isReal()) bad("'" + context + key + "' is not a number");
     return static_cast<double>(node);
   }
-  // Optional fields (informational parts of the training record).
+  /// A number that must fit a float (converting a larger double to float is undefined behaviour).
+  float single(const FileNode& parent, const std::string& key, const std::string& context) const {
+    const double value = real(parent, key, context);
+    if (std::isfinite(value) && std::fabs(value) > FLT_MAX) bad("'" + context + key + "' is out of the float range");
+    return static_cast<float>(value);
+  }
+  // Optional fields (informational parts of the training record): `child` is none when `parent` is no map.
+  static FileNode child(const FileNode& parent, const char* key) { return parent.isMap() ? parent[key] : FileNode(); }
   static std::string opt_text(const FileNode& n) { return n.isString() ? static_cast<std::string>(n) : ""; }
   static double opt_real(const FileNode& n) { return (n.isInt() || n.isReal()) ? static_cast<double>(n) : 0.0; }
   static int opt_int(const FileNode& n) { return n.isInt() ? static_cast<int>(n) : 0; }
 };
+
+/// Largest window size, cell size, bin width or depth a feature spec in a file may give.
+constexpr int kMaxSpecNumber = 1 << 15;  // (w / cell) * (h / cell) then stays within int
 
 FeatureSpec read_feature_spec_v1(const Reader& r, const FileNode& root, const FeatureSpec& expected) {
   const FileNode node = r.need(root, "feature_spec", "");
@@ -159,6 +192,24 @@ FeatureSpec read_feature_spec_v1(const Reader& r, const FileNode& root, const Fe
   spec.cell_px = r.integer(node, "cell_px", "feature_spec.");
   spec.bin_width_mm = r.integer(node, "bin_width_mm", "feature_spec.");
   spec.max_depth_mm = r.integer(node, "max_depth_mm", "feature_spec.");
+  // The numbers must make a valid spec before its canonical text is computed (a zero bin width divides by
+  // zero); bounded first so that the checks themselves cannot overflow.
+  const std::pair<const char*, int> numbers[] = {{"window_width_px", spec.window_width_px},
+                                                 {"window_height_px", spec.window_height_px},
+                                                 {"cell_px", spec.cell_px},
+                                                 {"bin_width_mm", spec.bin_width_mm},
+                                                 {"max_depth_mm", spec.max_depth_mm}};
+  for (const auto& [key, value] : numbers) {
+    if (value > kMaxSpecNumber) {  // smaller ones are checked by validate()
+      r.bad("'feature_spec." + std::string(key) + "' = " + std::to_string(value) + " is larger than " +
+            std::to_string(kMaxSpecNumber));
+    }
+  }
+  try {
+    spec.validate();
+  } catch (const Error& e) {
+    r.bad(std::string(e.what()) + " (damaged file?)");
+  }
   const std::string canonical = r.text(node, "canonical", "feature_spec.");
   const std::string hash = r.text(node, "hash", "feature_spec.");
   if (spec.canonical() != canonical) {
@@ -177,7 +228,8 @@ std::vector<RocPoint> read_roc_points(const FileNode& node) {
   if (!node.isSeq()) return out;
   for (auto it = node.begin(); it != node.end(); ++it) {
     const FileNode p = *it;
-    out.push_back({Reader::opt_real(p["far"]), Reader::opt_real(p["tar"]), Reader::opt_real(p["threshold"])});
+    out.push_back({Reader::opt_real(Reader::child(p, "far")), Reader::opt_real(Reader::child(p, "tar")),
+                   Reader::opt_real(Reader::child(p, "threshold"))});
   }
   return out;
 }
@@ -202,11 +254,11 @@ TrainingRecord read_training_v1(const FileNode& node) {
     for (auto it = sets.begin(); it != sets.end(); ++it) {
       const FileNode s = *it;
       SampleSetUse use;
-      use.role = Reader::opt_text(s["role"]);
-      use.path = Reader::opt_text(s["path"]);
-      use.manifest_hash = Reader::opt_text(s["manifest_hash"]);
-      use.available = static_cast<std::size_t>(Reader::opt_int(s["available"]));
-      use.used = static_cast<std::size_t>(Reader::opt_int(s["used"]));
+      use.role = Reader::opt_text(Reader::child(s, "role"));
+      use.path = Reader::opt_text(Reader::child(s, "path"));
+      use.manifest_hash = Reader::opt_text(Reader::child(s, "manifest_hash"));
+      use.available = static_cast<std::size_t>(Reader::opt_int(Reader::child(s, "available")));
+      use.used = static_cast<std::size_t>(Reader::opt_int(Reader::child(s, "used")));
       t.sample_sets.push_back(use);
     }
   }
@@ -229,14 +281,14 @@ TrainingRecord read_training_v1(const FileNode& node) {
       for (auto it = rounds.begin(); it != rounds.end(); ++it) {
         const FileNode p = *it;
         RoundFigures r;
-        r.round = Reader::opt_int(p["round"]);
-        r.feature = Reader::opt_int(p["feature"]);
-        r.train_error = Reader::opt_real(p["train_error"]);
-        r.validation_error = Reader::opt_real(p["validation_error"]);
-        r.auc = Reader::opt_real(p["auc"]);
-        r.tar_at_far_1 = Reader::opt_real(p["tar_at_far_1"]);
-        r.tar_at_far_5 = Reader::opt_real(p["tar_at_far_5"]);
-        r.roc = read_roc_points(p["roc"]);
+        r.round = Reader::opt_int(Reader::child(p, "round"));
+        r.feature = Reader::opt_int(Reader::child(p, "feature"));
+        r.train_error = Reader::opt_real(Reader::child(p, "train_error"));
+        r.validation_error = Reader::opt_real(Reader::child(p, "validation_error"));
+        r.auc = Reader::opt_real(Reader::child(p, "auc"));
+        r.tar_at_far_1 = Reader::opt_real(Reader::child(p, "tar_at_far_1"));
+        r.tar_at_far_5 = Reader::opt_real(Reader::child(p, "tar_at_far_5"));
+        r.roc = read_roc_points(Reader::child(p, "roc"));
         f.rounds.push_back(r);
       }
     }
@@ -252,8 +304,8 @@ BoostedModel read_v1(const Reader& r, const FileNode& root, const FeatureSpec& e
   if (scheme != "uniform") r.bad("bin scheme '" + scheme + "' is not known (format 1 has 'uniform')");
   BinScheme bins;
   bins.count = r.integer(bins_node, "count", "classifier.bins.");
-  bins.min_value = static_cast<float>(r.real(bins_node, "min", "classifier.bins."));
-  bins.max_value = static_cast<float>(r.real(bins_node, "max", "classifier.bins."));
+  bins.min_value = r.single(bins_node, "min", "classifier.bins.");
+  bins.max_value = r.single(bins_node, "max", "classifier.bins.");
   const FileNode weak_node = r.need(classifier, "weak_classifiers", "classifier.");
   if (!weak_node.isSeq()) r.bad("'classifier.weak_classifiers' is not a list");
   std::vector<WeakClassifier> weak;
@@ -302,6 +354,25 @@ BoostedModel read_v1(const Reader& r, const FileNode& root, const FeatureSpec& e
   return model;
 }
 
+// The file once OpenCV has parsed it.
+BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpec& expected) {
+  if (!root.isMap()) r.bad("not an rdsf model file (no 'format: " + std::string(kModelFormat) + "')");
+  const FileNode format = root["format"];
+  if (!format.isString() || static_cast<std::string>(format) != kModelFormat) {
+    r.bad("not an rdsf model file (no 'format: " + std::string(kModelFormat) + "')");
+  }
+  const FileNode version = root["format_version"];
+  if (!version.isInt()) r.bad("missing or non-integer 'format_version'");
+  const int format_version = static_cast<int>(version);
+  switch (format_version) {
+    case 1:
+      return read_v1(r, root, expected);
+    default:
+      r.bad("model format version " + std::to_string(format_version) + " is not known (this build reads " +
+            "version 1 only; a newer rdsf wrote it?)");
+  }
+}
+
 }  // namespace
 
 std::string iso_utc_now() {
@@ -332,34 +403,38 @@ std::string model_file_text(const BoostedModel& model) {
 
 BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected) {
   Reader r{path};
+  std::string text;
   {
-    std::ifstream probe(path);
-    if (!probe) r.bad("cannot be read (missing or no permission)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) r.bad("cannot be read (missing or no permission)");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+  }
+  if (const std::string problem = yaml_layout_problem(text); !problem.empty()) {
+    r.bad(problem + " (not a model file this workbench wrote)");
   }
   FileStorage fs;
   try {
-    if (!fs.open(path, FileStorage::READ | FileStorage::FORMAT_YAML)) r.bad("cannot be opened as YAML");
-  } catch (const cv::Exception& e) {
-    r.bad("is not a readable YAML file (" + std::string(e.err) + ")");
-  }
-  const FileNode root = fs.root();
-  const FileNode format = root["format"];
-  if (!format.isString() || static_cast<std::string>(format) != kModelFormat) {
-    r.bad("not an rdsf model file (no 'format: " + std::string(kModelFormat) + "')");
-  }
-  const FileNode version = root["format_version"];
-  if (!version.isInt()) r.bad("missing or non-integer 'format_version'");
-  const int format_version = static_cast<int>(version);
-  try {
-    switch (format_version) {
-      case 1:
-        return read_v1(r, root, expected);
-      default:
-        r.bad("model format version " + std::to_string(format_version) + " is not known (this build reads " +
-              "version 1 only; a newer rdsf wrote it?)");
+    if (!fs.open(text, FileStorage::READ | FileStorage::MEMORY | FileStorage::FORMAT_YAML)) {
+      r.bad("cannot be opened as YAML");
     }
+  } catch (const Error&) {
+    throw;
   } catch (const cv::Exception& e) {
-    r.bad("unreadable model (" + std::string(e.err) + ")");
+    r.bad("is not a readable YAML file (" + one_line(e.err) + ")");
+  } catch (const std::exception& e) {
+    // OpenCV's parser lets standard exceptions through (std::length_error on some damaged files).
+    r.bad("is not a readable YAML file (" + one_line(e.what()) + ")");
+  }
+  try {
+    return read_opened(r, fs.root(), expected);
+  } catch (const Error&) {
+    throw;
+  } catch (const cv::Exception& e) {
+    r.bad("unreadable model (" + one_line(e.err) + ")");
+  } catch (const std::exception& e) {
+    r.bad("unreadable model (" + one_line(e.what()) + ")");
   }
 }
 

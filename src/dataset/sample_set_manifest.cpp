@@ -8,16 +8,17 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/yaml_guard.hpp"
 
 namespace rdsf {
 
 std::string SampleSetManifest::to_text() const {
   cv::FileStorage fs(".yml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
-  fs << "format" << kFormat;
+  cv::write(fs, "format", std::string(kFormat));
   fs << "format_version" << kFormatVersion;
   fs << "feature_spec" << "{";
-  fs << "canonical" << feature_spec.canonical();
-  fs << "hash" << feature_spec.hash();
+  cv::write(fs, "canonical", feature_spec.canonical());
+  cv::write(fs, "hash", feature_spec.hash());
   fs << "window_width_px" << feature_spec.window_width_px;
   fs << "window_height_px" << feature_spec.window_height_px;
   fs << "cell_px" << feature_spec.cell_px;
@@ -32,21 +33,59 @@ std::string SampleSetManifest::to_text() const {
   fs << "cx_px" << camera.cx_px;
   fs << "cy_px" << camera.cy_px;
   fs << "}";
-  fs << "created" << created;
-  fs << "created_by" << created_by;
+  // Text through cv::write: `fs << text` would take a text starting with [ { ] } for a bracket.
+  cv::write(fs, "created", created);
+  cv::write(fs, "created_by", created_by);
   return fs.releaseAndGetString();
 }
 
+namespace {
+
+/// Largest feature spec number accepted: (w / cell) * (h / cell) then stays within int in validate().
+constexpr int kMaxSpecNumber = 1 << 15;
+
+SampleSetManifest parse_opened(const cv::FileStorage& fs, const std::string& path);
+
+}  // namespace
+
 SampleSetManifest SampleSetManifest::parse(const std::string& text, const std::string& path) {
+  if (const std::string problem = yaml_layout_problem(text); !problem.empty()) {
+    fail(path, problem + " (not a manifest this workbench wrote)");
+  }
   cv::FileStorage fs;
   try {
     if (!fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML)) {
       fail(path, "is not a readable YAML manifest");
     }
+  } catch (const Error&) {
+    throw;
   } catch (const cv::Exception& e) {
-    fail(path, "is not a readable YAML manifest (" + e.err + ")");
+    fail(path, "is not a readable YAML manifest (" + one_line(e.err) + ")");
+  } catch (const std::exception& e) {
+    // OpenCV's parser lets standard exceptions through (std::length_error on some damaged files).
+    fail(path, "is not a readable YAML manifest (" + one_line(e.what()) + ")");
   }
+  try {
+    return parse_opened(fs, path);
+  } catch (const Error& e) {
+    // Messages may quote text from the file: keep them on one line.
+    const std::string message = e.what();
+    if (message.find_first_of("\n\r") == std::string::npos) throw;
+    throw Error(one_line(message));
+  } catch (const cv::Exception& e) {
+    fail(path, "unreadable manifest (" + one_line(e.err) + ")");
+  } catch (const std::exception& e) {
+    fail(path, "unreadable manifest (" + one_line(e.what()) + ")");
+  }
+}
+
+namespace {
+
+SampleSetManifest parse_opened(const cv::FileStorage& fs, const std::string& path) {
+  constexpr const char* kFormat = SampleSetManifest::kFormat;
+  constexpr int kFormatVersion = SampleSetManifest::kFormatVersion;
   auto need = [&](const cv::FileNode& parent, const char* key) {
+    if (!parent.isMap()) fail(path, std::string("missing entry '") + key + "' (its parent is not a mapping)");
     const cv::FileNode node = parent[key];
     if (node.empty()) fail(path, std::string("missing entry '") + key + "'");
     return node;
@@ -81,6 +120,12 @@ SampleSetManifest SampleSetManifest::parse(const std::string& text, const std::s
   m.feature_spec.cell_px = need_int(spec, "cell_px");
   m.feature_spec.bin_width_mm = need_int(spec, "bin_width_mm");
   m.feature_spec.max_depth_mm = need_int(spec, "max_depth_mm");
+  for (const int value : {m.feature_spec.window_width_px, m.feature_spec.window_height_px, m.feature_spec.cell_px,
+                          m.feature_spec.bin_width_mm, m.feature_spec.max_depth_mm}) {
+    if (value > kMaxSpecNumber) {  // smaller ones are checked by validate()
+      fail(path, "feature spec number " + std::to_string(value) + " is larger than " + std::to_string(kMaxSpecNumber));
+    }
+  }
   try {
     m.feature_spec.validate();
   } catch (const Error& e) {
@@ -105,6 +150,8 @@ SampleSetManifest SampleSetManifest::parse(const std::string& text, const std::s
   if (by.isString()) m.created_by = static_cast<std::string>(by);
   return m;
 }
+
+}  // namespace
 
 SampleSetManifest SampleSetManifest::read(const std::string& path, std::string* text_out) {
   std::ifstream in(path, std::ios::binary);

@@ -1,0 +1,180 @@
+#pragma once
+// The parser entry points that the fuzz targets (fuzz/fuzz_<name>.cpp) and the regression test
+// (tests/test_fuzz_regressions.cpp) feed bytes to, one function per parser that reads user files.
+//
+// Each function gives the bytes to the parser exactly as a user's file would reach it (text parsers get the
+// text, file-based readers get a temporary file holding the bytes) and may throw only rdsf::Error: any other
+// exception, a crash, a sanitizer report or a hang is a bug. Where a parse succeeds, the result is written
+// back in its own format and read again, which must succeed too (a file the workbench wrote must always be
+// readable); a failure there throws std::logic_error, which the fuzzer and the test report as a bug.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "classifier/model_file.hpp"
+#include "core/error.hpp"
+#include "dataset/sample_set_manifest.hpp"
+#include "dataset/sample_tsv.hpp"
+#include "dataset/thesis_text.hpp"
+#include "evaluation/ground_truth.hpp"
+#include "labeling/answer_journal.hpp"
+
+namespace rdsf::fuzz {
+
+/// The parsers, by the name used for fuzz/corpus/<name>/ and fuzz/regressions/<name>/.
+inline const std::vector<std::string>& parser_names() {
+  static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",
+                                                 "thesis_text",  "model_file", "answer_journal"};
+  return names;
+}
+
+/// A private folder for the temporary files of this process (removed at exit).
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") + "/rdsf-fuzz-XXXXXX";
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    if (::mkdtemp(buffer.data()) == nullptr) throw std::runtime_error("cannot create " + pattern);
+    path_ = buffer.data();
+  }
+  ~ScratchFolder() {
+    for (const char* name : {"input", "input.tmp"}) std::remove((path_ + "/" + name).c_str());
+    ::rmdir(path_.c_str());
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+
+  /// The folder's one input file.
+  std::string input_path() const { return path_ + "/input"; }
+  /// Writes `bytes` to the input file and returns its path.
+  std::string write(const std::string& bytes) const {
+    const std::string file = input_path();
+    std::remove((file + ".tmp").c_str());
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + file);
+    return file;
+  }
+
+ private:
+  std::string path_;
+};
+
+inline const ScratchFolder& scratch() {
+  static const ScratchFolder folder;
+  return folder;
+}
+
+inline void require(bool condition, const std::string& what) {
+  if (!condition) throw std::logic_error(what);
+}
+
+/// boxes.csv (evaluation/ground_truth.hpp).
+inline void parse_ground_truth_bytes(const std::string& bytes) {
+  const GroundTruth truth = parse_ground_truth(bytes, "fuzz/boxes.csv");
+  std::size_t people = 0;
+  for (const auto& [frame, boxes] : truth.frames) {
+    require(!frame.empty(), "ground truth: empty frame name accepted");
+    for (const TruthBox& box : boxes) {
+      require(box.box.width > 0 && box.box.height > 0, "ground truth: box without area accepted");
+      require(box.visible_fraction >= 0.0 && box.visible_fraction <= 1.0, "ground truth: fraction out of [0, 1]");
+    }
+    people += boxes.size();
+  }
+  require(people == truth.people(), "ground truth: people() disagrees with the frames");
+}
+
+/// samples.tsv of a sample set (dataset/sample_tsv.hpp); file-based reader.
+inline void parse_sample_tsv_bytes(const std::string& bytes) {
+  const SampleTsvContents contents = read_sample_tsv(scratch().write(bytes));
+  require(contents.complete_bytes <= bytes.size(), "samples.tsv: complete_bytes beyond the end of the file");
+  for (const SampleRecord& record : contents.records) {
+    const std::string row = format_sample_row(record);
+    const SampleRecord again = parse_sample_row(row, "fuzz/samples.tsv (written back)");
+    require(format_sample_row(again) == row, "samples.tsv: a row does not survive writing and reading back");
+  }
+}
+
+/// manifest.yml of a sample set (dataset/sample_set_manifest.hpp).
+inline void parse_manifest_bytes(const std::string& bytes) {
+  const SampleSetManifest manifest = SampleSetManifest::parse(bytes, "fuzz/manifest.yml");
+  try {
+    // Text fields holding control characters may come back changed (OpenCV's YAML escapes are not
+    // symmetric); the feature spec and camera must come back exactly.
+    const SampleSetManifest again = SampleSetManifest::parse(manifest.to_text(), "fuzz/manifest.yml (written back)");
+    require(again.feature_spec == manifest.feature_spec && again.camera == manifest.camera,
+            "manifest: the feature spec or camera changes when written back");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("manifest: written back, it no longer reads: ") + e.what());
+  }
+}
+
+/// The thesis text import format (dataset/thesis_text.hpp), checked for a small dimension so that the
+/// fuzzer can reach complete lines; file-based reader.
+inline constexpr int kThesisFuzzDimension = 4;
+inline void parse_thesis_text_bytes(const std::string& bytes) {
+  const std::int64_t lines = check_thesis_text(scratch().write(bytes), kThesisFuzzDimension);
+  require(lines > 0, "thesis text: a file of no samples accepted");
+}
+
+/// A model file (classifier/model_file.hpp), checked against the default feature spec; file-based reader.
+inline void parse_model_file_bytes(const std::string& bytes) {
+  const BoostedModel model = read_model_file(scratch().write(bytes));
+  std::vector<float> features(static_cast<std::size_t>(model.feature_spec().dimension()), 0.5f);
+  (void)model.score(features.data());
+  const std::string text = model_file_text(model);
+  try {
+    const BoostedModel again = read_model_file(scratch().write(text));
+    require(again.weak_classifiers().size() == model.weak_classifiers().size(),
+            "model file: the weak classifiers change when written back");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("model file: written back, it no longer reads: ") + e.what());
+  }
+}
+
+/// The labeler's answer journal (labeling/answer_journal.hpp); file-based (it may repair a torn last line).
+inline void parse_answer_journal_bytes(const std::string& bytes) {
+  const AnswerJournal journal(scratch().write(bytes));
+  require(journal.answers_in_force() <= bytes.size(), "answer journal: more answers than bytes");
+}
+
+/// Dispatch by parser name (see parser_names()). An rdsf::Error is passed on only when its message is the
+/// project's one line naming the file ("fuzz/..." for text parsers, the temporary input for file readers);
+/// a message that breaks the rule becomes std::logic_error.
+inline void parse_bytes(const std::string& parser, const std::string& bytes) {
+  try {
+    if (parser == "ground_truth") return parse_ground_truth_bytes(bytes);
+    if (parser == "sample_tsv") return parse_sample_tsv_bytes(bytes);
+    if (parser == "manifest") return parse_manifest_bytes(bytes);
+    if (parser == "thesis_text") return parse_thesis_text_bytes(bytes);
+    if (parser == "model_file") return parse_model_file_bytes(bytes);
+    if (parser == "answer_journal") return parse_answer_journal_bytes(bytes);
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    require(message.find('\n') == std::string::npos, parser + ": error message of more than one line: " + message);
+    require(message.rfind("fuzz/", 0) == 0 || message.rfind(scratch().input_path(), 0) == 0,
+            parser + ": error message does not start with the file name: " + message);
+    throw;
+  }
+  throw std::invalid_argument("no parser named '" + parser + "'");
+}
+
+/// What a fuzz target does with one input: rdsf::Error is the expected answer to bad input and is
+/// swallowed; anything else escapes (libFuzzer reports an uncaught exception as a crash).
+inline int fuzz_one(const std::string& parser, const unsigned char* data, std::size_t size) {
+  try {
+    parse_bytes(parser, std::string(reinterpret_cast<const char*>(data), size));
+  } catch (const Error&) {
+  }
+  return 0;
+}
+
+}  // namespace rdsf::fuzz
