@@ -36,6 +36,14 @@ for t in "${targets[@]}"; do
     exit 2
   fi
 done
+# clang and its libFuzzer/sanitizer runtime come from Debian; install them when missing.
+if ! command -v clang++ > /dev/null || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "ok installed"; then
+  echo "fuzz.sh: installing clang and libclang-rt-14-dev" >&2
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq clang libclang-rt-14-dev > /dev/null
+fi
 for tool in clang clang++; do
   command -v "$tool" > /dev/null || { echo "fuzz.sh: $tool not found (apt-get install clang)" >&2; exit 2; }
 done
