@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/append_only_log.hpp"
 #include "core/error.hpp"
 
 namespace rdsf {
@@ -19,21 +20,12 @@ RetractionLog read_retraction_log(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return log;
   log.exists = true;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot be opened");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  std::size_t position = 0;
-  std::int64_t line_number = 0;
-  while (position < text.size()) {
-    const std::size_t newline = text.find('\n', position);
-    ++line_number;
-    if (newline == std::string::npos) {
-      log.torn_tail = true;
-      break;
-    }
-    const std::string line = text.substr(position, newline - position);
+  const LogLines read = read_log_lines(path);
+  log.torn_tail = read.torn_tail;
+  log.complete_bytes = read.complete_bytes;
+  for (std::size_t i = 0; i < read.lines.size(); ++i) {
+    const std::string& line = read.lines[i];
+    const std::size_t line_number = i + 1;
     const std::string where = path + ":" + std::to_string(line_number);
     if (line_number == 1) {
       if (line != retraction_log_header()) fail(where, "not a retracted.tsv header (expected 'id<TAB>time')");
@@ -46,8 +38,6 @@ RetractionLog read_retraction_log(const std::string& path) {
       }
       log.ids.insert(id);
     }
-    position = newline + 1;
-    log.complete_bytes = position;
   }
   return log;
 }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/append_only_log.hpp"
 #include "core/error.hpp"
 
 namespace rdsf {
@@ -181,23 +182,13 @@ SampleRecord parse_sample_row(const std::string& row, const std::string& where) 
 }
 
 SampleTsvContents read_sample_tsv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot be opened (is this a sample set folder?)");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  const LogLines read = read_log_lines(path, "cannot be opened (is this a sample set folder?)");
   SampleTsvContents contents;
-  std::size_t position = 0;
-  std::int64_t line_number = 0;
-  while (position < text.size()) {
-    const std::size_t newline = text.find('\n', position);
-    ++line_number;
-    if (newline == std::string::npos) {
-      // A row torn by a killed writer (or a header torn while the set was being created).
-      contents.torn_tail = true;
-      break;
-    }
-    const std::string line = text.substr(position, newline - position);
+  contents.torn_tail = read.torn_tail;  // a row torn by a killed writer (or a header torn at creation)
+  contents.complete_bytes = read.complete_bytes;
+  for (std::size_t i = 0; i < read.lines.size(); ++i) {
+    const std::string& line = read.lines[i];
+    const std::size_t line_number = i + 1;
     const std::string where = path + ":" + std::to_string(line_number);
     if (line_number == 1) {
       if (line != sample_tsv_header()) {
@@ -211,12 +202,9 @@ SampleTsvContents read_sample_tsv(const std::string& path) {
       }
       contents.records.push_back(std::move(record));
     }
-    position = newline + 1;
-    contents.complete_bytes = position;
   }
-  if (line_number == 0 || (line_number == 1 && contents.torn_tail)) {
+  if (read.lines.empty()) {
     // Empty or torn header: a set whose creation was interrupted. Treat as holding no samples.
-    contents.torn_tail = line_number == 1;
     contents.complete_bytes = 0;
   }
   return contents;

@@ -1,13 +1,12 @@
 #include "labeling/answer_journal.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iterator>
 #include <sstream>
 #include <tuple>
 
-#include <fcntl.h>
-#include <unistd.h>
-
+#include "core/append_only_log.hpp"
 #include "core/error.hpp"
 #include "dataset/sample_record.hpp"
 
@@ -40,64 +39,44 @@ bool CandidateKey::operator<(const CandidateKey& o) const {
 }
 
 AnswerJournal::AnswerJournal(const std::string& path) : path_(path) {
-  std::ifstream in(path, std::ios::binary);
-  if (in) {
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const bool complete_last_line = text.empty() || text.back() == '\n';
-    std::stringstream lines(text);
-    std::string line;
-    int number = 0;
-    std::vector<std::string> all;
-    while (std::getline(lines, line)) all.push_back(line);
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      ++number;
-      const bool last = i + 1 == all.size();
-      if (number == 1) {
-        if (all[i] != kHeader) fail(path, "line 1: not a labeler answer journal");
-        continue;
-      }
-      if (last && !complete_last_line) break;  // torn by a kill: the answer was never acknowledged
-      const std::vector<std::string> f = split_tabs(all[i]);
-      long long x = 0, y = 0, w = 0, h = 0, id = 0;
-      if (f.size() != 10 || f[7].size() != 1 || !parse_long(f[3], x) || !parse_long(f[4], y) ||
-          !parse_long(f[5], w) || !parse_long(f[6], h) || !parse_long(f[8], id)) {
-        fail(path, "line " + std::to_string(number) + ": malformed answer row");
-      }
-      const char answer = f[7][0];
-      const CandidateKey key{f[1], f[2], cv::Rect(static_cast<int>(x), static_cast<int>(y), static_cast<int>(w),
-                                                  static_cast<int>(h))};
-      if (answer == 'u') {
-        if (!forget(key)) fail(path, "line " + std::to_string(number) + ": undo of a candidate never answered");
-        continue;
-      }
-      if (answer != 'y' && answer != 'n' && answer != 's') {
-        fail(path, "line " + std::to_string(number) + ": unknown answer '" + f[7] + "'");
-      }
-      JournalEntry entry{key, answer, id, f[9]};
-      answered_.insert(entry.key);
-      in_force_.push_back(entry);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    append_line_synced(path_, kHeader);
+    return;
+  }
+  const LogLines read = read_log_lines(path);
+  for (std::size_t i = 0; i < read.lines.size(); ++i) {
+    const std::string& line = read.lines[i];
+    const std::string where = "line " + std::to_string(i + 1);
+    if (i == 0) {
+      if (line != kHeader) fail(path, "line 1: not a labeler answer journal");
+      continue;
     }
-    if (!complete_last_line) {
-      // Cut the torn line off so that the next append starts on a line of its own.
-      std::ofstream rewrite(path + ".tmp", std::ios::binary | std::ios::trunc);
-      const std::size_t keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
-      rewrite << (keep == 0 ? std::string(kHeader) + "\n" : text.substr(0, keep));
-      rewrite.close();
-      if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0) fail(path, "cannot repair torn last line");
+    const std::vector<std::string> f = split_tabs(line);
+    long long x = 0, y = 0, w = 0, h = 0, id = 0;
+    if (f.size() != 10 || f[7].size() != 1 || !parse_long(f[3], x) || !parse_long(f[4], y) ||
+        !parse_long(f[5], w) || !parse_long(f[6], h) || !parse_long(f[8], id)) {
+      fail(path, where + ": malformed answer row");
     }
-  } else {
-    append_line(kHeader);
+    const char answer = f[7][0];
+    const CandidateKey key{f[1], f[2], cv::Rect(static_cast<int>(x), static_cast<int>(y), static_cast<int>(w),
+                                                static_cast<int>(h))};
+    if (answer == 'u') {
+      if (!forget(key)) fail(path, where + ": undo of a candidate never answered");
+      continue;
+    }
+    if (answer != 'y' && answer != 'n' && answer != 's') fail(path, where + ": unknown answer '" + f[7] + "'");
+    answered_.insert(key);
+    in_force_.push_back({key, answer, id, f[9]});
+  }
+  // A line torn by a kill was never acknowledged: cut it off so the next answer starts a line of its own.
+  if (read.torn_tail) {
+    cut_torn_tail(path, read.complete_bytes);
+    if (read.lines.empty()) append_line_synced(path_, kHeader);
   }
 }
 
-void AnswerJournal::append_line(const std::string& line) {
-  const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd < 0) fail(path_, "cannot be opened for appending");
-  const std::string text = line + "\n";
-  const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fdatasync(fd) == 0;
-  ::close(fd);
-  if (!ok) fail(path_, "write failed (disk full?)");
-}
+void AnswerJournal::append_line(const std::string& line) { append_line_synced(path_, line); }
 
 void AnswerJournal::record(const JournalEntry& e) {
   const cv::Rect& b = e.key.box;
