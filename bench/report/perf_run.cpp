@@ -24,6 +24,7 @@
 #include "classifier/real_adaboost.hpp"
 #include "classifier/roc_metrics.hpp"
 #include "cli/progress.hpp"
+#include "core/utc_time.hpp"
 #include "core/error.hpp"
 #include "dataset/negative_miner.hpp"
 #include "dataset/sample_set_writer.hpp"
@@ -73,15 +74,6 @@ std::string load_average() {
   std::string a, b, c;
   in >> a >> b >> c;
   return a.empty() ? std::string("unknown") : a + " / " + b + " / " + c;
-}
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char text[64];
-  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &tm);
-  return text;
 }
 
 /// Records a phase's memory: construct at its start, call done() at its end.
@@ -231,7 +223,7 @@ struct Workspace {
 };
 
 void machine(PerfResults& r, const PerfOptions& o) {
-  r.date_utc = utc_now();
+  r.date_utc = rdsf::utc_now("%Y-%m-%d %H:%M UTC");
   r.mode = o.quick ? "quick" : "full";
   r.cpu_model = first_line_value("/proc/cpuinfo", "model name");
   if (r.cpu_model.empty()) r.cpu_model = "unknown";

@@ -375,15 +375,6 @@ BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpe
 
 }  // namespace
 
-std::string iso_utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
 std::string model_file_text(const BoostedModel& model) {
   FileStorage fs(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
   cv::write(fs, "format", std::string(kModelFormat));

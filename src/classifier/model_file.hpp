@@ -30,7 +30,4 @@ std::string model_file_text(const BoostedModel& model);
 /// Reads a model file (any known format version). `expected` is the feature spec the caller computes.
 BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected = FeatureSpec{});
 
-/// Current time as ISO 8601 UTC ("2026-11-22T05:30:00Z").
-std::string iso_utc_now();
-
 }  // namespace rdsf

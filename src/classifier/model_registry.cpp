@@ -8,6 +8,7 @@
 
 #include "classifier/model_file.hpp"
 #include "core/error.hpp"
+#include "core/utc_time.hpp"
 
 namespace rdsf {
 namespace fs = std::filesystem;
@@ -78,7 +79,7 @@ std::string save_new_model_version(BoostedModel& model, const std::string& name,
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (ec) fail(folder.string(), "cannot create model folder: " + ec.message());
-  const std::string created = iso_utc_now();
+  const std::string created = utc_now_iso8601();
   for (int attempt = 0; attempt < 100; ++attempt) {
     const int version = latest_in_folder(folder) + 1;
     const fs::path final_path = folder / ("v" + std::to_string(version) + ".yml");

@@ -7,6 +7,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/utc_time.hpp"  // utc_now_iso8601(), the time samples record
+
 namespace rdsf {
 
 struct SampleRecord {
@@ -26,7 +28,5 @@ struct SampleRecord {
   std::string crop_hash;        ///< 16 hex digits: stable hash of the depth crop's values (empty without crop)
 };
 
-/// The current time as ISO 8601 UTC with seconds, "2026-11-22T05:30:00Z".
-std::string utc_now_iso8601();
 
 }  // namespace rdsf

@@ -93,15 +93,6 @@ bool is_hex16(const std::string& text) {
 
 }  // namespace
 
-std::string utc_now_iso8601() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
 const std::string& sample_tsv_header() {
   static const std::string header =
       "id\tlabel\torigin\tsource\tframe\tstrict_x\tstrict_y\tstrict_w\tstrict_h\twindow_x\twindow_y\twindow_w\t"

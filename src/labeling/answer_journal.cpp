@@ -8,7 +8,7 @@
 
 #include "core/append_only_log.hpp"
 #include "core/error.hpp"
-#include "dataset/sample_record.hpp"
+#include "core/utc_time.hpp"
 
 namespace rdsf {
 namespace {
