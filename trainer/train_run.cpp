@@ -1,11 +1,14 @@
 #include "trainer/train_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <iostream>
 
 #include "classifier/boosted_model.hpp"
 #include "classifier/model_registry.hpp"
+#include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "trainer/recipe.hpp"
 #include "trainer/training_samples.hpp"
@@ -37,6 +40,11 @@ Recipe effective_recipe(const TrainOptions& o) {
   if (o.seed) p.seed = *o.seed;
   if (o.validation_fraction) p.validation_fraction = *o.validation_fraction;
   if (o.weight_trim) p.weight_trim = *o.weight_trim;
+  if (o.depth) p.depth = *o.depth;
+  if (o.folds) p.folds = *o.folds;
+  if (o.learning_rate) p.learning_rate = *o.learning_rate;
+  if (o.smoothing) p.smoothing = *o.smoothing;
+  if (o.calibration) p.calibration = *o.calibration;
   p.threads = o.threads;
   validate_training_params(p);
   if (r.pos_sets.empty() || r.neg_sets.empty()) {
@@ -57,6 +65,9 @@ SampleChoice training_choice(const Recipe& r, const TrainOptions& o) {
   c.seed = r.params.seed;
   c.asked_by = o.recipe.empty() || o.positives || o.negatives ? std::string("the command line")
                                                                : "recipe " + r.name;
+  c.group_frames = o.group_frames;
+  c.group_by = parse_group_by(o.group_by);
+  c.augmentation = parse_augmentation(o.augment, o.augment_copies, r.params.seed);
   return c;
 }
 
@@ -79,10 +90,22 @@ std::string duration_text(double seconds) {
   return text;
 }
 
+// A separate validation set must not share a group (recording and frame block) with the training rows.
+void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& validation) {
+  std::vector<std::string> shared;
+  std::set_intersection(train.group_names.begin(), train.group_names.end(), validation.group_names.begin(),
+                        validation.group_names.end(), std::back_inserter(shared));
+  if (!shared.empty()) {
+    throw Error("the validation sets share " + std::to_string(shared.size()) + " groups with the training sets (e.g. '" +
+                shared.front() + "': the same recording and frames): validate on other recordings");
+  }
+}
+
 }  // namespace
 
 int run_train(const TrainOptions& o) {
   const Recipe recipe = effective_recipe(o);
+  if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
   const std::string name = o.name.empty() ? recipe.name : o.name;
   if (name.empty()) throw Error("ad hoc training needs a model name: give --name NAME");
   validate_model_name(name);
@@ -99,7 +122,10 @@ int run_train(const TrainOptions& o) {
     v.seed = recipe.params.seed;
     v.asked_by = "validation";
     v.role_prefix = "validation-";
+    v.group_frames = o.group_frames;
+    v.group_by = parse_group_by(o.group_by);
     validation = choose_samples(v, std::cerr, o.threads);
+    check_disjoint_groups(train, validation);
   }
   const std::size_t positives = static_cast<std::size_t>(std::count(train.labels.begin(), train.labels.end(), 1));
   std::cerr << "rdsf-train: " << positives << " positives, " << train.labels.size() - positives
@@ -122,15 +148,21 @@ int run_train(const TrainOptions& o) {
               << "/round  " << duration_text(p.left_s) << " left\n";
   };
   const bool separate = !validation.labels.empty();
+  TrainingRowInfo info;
+  info.groups = train.groups;
+  info.augmented = train.augmented;
   BoostedModel model = train_boosted_model(train.rows, train.labels, recipe.params, progress,
                                            separate ? &validation.rows : nullptr,
-                                           separate ? &validation.labels : nullptr);
+                                           separate ? &validation.labels : nullptr, info);
   TrainingRecord& record = model.training();
   record.recipe = o.recipe.empty() ? "ad hoc" : recipe.name + " (" + recipe.path + ")";
   record.sample_sets = train.sets;
   record.sample_sets.insert(record.sample_sets.end(), validation.sets.begin(), validation.sets.end());
   record.parameters.insert(record.parameters.begin(), {"positives_wanted", std::to_string(recipe.positives)});
   record.parameters.insert(record.parameters.begin() + 1, {"negatives_wanted", std::to_string(recipe.negatives)});
+  record.parameters.emplace_back("group_frames", std::to_string(o.group_frames));
+  record.parameters.emplace_back("group_by", o.group_by);
+  record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
 
   const std::string path = save_new_model_version(model, name, o.models_dir);
   const ValidationFigures& v = record.validation;
@@ -139,6 +171,15 @@ int run_train(const TrainOptions& o) {
   if (v.positives > 0 && v.negatives > 0) {
     std::fprintf(stderr, "rdsf-train: validation AUC %.4f, TAR %.3f at FAR 1%%, %.3f at FAR 5%%, error %.4f\n",
                  v.summary.auc, v.summary.tar_at_far_1, v.summary.tar_at_far_5, v.summary.error_rate);
+    const ScoreCalibration& c = model.calibration();
+    std::fprintf(stderr, "rdsf-train: calibration %s: P(person) = 1 / (1 + exp(-(%.4f H + %.4f)))", c.method.c_str(),
+                 c.a, c.b);
+    for (const ProbabilityPoint& p : v.by_probability) {
+      if (std::abs(p.probability - 0.5) < 1e-9) {
+        std::fprintf(stderr, "; at P >= 0.5: TAR %.3f, FAR %.3f", p.tar, p.far);
+      }
+    }
+    std::fprintf(stderr, "\n");
   }
   std::cerr << "rdsf-train: wrote " << path << "\n";
   return 0;

@@ -10,6 +10,8 @@
 #include <opencv2/core.hpp>
 
 #include "classifier/training_record.hpp"
+#include "dataset/crop_augmentation.hpp"
+#include "dataset/sample_groups.hpp"
 
 namespace rdsf {
 
@@ -19,13 +21,22 @@ struct SampleChoice {
   std::uint64_t seed = 1;
   std::string asked_by;  ///< "recipe tree2" or "--positives", for the warning
   std::string role_prefix;  ///< "" for training, "validation-" for a separate validation set
+  /// Validation groups: recording and block of this many consecutive frames (dataset/sample_groups.hpp);
+  /// 0 = no groups (the validation split is by sample).
+  int group_frames = 30;
+  GroupBy group_by = GroupBy::recording_block;
+  CropAugmentation augmentation;  ///< positives only; off by default
 };
 
 struct ChosenSamples {
   cv::Mat1f rows;           ///< one feature row per sample, positives first
   std::vector<int> labels;  ///< 1 / 0
   std::vector<SampleSetUse> sets;  ///< per set and role: path, manifest hash, available, used
+  std::vector<std::size_t> groups;    ///< per row: group id (dataset/sample_groups.hpp)
+  std::vector<std::string> group_names;  ///< group id -> "recording#block"
+  std::vector<bool> augmented;        ///< per row: an augmented copy (after the originals)
 };
+
 
 /// Reads the sets, picks the samples and computes (or reads) their features. Warnings go to `log`.
 /// Throws Error when a set cannot be read, has another feature spec, or a class ends up empty.

@@ -42,14 +42,16 @@ PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
 
   auto start = std::chrono::steady_clock::now();
   out.scores = model_->score(out.analysis.features);
+  for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   out.times.classifier_ms = ms_since(start);
+  const double threshold = params_.score_threshold_for(*model_);
 
   start = std::chrono::steady_clock::now();
   std::vector<TrackInput> detections;
   std::vector<std::size_t> which;
   out.histograms.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (out.scores[i] < params_.threshold_classifier) continue;
+    if (out.scores[i] < threshold) continue;
     const Candidate& c = out.analysis.candidates[i];
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
     detections.push_back({c.strict_box, c.layer_depth_mm, out.histograms[i]});

@@ -1,6 +1,7 @@
 #pragma once
 // The whole system for one frame, as the thesis ran it:
-//   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) -> person when H(x) >= threshold
+//   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) and P(person)
+//         -> person when P(person) >= probability_threshold (or H(x) >= score_threshold, the thesis's way)
 //         -> tracking (colour histogram + centroid, lkh matching)
 // with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
 #include <cstdint>
@@ -17,8 +18,14 @@ namespace rdsf {
 struct PipelineParams {
   DetectorParams detector;
   TrackingParams tracking;
-  /// A candidate is a person when H(x) >= threshold_classifier.
-  double threshold_classifier = 0.0;
+  /// A candidate is a person when P(person) >= this (the model's calibrated probability).
+  double probability_threshold = 0.5;
+  /// When set, a candidate is a person when H(x) >= this instead: the thesis's threshold_classifier.
+  std::optional<double> score_threshold;
+  /// The score threshold these mean for `model`.
+  double score_threshold_for(const BoostedModel& model) const {
+    return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold);
+  }
 };
 
 /// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
@@ -35,6 +42,7 @@ struct PipelineTimes {
 struct PipelineFrame {
   FrameAnalysis analysis;                 ///< layers, candidates, features
   std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
+  std::vector<double> probabilities;      ///< P(person) per candidate (empty without a model)
   std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
   std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
   PipelineTimes times;
