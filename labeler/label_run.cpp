@@ -106,7 +106,14 @@ int run_label(const LabelOptions& o) {
   std::unique_ptr<BoostedModel> model;
   if (!o.model.empty()) model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
   std::unique_ptr<GroundTruth> truth;
-  if (!o.truth_csv.empty()) truth = std::make_unique<GroundTruth>(read_ground_truth(o.truth_csv));
+  if (!o.truth_csv.empty()) {
+    truth = std::make_unique<GroundTruth>(read_ground_truth(o.truth_csv));
+    const std::size_t ignored = ignore_hardly_visible(*truth, o.min_visible);
+    if (ignored > 0) {
+      std::cerr << "rdsf-label: " << o.truth_csv << ": " << ignored << " of " << truth->people() << " people less than "
+                << o.min_visible * 100 << "% visible: their candidates are asked, not answered\n";
+    }
+  }
   std::unique_ptr<ScriptedKeys> scripted;
   if (headless) scripted = std::make_unique<ScriptedKeys>(o.answers);
 

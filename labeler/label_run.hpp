@@ -13,6 +13,7 @@ struct LabelOptions {
   std::string models_dir = "models";
   std::string truth_csv;       ///< empty: no assisted mode
   std::string answers;         ///< empty: window; "-": stdin; else a file
+  double min_visible = 0.5;    ///< assisted mode: people less visible than this are don't-care
 };
 
 int run_label(const LabelOptions& options);

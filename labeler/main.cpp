@@ -18,6 +18,9 @@ int main(int argc, char** argv) {
         ("order-by-score", po::bool_switch(&o.session.order_by_score), "present a frame's candidates best score first")
         ("truth", po::value(&o.truth_csv),
          "assisted mode: boxes.csv; IoU >= 0.5 answers y, < 0.3 answers n, only the band between is asked")
+        ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible),
+         "assisted mode: people with visible_fraction below this are don't-care (as rdsf-detect's evaluation): "
+         "their candidates are asked, not answered")
         ("answers", po::value(&o.answers), "headless: read keys from this file (- = stdin) instead of a window")
         ("keep-rejected", po::bool_switch(&o.session.keep_rejected), "store 'n' answers as negatives (label 0)");
     options.add(rdsf::cli::camera_options(o.session.camera, calibration));

@@ -124,30 +124,34 @@ report=$run/REPORT.md
 if [ "$only" != "recipes" ]; then
   step "lever table"
   base_neg=("$sets/negatives" "$sets/people")
-  train_model L0-thesis --neg "${base_neg[@]}" --calibration none --group-frames 0
+  train_model L0-thesis --neg "${base_neg[@]}" --calibration none --group-frames 0 --depth 1 --learning-rate 1 \
+    --augment off
   fppf=$(hard_negatives L0-thesis "$sets/hard-L0")
   echo "  hard negatives of L0 on the other empty rooms: FPPF $fppf" >&2
+  echo "hard negatives of L0-thesis: FPPF $fppf on the other empty rooms" > "$run/bootstrapping.txt"
   neg_sets=("$sets/negatives" "$sets/hard-L0" "$sets/people")
-  train_model L1-groups --neg "${neg_sets[@]}" --calibration platt
-  train_model L2-regularised --neg "${neg_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5}
-  train_model L3-trees --neg "${neg_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5} --depth 2
-  train_model L4-augmented --neg "${neg_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5} --depth 2 \
-    --augment mirror,shift,scale,occlusion --augment-copies 2
+  # The main job's recordings are in step (frame i of the people and people-free renderings shows the same
+  # room), so groups are frame blocks of all recordings together.
+  honest=(--group-by block --calibration platt)
+  train_model L1-groups --neg "${neg_sets[@]}" "${honest[@]}" --depth 1 --learning-rate 1 --augment off
+  train_model L2-shrinkage --neg "${neg_sets[@]}" "${honest[@]}" --depth 1 --learning-rate 0.5 --augment off
+  train_model L3-trees --neg "${neg_sets[@]}" "${honest[@]}" --depth 2 --learning-rate 0.5 --augment off
+  train_model L4-mirror --neg "${neg_sets[@]}" "${honest[@]}" --depth 2 --learning-rate 0.5 --augment mirror
+  train_model L5-folds --neg "${neg_sets[@]}" "${honest[@]}" --depth 2 --learning-rate 0.5 --augment mirror --folds 5
   # Iterated bootstrapping: mine the newest model's false positives, retrain, until FPPF stops falling.
-  last=L4-augmented boot_sets=("${neg_sets[@]}") prev=""
+  last=L5-folds boot_sets=("${neg_sets[@]}" "$sets/hard-boot") prev=""
   for round in 1 2 3 4; do
     fppf=$(hard_negatives "$last" "$sets/hard-boot")
     echo "  bootstrapping round $round: $last has FPPF $fppf on the other empty rooms" >&2
     echo "bootstrapping round $round: $last FPPF $fppf on the other empty rooms" >> "$run/bootstrapping.txt"
     if [ -n "$prev" ] && awk -v a="$fppf" -v b="$prev" 'BEGIN { exit !(a >= 0.9 * b) }'; then break; fi
     prev=$fppf
-    [ "$round" = 1 ] && boot_sets+=("$sets/hard-boot")
-    train_model "L5-boot$round" --neg "${boot_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5} --depth 2 \
-      --augment mirror,shift,scale,occlusion --augment-copies 2
-    last="L5-boot$round"
+    train_model "L6-boot$round" --neg "${boot_sets[@]}" "${honest[@]}" --depth 2 --learning-rate 0.5 \
+      --augment mirror --folds 5
+    last="L6-boot$round"
   done
-  lever_models=(L0-thesis L1-groups L2-regularised L3-trees L4-augmented)
-  for m in "$models"/L5-boot*; do [ -d "$m" ] && lever_models+=("$(basename "$m")"); done
+  lever_models=(L0-thesis L1-groups L2-shrinkage L3-trees L4-mirror L5-folds)
+  for m in "$models"/L6-boot*; do [ -d "$m" ] && lever_models+=("$(basename "$m")"); done
   step "evaluate the levers"
   evaluate "$run/levers" "${lever_models[@]}"
   {
@@ -168,6 +172,7 @@ if [ "$only" != "levers" ]; then
   for r in tree:2814:7484 tree2:4028:7484 hugeTree:5628:22454 treeLast:1115:10085; do
     IFS=: read -r name p n <<<"$r"
     "$train" --recipe "models/recipes/$name.yml" --models-dir "$models" --pos "$sets/people" --neg "${recipe_neg[@]}" \
+      --group-by block \
       --positives "$(count "$p")" --negatives "$(count "$n")" 2>"$logs/train-$name.log" || { tail -3 "$logs/train-$name.log" >&2; exit 1; }
     grep -E "validation AUC|calibration" "$logs/train-$name.log" | sed 's/^/  /' >&2
   done

@@ -390,8 +390,8 @@ TEST(HonestTraining, GroupValidationCalibratesAndSavesFormatTwo) {
   wrong.calibration = "isotonic";
   EXPECT_NE(message_of([&] { validate_training_params(wrong); }).find("'isotonic' is not known"), std::string::npos);
   wrong = p;
-  wrong.backend = "opencv";
-  EXPECT_NE(message_of([&] { validate_training_params(wrong); }).find("native backend"), std::string::npos);
+  wrong.learning_rate = 0.0;
+  EXPECT_NE(message_of([&] { validate_training_params(wrong); }).find("learning rate"), std::string::npos);
 }
 
 // K-fold by group: every original row is validated once, by a model that never saw its group; the final

@@ -43,8 +43,10 @@ po::options_description train_options(TrainOptions& o) {
        "stop after this many rounds without a better validation AUC, keep the best (0 = off). Default 0")
       ("report-every", optional_into(o.report_every), "rounds between the figures kept in the model file. Default 10")
       ("depth", optional_into(o.depth),
-       "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees). Default 1")
-      ("learning-rate", optional_into(o.learning_rate), "native: shrinkage of every response, in (0, 1]. Default 1")
+       "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees). Default 2")
+      ("learning-rate", optional_into(o.learning_rate), "native: shrinkage of every response, in (0, 1]. Default 0.5")
+      ("thesis", po::bool_switch(&o.thesis),
+       "the thesis's weak learners: depth 1, learning rate 1, no augmentation (options given explicitly still win)")
       ("smoothing", optional_into(o.smoothing), "native: eps of the responses (0 = 1 / training samples). Default 0")
       ("calibration", optional_into(o.calibration),
        "platt (fit P(person) on the validation samples) or none (P = 1 / (1 + exp(-2 H))). Default platt")

@@ -40,6 +40,10 @@ Recipe effective_recipe(const TrainOptions& o) {
   if (o.seed) p.seed = *o.seed;
   if (o.validation_fraction) p.validation_fraction = *o.validation_fraction;
   if (o.weight_trim) p.weight_trim = *o.weight_trim;
+  if (o.thesis) {
+    p.depth = 1;
+    p.learning_rate = 1.0;
+  }
   if (o.depth) p.depth = *o.depth;
   if (o.folds) p.folds = *o.folds;
   if (o.learning_rate) p.learning_rate = *o.learning_rate;
@@ -67,7 +71,8 @@ SampleChoice training_choice(const Recipe& r, const TrainOptions& o) {
                                                                : "recipe " + r.name;
   c.group_frames = o.group_frames;
   c.group_by = parse_group_by(o.group_by);
-  c.augmentation = parse_augmentation(o.augment, o.augment_copies, r.params.seed);
+  c.augmentation = parse_augmentation(o.thesis && !o.augment_given ? std::string("off") : o.augment, o.augment_copies,
+                                     r.params.seed);
   return c;
 }
 
@@ -187,7 +192,9 @@ int run_train(const TrainOptions& o) {
 
 int run_export_text(const TrainOptions& o) {
   const Recipe recipe = effective_recipe(o);
-  const ChosenSamples samples = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
+  SampleChoice choice = training_choice(recipe, o);
+  choice.augmentation = CropAugmentation{};  // the samples as they are, not training-time copies
+  const ChosenSamples samples = choose_samples(choice, std::cerr, o.threads);
   const std::size_t lines = write_thesis_text(samples, o.export_text, o.force);
   std::cerr << "rdsf-train: wrote " << lines << " samples to " << o.export_text << "\n";
   return 0;

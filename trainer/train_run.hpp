@@ -26,7 +26,9 @@ struct TrainOptions {
   std::optional<std::string> calibration;
   int group_frames = 30;        ///< frames per validation group block
   std::string group_by = "recording-block";  ///< recording-block, block or recording
-  std::string augment = "off";  ///< mirror,shift,scale,occlusion or off
+  std::string augment = "mirror";  ///< mirror,shift,scale,occlusion or off (chosen by the quality report)
+  bool augment_given = false;      ///< --augment was on the command line
+  bool thesis = false;             ///< the thesis's weak learners: depth 1, learning rate 1, no augmentation
   int augment_copies = 0;       ///< random variants per positive
   int threads = 0;
   std::string inspect;      ///< model to describe instead of training

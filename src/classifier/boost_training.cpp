@@ -96,7 +96,6 @@ void validate_training_params(const BoostTrainingParams& p) {
   if (p.report_every < 1) throw Error("report-every must be at least 1");
   if (p.early_stopping < 0) throw Error("early stopping must be 0 (off) or a number of rounds");
   if (p.depth < 1 || p.depth > 4) throw Error("depth must be 1 (one look-up table) to 4 (" + std::to_string(p.depth) + " given)");
-  if (p.depth > 1 && p.backend != "native") throw Error("trees (depth > 1) need the native backend");
   if (!(p.learning_rate > 0.0 && p.learning_rate <= 1.0)) throw Error("learning rate must be in (0, 1]");
   if (p.folds < 0 || p.folds == 1 || p.folds > 20) throw Error("folds must be 0 (off) or 2-20");
   if (p.folds > 0 && p.early_stopping > 0) throw Error("early stopping and group folds do not go together (give one)");

@@ -71,9 +71,13 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
     if (model_ != nullptr) loaded->scores = model_->score(loaded->analysis.features);
     if (truth_ != nullptr) {
       for (const Candidate& c : loaded->analysis.candidates) {
-        double best = 0;
-        for (const TruthBox& person : truth_->in(loaded->frame.name)) best = std::max(best, iou(c.strict_box, person.box));
+        double best = 0, ignored = 0;
+        for (const TruthBox& person : truth_->in(loaded->frame.name)) {
+          double& to = person.ignored ? ignored : best;
+          to = std::max(to, iou(c.strict_box, person.box));
+        }
         loaded->truth_iou.push_back(best);
+        loaded->ignored_iou.push_back(ignored);
       }
     }
     return loaded;
@@ -106,7 +110,7 @@ void LabelingSession::take_frame(std::shared_ptr<const LoadedFrame> frame) {
         ++stats_.auto_positives;
         continue;
       }
-      if (overlap < config_.uncertain_iou) {
+      if (overlap < config_.uncertain_iou && frame->ignored_iou[i] < config_.uncertain_iou) {
         journal_.record({key, 'n', config_.keep_rejected ? store(p, 0) : -1, "truth"});
         ++stats_.auto_negatives;
         continue;

@@ -34,6 +34,9 @@ struct LabelingConfig {
   bool order_by_score = false;  ///< present a frame's candidates highest score first (needs a model)
   double certain_iou = 0.5;     ///< assisted mode: IoU >= this is a person
   double uncertain_iou = 0.3;   ///< assisted mode: IoU < this is not a person; in between is asked
+  /// Assisted mode: a candidate covering (IoU >= uncertain_iou) a person marked ignored in the truth
+  /// (hardly visible, see ignore_hardly_visible) and no counted one is asked, never answered, as the
+  /// evaluation counts it neither right nor wrong.
   DetectorParams detector;
   CameraModel camera;
 };
@@ -43,7 +46,8 @@ struct LoadedFrame {
   DepthFrame frame;
   FrameAnalysis analysis;
   std::vector<double> scores;      ///< per candidate; empty without a model
-  std::vector<double> truth_iou;   ///< per candidate, best IoU with a ground-truth person; empty without truth
+  std::vector<double> truth_iou;   ///< per candidate, best IoU with a counted ground-truth person; empty without truth
+  std::vector<double> ignored_iou; ///< per candidate, best IoU with a don't-care (hardly visible) person
   std::int64_t ordinal = 0;        ///< 1-based over all sources
 };
 
