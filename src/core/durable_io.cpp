@@ -303,7 +303,7 @@ void sync_folder(const std::string& dir) {
     io::close(fd);
     fail(dir, "cannot flush the folder to disk: " + errno_text(error));
   }
-  io::close(fd);
+  if (io::close(fd) != 0) fail(dir, "cannot close the folder after flushing it: " + errno_text(errno));
 }
 
 void create_folders_durably(const std::string& dir) {

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <unordered_map>
 #include <utility>
 
 #include <fcntl.h>
@@ -34,7 +35,7 @@ struct SampleSetWriter::State {
   bool recovered_torn_row = false;
   std::vector<std::string> repairs;
   bool broken = false;  ///< a write failed: the set must be reopened (which repairs it)
-  std::unordered_set<std::string> place_keys;
+  std::unordered_map<std::string, std::int64_t> place_keys;  ///< place -> id
   std::unordered_set<std::string> hash_keys;
 
   State(std::string d, SampleSetLock l) : dir(std::move(d)), lock(std::move(l)) {}
@@ -182,7 +183,7 @@ SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLo
     if (retracted.ids.count(record.id) == 0) s.records.push_back(std::move(record));
   }
   for (const SampleRecord& r : s.records) {
-    s.place_keys.insert(place_key(r));
+    s.place_keys[place_key(r)] = r.id;
     if (!r.crop_hash.empty()) s.hash_keys.insert(hash_key(r));
   }
 
@@ -260,7 +261,7 @@ void SampleSetWriter::append_row(const SampleRecord& record, bool sync_now) {
     throw;
   }
   s.records.push_back(record);
-  s.place_keys.insert(place_key(record));
+  s.place_keys[place_key(record)] = record.id;
   if (!record.crop_hash.empty()) s.hash_keys.insert(hash_key(record));
   s.next_id = record.id + 1;
 }
@@ -368,6 +369,11 @@ void SampleSetWriter::retract(std::int64_t id, const std::string& reason) {
   s.place_keys.erase(place_key(*found));
   if (!found->crop_hash.empty()) s.hash_keys.erase(hash_key(*found));
   s.records.erase(std::next(found).base());
+}
+
+std::int64_t SampleSetWriter::id_at_place(const SampleRecord& record) const {
+  const auto found = state_->place_keys.find(place_key(record));
+  return found == state_->place_keys.end() ? -1 : found->second;
 }
 
 bool SampleSetWriter::is_duplicate(const SampleRecord& record) const {

@@ -68,6 +68,9 @@ class SampleSetWriter {
   /// depth crop (crop_hash, when set) is already in the set. Used by the miner, merge and import to skip
   /// exact duplicates.
   bool is_duplicate(const SampleRecord& record) const;
+  /// The id of the sample in force with the same label and place (source, frame, strict box), or -1. The
+  /// labeler uses it for a sample saved whose journal line was lost (a failed write, a power cut).
+  std::int64_t id_at_place(const SampleRecord& record) const;
 
   const std::vector<SampleRecord>& records() const;
   const SampleSetManifest& manifest() const;
