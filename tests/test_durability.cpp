@@ -568,7 +568,7 @@ TEST(FullDisk, MinerIntoASmallTmpfsStopsWithAClearErrorAndKeepsItsSamples) {
   test::TempDir dir{"rdsf-fulldisk"};
   const std::string mount_point = dir / "disk";
   fs::create_directories(mount_point);
-  if (::mount("tmpfs", mount_point.c_str(), "tmpfs", 0, "size=600k") != 0) {
+  if (::mount("tmpfs", mount_point.c_str(), "tmpfs", 0, "size=160k") != 0) {
     GTEST_SKIP() << "cannot mount a tmpfs here (" << std::strerror(errno) << "): full-disk test skipped";
   }
   struct Unmount {
@@ -595,5 +595,5 @@ TEST(FullDisk, MinerIntoASmallTmpfsStopsWithAClearErrorAndKeepsItsSamples) {
   EXPECT_GT(rows.size(), 10u);
   const std::vector<SampleRecord> records = reopen_and_check(set, rows, "full tmpfs", true);
   EXPECT_EQ(records.size(), rows.size());
-  std::cout << "[figures] full tmpfs of 600 KiB: " << rows.size() << " samples saved before the disk filled, 0 lost\n";
+  std::cout << "[figures] full tmpfs of 160 KiB: " << rows.size() << " samples saved before the disk filled, 0 lost\n";
 }
