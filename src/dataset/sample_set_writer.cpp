@@ -9,13 +9,12 @@
 
 #include <fcntl.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/durable_io.hpp"
 #include "core/error.hpp"
 #include "core/utc_time.hpp"
 #include "dataset/feature_vector_file.hpp"
 #include "dataset/retraction_log.hpp"
+#include "dataset/sample_set_check.hpp"
 #include "dataset/sample_tsv.hpp"
 
 namespace rdsf {
@@ -68,26 +67,6 @@ std::string one_field(std::string text) {
 
 void write_header(const std::string& path, const std::string& header = sample_tsv_header()) {
   write_file_durably(path, header + "\n");
-}
-
-/// Why the depth crop of `record` is unusable, or "" when it is fine. `full`: decoded and hashed; otherwise
-/// only its presence and size are looked at.
-std::string crop_problem(const std::string& path, const SampleRecord& record, const FeatureSpec& spec, bool full) {
-  std::error_code ec;
-  const auto size = fs::file_size(path, ec);
-  if (ec) return "crop missing";
-  if (size == 0) return "crop empty";
-  if (!full) return "";
-  const cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (image.empty()) return "crop truncated or not a PNG";
-  if (image.type() != CV_16UC1 || image.cols != spec.window_width_px || image.rows != spec.window_height_px) {
-    return "crop is not a " + std::to_string(spec.window_width_px) + "x" + std::to_string(spec.window_height_px) +
-           " 16-bit depth image";
-  }
-  if (!record.crop_hash.empty() && depth_crop_hash(cv::Mat1w(image)) != record.crop_hash) {
-    return "crop does not match its hash (replaced by another image)";
-  }
-  return "";
 }
 
 }  // namespace
@@ -226,7 +205,7 @@ SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLo
   for (std::size_t i = 0; i < s.records.size(); ++i) {
     const SampleRecord& r = s.records[i];
     if (!r.has_crop) continue;
-    const std::string problem = crop_problem(s.path(crop_stem(r.id) + ".depth.png"), r, s.manifest.feature_spec,
+    const std::string problem = depth_crop_problem(s.path(crop_stem(r.id) + ".depth.png"), r, s.manifest.feature_spec,
                                              i + kCheckedRows >= s.records.size());
     if (!problem.empty()) bad.emplace_back(r.id, problem);
   }
