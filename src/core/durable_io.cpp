@@ -153,6 +153,7 @@ const char* call_name(Call call) {
     case Call::mkdir: return "mkdir";
     case Call::truncate: return "truncate";
     case Call::close: return "close";
+    case Call::syncfs: return "syncfs";
   }
   return "?";
 }
@@ -270,6 +271,15 @@ int close(int fd) {
   return result;
 }
 
+int syncfs(int fd) {
+  Layer& l = layer();
+  std::lock_guard<std::mutex> lock(l.mutex);
+  if (count(l, Call::syncfs) == Verdict::fail) return failed(l.fault);
+  const int result = ::syncfs(fd);
+  if (result == 0) record(l, Call::syncfs, fd, 0);
+  return result;
+}
+
 }  // namespace io
 
 std::string errno_text(int error) { return std::strerror(error); }
@@ -302,6 +312,17 @@ void sync_folder(const std::string& dir) {
     const int error = errno;
     io::close(fd);
     fail(dir, "cannot flush the folder to disk: " + errno_text(error));
+  }
+  if (io::close(fd) != 0) fail(dir, "cannot close the folder after flushing it: " + errno_text(errno));
+}
+
+void sync_file_system(const std::string& dir) {
+  const int fd = io::open(dir, O_RDONLY | O_DIRECTORY);
+  if (fd < 0) fail(dir, "cannot open the folder to flush it to disk: " + errno_text(errno));
+  if (io::syncfs(fd) != 0) {
+    const int error = errno;
+    io::close(fd);
+    fail(dir, "cannot flush the file system to disk: " + errno_text(error));
   }
   if (io::close(fd) != 0) fail(dir, "cannot close the folder after flushing it: " + errno_text(errno));
 }

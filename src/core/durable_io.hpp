@@ -32,7 +32,7 @@ namespace rdsf {
 namespace io {
 
 /// The kinds of call the layer counts (and can fail). Recorded with these names.
-enum class Call { open, write, fdatasync, fsync, rename, link, unlink, mkdir, truncate, close };
+enum class Call { open, write, fdatasync, fsync, rename, link, unlink, mkdir, truncate, close, syncfs };
 const char* call_name(Call call);
 
 struct Fault {
@@ -58,6 +58,8 @@ int unlink(const std::string& path);
 int mkdir(const std::string& path, int mode = 0755);
 int ftruncate(int fd, std::uint64_t size);
 int close(int fd);
+/// syncfs(2): everything written to the file system that holds `fd`, data and names, reaches the disk.
+int syncfs(int fd);
 
 }  // namespace io
 
@@ -70,6 +72,9 @@ void write_all(int fd, const void* data, std::size_t size, const std::string& pa
 void sync_data(int fd, const std::string& path);
 /// fsync of a folder, so that names created, renamed or removed in it are on disk.
 void sync_folder(const std::string& dir);
+/// syncfs of the file system that holds `dir`: every file and name written so far is on disk (one call for
+/// a batch of files instead of one fdatasync each).
+void sync_file_system(const std::string& dir);
 /// The folder that holds `path` ("." for a bare name).
 std::string parent_folder(const std::string& path);
 

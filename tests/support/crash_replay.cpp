@@ -120,6 +120,10 @@ struct Model {
       case io::Call::unlink: live_names.erase(c.path); break;
       case io::Call::mkdir: live_names[c.path] = add(true); break;
       case io::Call::close: fds.erase(c.fd); break;
+      case io::Call::syncfs:
+        for (Inode& inode : inodes) inode.synced = inode.live;
+        synced_names = live_names;
+        break;
     }
   }
 };
