@@ -305,27 +305,27 @@ std::string parent_folder(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
-void sync_folder(const std::string& dir) {
+namespace {
+
+/// Opens `dir`, flushes it (fsync of the folder, or syncfs of its file system) and closes it.
+void flush_folder(const std::string& dir, bool whole_file_system) {
   const int fd = io::open(dir, O_RDONLY | O_DIRECTORY);
   if (fd < 0) fail(dir, "cannot open the folder to flush it to disk: " + errno_text(errno));
-  if (io::fsync(fd) != 0) {
+  if ((whole_file_system ? io::syncfs(fd) : io::fsync(fd)) != 0) {
     const int error = errno;
     io::close(fd);
-    fail(dir, "cannot flush the folder to disk: " + errno_text(error));
+    fail(dir, std::string(whole_file_system ? "cannot flush the file system to disk: "
+                                            : "cannot flush the folder to disk: ") +
+                  errno_text(error));
   }
   if (io::close(fd) != 0) fail(dir, "cannot close the folder after flushing it: " + errno_text(errno));
 }
 
-void sync_file_system(const std::string& dir) {
-  const int fd = io::open(dir, O_RDONLY | O_DIRECTORY);
-  if (fd < 0) fail(dir, "cannot open the folder to flush it to disk: " + errno_text(errno));
-  if (io::syncfs(fd) != 0) {
-    const int error = errno;
-    io::close(fd);
-    fail(dir, "cannot flush the file system to disk: " + errno_text(error));
-  }
-  if (io::close(fd) != 0) fail(dir, "cannot close the folder after flushing it: " + errno_text(errno));
-}
+}  // namespace
+
+void sync_folder(const std::string& dir) { flush_folder(dir, false); }
+
+void sync_file_system(const std::string& dir) { flush_folder(dir, true); }
 
 void create_folders_durably(const std::string& dir) {
   std::error_code ec;
