@@ -22,12 +22,14 @@ int main(int argc, char** argv) {
          "prints each change");
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
-        "rdsf-samples", "--set SET [--import FILE | --export FILE [--force] | --check | --repair]",
+        "rdsf-samples", "[--set] SET [--import FILE | --export FILE [--force] | --check | --repair]",
         "Without --import or --export, describes the sample set SET (counts, feature spec, camera). --import\n"
         "reads the thesis's text format (one sample a line: label 1 or 0, then 8128 feature values in [0, 1]);\n"
         "imported samples have no crop, their vectors are stored. --export writes it, features computed from\n"
         "the crops."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    po::positional_options_description positional;  // "rdsf-samples --check SET" as well as "--set SET"
+    positional.add("set", 1);
+    if (!rdsf::cli::parse(argc, argv, info, options, values, &positional)) return 0;
     return rdsf::run_samples(o);
   });
 }
