@@ -186,7 +186,10 @@ long write(int fd, const void* data, std::size_t size) {
   std::lock_guard<std::mutex> lock(l.mutex);
   const Verdict verdict = count(l, Call::write);
   if (verdict == Verdict::fail) return failed(l.fault);
-  if (verdict == Verdict::short_write) size /= 2;
+  if (verdict == Verdict::short_write) {
+    if (size < 2) return failed(l.fault);  // nothing to cut short
+    size /= 2;
+  }
   std::int64_t offset = 0;
   if (l.record_fd >= 0) {
     struct stat st {};

@@ -150,7 +150,7 @@ SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLo
     write_header(s.tsv_path());
   } else if (contents.torn_tail) {
     cut_file_durably(s.tsv_path(), contents.complete_bytes);
-    s.repairs.push_back("samples.tsv: cut off a torn last row (never reported as saved)");
+    s.repairs.push_back("samples.tsv: cut off a sample row torn by an interrupted writer (never reported as saved)");
   }
   s.recovered_torn_row = contents.torn_tail;
   s.next_id = contents.records.empty() ? 1 : contents.records.back().id + 1;
