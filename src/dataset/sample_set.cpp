@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/stable_hash.hpp"
+#include "core/yaml_guard.hpp"
 #include "dataset/feature_vector_file.hpp"
 #include "dataset/retraction_log.hpp"
 #include "dataset/sample_crop.hpp"
@@ -66,7 +67,8 @@ cv::Mat1w SampleSet::depth_crop(std::size_t index) const {
     crop = read_depth_png(path);
   } catch (const Error& e) {  // "<path>: <problem>" -> "<path>: sample N: <problem>"
     const std::string what = e.what();
-    fail(path, sample + (what.rfind(path + ": ", 0) == 0 ? what.substr(path.size() + 2) : what) +
+    // one_line: the PNG reader quotes chunk names, which may hold any byte (found by fuzz/fuzz_depth_crop).
+    fail(path, sample + one_line(what.rfind(path + ": ", 0) == 0 ? what.substr(path.size() + 2) : what) +
                    " (rdsf-samples --check lists every problem)");
   }
   const FeatureSpec& spec = manifest_.feature_spec;
