@@ -16,7 +16,13 @@
 
 #include <unistd.h>
 
+#include <filesystem>
+
 #include "classifier/model_file.hpp"
+#include "classifier/model_registry.hpp"
+#include "dataset/sample_set.hpp"
+#include "dataset/sample_set_check.hpp"
+#include "dataset/sample_set_writer.hpp"
 #include "core/error.hpp"
 #include "dataset/sample_set_manifest.hpp"
 #include "dataset/sample_tsv.hpp"
@@ -28,8 +34,8 @@ namespace rdsf::fuzz {
 
 /// The parsers, by the name used for fuzz/corpus/<name>/ and fuzz/regressions/<name>/.
 inline const std::vector<std::string>& parser_names() {
-  static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",
-                                                 "thesis_text",  "model_file", "answer_journal"};
+  static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",   "thesis_text",
+                                                 "model_file",   "answer_journal", "depth_crop", "model_writer"};
   return names;
 }
 
@@ -45,12 +51,13 @@ class ScratchFolder {
     path_ = buffer.data();
   }
   ~ScratchFolder() {
-    for (const char* name : {"input", "input.tmp"}) std::remove((path_ + "/" + name).c_str());
-    ::rmdir(path_.c_str());
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
   }
   ScratchFolder(const ScratchFolder&) = delete;
   ScratchFolder& operator=(const ScratchFolder&) = delete;
 
+  const std::string& folder() const { return path_; }
   /// The folder's one input file.
   std::string input_path() const { return path_ + "/input"; }
   /// Writes `bytes` to the input file and returns its path.
@@ -146,6 +153,45 @@ inline void parse_answer_journal_bytes(const std::string& bytes) {
   require(journal.answers_in_force() <= bytes.size(), "answer journal: more answers than bytes");
 }
 
+/// A crop file of a sample set (dataset/sample_set.hpp, dataset/sample_set_check.hpp): the bytes replace the
+/// depth crop of the one sample of a set made for the purpose. Reading it and checking the set may only
+/// refuse it with an rdsf::Error naming the file; a crop the reader accepts must pass the check too.
+inline void parse_depth_crop_bytes(const std::string& bytes) {
+  const std::string set = scratch().folder() + "/set";
+  std::error_code ec;
+  if (!std::filesystem::exists(set + "/manifest.yml", ec)) {
+    SampleSetWriter writer = SampleSetWriter::open_or_create(set, FeatureSpec{}, CameraModel::kinect_v1(), "fuzz");
+    SampleRecord record;
+    record.label = 1;
+    record.origin = "fuzz";
+    record.source = "fuzz";
+    record.frame = "0";
+    writer.append(record, cv::Mat1w(128, 64, static_cast<std::uint16_t>(2500)));
+  }
+  const std::string crop = set + "/crops/00000001.depth.png";
+  std::ofstream(crop, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  const std::vector<SetProblem> problems = check_sample_set(set);
+  const SampleSet read = SampleSet::open_read(set);
+  (void)read.depth_crop(0);  // throws Error for a bad crop
+  require(problems.empty(), "depth crop: read fine but --check reports " + (problems.empty() ? "" : problems[0].what));
+}
+
+/// The model writer (classifier/model_registry.hpp): a model read from the bytes is saved as a new version
+/// through core/durable_io and read back, which must give the same text.
+inline void parse_model_writer_bytes(const std::string& bytes) {
+  BoostedModel model = read_model_file(scratch().write(bytes));
+  const std::string models = scratch().folder() + "/models";
+  std::error_code ec;
+  std::filesystem::remove_all(models, ec);
+  const std::string path = save_new_model_version(model, "fuzz", models);
+  try {
+    const BoostedModel again = read_model_file(path);
+    require(model_file_text(again) == model_file_text(model), "model writer: the saved file reads back different");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("model writer: the saved model no longer reads: ") + e.what());
+  }
+}
+
 /// Dispatch by parser name (see parser_names()). An rdsf::Error is passed on only when its message is the
 /// project's one line naming the file ("fuzz/..." for text parsers, the temporary input for file readers);
 /// a message that breaks the rule becomes std::logic_error.
@@ -157,10 +203,12 @@ inline void parse_bytes(const std::string& parser, const std::string& bytes) {
     if (parser == "thesis_text") return parse_thesis_text_bytes(bytes);
     if (parser == "model_file") return parse_model_file_bytes(bytes);
     if (parser == "answer_journal") return parse_answer_journal_bytes(bytes);
+    if (parser == "depth_crop") return parse_depth_crop_bytes(bytes);
+    if (parser == "model_writer") return parse_model_writer_bytes(bytes);
   } catch (const Error& e) {
     const std::string message = e.what();
     require(message.find('\n') == std::string::npos, parser + ": error message of more than one line: " + message);
-    require(message.rfind("fuzz/", 0) == 0 || message.rfind(scratch().input_path(), 0) == 0,
+    require(message.rfind("fuzz/", 0) == 0 || message.rfind(scratch().folder() + "/", 0) == 0,
             parser + ": error message does not start with the file name: " + message);
     throw;
   }

@@ -22,8 +22,8 @@ void report_open(const SampleSetWriter& writer, const char* program) {
     std::cerr << program << ": " << writer.dir() << ": took over the lock left by a killed writer ("
               << writer.stale_holder() << ")\n";
   }
-  if (writer.recovered_torn_row()) {
-    std::cerr << program << ": " << writer.dir() << ": cut off a sample row torn by a killed writer\n";
+  for (const std::string& repair : writer.repairs()) {  // torn rows, orphan crops, unusable crops
+    std::cerr << program << ": " << writer.dir() << ": repaired " << repair << "\n";
   }
   if (!writer.records().empty()) {
     std::cerr << program << ": " << writer.dir() << " already holds " << writer.records().size()

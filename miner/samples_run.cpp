@@ -6,6 +6,7 @@
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "dataset/sample_set.hpp"
+#include "dataset/sample_set_check.hpp"
 #include "dataset/sample_set_writer.hpp"
 #include "dataset/thesis_text.hpp"
 
@@ -39,6 +40,26 @@ void describe(const SampleSet& set) {
 int run_samples(const SamplesOptions& o) {
   if (!o.import_file.empty() && !o.export_file.empty()) {
     throw cli::UsageError("give either --import or --export, not both");
+  }
+  if (o.check || o.repair) {
+    if (o.check && o.repair) throw cli::UsageError("give either --check or --repair, not both");
+    if (!o.import_file.empty() || !o.export_file.empty()) throw cli::UsageError("--check and --repair go alone");
+    if (o.repair) {
+      const std::vector<std::string> changes = repair_sample_set(o.set);
+      for (const std::string& change : changes) std::cout << o.set << "/" << change << "\n";
+      std::cerr << "rdsf-samples: " << o.set << ": " << changes.size() << " changes\n";
+      return 0;
+    }
+    const std::vector<SetProblem> problems = check_sample_set(o.set);
+    std::size_t fixable = 0;
+    for (const SetProblem& p : problems) {
+      std::cout << o.set << "/" << p.where << ": " << p.what << " ["
+                << (p.fix.empty() ? "cannot be repaired" : "--repair: " + p.fix) << "]\n";
+      fixable += p.fix.empty() ? 0 : 1;
+    }
+    std::cerr << "rdsf-samples: " << o.set << ": " << problems.size() << " problems, " << fixable
+              << " repairable\n";
+    return problems.empty() ? 0 : 1;
   }
   if (!o.import_file.empty()) {
     check_thesis_text(o.import_file, FeatureSpec{}.dimension());  // a bad file creates no set

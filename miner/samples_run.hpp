@@ -9,6 +9,8 @@ struct SamplesOptions {
   std::string import_file;  ///< thesis text file to import into the set (created when absent)
   std::string export_file;  ///< thesis text file to write from the set
   bool force = false;       ///< replace an existing export file
+  bool check = false;       ///< list every problem of the set (exit 1 when there is one)
+  bool repair = false;      ///< repair what can be repaired, after a backup of the index
 };
 
 /// Returns the process exit code.

@@ -10,6 +10,7 @@
 #include <OpenNI.h>
 
 #include "cli/progress.hpp"
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
 #include "frame/openni_source.hpp"
 #include "recorder/stop_request.hpp"
@@ -200,8 +201,7 @@ int run_record(const RecordOptions& o) {
     throw Error((device_gone.empty() ? where + ": stopped" : device_gone) + " before the first frame; nothing written");
   }
   progress.finish(counts[0], stop_requested() ? "stopped by Ctrl-C" : std::string());
-  fs::rename(partial, o.out, ec);
-  if (ec) throw Error(o.out + ": cannot rename " + partial + " to it: " + ec.message());
+  rename_durably(partial, o.out);  // synced, renamed, folder synced (core/durable_io)
   std::string summary = std::to_string(counts[0]) + " " + names[0] + " frames";
   if (counts.size() > 1) summary += " and " + std::to_string(counts[1]) + " " + names[1] + " frames";
   if (!device_gone.empty()) throw Error(device_gone + "; " + o.out + " holds the " + summary + " recorded before");

@@ -26,15 +26,7 @@ std::string label() { return test::quote(test::program("rdsf-label")); }
 
 // Two frames, each with three candidates in this order: the person (nearest layer), the wall left of it,
 // the wall right of it.
-void write_two_frames(const test::TempDir& dir) {
-  std::filesystem::create_directories(dir.path() / "frames");
-  DepthFrame a = test::wall_frame(4000);
-  test::paint(a, {300, 100, 40, 360}, 2000);
-  write_png_atomically(dir / "frames/a.depth.png", a.depth_mm);
-  DepthFrame b = test::wall_frame(4500);
-  test::paint(b, {200, 80, 40, 380}, 2500);
-  write_png_atomically(dir / "frames/b.depth.png", b.depth_mm);
-}
+void write_two_frames(const test::TempDir& dir) { test::write_two_person_frames(dir / "frames"); }
 
 test::RunResult run_label(const test::TempDir& dir, const std::string& keys, const std::string& extra = "") {
   std::ofstream(dir / "keys.txt") << keys;

@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "classifier/model_file.hpp"
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
 #include "core/utc_time.hpp"
 
@@ -76,32 +77,24 @@ std::string resolve_model(const std::string& path_or_name, const std::string& mo
 std::string save_new_model_version(BoostedModel& model, const std::string& name, const std::string& models_dir) {
   validate_model_name(name);
   const fs::path folder = fs::path(models_dir) / name;
-  std::error_code ec;
-  fs::create_directories(folder, ec);
-  if (ec) fail(folder.string(), "cannot create model folder: " + ec.message());
+  create_folders_durably(folder.string());  // core/durable_io: synced into its parent
   const std::string created = utc_now_iso8601();
   for (int attempt = 0; attempt < 100; ++attempt) {
     const int version = latest_in_folder(folder) + 1;
     const fs::path final_path = folder / ("v" + std::to_string(version) + ".yml");
     const fs::path partial = folder / (".v" + std::to_string(version) + ".yml." + std::to_string(::getpid()) + ".partial");
     model.set_identity(name, version, final_path.string(), created);
-    {
-      std::ofstream out(partial, std::ios::out | std::ios::trunc | std::ios::binary);
-      if (!out) fail(partial.string(), "cannot be created");
-      out << model_file_text(model);
-      out.flush();
-      if (!out) fail(partial.string(), "write failed (disk full?)");
+    // Data on disk before the name (core/durable_io): a power cut never leaves an empty vN.yml.
+    write_synced(partial.string(), model_file_text(model));
+    bool linked = false;
+    try {
+      linked = link_durably(partial.string(), final_path.string());  // never replaces a taken name
+    } catch (...) {
+      io::unlink(partial.string());
+      throw;
     }
-    fs::create_hard_link(partial, final_path, ec);  // fails, never replaces, when the name is taken
-    std::error_code ignore;
-    if (!ec) {
-      fs::remove(partial, ignore);
-      return final_path.string();
-    }
-    fs::remove(partial, ignore);
-    if (ec != std::errc::file_exists) {
-      fail(final_path.string(), "cannot put the model in place: " + ec.message());
-    }
+    io::unlink(partial.string());  // best effort: the model is in place already
+    if (linked) return final_path.string();
   }
   fail(folder.string(), "could not find a free version number");
 }

@@ -1,14 +1,9 @@
 #include "core/append_only_log.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 
-#include <fcntl.h>
-#include <unistd.h>
-
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
 
 namespace rdsf {
@@ -33,29 +28,11 @@ LogLines read_log_lines(const std::string& path, const std::string& cannot_open)
 }
 
 void append_line_synced(const std::string& path, const std::string& line) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd < 0) fail(path, std::string("cannot be opened for appending: ") + std::strerror(errno));
-  const std::string text = line + "\n";
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = errno;
-      ::close(fd);
-      fail(path, std::string("append failed (disk full?): ") + std::strerror(error));
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  const bool synced = ::fdatasync(fd) == 0;
-  ::close(fd);
-  if (!synced) fail(path, "cannot flush to disk");
+  AppendFile file(path, /*create=*/true);
+  file.append(line + "\n");
+  file.close();
 }
 
-void cut_torn_tail(const std::string& path, std::uint64_t size) {
-  std::error_code ec;
-  std::filesystem::resize_file(path, size, ec);
-  if (ec) fail(path, "cannot cut off the torn end left by a killed writer: " + ec.message());
-}
+void cut_torn_tail(const std::string& path, std::uint64_t size) { cut_file_durably(path, size); }
 
 }  // namespace rdsf

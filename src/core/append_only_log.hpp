@@ -17,11 +17,11 @@ struct LogLines {
 /// Reads `path`; throws Error("<path>: <cannot_open>") when it cannot be opened.
 LogLines read_log_lines(const std::string& path, const std::string& cannot_open = "cannot be opened");
 
-/// Appends `line` and '\n' in one write with O_APPEND and syncs it to disk (fdatasync); throws Error naming
-/// `path` on failure.
+/// Appends `line` and '\n' in one write with O_APPEND and syncs it to disk (fdatasync; a file it creates is
+/// fsync'ed in its folder), through core/durable_io; throws Error naming `path` and the cause on failure.
 void append_line_synced(const std::string& path, const std::string& line);
 
-/// Cuts `path` to `size` bytes (the torn tail a killed writer left); throws Error naming `path`.
+/// Cuts `path` to `size` bytes (the torn tail a killed writer left) and syncs it; throws Error naming `path`.
 void cut_torn_tail(const std::string& path, std::uint64_t size);
 
 }  // namespace rdsf

@@ -1,12 +1,7 @@
 #include "dataset/sample_crop.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <string_view>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -53,27 +48,6 @@ std::string crop_stem(std::int64_t id) {
   char text[48];
   std::snprintf(text, sizeof text, "crops/%08lld", static_cast<long long>(id));
   return text;
-}
-
-void write_bytes_atomically(const std::string& path, const std::vector<unsigned char>& bytes) {
-  const std::string temporary = path + ".tmp";
-  const int fd = open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(temporary, std::string("cannot be created: ") + std::strerror(errno));
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = errno;
-      close(fd);
-      fail(temporary, std::string("write failed: ") + std::strerror(error));
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (close(fd) != 0) fail(temporary, std::string("write failed: ") + std::strerror(errno));
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    fail(path, std::string("cannot rename the temporary file into place: ") + std::strerror(errno));
-  }
 }
 
 }  // namespace rdsf

@@ -28,7 +28,5 @@ struct EncodedCrop {
 /// "crops/00000042" relative to the set: add ".depth.png" or ".rgb.png".
 std::string crop_stem(std::int64_t id);
 
-/// Writes bytes to `path` through "<path>.tmp" and a rename; throws Error naming the file.
-void write_bytes_atomically(const std::string& path, const std::vector<unsigned char>& bytes);
 
 }  // namespace rdsf

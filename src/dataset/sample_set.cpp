@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/stable_hash.hpp"
+#include "core/yaml_guard.hpp"
 #include "dataset/feature_vector_file.hpp"
 #include "dataset/retraction_log.hpp"
 #include "dataset/sample_crop.hpp"
@@ -60,11 +61,25 @@ cv::Mat1w SampleSet::depth_crop(std::size_t index) const {
     fail(dir_, "sample " + std::to_string(record.id) + " has no crop (imported as a feature vector)");
   }
   const std::string path = depth_crop_path(index);
-  cv::Mat1w crop = read_depth_png(path);
+  const std::string sample = "sample " + std::to_string(record.id) + ": ";
+  cv::Mat1w crop;
+  try {
+    crop = read_depth_png(path);
+  } catch (const Error& e) {  // "<path>: <problem>" -> "<path>: sample N: <problem>"
+    const std::string what = e.what();
+    // one_line: the PNG reader quotes chunk names, which may hold any byte (found by fuzz/fuzz_depth_crop).
+    fail(path, sample + one_line(what.rfind(path + ": ", 0) == 0 ? what.substr(path.size() + 2) : what) +
+                   " (rdsf-samples --check lists every problem)");
+  }
   const FeatureSpec& spec = manifest_.feature_spec;
   if (crop.cols != spec.window_width_px || crop.rows != spec.window_height_px) {
-    fail(path, "crop is " + std::to_string(crop.cols) + "x" + std::to_string(crop.rows) + ", the set's window is " +
-                   std::to_string(spec.window_width_px) + "x" + std::to_string(spec.window_height_px));
+    fail(path, sample + "crop is " + std::to_string(crop.cols) + "x" + std::to_string(crop.rows) +
+                   ", the set's window is " + std::to_string(spec.window_width_px) + "x" +
+                   std::to_string(spec.window_height_px));
+  }
+  if (!record.crop_hash.empty() && depth_crop_hash(crop) != record.crop_hash) {
+    fail(path, sample + "crop does not match its hash " + record.crop_hash +
+                   " in samples.tsv (replaced by another image?)");
   }
   return crop;
 }

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
 
 namespace rdsf {
@@ -35,17 +36,17 @@ std::string this_process() {
 SampleSetLock::SampleSetLock(const std::string& dir) : path_((std::filesystem::path(dir) / "lock").string()) {
   for (int attempt = 0; attempt < 10; ++attempt) {
     bool created = true;
-    int fd = open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    int fd = io::open(path_, O_RDWR | O_CREAT | O_EXCL);
     if (fd < 0 && errno == EEXIST) {
       created = false;
-      fd = open(path_.c_str(), O_RDWR | O_CLOEXEC);
+      fd = io::open(path_, O_RDWR);
       if (fd < 0 && errno == ENOENT) continue;  // released meanwhile: try again
     }
-    if (fd < 0) fail(path_, std::string("cannot create the sample set's lock file: ") + std::strerror(errno));
+    if (fd < 0) fail(path_, "cannot create the sample set's lock file: " + errno_text(errno));
     if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
       const std::string holder = read_holder(fd);
-      close(fd);
+      io::close(fd);
       if (error == EWOULDBLOCK) {
         fail(dir, "sample set is being written by another program (" + holder + ", lock file " + path_ +
                       "); wait for it to finish or stop it first");
@@ -56,7 +57,7 @@ SampleSetLock::SampleSetLock(const std::string& dir) : path_((std::filesystem::p
     struct stat opened {}, named {};
     if (fstat(fd, &opened) != 0 || stat(path_.c_str(), &named) != 0 || opened.st_ino != named.st_ino ||
         opened.st_dev != named.st_dev) {
-      close(fd);
+      io::close(fd);
       continue;
     }
     if (!created) {
@@ -64,9 +65,11 @@ SampleSetLock::SampleSetLock(const std::string& dir) : path_((std::filesystem::p
       stale_holder_ = read_holder(fd);
     }
     const std::string me = this_process() + "\n";
-    if (ftruncate(fd, 0) != 0 || pwrite(fd, me.data(), me.size(), 0) != static_cast<ssize_t>(me.size())) {
-      close(fd);
-      fail(path_, "cannot write the lock file");
+    if (io::ftruncate(fd, 0) != 0 || lseek(fd, 0, SEEK_SET) != 0 ||
+        io::write(fd, me.data(), me.size()) != static_cast<long>(me.size())) {
+      const int error = errno;
+      io::close(fd);
+      fail(path_, "cannot write the lock file: " + errno_text(error));
     }
     fd_ = fd;
     return;
@@ -95,8 +98,8 @@ SampleSetLock& SampleSetLock::operator=(SampleSetLock&& other) noexcept {
 
 void SampleSetLock::release() {
   if (fd_ < 0) return;
-  unlink(path_.c_str());  // while still holding the flock, so nobody locks the old file meanwhile
-  close(fd_);
+  io::unlink(path_);  // while still holding the flock, so nobody locks the old file meanwhile
+  io::close(fd_);
   fd_ = -1;
 }
 

@@ -3,6 +3,7 @@
 // host, with an exclusive flock() on it for as long as the writer lives. A second writer is refused with
 // a message naming the set and the holder. When the holder was killed, the kernel has released its flock:
 // the stale file is taken over. The file is removed when the lock is released normally.
+// The lock file is not synced: after a power cut no process holds its flock, and it is taken over.
 // (flock() is local to one machine on some network file systems: let each cluster job write its own set.)
 #include <string>
 

@@ -4,16 +4,17 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <unordered_map>
 #include <utility>
 
 #include <fcntl.h>
-#include <unistd.h>
 
-#include "core/atomic_file.hpp"
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
+#include "core/utc_time.hpp"
 #include "dataset/feature_vector_file.hpp"
 #include "dataset/retraction_log.hpp"
+#include "dataset/sample_set_check.hpp"
 #include "dataset/sample_tsv.hpp"
 
 namespace rdsf {
@@ -26,20 +27,17 @@ struct SampleSetWriter::State {
   SampleSetLock lock;
   std::vector<SampleRecord> records;
   std::int64_t next_id = 1;
-  int tsv_fd = -1;
-  int vectors_fd = -1;
-  int retracted_fd = -1;
+  AppendFile tsv;
+  AppendFile vectors;
+  AppendFile retracted;
+  std::vector<std::string> unsynced_crops;  ///< crops of rows appended with sync = false
   bool recovered_torn_row = false;
+  std::vector<std::string> repairs;
   bool broken = false;  ///< a write failed: the set must be reopened (which repairs it)
-  std::unordered_set<std::string> place_keys;
+  std::unordered_map<std::string, std::int64_t> place_keys;  ///< place -> id
   std::unordered_set<std::string> hash_keys;
 
   State(std::string d, SampleSetLock l) : dir(std::move(d)), lock(std::move(l)) {}
-  ~State() {
-    if (tsv_fd >= 0) ::close(tsv_fd);
-    if (vectors_fd >= 0) ::close(vectors_fd);
-    if (retracted_fd >= 0) ::close(retracted_fd);
-  }
   State(const State&) = delete;
   State& operator=(const State&) = delete;
 
@@ -51,6 +49,9 @@ struct SampleSetWriter::State {
 
 namespace {
 
+/// A batch of at least this many crops is flushed with one syncfs() instead of one fdatasync() each.
+constexpr std::size_t kSyncfsFromCrops = 4;
+
 std::string place_key(const SampleRecord& r) {
   const cv::Rect& b = r.strict_box;
   return std::to_string(r.label) + '\x1f' + r.source + '\x1f' + r.frame + '\x1f' + std::to_string(b.x) + ',' +
@@ -59,31 +60,16 @@ std::string place_key(const SampleRecord& r) {
 
 std::string hash_key(const SampleRecord& r) { return std::to_string(r.label) + ':' + r.crop_hash; }
 
-void write_all(int fd, const void* data, std::size_t size, const std::string& path) {
-  const char* bytes = static_cast<const char*>(data);
-  std::size_t written = 0;
-  while (written < size) {
-    const ssize_t n = ::write(fd, bytes + written, size - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) fail(path, std::string("append failed (disk full?): ") + std::strerror(errno));
-    written += static_cast<std::size_t>(n);
+/// A reason as one tab- and newline-free field of retracted.tsv.
+std::string one_field(std::string text) {
+  for (char& c : text) {
+    if (c == '\t' || c == '\n' || c == '\r') c = ' ';
   }
-}
-
-void sync_fd(int fd, const std::string& path) {
-  if (::fdatasync(fd) != 0) fail(path, std::string("cannot flush to disk: ") + std::strerror(errno));
-}
-
-void truncate_file(const std::string& path, std::uint64_t size) {
-  std::error_code ec;
-  fs::resize_file(path, size, ec);
-  if (ec) fail(path, "cannot cut off the torn end left by a killed writer: " + ec.message());
+  return text;
 }
 
 void write_header(const std::string& path, const std::string& header = sample_tsv_header()) {
-  AtomicTextFile file(path, /*overwrite=*/true);
-  file.stream() << header << '\n';
-  file.commit();
+  write_file_durably(path, header + "\n");
 }
 
 }  // namespace
@@ -96,15 +82,15 @@ SampleSetWriter::~SampleSetWriter() = default;
 SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const FeatureSpec& spec,
                                                 const CameraModel& camera, const std::string& created_by) {
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) fail(dir, "cannot create the sample set folder: " + ec.message());
+  create_folders_durably(dir);
   SampleSetLock lock(dir);
   const fs::path root(dir);
   if (!fs::exists(root / "manifest.yml", ec)) {
     // A new set. Leftovers of an interrupted creation are allowed; anything else means a wrong folder.
     for (const fs::directory_entry& entry : fs::directory_iterator(root, ec)) {
       const std::string name = entry.path().filename().string();
-      const bool leftover = name == "lock" || name == "manifest.yml.partial" || name == "samples.tsv.partial" ||
+      const bool leftover = name == "lock" || name == "manifest.yml.partial" || name == "samples.tsv.tmp" ||
+                            name == "samples.tsv.partial" ||
                             (name == "samples.tsv" && entry.file_size(ec) <= sample_tsv_header().size() + 1) ||
                             (name == "crops" && entry.is_directory() && fs::is_empty(entry.path(), ec));
       if (!leftover) {
@@ -113,8 +99,7 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
       }
     }
     if (ec) fail(dir, "cannot list the folder: " + ec.message());
-    fs::create_directories(root / "crops", ec);
-    if (ec) fail((root / "crops").string(), "cannot create: " + ec.message());
+    create_folders_durably((root / "crops").string());
     write_header((root / "samples.tsv").string());
     SampleSetManifest manifest;
     manifest.feature_spec = spec;
@@ -138,6 +123,24 @@ SampleSetWriter SampleSetWriter::open_existing(const std::string& dir) {
   return open_locked(dir, SampleSetLock(dir));
 }
 
+void SampleSetWriter::write_crop_unsynced(const std::string& path, const std::vector<unsigned char>& bytes) {
+  const std::string temporary = path + ".tmp";
+  const int fd = io::open(temporary, O_WRONLY | O_CREAT | O_TRUNC);
+  if (fd < 0) fail(temporary, "cannot be created: " + errno_text(errno));
+  try {
+    write_all(fd, bytes.data(), bytes.size(), temporary, "write failed");
+  } catch (...) {
+    io::close(fd);
+    io::unlink(temporary);
+    throw;
+  }
+  if (io::close(fd) != 0) fail(temporary, "write failed on close: " + errno_text(errno));
+  if (io::rename(temporary, path) != 0) {
+    fail(path, "cannot rename " + temporary + " into place: " + errno_text(errno));
+  }
+  state_->unsynced_crops.push_back(path);
+}
+
 SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLock lock) {
   auto state = std::make_unique<State>(dir, std::move(lock));
   State& s = *state;
@@ -146,7 +149,8 @@ SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLo
   if (contents.complete_bytes == 0) {
     write_header(s.tsv_path());
   } else if (contents.torn_tail) {
-    truncate_file(s.tsv_path(), contents.complete_bytes);
+    cut_file_durably(s.tsv_path(), contents.complete_bytes);
+    s.repairs.push_back("samples.tsv: cut off a sample row torn by an interrupted writer (never reported as saved)");
   }
   s.recovered_torn_row = contents.torn_tail;
   s.next_id = contents.records.empty() ? 1 : contents.records.back().id + 1;
@@ -154,39 +158,67 @@ SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLo
   if (retracted.exists && retracted.complete_bytes == 0) {
     write_header(s.retracted_path(), retraction_log_header());
   } else if (retracted.torn_tail) {
-    truncate_file(s.retracted_path(), retracted.complete_bytes);
+    cut_file_durably(s.retracted_path(), retracted.complete_bytes);
+    s.repairs.push_back("retracted.tsv: cut off a torn last row (never reported as done)");
   }
   for (SampleRecord& record : contents.records) {
     if (retracted.ids.count(record.id) == 0) s.records.push_back(std::move(record));
   }
   for (const SampleRecord& r : s.records) {
-    s.place_keys.insert(place_key(r));
+    s.place_keys[place_key(r)] = r.id;
     if (!r.crop_hash.empty()) s.hash_keys.insert(hash_key(r));
   }
 
-  // Remove what a killed writer left of the sample in flight: temporary files, crops without a row.
+  // Remove what an interrupted writer left of the sample in flight: temporary files, crops without a row.
   std::error_code ec;
   const fs::path crops = fs::path(dir) / "crops";
-  fs::create_directories(crops, ec);
-  if (ec) fail(crops.string(), "cannot create: " + ec.message());
+  create_folders_durably(crops.string());
+  std::vector<fs::path> orphans;
   for (const fs::directory_entry& entry : fs::directory_iterator(crops, ec)) {
     const std::string name = entry.path().filename().string();
     bool orphan = name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0;
     std::size_t digits = 0;
     while (digits < name.size() && name[digits] >= '0' && name[digits] <= '9') ++digits;
     if (digits > 0 && digits < 19 && std::stoll(name.substr(0, digits)) >= s.next_id) orphan = true;
-    if (orphan) fs::remove(entry.path(), ec);
+    if (orphan) orphans.push_back(entry.path());
   }
+  if (ec) fail(crops.string(), "cannot list the folder: " + ec.message());
+  std::sort(orphans.begin(), orphans.end());
+  for (const fs::path& orphan : orphans) {
+    remove_file(orphan.string());
+    s.repairs.push_back("crops/" + orphan.filename().string() + ": removed (no row: a sample never saved)");
+  }
+  if (!orphans.empty()) sync_folder(crops.string());
   const std::string vectors_path = s.vectors_path();
   if (fs::exists(vectors_path, ec)) {
     const FeatureVectorFile vectors(vectors_path, s.manifest.feature_spec.dimension());
     const std::uint64_t keep = vectors.first_offset_from(s.next_id);
-    if (keep != fs::file_size(vectors_path, ec)) truncate_file(vectors_path, keep);
+    if (keep != fs::file_size(vectors_path, ec)) {
+      cut_file_durably(vectors_path, keep);
+      s.repairs.push_back(fs::path(vectors_path).filename().string() + ": cut off vectors without a row");
+    }
   }
 
-  s.tsv_fd = ::open(s.tsv_path().c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-  if (s.tsv_fd < 0) fail(s.tsv_path(), std::string("cannot be opened for appending: ") + std::strerror(errno));
-  return SampleSetWriter(std::move(state));
+  // Rows whose depth crop is unusable (missing or empty for every row; decoded and hashed for the last
+  // kCheckedRows) are retracted with the reason: such a row was never reported as saved by this version
+  // (crops are on disk before their row), but a disk that lost data or an older version can leave them.
+  constexpr std::size_t kCheckedRows = 64;  // more than a mined frame's batch
+  s.tsv = AppendFile(s.tsv_path(), /*create=*/false);
+  std::vector<std::pair<std::int64_t, std::string>> bad;
+  for (std::size_t i = 0; i < s.records.size(); ++i) {
+    const SampleRecord& r = s.records[i];
+    if (!r.has_crop) continue;
+    const std::string problem = depth_crop_problem(s.path(crop_stem(r.id) + ".depth.png"), r, s.manifest.feature_spec,
+                                             i + kCheckedRows >= s.records.size());
+    if (!problem.empty()) bad.emplace_back(r.id, problem);
+  }
+  SampleSetWriter writer(std::move(state));
+  for (const auto& [id, problem] : bad) {
+    writer.retract(id, problem);
+    writer.state_->repairs.push_back("sample " + std::to_string(id) + ": retracted (" + problem + ", " +
+                                     crop_stem(id) + ".depth.png)");
+  }
+  return writer;
 }
 
 SampleRecord SampleSetWriter::prepare(SampleRecord record) const {
@@ -204,14 +236,14 @@ void SampleSetWriter::append_row(const SampleRecord& record, bool sync_now) {
   State& s = *state_;
   const std::string line = format_sample_row(record) + '\n';
   try {
-    write_all(s.tsv_fd, line.data(), line.size(), s.tsv_path());
-    if (sync_now) sync_fd(s.tsv_fd, s.tsv_path());
+    if (sync_now) sync_crops();
+    s.tsv.append(line, sync_now);
   } catch (...) {
     s.broken = true;
     throw;
   }
   s.records.push_back(record);
-  s.place_keys.insert(place_key(record));
+  s.place_keys[place_key(record)] = record.id;
   if (!record.crop_hash.empty()) s.hash_keys.insert(hash_key(record));
   s.next_id = record.id + 1;
 }
@@ -222,7 +254,25 @@ SampleRecord SampleSetWriter::append(SampleRecord record, const cv::Mat1w& depth
 
 void SampleSetWriter::sync() {
   if (!state_) throw Error("sample set writer: used after close()");
-  sync_fd(state_->tsv_fd, state_->tsv_path());
+  try {
+    sync_crops();
+    state_->tsv.sync();
+  } catch (...) {
+    state_->broken = true;
+    throw;
+  }
+}
+
+void SampleSetWriter::sync_crops() {
+  State& s = *state_;
+  if (s.unsynced_crops.empty()) return;
+  if (s.unsynced_crops.size() >= kSyncfsFromCrops) {
+    sync_file_system(s.path("crops"));  // one flush for the batch: data and names
+  } else {
+    for (const std::string& path : s.unsynced_crops) sync_file(path);
+    sync_folder(s.path("crops"));
+  }
+  s.unsynced_crops.clear();
 }
 
 SampleRecord SampleSetWriter::append_encoded(SampleRecord record, const EncodedCrop& crop, bool sync_now) {
@@ -238,8 +288,20 @@ SampleRecord SampleSetWriter::append_encoded(SampleRecord record, const EncodedC
   record.has_colour = !crop.colour_png.empty();
   record.crop_hash = crop.hash;
   const std::string stem = s.path(crop_stem(record.id));
-  write_bytes_atomically(stem + ".depth.png", crop.depth_png);
-  if (record.has_colour) write_bytes_atomically(stem + ".rgb.png", crop.colour_png);
+  try {
+    if (sync_now) {
+      // On disk, name included, before the row that refers to it.
+      write_file_durably(stem + ".depth.png", crop.depth_png);
+      if (record.has_colour) write_file_durably(stem + ".rgb.png", crop.colour_png);
+    } else {
+      // Batched (the miner): written and renamed now, synced by sync() before the rows are.
+      write_crop_unsynced(stem + ".depth.png", crop.depth_png);
+      if (record.has_colour) write_crop_unsynced(stem + ".rgb.png", crop.colour_png);
+    }
+  } catch (...) {
+    s.broken = true;
+    throw;
+  }
   append_row(record, sync_now);
   return record;
 }
@@ -251,17 +313,13 @@ SampleRecord SampleSetWriter::append_vector(SampleRecord record, const float* fe
   record.has_colour = false;
   record.crop_hash.clear();
   const std::string path = s.vectors_path();
-  if (s.vectors_fd < 0) {
-    s.vectors_fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-    if (s.vectors_fd < 0) fail(path, std::string("cannot be opened for appending: ") + std::strerror(errno));
-  }
   const std::int64_t id = record.id;
   std::vector<char> bytes(8 + 4 * static_cast<std::size_t>(dimension()));
   std::memcpy(bytes.data(), &id, 8);
   std::memcpy(bytes.data() + 8, features, bytes.size() - 8);
   try {
-    write_all(s.vectors_fd, bytes.data(), bytes.size(), path);
-    sync_fd(s.vectors_fd, path);
+    if (!s.vectors.is_open()) s.vectors = AppendFile(path, /*create=*/true);
+    s.vectors.append(std::string_view(bytes.data(), bytes.size()));
   } catch (...) {
     s.broken = true;
     throw;
@@ -270,7 +328,7 @@ SampleRecord SampleSetWriter::append_vector(SampleRecord record, const float* fe
   return record;
 }
 
-void SampleSetWriter::retract(std::int64_t id) {
+void SampleSetWriter::retract(std::int64_t id, const std::string& reason) {
   if (!state_) throw Error("sample set writer: used after close()");
   State& s = *state_;
   if (s.broken) fail(s.dir, "an earlier append failed; reopen the set (which repairs it)");
@@ -280,16 +338,16 @@ void SampleSetWriter::retract(std::int64_t id) {
     fail(s.dir, "cannot retract sample " + std::to_string(id) + ": the set holds no such sample");
   }
   const std::string path = s.retracted_path();
-  if (s.retracted_fd < 0) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) write_header(path, retraction_log_header());
-    s.retracted_fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (s.retracted_fd < 0) fail(path, std::string("cannot be opened for appending: ") + std::strerror(errno));
-  }
-  const std::string line = std::to_string(id) + '\t' + utc_now_iso8601() + '\n';
+  std::string line = std::to_string(id) + '\t' + utc_now_iso8601();
+  if (!reason.empty()) line += '\t' + one_field(reason);
+  line += '\n';
   try {
-    write_all(s.retracted_fd, line.data(), line.size(), path);
-    sync_fd(s.retracted_fd, path);
+    if (!s.retracted.is_open()) {
+      std::error_code ec;
+      if (!fs::exists(path, ec)) write_header(path, retraction_log_header());
+      s.retracted = AppendFile(path, /*create=*/false);
+    }
+    s.retracted.append(line);
   } catch (...) {
     s.broken = true;
     throw;
@@ -297,6 +355,11 @@ void SampleSetWriter::retract(std::int64_t id) {
   s.place_keys.erase(place_key(*found));
   if (!found->crop_hash.empty()) s.hash_keys.erase(hash_key(*found));
   s.records.erase(std::next(found).base());
+}
+
+std::int64_t SampleSetWriter::id_at_place(const SampleRecord& record) const {
+  const auto found = state_->place_keys.find(place_key(record));
+  return found == state_->place_keys.end() ? -1 : found->second;
 }
 
 bool SampleSetWriter::is_duplicate(const SampleRecord& record) const {
@@ -309,6 +372,7 @@ const SampleSetManifest& SampleSetWriter::manifest() const { return state_->mani
 const std::string& SampleSetWriter::dir() const { return state_->dir; }
 int SampleSetWriter::dimension() const { return state_->manifest.feature_spec.dimension(); }
 bool SampleSetWriter::recovered_torn_row() const { return state_->recovered_torn_row; }
+const std::vector<std::string>& SampleSetWriter::repairs() const { return state_->repairs; }
 bool SampleSetWriter::took_over_stale_lock() const { return state_->lock.took_over_stale(); }
 std::string SampleSetWriter::stale_holder() const { return state_->lock.stale_holder(); }
 void SampleSetWriter::close() { state_.reset(); }

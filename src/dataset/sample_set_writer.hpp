@@ -2,10 +2,20 @@
 // Appends samples to a sample set (format in sample_set.hpp and datasets/README.md), holding the set's
 // lock for its lifetime so that a second writer is refused.
 //
-// Durability: a sample's crop files are written first (temporary name + rename), then its row is appended
-// to samples.tsv, flushed and fdatasync'ed before append() returns. A writer killed at any moment leaves a
-// readable set that has lost at most the sample in flight. Reopening cuts off a torn last row and removes
-// crops and vectors of samples whose row was never written.
+// Durability (core/durable_io): a sample's crop files are written under a temporary name, fdatasync'ed,
+// renamed and the crops folder fsync'ed; then its row is appended to samples.tsv and fdatasync'ed before
+// append() returns: a sample reported as saved survives a killed program and a power cut. A batch
+// (append_encoded with sync = false) renames its crops at once and syncs them, the folder and the rows in
+// sync(). Writes that fail (disk full, I/O error) throw Error naming the file and the cause, and the writer
+// refuses further appends until the set is reopened.
+//
+// Repairs on open (each reported in repairs(), one line each; never a row whose crop is valid):
+//   1. a torn last row of samples.tsv or retracted.tsv (no newline: never reported as saved) is cut off;
+//   2. temporary files (*.tmp) in crops/, and crops and stored vectors of ids past the last row (a sample
+//      whose row was never written) are removed;
+//   3. a row whose depth crop is missing or empty, or (for the last 64 rows, decoded) truncated, of the
+//      wrong size or type, or not matching its crop_hash, is retracted (retracted.tsv, with the reason in a
+//      third column); its row and files stay for inspection. rdsf-samples --check checks every row.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -52,12 +62,15 @@ class SampleSetWriter {
   /// Takes back sample `id` (the labeler's undo): its retraction is appended to retracted.tsv (flushed to
   /// disk) and readers leave it out from then on; its row and crops stay for inspection. Throws Error when
   /// the set holds no such sample (or it was retracted already).
-  void retract(std::int64_t id);
+  void retract(std::int64_t id, const std::string& reason = "");
 
   /// True when a sample with the same label and the same place (source, frame, strict box) or the same
   /// depth crop (crop_hash, when set) is already in the set. Used by the miner, merge and import to skip
   /// exact duplicates.
   bool is_duplicate(const SampleRecord& record) const;
+  /// The id of the sample in force with the same label and place (source, frame, strict box), or -1. The
+  /// labeler uses it for a sample saved whose journal line was lost (a failed write, a power cut).
+  std::int64_t id_at_place(const SampleRecord& record) const;
 
   const std::vector<SampleRecord>& records() const;
   const SampleSetManifest& manifest() const;
@@ -65,6 +78,8 @@ class SampleSetWriter {
   int dimension() const;
   /// True when opening cut off a row torn by a killed writer.
   bool recovered_torn_row() const;
+  /// What opening repaired (rules above), one line each, e.g. "sample 7: retracted (crop missing, ...)".
+  const std::vector<std::string>& repairs() const;
   /// True when the lock of a killed writer was taken over; stale_holder() says whose.
   bool took_over_stale_lock() const;
   std::string stale_holder() const;
@@ -77,6 +92,8 @@ class SampleSetWriter {
   static SampleSetWriter open_locked(const std::string& dir, SampleSetLock lock);
   SampleRecord prepare(SampleRecord record) const;
   void append_row(const SampleRecord& record, bool sync);
+  void write_crop_unsynced(const std::string& path, const std::vector<unsigned char>& bytes);
+  void sync_crops();
   std::unique_ptr<State> state_;
 };
 

@@ -98,6 +98,15 @@ bool AnswerJournal::forget(const CandidateKey& key) {
   return false;
 }
 
+std::size_t AnswerJournal::finish_interrupted_undos(const std::function<bool(std::int64_t)>& in_set) {
+  std::vector<JournalEntry> undone;
+  for (const JournalEntry& e : in_force_) {
+    if (e.sample_id >= 0 && !in_set(e.sample_id)) undone.push_back(e);
+  }
+  for (auto it = undone.rbegin(); it != undone.rend(); ++it) record_undo(*it);
+  return undone.size();
+}
+
 void AnswerJournal::record_undo(const JournalEntry& undone) {
   if (!answered(undone.key)) throw Error(path_ + ": undo of a candidate that has no answer");
   const cv::Rect& b = undone.key.box;

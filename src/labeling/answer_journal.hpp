@@ -7,6 +7,7 @@
 // A torn last line (killed mid-write) is ignored when the journal is read.
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -42,6 +43,10 @@ class AnswerJournal {
   /// Appends an undo of `undone`'s answer (the most recent one in force for its candidate).
   void record_undo(const JournalEntry& undone);
   std::size_t answers_in_force() const { return in_force_.size(); }
+  /// Finishes undos cut short: an answer in force whose sample is no longer in the set (`in_set` says which
+  /// ids are) was undone there (the retraction is written first) but its journal line was lost to a failed
+  /// write or a power cut; its undo is appended now. Returns how many.
+  std::size_t finish_interrupted_undos(const std::function<bool(std::int64_t)>& in_set);
   const std::string& path() const { return path_; }
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
+#include <unordered_set>
 
 #include "candidates/candidate_finder.hpp"
 #include "core/error.hpp"
@@ -33,6 +34,9 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
       core_(config_.detector),
       journal_((std::filesystem::path(writer.dir()) / "labeler-answers.tsv").string()) {
   if (config_.sources.empty()) throw Error("no --source given");
+  std::unordered_set<std::int64_t> ids;  // an undo cut short by a failed write or a power cut is finished
+  for (const SampleRecord& r : writer_.records()) ids.insert(r.id);
+  journal_.finish_interrupted_undos([&ids](std::int64_t id) { return ids.count(id) != 0; });
   // Open every source now, so that a bad one is reported before the first question.
   std::int64_t total = 0;
   bool known = true;
@@ -148,6 +152,8 @@ std::int64_t LabelingSession::store(const PresentedCandidate& p, int label) {
     record.model = model_->name() + "/v" + std::to_string(model_->version());
     record.score = p.frame->scores[p.index];
   }
+  // Saved before but its journal line was lost (disk full, power cut between the two): not stored twice.
+  if (const std::int64_t saved = writer_.id_at_place(record); saved >= 0) return saved;
   return writer_.append(record, c.depth_crop, c.colour_crop).id;
 }
 

@@ -5,8 +5,10 @@
 #include <sstream>
 #include <vector>
 
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
-#include "frame/depth_png.hpp"
 
 namespace rdsf::synth {
 namespace fs = std::filesystem;
@@ -17,14 +19,20 @@ bool ends_with(const std::string& text, const std::string& tail) {
   return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+/// PNG through core/durable_io (synced, renamed, folder synced).
+void write_png_durably(const std::string& path, const cv::Mat& image) {
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", image, bytes)) fail(path, "cannot encode image as PNG");
+  write_file_durably(path, bytes);
+}
+
 }  // namespace
 
 void prepare_output_folder(const std::string& dir, bool force) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) fail(dir, "exists and is not a folder");
   if (!fs::exists(dir, ec)) {
-    fs::create_directories(dir, ec);
-    if (ec) fail(dir, "cannot create folder: " + ec.message());
+    create_folders_durably(dir);
     return;
   }
   const std::regex ours(R"(\d{6}\.(depth|rgb)\.png)");
@@ -63,8 +71,8 @@ SynthWriter::SynthWriter(std::string dir, const SynthParams& params, bool force)
 
 void SynthWriter::write(const SynthFrame& frame) {
   const fs::path base = fs::path(dir_) / frame.name;
-  write_png_atomically(base.string() + ".depth.png", frame.depth_mm);
-  if (!frame.bgr.empty()) write_png_atomically(base.string() + ".rgb.png", frame.bgr);
+  write_png_durably(base.string() + ".depth.png", frame.depth_mm);
+  if (!frame.bgr.empty()) write_png_durably(base.string() + ".rgb.png", frame.bgr);
   std::ostream& out = boxes_->stream();
   for (const PersonTruth& p : frame.people) {
     char fraction[32];

@@ -1,8 +1,12 @@
 #pragma once
 // Hand-built depth maps whose segmentation, candidates and features can be worked out by hand.
+#include <filesystem>
+#include <string>
+
 #include <opencv2/core.hpp>
 
 #include "frame/depth_frame.hpp"
+#include "frame/depth_png.hpp"
 
 namespace rdsf::test {
 
@@ -17,6 +21,18 @@ inline DepthFrame wall_frame(int wall_mm) {
 /// Paints a rectangle of constant depth.
 inline void paint(DepthFrame& frame, const cv::Rect& box, int depth_mm) {
   frame.depth_mm(box & cv::Rect(0, 0, frame.depth_mm.cols, frame.depth_mm.rows)).setTo(depth_mm);
+}
+
+/// Writes `folder`/a.depth.png and b.depth.png, two frames of three candidates each, in this order: the
+/// person (nearest layer), the wall left of it, the wall right of it.
+inline void write_two_person_frames(const std::string& folder) {
+  std::filesystem::create_directories(folder);
+  DepthFrame a = wall_frame(4000);
+  paint(a, {300, 100, 40, 360}, 2000);
+  write_png_atomically(folder + "/a.depth.png", a.depth_mm);
+  DepthFrame b = wall_frame(4500);
+  paint(b, {200, 80, 40, 380}, 2500);
+  write_png_atomically(folder + "/b.depth.png", b.depth_mm);
 }
 
 }  // namespace rdsf::test
