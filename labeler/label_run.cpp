@@ -119,6 +119,9 @@ int run_label(const LabelOptions& o) {
 
   SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.detector.features, o.session.camera,
                                                            "rdsf-label");
+  for (const std::string& repair : writer.repairs()) {  // what a crash left: torn rows, orphan or unusable crops
+    std::cerr << "rdsf-label: " << writer.dir() << ": repaired " << repair << "\n";
+  }
   LabelingSession session(o.session, writer, model.get(), truth.get());
   const char* window = "rdsf-label";
   // No toolbar or status bar of Qt's: the picture is the whole window, keys go straight to the labeler.

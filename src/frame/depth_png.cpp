@@ -12,7 +12,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/durable_io.hpp"
 #include "core/error.hpp"
+#include "core/yaml_guard.hpp"
 
 namespace rdsf {
 namespace {
@@ -55,7 +57,7 @@ void check_png_structure(const std::string& path, const std::vector<unsigned cha
     }
     const std::string type(reinterpret_cast<const char*>(&bytes[at + 4]), 4);
     if (crc32(&bytes[at + 4], length + 4) != big_endian(&bytes[at + 8 + length])) {
-      fail(path, "corrupt PNG (CRC error in " + type + " chunk at byte " + std::to_string(at) + ")");
+      fail(path, "corrupt PNG (CRC error in " + one_line(type) + " chunk at byte " + std::to_string(at) + ")");
     }
     at += length + 12;
     if (type == "IEND") return;
@@ -119,17 +121,7 @@ cv::Mat3b read_colour_png(const std::string& path, cv::Size expected) {
 void write_png_atomically(const std::string& path, const cv::Mat& image) {
   std::vector<unsigned char> bytes;
   if (!cv::imencode(".png", image, bytes)) fail(path, "cannot encode image as PNG");
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail(temporary, "cannot be opened for writing");
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) fail(temporary, "write failed (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) fail(path, "cannot rename temporary file into place: " + ec.message());
+  write_file_durably(path, bytes);
 }
 
 }  // namespace rdsf
