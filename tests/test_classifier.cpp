@@ -198,6 +198,8 @@ TEST(BoostTraining, SameSeedSameModelFile) {
 TEST(BoostTraining, ValidationFiguresProgressAndEarlyStopping) {
   const test::ToyData toy = test::separable_toy(400, 600, 31);
   BoostTrainingParams params;
+  params.depth = 1;  // the thesis's weak learner: one round separates the toy exactly
+  params.learning_rate = 1.0;
   params.rounds = 12;
   params.report_every = 5;
   params.early_stopping = 3;

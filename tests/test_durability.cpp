@@ -255,7 +255,7 @@ struct TrainSession {
   std::string command() const {
     return test::quote(test::program("rdsf-train")) + " --models-dir " + test::quote(out() + "/models") +
            " --pos " + test::quote(dir / "pos") + " --neg " + test::quote(dir / "neg") +
-           " --name toy --rounds 3 --threads 1";
+           " --name toy --rounds 3 --threads 1 --group-frames 2";  // 10 validation groups of 2 frames
   }
 };
 
