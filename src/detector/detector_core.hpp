@@ -22,6 +22,11 @@ struct DetectorParams {
   FeatureSpec features;
 };
 
+/// `params` with every departure from the thesis turned off (README "Departures from the thesis"): no
+/// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no
+/// splitting. Everything else (the thesis's own parameters) is kept.
+DetectorParams thesis_params(DetectorParams params = {});
+
 /// Wall-clock time of each stage for one frame, in milliseconds.
 struct StageTimes {
   double segmentation_ms = 0;
