@@ -8,7 +8,7 @@ int main(int argc, char** argv) {
     namespace po = rdsf::cli::po;
     rdsf::DetectOptions o;
     rdsf::EmpiricalCalibration calibration;
-    std::string thresholds;
+    std::string thresholds, box = "fitted";
     po::options_description options("rdsf-detect");
     options.add_options()
         ("source", po::value(&o.source)->required(),
@@ -21,7 +21,12 @@ int main(int argc, char** argv) {
         ("out", po::value(&o.out_csv), "write one row per candidate to this CSV")
         ("save-dir", po::value(&o.save_dir), "write NAME.detections.png per frame here")
         ("show", po::bool_switch(&o.show), "show each frame in a window (q or Esc stops)")
-        ("truth", po::value(&o.truth_csv), "boxes.csv of the source: evaluate the models (needs --report-dir)")
+        ("truth", po::value(&o.truth_csv),
+         "boxes.csv of the source: evaluate the models (needs --report-dir); without a model, count the people "
+         "with a candidate")
+        ("box", po::value(&box)->default_value(box),
+         "the box detections report (CSV, pictures, tracking, evaluation): fitted (the object's extent) or strict "
+         "(the thesis's height x height/2)")
         ("report-dir", po::value(&o.report_dir), "write metrics.csv, summary.txt, roc.png, det.png here")
         ("thresholds", po::value(&thresholds),
          "evaluation sweep: 40,20,0 or from:to:step (default the thesis's 40 20 10 0 -5 ... -40 -60)")
@@ -40,6 +45,8 @@ int main(int argc, char** argv) {
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     rdsf::cli::apply_calibration(o.camera, calibration);
     o.thresholds = rdsf::cli::parse_thresholds(thresholds);
+    if (box != "fitted" && box != "strict") throw rdsf::cli::UsageError("--box: fitted or strict, got '" + box + "'");
+    o.pipeline.detector.reported_box = box == "strict" ? rdsf::BoxKind::strict : rdsf::BoxKind::fitted;
     return rdsf::run_detect(o);
   });
 }

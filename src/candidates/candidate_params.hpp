@@ -35,6 +35,9 @@ struct CandidateParams {
   /// depth of its own run (a layer spans up to candidate_threshold of depth, and a person at its far end
   /// looks shorter than they are). false: the layer's mean depth only (the thesis).
   bool height_at_column_depth = true;
+  /// ... in layers nearer than this (mm) only: the Kinect's people range; far layers are walls, and their
+  /// pieces would become candidates.
+  double column_depth_layers_below_mm = 4500.0;
   /// Fitted extent: an object's fitted box reaches over the columns beside it that hold the layer's pixels
   /// within its rows (arms, hands: too short to pass threshold_height) up to this far each side (cm). 0:
   /// the fitted box spans the passing columns only.
@@ -47,6 +50,8 @@ struct CandidateParams {
   /// together no wider than max_person_width_cm (a person whose torso columns fail threshold_height
   /// because the legs part below). false: the thesis's objects.
   bool join_pieces = true;
+  /// Objects wider than this over their passing columns (cm) are walls, not candidates. 0 turns it off.
+  double max_object_width_cm = 300.0;
   /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting,
   /// narrower pieces may be joined.
   double max_person_width_cm = 100.0;

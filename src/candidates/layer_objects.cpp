@@ -19,6 +19,7 @@ class ObjectShaper {
       // A column that fails at the layer's mean depth may pass at its own (a layer spans up to
       // candidate_threshold of depth): measured where it could, at the median depth of its run.
       if (!passes && params.height_at_column_depth && length > 0 &&
+          layer.depth_mm_mean < params.column_depth_layers_below_mm &&
           layer.camera->height_cm(length, layer.depth_mm_max) >= min_height_cm) {
         passes = layer.camera->height_cm(length, column_depth_mm(c, 4)) >= min_height_cm;
       }
@@ -49,6 +50,7 @@ class ObjectShaper {
     std::vector<LayerObject> kept;
     for (const LayerObject& o : found) {
       if (!wide_enough(o)) continue;
+      if (params_.max_object_width_cm > 0 && cm(o.last - o.first + 1) > params_.max_object_width_cm) continue;
       std::vector<LayerObject> pieces;
       if (split_enabled()) split(o, pieces);
       if (pieces.empty() || params_.split_keep_whole) kept.push_back(o);

@@ -16,12 +16,14 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 
 DetectorParams thesis_params(DetectorParams params) {
   params.segmentation.left_border_jump = false;
+  params.reported_box = BoxKind::strict;
   CandidateParams& c = params.candidates;
   c.occlusion_gap_cm = 0;
   c.floor_tolerance_mm = 0;
   c.height_at_column_depth = false;
   c.fit_reach_cm = 0;
   c.join_pieces = false;
+  c.max_object_width_cm = 0;
   c.split_depth_jump_mm = 0;
   c.split_valley_cm = 0;
   c.split_step_cm = 0;

@@ -20,6 +20,9 @@ struct DetectorParams {
   SegmentationParams segmentation;
   CandidateParams candidates;
   FeatureSpec features;
+  /// The box detections, CSVs, pictures, tracking and the evaluation report (the crop always comes from
+  /// the strict box's window). The thesis reports the strict box.
+  BoxKind reported_box = BoxKind::fitted;
 };
 
 /// `params` with every departure from the thesis turned off (README "Departures from the thesis"): no
