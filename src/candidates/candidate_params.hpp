@@ -51,7 +51,7 @@ struct CandidateParams {
   /// because the legs part below). false: the thesis's objects.
   bool join_pieces = true;
   /// Objects wider than this over their passing columns (cm) are walls, not candidates. 0 turns it off.
-  double max_object_width_cm = 300.0;
+  double max_object_width_cm = 400.0;
   /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting,
   /// narrower pieces may be joined.
   double max_person_width_cm = 100.0;
