@@ -33,6 +33,7 @@ void apply_thesis_preset(po::variables_map& values) {
   set("fit_depth_step", c.fit_depth_step_mm);
   set("join_pieces", c.join_pieces);
   set("max_object_width", c.max_object_width_cm);
+  set("min_fitted_width", c.min_fitted_width_cm);
   set("split_depth_jump", c.split_depth_jump_mm);
   set("split_valley", c.split_valley_cm);
   set("split_step", c.split_step_cm);
@@ -124,6 +125,8 @@ po::options_description detector_options(DetectorParams& p) {
        "fitted box: a piece's mean depth within this (mm) of its neighbour's; 0 = any")
       ("join_pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
        "objects whose fitted extents touch are one when no wider than max_person_width; 0 = thesis")
+      ("min_fitted_width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
+       "objects whose fitted box is narrower than this (cm) are not candidates (border objects exempt); 0 = thesis")
       ("max_object_width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),
        "objects wider than this (cm) are walls, not candidates; 0 = thesis (no limit)")
       ("max_person_width", po::value(&c.max_person_width_cm)->default_value(c.max_person_width_cm),

@@ -44,7 +44,7 @@ DetectorParams splitting() {
 
 TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
   DepthFrame frame = test::wall_frame(4000);
-  const cv::Rect person(300, 60, 50, 400);  // 19 cm x 152 cm at 2 m: side-on
+  const cv::Rect person(300, 60, 60, 400);  // 23 cm x 152 cm at 2 m: side-on
   test::paint(frame, person, 2000);
   const auto found = at_depth(frame, 2000);
   ASSERT_EQ(found.size(), 1u);
@@ -54,7 +54,7 @@ TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
   EXPECT_LE(std::abs(fitted.y - person.y), person.height / 10);
   EXPECT_LE(std::abs(fitted.height - person.height), person.height / 10);
   EXPECT_LT(iou(found[0].strict_box, person), 0.5);  // height/2 wide: the thesis's box cannot match
-  EXPECT_EQ(found[0].strict_box, cv::Rect(225, 60, 200, 400));  // the crop's box is unchanged
+  EXPECT_EQ(found[0].strict_box, cv::Rect(230, 60, 200, 400));  // the crop's box is unchanged
 }
 
 TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
@@ -144,6 +144,15 @@ TEST(CandidateShapes, PeopleCutByTheBorderKeepABoxInsideTheImage) {
   EXPECT_EQ(found[1].fitted_box, cv::Rect(610, 100, 30, 380));
 }
 
+TEST(CandidateShapes, NarrowPiecesAreNotCandidatesUnlessCutByTheBorder) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 60, 30, 400}, 2000);  // 11 cm wide: a post, not a person
+  EXPECT_TRUE(at_depth(frame, 2000).empty());
+  DetectorParams off;
+  off.candidates.min_fitted_width_cm = 0;
+  EXPECT_EQ(at_depth(frame, 2000, off).size(), 1u);
+}
+
 TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   const DetectorParams t = thesis_params();
   EXPECT_FALSE(t.segmentation.left_border_jump);
@@ -153,6 +162,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_EQ(t.candidates.fit_reach_cm, 0);
   EXPECT_FALSE(t.candidates.join_pieces);
   EXPECT_EQ(t.candidates.max_object_width_cm, 0);
+  EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);
   EXPECT_EQ(t.candidates.split_depth_jump_mm + t.candidates.split_valley_cm + t.candidates.split_step_cm, 0);
   EXPECT_EQ(t.reported_box, BoxKind::strict);
   EXPECT_EQ(DetectorParams().reported_box, BoxKind::fitted);

@@ -37,7 +37,7 @@ struct CandidateParams {
   bool height_at_column_depth = true;
   /// ... in layers nearer than this (mm) only: the Kinect's people range; far layers are walls, and their
   /// pieces would become candidates.
-  double column_depth_layers_below_mm = 4500.0;
+  double column_depth_layers_below_mm = 3500.0;
   /// Fitted extent: an object's fitted box reaches over the columns beside it that hold the layer's pixels
   /// within its rows (arms, hands: too short to pass threshold_height) up to this far each side (cm). 0:
   /// the fitted box spans the passing columns only.
@@ -50,6 +50,10 @@ struct CandidateParams {
   /// together no wider than max_person_width_cm (a person whose torso columns fail threshold_height
   /// because the legs part below). false: the thesis's objects.
   bool join_pieces = true;
+  /// An object whose fitted extent (arms included) is narrower than this (cm) is not a candidate: pieces
+  /// of furniture, not people, whose narrowest (side-on) view is wider. Objects touching the left or right
+  /// image border are exempt (a person cut by it looks narrow). 0 turns it off.
+  double min_fitted_width_cm = 15.0;
   /// Objects wider than this over their passing columns (cm) are walls, not candidates. 0 turns it off.
   double max_object_width_cm = 400.0;
   /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting,

@@ -51,6 +51,8 @@ class ObjectShaper {
     for (const LayerObject& o : found) {
       if (!wide_enough(o)) continue;
       if (params_.max_object_width_cm > 0 && cm(o.last - o.first + 1) > params_.max_object_width_cm) continue;
+      const bool at_border = o.fit_first == 0 || o.fit_last == width_ - 1;  // a person cut by it looks narrow
+      if (!at_border && cm(o.fit_last - o.fit_first + 1) < params_.min_fitted_width_cm) continue;
       std::vector<LayerObject> pieces;
       if (split_enabled()) split(o, pieces);
       if (pieces.empty() || params_.split_keep_whole) kept.push_back(o);
