@@ -11,6 +11,8 @@
 //   3. splitting: an object wider than a person is cut where the layer's depth jumps between neighbouring
 //      columns (split_depth_jump_mm) and at deep valleys of its column-height profile (split_valley_cm);
 //      the pieces become objects, and the whole stays one too when split_keep_whole is set.
+// Objects wider than max_object_width_cm (walls) and, unless they touch the left or right border, objects
+// whose fitted extent is narrower than min_fitted_width_cm (posts, furniture legs) are dropped.
 #include <vector>
 
 #include <opencv2/core.hpp>
