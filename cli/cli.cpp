@@ -125,6 +125,8 @@ po::options_description detector_options(DetectorParams& p) {
        "fitted box: a piece's mean depth within this (mm) of its neighbour's; 0 = any")
       ("join_pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
        "objects whose fitted extents touch are one when no wider than max_person_width; 0 = thesis")
+      ("join_narrow_layers_below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
+       "pieces each narrower than min_width join only in layers nearer than this (mm)")
       ("min_fitted_width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
        "objects whose fitted box is narrower than this (cm) are not candidates (border objects exempt); 0 = thesis")
       ("max_object_width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),

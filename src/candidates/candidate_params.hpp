@@ -50,6 +50,8 @@ struct CandidateParams {
   /// together no wider than max_person_width_cm (a person whose torso columns fail threshold_height
   /// because the legs part below). false: the thesis's objects.
   bool join_pieces = true;
+  /// ... pieces that are each narrower than min_width_cm join only in layers nearer than this (mm).
+  double join_narrow_layers_below_mm = 3500.0;
   /// An object whose fitted extent (arms included) is narrower than this (cm) is not a candidate: pieces
   /// of furniture, not people, whose narrowest (side-on) view is wider. Objects touching the left or right
   /// image border are exempt (a person cut by it looks narrow). 0 turns it off.

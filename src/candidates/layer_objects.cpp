@@ -159,7 +159,11 @@ class ObjectShaper {
     for (const LayerObject& o : objects) {
       if (!joined.empty()) {
         LayerObject& previous = joined.back();
-        const bool touch = o.fit_first <= previous.fit_last + 1;
+        // Pieces each too narrow to be a candidate alone join only in near layers (farther they are the
+        // legs of furniture more often than a person's).
+        const bool touch = o.fit_first <= previous.fit_last + 1 &&
+                           (wide_enough(previous) || wide_enough(o) ||
+                            layer_.depth_mm_mean < params_.join_narrow_layers_below_mm);
         if (touch && cm(o.fit_last - previous.fit_first + 1) <= params_.max_person_width_cm) {
           const int fit_first = previous.fit_first, fit_top = std::min(previous.fit_top, o.fit_top);
           previous = span(previous.first, o.last);
