@@ -11,6 +11,38 @@
 
 namespace rdsf::cli {
 
+namespace {
+
+// --thesis: every departure option not given explicitly takes the thesis's value (thesis_params()).
+// Applied to the parsed values before po::notify stores them, so explicit options still win.
+void apply_thesis_preset(po::variables_map& values) {
+  const auto it = values.find("thesis");
+  if (it == values.end() || !it->second.as<bool>()) return;
+  const DetectorParams thesis = thesis_params();
+  const CandidateParams& c = thesis.candidates;
+  auto set = [&values](const char* name, const boost::any& value) {
+    const auto option = values.find(name);
+    // In place: the entry keeps its link to the bound variable, which po::notify then stores.
+    if (option != values.end() && option->second.defaulted()) option->second.value() = value;
+  };
+  set("left_border_jump", thesis.segmentation.left_border_jump);
+  set("occlusion_gap", c.occlusion_gap_cm);
+  set("floor_tolerance", c.floor_tolerance_mm);
+  set("height_at_column_depth", c.height_at_column_depth);
+  set("fit_reach", c.fit_reach_cm);
+  set("fit_depth_step", c.fit_depth_step_mm);
+  set("join_pieces", c.join_pieces);
+  set("max_object_width", c.max_object_width_cm);
+  set("min_fitted_width", c.min_fitted_width_cm);
+  set("split_depth_jump", c.split_depth_jump_mm);
+  set("split_valley", c.split_valley_cm);
+  set("split_step", c.split_step_cm);
+  set("split_keep_whole", c.split_keep_whole);
+  set("box", std::string("strict"));
+}
+
+}  // namespace
+
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional) {
   po::options_description general("General");
@@ -37,6 +69,7 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
         throw UsageError(path + ": " + e.what());
       }
     }
+    apply_thesis_preset(values);
     po::notify(values);
   } catch (const po::error& e) {
     throw UsageError(std::string(e.what()) + " (see " + info.name + " --help)");
@@ -57,7 +90,9 @@ po::options_description detector_options(DetectorParams& p) {
       ("candidate_threshold", po::value(&s.candidate_threshold_mm)->default_value(s.candidate_threshold_mm),
        "sorted depth candidates are averaged in runs spanning at most this (mm)")
       ("kmeans_iterations", po::value(&s.max_iterations)->default_value(s.max_iterations),
-       "upper bound of k-means iterations");
+       "upper bound of k-means iterations")
+      ("left_border_jump", po::value(&s.left_border_jump)->default_value(s.left_border_jump),
+       "the left image border counts as a depth jump; 0 = thesis");
   po::options_description candidates("Candidates (shape)");
   auto& c = p.candidates;
   candidates.add_options()
@@ -79,7 +114,37 @@ po::options_description detector_options(DetectorParams& p) {
       ("floor_tolerance", po::value(&c.floor_tolerance_mm)->default_value(c.floor_tolerance_mm),
        "cut bottom rows nearer than the object's median depth by more than this (mm): floor; 0 = thesis")
       ("window_scale", po::value(&c.window_scale)->default_value(c.window_scale),
-       "window = strict box enlarged by this factor");
+       "window = strict box enlarged by this factor")
+      ("height_at_column_depth", po::value(&c.height_at_column_depth)->default_value(c.height_at_column_depth),
+       "a column failing threshold_height at the layer's mean depth is measured at its own; 0 = thesis")
+      ("column_depth_layers_below", po::value(&c.column_depth_layers_below_mm)->default_value(c.column_depth_layers_below_mm),
+       "... in layers nearer than this (mm) only")
+      ("fit_reach", po::value(&c.fit_reach_cm)->default_value(c.fit_reach_cm),
+       "fitted box: reach (cm) over attached pieces (arms) each side; 0 = passing columns only")
+      ("fit_depth_step", po::value(&c.fit_depth_step_mm)->default_value(c.fit_depth_step_mm),
+       "fitted box: a piece's mean depth within this (mm) of its neighbour's; 0 = any")
+      ("join_pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
+       "objects whose fitted extents touch are one when no wider than max_person_width; 0 = thesis")
+      ("join_narrow_layers_below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
+       "pieces each narrower than min_width join only in layers nearer than this (mm)")
+      ("min_fitted_width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
+       "objects whose fitted box is narrower than this (cm) are not candidates (border objects exempt); 0 = thesis")
+      ("max_object_width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),
+       "objects wider than this (cm) are walls, not candidates; 0 = thesis (no limit)")
+      ("max_person_width", po::value(&c.max_person_width_cm)->default_value(c.max_person_width_cm),
+       "the widest person (cm): wider objects are tried for splitting")
+      ("split_depth_jump", po::value(&c.split_depth_jump_mm)->default_value(c.split_depth_jump_mm),
+       "split a wide object where its column depth jumps by more than this (mm); 0 = off")
+      ("split_valley", po::value(&c.split_valley_cm)->default_value(c.split_valley_cm),
+       "... or at a valley of its height profile this deep (cm); 0 = off")
+      ("split_step", po::value(&c.split_step_cm)->default_value(c.split_step_cm),
+       "... or at a step of its height profile this high (cm); 0 = off")
+      ("min_part_width", po::value(&c.min_part_width_cm)->default_value(c.min_part_width_cm),
+       "the narrowest piece a split leaves (cm)")
+      ("split_keep_whole", po::value(&c.split_keep_whole)->default_value(c.split_keep_whole),
+       "a split object stays a candidate besides its pieces")
+      ("thesis", po::bool_switch(),
+       "the thesis's exact behaviour: every departure off (options given explicitly still win)");
   po::options_description all;
   all.add(segmentation).add(candidates);
   return all;

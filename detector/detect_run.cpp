@@ -15,6 +15,7 @@
 #include "detector/overlay.hpp"
 #include "evaluation/ground_truth.hpp"
 #include "evaluation/threshold_sweep.hpp"
+#include "candidates/candidate_finder.hpp"
 #include "frame/depth_png.hpp"
 #include "frame/frame_source.hpp"
 #include "gui/display.hpp"
@@ -34,6 +35,40 @@ void print_times(const PipelineTimes& t, std::int64_t frames, std::int64_t candi
                t.features_ms / n, t.classifier_ms / n, t.tracking_ms / n, t.total_ms() / n);
 }
 
+// People of the truth with a candidate whose box reaches IoU >= 0.5 (the reported box and the other one),
+// and the people without one: what the candidates allow before any classifier is asked.
+class CandidateCoverage {
+ public:
+  void add(const std::vector<TruthBox>& people, const std::vector<Candidate>& candidates, BoxKind box) {
+    const BoxKind other = box == BoxKind::fitted ? BoxKind::strict : BoxKind::fitted;
+    for (const TruthBox& person : people) {
+      if (person.ignored) continue;
+      double best = 0, best_other = 0;
+      for (const Candidate& c : candidates) {
+        best = std::max(best, iou(reported_box(c, box), person.box));
+        best_other = std::max(best_other, iou(reported_box(c, other), person.box));
+      }
+      ++people_;
+      found_ += best >= 0.5 ? 1 : 0;
+      found_other_ += best_other >= 0.5 ? 1 : 0;
+    }
+  }
+  std::string summary(BoxKind box) const {
+    const char* name = box == BoxKind::fitted ? "fitted" : "strict";
+    const char* other = box == BoxKind::fitted ? "strict" : "fitted";
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "rdsf-detect: %lld of %lld people have a candidate (%s box IoU >= 0.5), %lld without; %s box: "
+                  "%lld\n",
+                  static_cast<long long>(found_), static_cast<long long>(people_), name,
+                  static_cast<long long>(people_ - found_), other, static_cast<long long>(found_other_));
+    return text;
+  }
+
+ private:
+  std::int64_t people_ = 0, found_ = 0, found_other_ = 0;
+};
+
 std::string model_label(const BoostedModel& model) {
   return model.name().empty() ? model.path() : model.name() + " v" + std::to_string(model.version());
 }
@@ -42,9 +77,12 @@ std::string model_label(const BoostedModel& model) {
 
 int run_detect(const DetectOptions& o) {
   const bool evaluate = !o.truth_csv.empty();
-  if (evaluate && o.report_dir.empty()) throw Error("--truth needs --report-dir DIR for the evaluation report");
+  if (evaluate && !o.models.empty() && o.report_dir.empty()) {
+    throw Error("--truth with a --model needs --report-dir DIR for the evaluation report");
+  }
   if (!o.report_dir.empty() && !evaluate) throw Error("--report-dir needs --truth boxes.csv");
-  if (evaluate && o.models.empty()) throw Error("--truth needs at least one --model to evaluate");
+  const BoxKind box = o.pipeline.detector.reported_box;
+  if (!o.report_dir.empty() && o.models.empty()) throw Error("--report-dir needs at least one --model to evaluate");
   if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate) {
     throw Error("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
   }
@@ -66,7 +104,8 @@ int run_detect(const DetectOptions& o) {
   PeoplePipeline pipeline(o.pipeline, models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.camera);
   std::unique_ptr<DetectionCsv> csv;
-  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty());
+  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), box);
+  CandidateCoverage coverage;
   if (!o.save_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(o.save_dir, ec);
@@ -94,9 +133,10 @@ int run_detect(const DetectOptions& o) {
     }
     if (csv) csv->write_frame(frame.name, found, outcomes);
     if (evaluate) {
+      coverage.add(truth.in(frame.name), found, box);
       std::vector<EvaluatedCandidate> base;
       for (std::size_t i = 0; i < found.size(); ++i) {
-        base.push_back({found[i].strict_box, found[i].layer_depth_mm, 0.0,
+        base.push_back({reported_box(found[i], box), found[i].layer_depth_mm, 0.0,
                         ColourHistogram::of(found[i].colour_crop, found[i].depth_crop,
                                             o.pipeline.tracking.histogram_bins)});
       }
@@ -109,8 +149,8 @@ int run_detect(const DetectOptions& o) {
     }
     if (!o.save_dir.empty() || o.show) {
       const cv::Mat3b picture = models.empty()
-                                    ? render_candidates(frame, processed.analysis.segmentation, found)
-                                    : render_people(frame, processed, pipeline.tracker());
+                                    ? render_candidates(frame, processed.analysis.segmentation, found, nullptr, box)
+                                    : render_people(frame, processed, pipeline.tracker(), box);
       if (!o.save_dir.empty()) {
         write_png_atomically((std::filesystem::path(o.save_dir) / (frame.name + ".detections.png")).string(), picture);
       }
@@ -134,7 +174,8 @@ int run_detect(const DetectOptions& o) {
   if (!o.out_csv.empty()) std::cerr << "rdsf-detect: wrote " << o.out_csv << "\n";
   if (!o.save_dir.empty()) std::cerr << "rdsf-detect: pictures in " << o.save_dir << "\n";
 
-  if (evaluate) {
+  if (evaluate) std::cerr << coverage.summary(box);
+  if (evaluate && !models.empty()) {
     std::vector<SweepResult> results;
     for (std::size_t m = 0; m < models.size(); ++m) {
       const BoostedModel& model = models[m];

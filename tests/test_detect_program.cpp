@@ -54,12 +54,38 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = read_file(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "frame,candidate,x,y,w,h,depth_mm,score");
-  EXPECT_NE(csv.find("scene,0,230,100,180,360,2000,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("scene,0,300,100,40,360,2000,\n"), std::string::npos) << csv;  // the fitted box
   EXPECT_EQ(count_lines(csv), 1 + 3);  // header, the person, two wall pieces
   const cv::Mat picture = cv::imread(dir / "pics/scene.detections.png");
   ASSERT_FALSE(picture.empty());
   EXPECT_EQ(picture.size(), cv::Size(640, 480));
   EXPECT_FALSE(std::filesystem::exists(dir / "out.csv.partial"));
+}
+
+TEST(DetectProgram, BoxOptionAndThesisPreset) {
+  test::TempDir dir;
+  write_scene(dir);
+  const std::string base = detect() + " --source " + test::quote(dir.path().string()) + " --force --out ";
+  ASSERT_EQ(test::run(base + test::quote(dir / "strict.csv") + " --box strict").exit_code, 0);
+  EXPECT_NE(read_file(dir / "strict.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
+  ASSERT_EQ(test::run(base + test::quote(dir / "thesis.csv") + " --thesis").exit_code, 0);
+  EXPECT_NE(read_file(dir / "thesis.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
+  // An explicit option wins over the preset.
+  ASSERT_EQ(test::run(base + test::quote(dir / "mixed.csv") + " --thesis --box fitted").exit_code, 0);
+  EXPECT_NE(read_file(dir / "mixed.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);
+  EXPECT_EQ(test::run(base + test::quote(dir / "bad.csv") + " --box tight").exit_code, 2);
+}
+
+TEST(DetectProgram, TruthWithoutAModelCountsThePeopleWithACandidate) {
+  test::TempDir dir;
+  write_scene(dir);
+  std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\nscene,1,300,100,40,360\n";
+  const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --truth " +
+                                      test::quote(dir / "boxes.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("1 of 1 people have a candidate (fitted box IoU >= 0.5), 0 without; strict box: 0"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(DetectProgram, ConfigFileAndCommandLineOverride) {

@@ -36,14 +36,16 @@ std::map<std::string, std::vector<cv::Rect>> read_boxes(const std::filesystem::p
 
 }  // namespace
 
-TEST(RealData, CandidatesCoverAtLeast85PercentOfThePeople) {
+// The floor: 47 of the folder's 49 people have a candidate whose reported (fitted) box reaches IoU >= 0.5
+// (43 with the thesis's strict box; main had 43 of 49 with the strict box, issue 14).
+TEST(RealData, CandidatesCoverAtLeast47OfThe49People) {
   RDSF_REQUIRE_REALDATA();
   const auto truth = read_boxes(test::realdata_dir() / "people" / "boxes.csv");
   ASSERT_FALSE(truth.empty());
   const DetectorCore core;
   auto source = open_frame_source((test::realdata_dir() / "people").string());
   std::map<std::string, std::pair<int, int>> per_group;  // group -> (found, people)
-  int found = 0, people = 0;
+  int found = 0, found_strict = 0, people = 0;
   DepthFrame frame;
   while (source->next(frame)) {
     const FrameAnalysis analysis = core.analyse(frame, false);
@@ -51,10 +53,14 @@ TEST(RealData, CandidatesCoverAtLeast85PercentOfThePeople) {
     const auto it = truth.find(frame.name);
     if (it == truth.end()) continue;
     for (const cv::Rect& person : it->second) {
-      double best = 0;
-      for (const Candidate& c : analysis.candidates) best = std::max(best, iou(person, c.strict_box));
+      double best = 0, best_strict = 0;
+      for (const Candidate& c : analysis.candidates) {
+        best = std::max(best, iou(person, reported_box(c, core.params().reported_box)));
+        best_strict = std::max(best_strict, iou(person, c.strict_box));
+      }
       const bool hit = best >= 0.5;
       found += hit;
+      found_strict += best_strict >= 0.5;
       ++people;
       per_group[group].first += hit;
       ++per_group[group].second;
@@ -65,10 +71,11 @@ TEST(RealData, CandidatesCoverAtLeast85PercentOfThePeople) {
     std::cout << "  " << group << ": " << counts.first << "/" << counts.second << " people have a candidate\n";
     RecordProperty("recall_" + group, std::to_string(counts.first) + "/" + std::to_string(counts.second));
   }
-  const double recall = static_cast<double>(found) / people;
-  std::cout << "  all: " << found << "/" << people << " = " << recall << "\n";
-  EXPECT_EQ(people, 35);
-  EXPECT_GE(recall, 0.85);
+  std::cout << "  all: " << found << "/" << people << " (fitted box), " << found_strict << " (strict box)\n";
+  RecordProperty("recall_strict_box", std::to_string(found_strict) + "/" + std::to_string(people));
+  EXPECT_EQ(people, 49);
+  EXPECT_GE(found, 47);
+  EXPECT_GE(found_strict, 43);
 }
 
 TEST(RealData, CandidatesPerFrameInEmptyRooms) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "candidates/column_heights.hpp"
+#include "candidates/layer_objects.hpp"
 
 namespace rdsf {
 
@@ -91,55 +92,29 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
   }
   const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px);
   const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);
-  const int width = frame.depth_mm.cols;
 
   for (const DepthLayer& layer : segmentation.layers) {
     const auto& column = runs[static_cast<std::size_t>(layer.label)];
     const double depth_mm = layer.mean_depth_mm;
-    const double min_height_cm = params.threshold_height_cm(depth_mm);
-    auto passes = [&](int c) {
-      return frame.camera.height_cm(column[static_cast<std::size_t>(c)].length(), depth_mm) >= min_height_cm;
-    };
-    int c = 0;
-    while (c < width) {
-      if (!passes(c)) {
-        ++c;
-        continue;
-      }
-      // An object: passing columns joined across gaps of at most column_gap columns.
-      const int first = c;
-      int last = c;
-      for (int next = c + 1; next < width && next - last - 1 <= params.column_gap; ++next) {
-        if (passes(next)) last = next;
-      }
-      c = last + 1;
-      const double width_cm = frame.camera.width_cm(last - first + 1, depth_mm);
-      if (width_cm < params.min_width_cm) continue;
-
-      int top = frame.depth_mm.rows, bottom = -1, tallest = 0;
-      for (int x = first; x <= last; ++x) {
-        if (!passes(x)) continue;
-        const ColumnRun& run = column[static_cast<std::size_t>(x)];
-        top = std::min(top, run.top);
-        bottom = std::max(bottom, run.bottom);
-        tallest = std::max(tallest, run.length());
-      }
-      // The highest point's column: the middle of the passing columns that reach the top row.
-      std::vector<int> at_top;
-      for (int x = first; x <= last; ++x) {
-        if (passes(x) && column[static_cast<std::size_t>(x)].top == top) at_top.push_back(x);
-      }
-      const int highest = at_top[at_top.size() / 2];
+    const LayerView view{&column,  &segmentation.labels, &frame.depth_mm, layer.label,
+                         depth_mm, static_cast<double>(layer.max_depth_mm), &frame.camera};
+    const LayerObjects found = layer_objects(view, params);
+    auto passes = [&](int c) { return found.passing[static_cast<std::size_t>(c)] != 0; };
+    for (const LayerObject& object : found.objects) {
+      int bottom = object.bottom;
+      const int top = object.top;
       if (params.floor_tolerance_mm > 0) {
-        bottom = trim_floor(frame.depth_mm, segmentation.labels, layer.label, first, last, top, bottom,
-                            params.floor_tolerance_mm, passes);
+        bottom = trim_floor(frame.depth_mm, segmentation.labels, layer.label, object.first, object.last, top,
+                            bottom, params.floor_tolerance_mm, passes);
       }
-
       Candidate candidate;
       const int box_height = bottom - top + 1;
       const int box_width = std::max(1, static_cast<int>(std::lround(box_height / 2.0)));
-      const cv::Rect strict(highest - box_width / 2, top, box_width, box_height);
+      const cv::Rect strict(object.highest - box_width / 2, top, box_width, box_height);
       candidate.strict_box = strict & image;
+      candidate.fitted_box =
+          cv::Rect(object.fit_first, object.fit_top, object.fit_last - object.fit_first + 1, bottom - object.fit_top + 1) &
+          image;
       const double cx = strict.x + strict.width / 2.0;
       const double cy = strict.y + strict.height / 2.0;
       const int window_width = std::max(1, static_cast<int>(std::lround(strict.width * params.window_scale)));
@@ -150,9 +125,10 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       candidate.window = candidate.window_unclipped & image;
       candidate.layer = layer.label;
       candidate.layer_depth_mm = depth_mm;
-      candidate.height_cm = frame.camera.height_cm(tallest, depth_mm);
-      candidate.width_cm = width_cm;
-      candidate.highest_column = highest;
+      candidate.height_cm = frame.camera.height_cm(object.tallest, depth_mm);
+      candidate.width_cm = frame.camera.width_cm(object.last - object.first + 1, depth_mm);
+      candidate.highest_column = object.highest;
+      candidate.part = object.part;
       cut_crops(frame, segmentation.labels, layer.label, candidate.window_unclipped, crop_size, candidate);
       candidates.push_back(std::move(candidate));
     }

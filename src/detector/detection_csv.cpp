@@ -20,8 +20,8 @@ std::string DetectionCsv::header(bool with_model) {
                     : "frame,candidate,x,y,w,h,depth_mm,score";
 }
 
-DetectionCsv::DetectionCsv(const std::string& path, bool overwrite, bool with_model)
-    : file_(path, overwrite), with_model_(with_model) {
+DetectionCsv::DetectionCsv(const std::string& path, bool overwrite, bool with_model, BoxKind box)
+    : file_(path, overwrite), with_model_(with_model), box_(box) {
   file_.stream() << header(with_model) << "\n";
   file_.flush();
 }
@@ -32,7 +32,7 @@ void DetectionCsv::write_frame(const std::string& frame, const std::vector<Candi
   const std::string name = csv_field(frame);
   char number[32];
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const cv::Rect& b = candidates[i].strict_box;
+    const cv::Rect& b = reported_box(candidates[i], box_);
     out << name << ',' << i << ',' << b.x << ',' << b.y << ',' << b.width << ',' << b.height << ','
         << std::lround(candidates[i].layer_depth_mm) << ',';
     if (i < outcomes.size()) {

@@ -2,7 +2,7 @@
 // The detector's CSV output, one row per candidate:
 //   frame,candidate,x,y,w,h,depth_mm,score                       (no model: score empty)
 //   frame,candidate,x,y,w,h,depth_mm,score,person,distance_cm    (with a model)
-// x,y,w,h = strict box in pixels; person = tracked person id when the candidate is a detection (score >=
+// x,y,w,h = the reported box in pixels (the fitted box, or the strict box with BoxKind::strict); person = tracked person id when the candidate is a detection (score >=
 // threshold), else empty; distance_cm = distance that person has covered so far. Written through
 // AtomicTextFile (FILE.partial, renamed when complete), flushed after every frame.
 #include <string>
@@ -21,7 +21,7 @@ struct CandidateOutcome {
 
 class DetectionCsv {
  public:
-  DetectionCsv(const std::string& path, bool overwrite, bool with_model);
+  DetectionCsv(const std::string& path, bool overwrite, bool with_model, BoxKind box = BoxKind::fitted);
   /// Writes one row per candidate and flushes. `outcomes` is empty without a model, else one per candidate.
   void write_frame(const std::string& frame, const std::vector<Candidate>& candidates,
                    const std::vector<CandidateOutcome>& outcomes = {});
@@ -32,6 +32,7 @@ class DetectionCsv {
  private:
   AtomicTextFile file_;
   bool with_model_;
+  BoxKind box_;
 };
 
 /// A CSV field: quoted (with doubled quotes) when it holds a comma, quote or line break.

@@ -14,6 +14,24 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+DetectorParams thesis_params(DetectorParams params) {
+  params.segmentation.left_border_jump = false;
+  params.reported_box = BoxKind::strict;
+  CandidateParams& c = params.candidates;
+  c.occlusion_gap_cm = 0;
+  c.floor_tolerance_mm = 0;
+  c.height_at_column_depth = false;
+  c.fit_reach_cm = 0;
+  c.join_pieces = false;
+  c.max_object_width_cm = 0;
+  c.min_fitted_width_cm = 0;
+  c.split_depth_jump_mm = 0;
+  c.split_valley_cm = 0;
+  c.split_step_cm = 0;
+  c.split_keep_whole = false;
+  return params;
+}
+
 DetectorCore::DetectorCore(DetectorParams params) : params_(params), extractor_(params.features) {}
 
 FrameAnalysis DetectorCore::analyse(const DepthFrame& frame, bool with_features) const {

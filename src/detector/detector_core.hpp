@@ -20,7 +20,15 @@ struct DetectorParams {
   SegmentationParams segmentation;
   CandidateParams candidates;
   FeatureSpec features;
+  /// The box detections, CSVs, pictures, tracking and the evaluation report (the crop always comes from
+  /// the strict box's window). The thesis reports the strict box.
+  BoxKind reported_box = BoxKind::fitted;
 };
+
+/// `params` with every departure from the thesis turned off (README "Departures from the thesis"): no
+/// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no
+/// splitting. Everything else (the thesis's own parameters) is kept.
+DetectorParams thesis_params(DetectorParams params = {});
 
 /// Wall-clock time of each stage for one frame, in milliseconds.
 struct StageTimes {

@@ -42,19 +42,21 @@ cv::Mat3b render_layers(const DepthFrame& frame, const Segmentation& segmentatio
 }
 
 cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segmentation,
-                            const std::vector<Candidate>& candidates, const std::vector<double>* scores) {
+                            const std::vector<Candidate>& candidates, const std::vector<double>* scores,
+                            BoxKind box) {
   cv::Mat3b picture = render_layers(frame, segmentation);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     cv::rectangle(picture, c.window, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
-    cv::rectangle(picture, c.strict_box, cv::Scalar(0, 255, 255), 2, cv::LINE_AA);
+    const cv::Rect& shown = reported_box(c, box);
+    cv::rectangle(picture, shown, cv::Scalar(0, 255, 255), 2, cv::LINE_AA);
     char text[96];
     if (scores != nullptr && i < scores->size()) {
       std::snprintf(text, sizeof text, "#%zu %.1fm H=%.1f", i, c.layer_depth_mm / 1000.0, (*scores)[i]);
     } else {
       std::snprintf(text, sizeof text, "#%zu %.1fm", i, c.layer_depth_mm / 1000.0);
     }
-    const cv::Point at(c.strict_box.x + 2, std::max(12, c.strict_box.y - 4));
+    const cv::Point at(shown.x + 2, std::max(12, shown.y - 4));
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 255, 255), 1, cv::LINE_AA);
   }

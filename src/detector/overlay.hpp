@@ -19,9 +19,10 @@ cv::Mat3b render_layers(const DepthFrame& frame, const Segmentation& segmentatio
 /// Depth as a colour map (near = warm), black where there is no reading.
 cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm = 8000);
 
-/// render_layers() with each candidate's strict box (solid) and window (thin), and a label with its index,
-/// layer depth and, when `scores` is given, its score.
+/// render_layers() with each candidate's reported box (`box`: solid), its window (thin), and a label with
+/// its index, layer depth and, when `scores` is given, its score.
 cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segmentation,
-                            const std::vector<Candidate>& candidates, const std::vector<double>* scores = nullptr);
+                            const std::vector<Candidate>& candidates, const std::vector<double>* scores = nullptr,
+                            BoxKind box = BoxKind::fitted);
 
 }  // namespace rdsf

@@ -8,14 +8,15 @@
 
 namespace rdsf {
 
-cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed, const Tracker& tracker) {
+cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed, const Tracker& tracker,
+                        BoxKind kind) {
   cv::Mat3b picture = frame.has_colour() ? frame.bgr.clone() : colourise_depth(frame.depth_mm);
   cv::addWeighted(picture, 0.75, render_layers(frame, processed.analysis.segmentation), 0.25, 0.0, picture);
   const auto& candidates = processed.analysis.candidates;
   char text[96];
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (processed.person[i] != 0) continue;
-    const cv::Rect& box = candidates[i].strict_box;
+    const cv::Rect& box = reported_box(candidates[i], kind);
     cv::rectangle(picture, box, cv::Scalar(170, 170, 170), 1, cv::LINE_AA);
     if (i < processed.scores.size()) {
       std::snprintf(text, sizeof text, "%.1f", processed.scores[i]);
@@ -28,7 +29,7 @@ cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed,
     if (id == 0) continue;
     const TrackedPerson* person = tracker.person(id);
     const cv::Scalar colour = person != nullptr ? person->colour : cv::Scalar(0, 255, 0);
-    const cv::Rect& box = candidates[i].strict_box;
+    const cv::Rect& box = reported_box(candidates[i], kind);
     cv::rectangle(picture, box, colour, 3, cv::LINE_AA);
     std::snprintf(text, sizeof text, "person %d  %.2f m walked  H=%.1f", id,
                   person != nullptr ? person->distance_cm / 100.0 : 0.0, processed.scores[i]);

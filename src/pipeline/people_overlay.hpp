@@ -9,6 +9,7 @@
 
 namespace rdsf {
 
-cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed, const Tracker& tracker);
+cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed, const Tracker& tracker,
+                        BoxKind box = BoxKind::fitted);
 
 }  // namespace rdsf

@@ -54,7 +54,7 @@ PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
     if (out.scores[i] < threshold) continue;
     const Candidate& c = out.analysis.candidates[i];
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
-    detections.push_back({c.strict_box, c.layer_depth_mm, out.histograms[i]});
+    detections.push_back({reported_box(c, params_.detector.reported_box), c.layer_depth_mm, out.histograms[i]});
     which.push_back(i);
   }
   const std::vector<int> ids = tracker_.update(detections, frame.camera, frame.index);

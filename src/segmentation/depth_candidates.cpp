@@ -11,7 +11,7 @@ std::vector<int> scan_depth_candidates(const cv::Mat1w& depth_mm, const Segmenta
   const int step = std::max(1, p.row_step);
   for (int row = 0; row < depth_mm.rows; row += step) {
     const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(row);
-    for (int j = 0; j + p.n < width; ++j) {
+    for (int j = p.left_border_jump ? 0 : 1; j + p.n < width; ++j) {
       const int value = d[j];
       // The left image border counts as a jump: an object cut by it is seeded like one entered from the
       // right (a right-border object is seeded by its own left edge).

@@ -10,8 +10,8 @@ namespace rdsf {
 
 /// Scans every row_step-th row (starting at row 0) left to right. Pixel j is a depth candidate when
 /// |d[j] - d[j-1]| > depth_threshold_mm and d[j+1..j+n] all lie within range_threshold_mm of d[j] (a jump
-/// that holds). The first pixel of a row counts as a jump too (the image border), so that an object cut by
-/// the left border is seeded. Returns the candidate depths (mm) in scan order; 0 stands for a jump into "no reading".
+/// that holds). With left_border_jump the first pixel of a row counts as a jump too (the image border), so that
+/// an object cut by the left border is seeded. Returns the candidate depths (mm) in scan order; 0 stands for a jump into "no reading".
 std::vector<int> scan_depth_candidates(const cv::Mat1w& depth_mm, const SegmentationParams& params);
 
 /// Sorts the raw candidates, merges all zeros into one, and averages runs of sorted candidates that span

@@ -16,6 +16,10 @@ struct SegmentationParams {
   int range_threshold_mm = 60;
   /// Sorted depth candidates are averaged in runs that span at most this much depth (mm).
   int candidate_threshold_mm = 700;
+  /// The first pixel of a scanned row counts as a depth jump (the left image border), so that an object cut
+  /// by the left border is seeded like one cut by the right border (seeded by its own left edge). false:
+  /// the thesis's scan (jumps between neighbouring pixels only).
+  bool left_border_jump = true;
   /// Upper bound of k-means iterations; it stops earlier when no pixel changes layer.
   int max_iterations = 30;
 };

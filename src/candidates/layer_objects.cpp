@@ -1,0 +1,305 @@
+#include "candidates/layer_objects.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rdsf {
+namespace {
+
+class ObjectShaper {
+ public:
+  ObjectShaper(const LayerView& layer, const CandidateParams& params)
+      : layer_(layer), params_(params), runs_(*layer.runs), width_(static_cast<int>(layer.runs->size())) {
+    const double min_height_cm = params.threshold_height_cm(layer.depth_mm_mean);
+    passing_.resize(static_cast<std::size_t>(width_));
+    for (int c = 0; c < width_; ++c) {
+      const int length = run(c).length();
+      bool passes = layer.camera->height_cm(length, layer.depth_mm_mean) >= min_height_cm;
+      // A column that fails at the layer's mean depth may pass at its own (a layer spans up to
+      // candidate_threshold of depth): measured where it could, at the median depth of its run.
+      if (!passes && params.height_at_column_depth && length > 0 &&
+          layer.depth_mm_mean < params.column_depth_layers_below_mm &&
+          layer.camera->height_cm(length, layer.depth_mm_max) >= min_height_cm) {
+        passes = layer.camera->height_cm(length, column_depth_mm(c, 4)) >= min_height_cm;
+      }
+      passing_[static_cast<std::size_t>(c)] = passes;
+    }
+  }
+
+  const std::vector<char>& passing() const { return passing_; }
+
+  std::vector<LayerObject> objects() const {
+    // The thesis: passing columns joined across gaps of at most column_gap columns.
+    std::vector<LayerObject> found;
+    int c = 0;
+    while (c < width_) {
+      if (!passes(c)) {
+        ++c;
+        continue;
+      }
+      int last = c;
+      for (int next = c + 1; next < width_ && next - last - 1 <= params_.column_gap; ++next) {
+        if (passes(next)) last = next;
+      }
+      found.push_back(span(c, last));
+      c = last + 1;
+    }
+    for (LayerObject& o : found) fit(o, 0, width_ - 1);
+    if (params_.join_pieces) found = join(found);
+    std::vector<LayerObject> kept;
+    for (const LayerObject& o : found) {
+      if (!wide_enough(o)) continue;
+      if (params_.max_object_width_cm > 0 && cm(o.last - o.first + 1) > params_.max_object_width_cm) continue;
+      const bool at_border = o.fit_first == 0 || o.fit_last == width_ - 1;  // a person cut by it looks narrow
+      if (!at_border && cm(o.fit_last - o.fit_first + 1) < params_.min_fitted_width_cm) continue;
+      std::vector<LayerObject> pieces;
+      if (split_enabled()) split(o, pieces);
+      if (pieces.empty() || params_.split_keep_whole) kept.push_back(o);
+      kept.insert(kept.end(), pieces.begin(), pieces.end());
+    }
+    return kept;
+  }
+
+ private:
+  const ColumnRun& run(int c) const { return runs_[static_cast<std::size_t>(c)]; }
+  bool passes(int c) const { return passing_[static_cast<std::size_t>(c)] != 0; }
+  double cm(int pixels) const { return layer_.camera->width_cm(pixels, layer_.depth_mm_mean); }
+  int px(double centimetres) const {
+    return static_cast<int>(centimetres * 10.0 * layer_.camera->fx_px / std::max(1.0, layer_.depth_mm_mean));
+  }
+  bool wide_enough(const LayerObject& o) const { return cm(o.last - o.first + 1) >= params_.min_width_cm; }
+  bool split_enabled() const { return params_.split_valley_cm > 0 || params_.split_depth_jump_mm > 0 || params_.split_step_cm > 0; }
+
+  // The object over the passing columns of first..last (first and last pass).
+  LayerObject span(int first, int last) const {
+    LayerObject o;
+    o.first = first;
+    o.last = last;
+    o.top = std::numeric_limits<int>::max();
+    o.bottom = -1;
+    for (int x = first; x <= last; ++x) {
+      if (!passes(x)) continue;
+      o.top = std::min(o.top, run(x).top);
+      o.bottom = std::max(o.bottom, run(x).bottom);
+      o.tallest = std::max(o.tallest, run(x).length());
+    }
+    std::vector<int> at_top;
+    for (int x = first; x <= last; ++x) {
+      if (passes(x) && run(x).top == o.top) at_top.push_back(x);
+    }
+    o.highest = at_top[at_top.size() / 2];
+    o.fit_first = first;
+    o.fit_last = last;
+    o.fit_top = o.top;
+    return o;
+  }
+
+  // Step 1: the fitted extent reaches over the columns beside the object that hold its pieces (an arm, a
+  // hand: at least two of the layer's pixels, every other row, in the object's rows above its lowest
+  // quarter, where the floor would be, or up to fit_reach_cm above its top), gaps of column_gap allowed,
+  // up to fit_reach_cm each side, never into a passing column (that belongs to an object) nor beyond
+  // lo..hi. The fitted top rises to the highest such pixel.
+  void fit(LayerObject& o, int lo, int hi) const {
+    o.fit_first = o.first;
+    o.fit_last = o.last;
+    o.fit_top = o.top;
+    const int reach = px(params_.fit_reach_cm);
+    if (reach <= 0) return;
+    const int row_lo = std::max(0, o.top - reach);
+    const int row_hi = std::min(layer_.labels->rows - 1, o.top + 3 * (o.bottom - o.top) / 4);
+    for (int direction : {-1, 1}) {
+      const int start = direction < 0 ? o.first : o.last;
+      // Columns start+direction ... as far as reach and lo..hi allow, stopping at a passing column.
+      int far = start;
+      for (int c = start + direction; c >= lo && c <= hi && std::abs(c - start) <= reach && !passes(c); c += direction) far = c;
+      if (far == start) continue;
+      // The band's pixels per column from the object's edge column (start) outwards.
+      const int a = std::min(far, start), b = std::max(far, start);
+      std::vector<int> count(static_cast<std::size_t>(b - a + 1), 0), first_row(count.size(), -1);
+      std::vector<double> depth_sum(count.size(), 0.0);
+      for (int y = row_lo; y <= row_hi; y += 2) {
+        const std::uint8_t* label = layer_.labels->ptr<std::uint8_t>(y);
+        const std::uint16_t* depth = layer_.depth_mm->ptr<std::uint16_t>(y);
+        for (int c = a; c <= b; ++c) {
+          if (label[c] != layer_.label) continue;
+          const std::size_t i = static_cast<std::size_t>(c - a);
+          if (count[i]++ == 0) first_row[i] = y;
+          depth_sum[i] += depth[c];
+        }
+      }
+      auto mean_depth = [&](int c) {
+        const std::size_t i = static_cast<std::size_t>(c - a);
+        return count[i] > 0 ? depth_sum[i] / count[i] : 0.0;
+      };
+      // A piece continues the object: its mean depth is within fit_depth_step_mm of the last column taken.
+      double previous_depth = mean_depth(start);
+      int edge = start, gap = 0, top = o.fit_top;
+      for (int c = start + direction; c >= a && c <= b; c += direction) {
+        const std::size_t i = static_cast<std::size_t>(c - a);
+        const bool continues = count[i] >= 2 && (previous_depth <= 0 || params_.fit_depth_step_mm <= 0 ||
+                                                 std::abs(mean_depth(c) - previous_depth) <= params_.fit_depth_step_mm);
+        if (continues) {
+          edge = c;
+          gap = 0;
+          top = std::min(top, first_row[i]);
+          previous_depth = mean_depth(c);
+        } else if (++gap > params_.column_gap) {
+          break;
+        }
+      }
+      (direction < 0 ? o.fit_first : o.fit_last) = edge;
+      o.fit_top = top;
+    }
+  }
+
+  // Step 2: neighbours whose fitted extents touch are one object when together no wider than a person.
+  std::vector<LayerObject> join(const std::vector<LayerObject>& objects) const {
+    std::vector<LayerObject> joined;
+    for (const LayerObject& o : objects) {
+      if (!joined.empty()) {
+        LayerObject& previous = joined.back();
+        // Pieces each too narrow to be a candidate alone join only in near layers (farther they are the
+        // legs of furniture more often than a person's).
+        const bool touch = o.fit_first <= previous.fit_last + 1 &&
+                           (wide_enough(previous) || wide_enough(o) ||
+                            layer_.depth_mm_mean < params_.join_narrow_layers_below_mm);
+        if (touch && cm(o.fit_last - previous.fit_first + 1) <= params_.max_person_width_cm) {
+          const int fit_first = previous.fit_first, fit_top = std::min(previous.fit_top, o.fit_top);
+          previous = span(previous.first, o.last);
+          previous.fit_first = fit_first;
+          previous.fit_last = o.fit_last;
+          previous.fit_top = std::min(fit_top, previous.top);
+          continue;
+        }
+      }
+      joined.push_back(o);
+    }
+    return joined;
+  }
+
+  // Height (cm) of the top of column c above the object's lowest row; 0 without a run in its rows.
+  double profile_cm(const LayerObject& o, int c) const {
+    const ColumnRun& r = run(c);
+    if (r.length() == 0 || r.bottom < o.top || r.top > o.bottom) return 0.0;
+    return layer_.camera->height_cm(o.bottom - std::max(o.top, r.top) + 1, layer_.depth_mm_mean);
+  }
+
+  // Median depth of the layer's pixels in column c's run (every row_step-th row); 0 when none.
+  double column_depth_mm(int c, int row_step = 2) const {
+    const ColumnRun& r = run(c);
+    std::vector<std::uint16_t> depths;
+    for (int y = r.top; y >= 0 && y <= r.bottom; y += row_step) {
+      if ((*layer_.labels)(y, c) == layer_.label) depths.push_back((*layer_.depth_mm)(y, c));
+    }
+    if (depths.empty()) return 0.0;
+    std::nth_element(depths.begin(), depths.begin() + static_cast<std::ptrdiff_t>(depths.size() / 2), depths.end());
+    return depths[depths.size() / 2];
+  }
+
+  // The best place to cut o.fit_first..o.fit_last (the first column of the right piece), or -1: the
+  // largest depth jump between neighbouring columns, else the deepest valley of the height profile, else
+  // the largest step between the mean heights of a person-wide band on each side.
+  int cut(const LayerObject& o, int min_piece) const {
+    const int a = o.fit_first, b = o.fit_last;
+    if (b - a + 1 < 2 * min_piece) return -1;
+    const int lo = a + min_piece, hi = b - min_piece + 1;  // cut columns leaving both pieces wide enough
+    if (params_.split_depth_jump_mm > 0) {
+      int best = -1;
+      double best_jump = params_.split_depth_jump_mm;
+      double previous = column_depth_mm(lo - 1);
+      for (int c = lo; c <= hi; ++c) {
+        const double depth = column_depth_mm(c);
+        if (depth > 0 && previous > 0 && std::abs(depth - previous) > best_jump) {
+          best_jump = std::abs(depth - previous);
+          best = c;
+        }
+        if (depth > 0) previous = depth;
+      }
+      if (best >= 0) return best;
+    }
+    std::vector<double> h(static_cast<std::size_t>(b - a + 1));
+    for (int c = a; c <= b; ++c) h[static_cast<std::size_t>(c - a)] = profile_cm(o, c);
+    auto at = [&](int c) { return h[static_cast<std::size_t>(c - a)]; };
+    if (params_.split_valley_cm > 0) {
+      std::vector<double> left(h.size()), right(h.size());
+      for (std::size_t i = 0; i < h.size(); ++i) left[i] = std::max(h[i], i > 0 ? left[i - 1] : 0.0);
+      for (std::size_t i = h.size(); i-- > 0;) right[i] = std::max(h[i], i + 1 < h.size() ? right[i + 1] : 0.0);
+      double deepest = 0;
+      for (int c = lo; c <= hi; ++c) {
+        const std::size_t i = static_cast<std::size_t>(c - a);
+        deepest = std::max(deepest, std::min(left[i], right[i]) - h[i]);
+      }
+      if (deepest >= params_.split_valley_cm) {
+        // The middle of the columns within 2 cm of the deepest point of the valley.
+        int first = -1, last = -1;
+        for (int c = lo; c <= hi; ++c) {
+          const std::size_t i = static_cast<std::size_t>(c - a);
+          if (std::min(left[i], right[i]) - h[i] >= deepest - 2.0) {
+            if (first < 0) first = c;
+            last = c;
+          }
+        }
+        return (first + last + 1) / 2;
+      }
+    }
+    if (params_.split_step_cm > 0) {
+      const int band = std::max(1, px(params_.min_part_width_cm));
+      int best = -1;
+      double best_step = params_.split_step_cm;
+      for (int c = lo; c <= hi; ++c) {
+        double sum_left = 0, sum_right = 0;
+        int n_left = 0, n_right = 0;
+        for (int x = std::max(a, c - band); x < c; ++x, ++n_left) sum_left += at(x);
+        for (int x = c; x < std::min(b + 1, c + band); ++x, ++n_right) sum_right += at(x);
+        const double step = std::abs(sum_left / std::max(1, n_left) - sum_right / std::max(1, n_right));
+        if (step > best_step) {
+          best_step = step;
+          best = c;
+        }
+      }
+      return best;
+    }
+    return -1;
+  }
+
+  // Step 3: an object wider than a person is cut in two where cut() says, and each piece again while it is
+  // wider than a person; the final pieces (with their passing columns) are appended to `out`, nothing when
+  // the object is not cut.
+  void split(const LayerObject& whole, std::vector<LayerObject>& out, int depth = 0) const {
+    if (depth > 4 || cm(whole.fit_last - whole.fit_first + 1) <= params_.max_person_width_cm) return;
+    const int c = cut(whole, std::max(1, px(params_.min_part_width_cm)));
+    if (c < 0) return;
+    for (const auto& [lo, hi] : {std::pair<int, int>{whole.fit_first, c - 1}, std::pair<int, int>{c, whole.fit_last}}) {
+      int first = -1, last = -1;
+      for (int x = lo; x <= hi; ++x) {
+        if (!passes(x)) continue;
+        if (first < 0) first = x;
+        last = x;
+      }
+      if (first < 0) continue;
+      LayerObject piece = span(first, last);
+      fit(piece, lo, hi);
+      piece.part = true;
+      if (!wide_enough(piece)) continue;
+      const std::size_t before = out.size();
+      split(piece, out, depth + 1);
+      if (out.size() == before) out.push_back(piece);
+    }
+  }
+
+  const LayerView& layer_;
+  const CandidateParams& params_;
+  const std::vector<ColumnRun>& runs_;
+  const int width_;
+  std::vector<char> passing_;
+};
+
+}  // namespace
+
+LayerObjects layer_objects(const LayerView& layer, const CandidateParams& params) {
+  ObjectShaper shaper(layer, params);
+  return {shaper.objects(), shaper.passing()};
+}
+
+}  // namespace rdsf

@@ -1,0 +1,169 @@
+// Candidates for every person on hand-built depth maps: boxes that fit (side-on people, arms), joined
+// pieces, splitting people side by side and a person against a cupboard, people cut by the border, and
+// the thesis preset.
+#include <gtest/gtest.h>
+
+#include "candidates/candidate_finder.hpp"
+#include "detector/detector_core.hpp"
+#include "support/depth_scenes.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = {},
+                                double tolerance_mm = 30) {
+  std::vector<Candidate> found;
+  for (const Candidate& c : DetectorCore(params).analyse(frame, false).candidates) {
+    if (std::abs(c.layer_depth_mm - depth_mm) < tolerance_mm) found.push_back(c);
+  }
+  return found;
+}
+
+double best_iou(const std::vector<Candidate>& candidates, const cv::Rect& truth, BoxKind kind) {
+  double best = 0;
+  for (const Candidate& c : candidates) best = std::max(best, iou(reported_box(c, kind), truth));
+  return best;
+}
+
+// A person seen from the front at 2 m: head 40 px wide on rows 100-149, body `body_px` wide below to 459.
+void paint_person(DepthFrame& frame, int left, int body_px, int depth_mm = 2000) {
+  test::paint(frame, {left + body_px / 2 - 20, 100, 40, 50}, depth_mm);
+  test::paint(frame, {left, 150, body_px, 310}, depth_mm);
+}
+
+DetectorParams splitting() {
+  DetectorParams p;
+  p.candidates.split_valley_cm = 15;
+  p.candidates.split_step_cm = 30;
+  p.candidates.split_depth_jump_mm = 250;
+  return p;
+}
+
+}  // namespace
+
+TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
+  DepthFrame frame = test::wall_frame(4000);
+  const cv::Rect person(300, 60, 60, 400);  // 23 cm x 152 cm at 2 m: side-on
+  test::paint(frame, person, 2000);
+  const auto found = at_depth(frame, 2000);
+  ASSERT_EQ(found.size(), 1u);
+  const cv::Rect& fitted = found[0].fitted_box;
+  EXPECT_LE(std::abs(fitted.x - person.x), person.width / 10);
+  EXPECT_LE(std::abs(fitted.width - person.width), person.width / 10);
+  EXPECT_LE(std::abs(fitted.y - person.y), person.height / 10);
+  EXPECT_LE(std::abs(fitted.height - person.height), person.height / 10);
+  EXPECT_LT(iou(found[0].strict_box, person), 0.5);  // height/2 wide: the thesis's box cannot match
+  EXPECT_EQ(found[0].strict_box, cv::Rect(230, 60, 200, 400));  // the crop's box is unchanged
+}
+
+TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 60, 360}, 2000);  // body
+  test::paint(frame, {230, 160, 70, 20}, 2000);   // an arm held out to the left (27 cm)
+  const auto found = at_depth(frame, 2000);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].fitted_box, cv::Rect(230, 100, 130, 360));
+  DetectorParams no_reach;
+  no_reach.candidates.fit_reach_cm = 0;
+  EXPECT_EQ(at_depth(frame, 2000, no_reach)[0].fitted_box, cv::Rect(300, 100, 60, 360));
+}
+
+TEST(CandidateShapes, LegsThatPassAloneAreJoinedIntoOnePerson) {
+  // Torso rows 100-299 (76 cm: fails 90 cm), legs below to 459 pass: the thesis finds two leg objects.
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {280, 100, 100, 200}, 2000);
+  test::paint(frame, {280, 300, 30, 160}, 2000);
+  test::paint(frame, {350, 300, 30, 160}, 2000);
+  const cv::Rect person(280, 100, 100, 360);
+  EXPECT_EQ(at_depth(frame, 2000, thesis_params()).size(), 2u);
+  const auto found = at_depth(frame, 2000);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].fitted_box, person);
+  EXPECT_GE(found[0].highest_column, 280);  // the middle of the columns reaching the top (the thesis's rule)
+  EXPECT_LT(found[0].highest_column, 380);
+}
+
+TEST(CandidateShapes, TwoPeopleSideBySideAtOneDepthGiveTwoCandidates) {
+  DepthFrame frame = test::wall_frame(4000);
+  paint_person(frame, 150, 144);  // shoulders 55 cm wide, touching
+  paint_person(frame, 294, 144);
+  const cv::Rect left(150, 100, 144, 360), right(294, 100, 144, 360);
+  const auto whole = at_depth(frame, 2000);  // without splitting: one object
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_LE(best_iou(whole, left, BoxKind::fitted), 0.5);
+  const auto split = at_depth(frame, 2000, splitting());
+  ASSERT_EQ(split.size(), 2u);
+  EXPECT_TRUE(split[0].part && split[1].part);
+  EXPECT_GE(best_iou(split, left, BoxKind::fitted), 0.8);
+  EXPECT_GE(best_iou(split, right, BoxKind::fitted), 0.8);
+  DetectorParams both = splitting();
+  both.candidates.split_keep_whole = true;
+  EXPECT_EQ(at_depth(frame, 2000, both).size(), 3u);
+}
+
+TEST(CandidateShapes, PersonAgainstACupboardAtTheSameDepthIsSplitOff) {
+  DepthFrame frame = test::wall_frame(4000);
+  const cv::Rect person(150, 100, 120, 360);  // 46 cm x 137 cm
+  test::paint(frame, person, 2000);
+  test::paint(frame, {270, 200, 300, 260}, 2000);  // a cupboard touching it: 114 cm wide, 99 cm high
+  const auto whole = at_depth(frame, 2000);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_LT(best_iou(whole, person, BoxKind::fitted), 0.5);
+  const auto split = at_depth(frame, 2000, splitting());
+  EXPECT_GE(best_iou(split, person, BoxKind::fitted), 0.8);
+}
+
+TEST(CandidateShapes, PersonBeforeACupboardInTheSameLayerIsSplitOffByDepth) {
+  DepthFrame frame = test::wall_frame(5000);
+  const cv::Rect person(150, 60, 120, 400);
+  test::paint(frame, {270, 60, 300, 400}, 2400);  // a tall cupboard 40 cm behind, in the person's layer
+  test::paint(frame, person, 2000);
+  const auto whole = at_depth(frame, 2200, {}, 250);
+  ASSERT_EQ(whole.size(), 1u);  // one layer, one object
+  EXPECT_LT(best_iou(whole, person, BoxKind::fitted), 0.5);
+  const auto split = at_depth(frame, 2200, splitting(), 250);
+  EXPECT_GE(best_iou(split, person, BoxKind::fitted), 0.8);
+}
+
+TEST(CandidateShapes, PeopleCutByTheBorderKeepABoxInsideTheImage) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {0, 100, 40, 380}, 2000);    // cut by the left and bottom borders
+  test::paint(frame, {610, 100, 30, 380}, 2000);  // cut by the right and bottom borders
+  const cv::Rect image(0, 0, 640, 480);
+  const auto found = at_depth(frame, 2000);
+  ASSERT_EQ(found.size(), 2u);
+  for (const Candidate& c : found) {
+    EXPECT_EQ(c.fitted_box & image, c.fitted_box);
+    EXPECT_EQ(c.strict_box & image, c.strict_box);
+    EXPECT_EQ(c.fitted_box.y + c.fitted_box.height, 480);
+    // The crop keeps the person's proportions: the window is the strict box's, leaving the image.
+    EXPECT_EQ(c.window_unclipped.width, std::lround(std::lround(380 / 2.0) * 1.25));
+  }
+  EXPECT_EQ(found[0].fitted_box, cv::Rect(0, 100, 40, 380));
+  EXPECT_EQ(found[1].fitted_box, cv::Rect(610, 100, 30, 380));
+}
+
+TEST(CandidateShapes, NarrowPiecesAreNotCandidatesUnlessCutByTheBorder) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 60, 30, 400}, 2000);  // 11 cm wide: a post, not a person
+  EXPECT_TRUE(at_depth(frame, 2000).empty());
+  DetectorParams off;
+  off.candidates.min_fitted_width_cm = 0;
+  EXPECT_EQ(at_depth(frame, 2000, off).size(), 1u);
+}
+
+TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
+  const DetectorParams t = thesis_params();
+  EXPECT_FALSE(t.segmentation.left_border_jump);
+  EXPECT_EQ(t.candidates.occlusion_gap_cm, 0);
+  EXPECT_EQ(t.candidates.floor_tolerance_mm, 0);
+  EXPECT_FALSE(t.candidates.height_at_column_depth);
+  EXPECT_EQ(t.candidates.fit_reach_cm, 0);
+  EXPECT_FALSE(t.candidates.join_pieces);
+  EXPECT_EQ(t.candidates.max_object_width_cm, 0);
+  EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);
+  EXPECT_EQ(t.candidates.split_depth_jump_mm + t.candidates.split_valley_cm + t.candidates.split_step_cm, 0);
+  EXPECT_EQ(t.reported_box, BoxKind::strict);
+  EXPECT_EQ(DetectorParams().reported_box, BoxKind::fitted);
+}
