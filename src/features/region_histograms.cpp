@@ -1,0 +1,153 @@
+#include "features/region_histograms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.hpp"
+
+namespace rdsf {
+
+void RootHistograms::resize(int slots, int bin_count) {
+  bins = bin_count;
+  const std::size_t n = static_cast<std::size_t>(slots) * static_cast<std::size_t>(bin_count);
+  dense.resize(n);  // every slot is written whole by finish_slot
+  nz_count.resize(static_cast<std::size_t>(slots));
+  nz_bin.resize(n);
+  nz_root.resize(n);
+}
+
+RegionHistogramBuilder::RegionHistogramBuilder(const FeatureSpec& spec) : spec_(spec) {
+  spec_.validate();
+  block_px_ = spec_.layout == FeatureSpec::Layout::Cells
+                  ? spec_.cell_px
+                  : std::gcd(spec_.rect_min_px, std::gcd(spec_.rect_step_px, spec_.rect_stride_px));
+  blocks_x_ = spec_.window_width_px / block_px_;
+  blocks_y_ = spec_.window_height_px / block_px_;
+  regions_ = spec_.regions();
+  for (const FeatureRegion& r : regions_) {
+    geometry_.push_back({r.x / block_px_, r.y / block_px_, (r.x + r.width) / block_px_, (r.y + r.height) / block_px_});
+    if (r.width != block_px_ || r.height != block_px_) single_blocks_ = false;
+  }
+  lut_.resize(65536);
+  for (int d = 0; d < 65536; ++d) lut_[static_cast<std::size_t>(d)] = static_cast<std::uint8_t>(bin_of(d));
+}
+
+void RegionHistogramBuilder::check(const cv::Mat1w& crop) const {
+  if (crop.cols != spec_.window_width_px || crop.rows != spec_.window_height_px) {
+    throw Error("RDSF: crop is " + std::to_string(crop.cols) + "x" + std::to_string(crop.rows) +
+                ", the feature spec needs " + std::to_string(spec_.window_width_px) + "x" +
+                std::to_string(spec_.window_height_px));
+  }
+}
+
+void RegionHistogramBuilder::count_block(const cv::Mat1w& crop, int bx, int by, std::uint32_t* counts) const {
+  const int g = block_px_, x0 = bx * g, y0 = by * g;
+  std::uint16_t lo = 65535, hi = 0;
+  for (int y = y0; y < y0 + g; ++y) {
+    const std::uint16_t* row = crop.ptr<std::uint16_t>(y) + x0;
+    for (int x = 0; x < g; ++x) {
+      lo = std::min(lo, row[x]);
+      hi = std::max(hi, row[x]);
+    }
+  }
+  const std::uint8_t* lut = lut_.data();
+  if (lut[lo] == lut[hi]) {  // bin_of is monotonic: every pixel is in this bin
+    counts[lut[lo]] += static_cast<std::uint32_t>(g * g);
+    return;
+  }
+  // Runs of equal bins: neighbouring pixels mostly share one, and a run costs one store.
+  for (int y = y0; y < y0 + g; ++y) {
+    const std::uint16_t* row = crop.ptr<std::uint16_t>(y) + x0;
+    std::uint8_t current = lut[row[0]];
+    std::uint32_t run = 0;
+    for (int x = 0; x < g; ++x) {
+      const std::uint8_t b = lut[row[x]];
+      if (b != current) {
+        counts[current] += run;
+        current = b;
+        run = 0;
+      }
+      ++run;
+    }
+    counts[current] += run;
+  }
+}
+
+void RegionHistogramBuilder::build_integral(const cv::Mat1w& crop, std::vector<std::uint32_t>& integral) const {
+  const std::size_t bins = static_cast<std::size_t>(spec_.bin_count());
+  const std::size_t stride = static_cast<std::size_t>(blocks_x_ + 1) * bins;
+  integral.assign(static_cast<std::size_t>(blocks_y_ + 1) * stride, 0u);
+  std::vector<std::uint32_t> counts(bins);
+  for (int by = 0; by < blocks_y_; ++by) {
+    for (int bx = 0; bx < blocks_x_; ++bx) {
+      std::fill(counts.begin(), counts.end(), 0u);
+      count_block(crop, bx, by, counts.data());
+      std::uint32_t* out = integral.data() + static_cast<std::size_t>(by + 1) * stride + (bx + 1) * bins;
+      const std::uint32_t* up = out - stride;
+      const std::uint32_t* left = out - bins;
+      const std::uint32_t* diagonal = up - bins;
+      for (std::size_t b = 0; b < bins; ++b) out[b] = counts[b] + up[b] + left[b] - diagonal[b];
+    }
+  }
+}
+
+void RegionHistogramBuilder::finish_slot(const std::uint32_t* counts, int area, int slot, RootHistograms& out) const {
+  const int bins = out.bins;
+  const std::size_t base = static_cast<std::size_t>(slot) * static_cast<std::size_t>(bins);
+  float* dense = out.dense.data() + base;
+  std::uint8_t* nz_bin = out.nz_bin.data() + base;
+  float* nz_root = out.nz_root.data() + base;
+  const float area_f = static_cast<float>(area);
+  int n = 0;
+  for (int b = 0; b < bins; ++b) {
+    if (counts[b] == 0) {
+      dense[b] = 0.0f;
+      continue;
+    }
+    const float root = std::sqrt(static_cast<float>(counts[b]) / area_f);
+    dense[b] = root;
+    nz_bin[n] = static_cast<std::uint8_t>(b);
+    nz_root[n] = root;
+    ++n;
+  }
+  out.nz_count[static_cast<std::size_t>(slot)] = static_cast<std::uint16_t>(n);
+}
+
+void RegionHistogramBuilder::compute(const cv::Mat1w& crop, const std::vector<int>& regions,
+                                     RootHistograms& out) const {
+  check(crop);
+  const int bins = spec_.bin_count();
+  out.resize(static_cast<int>(regions.size()), bins);
+  std::vector<std::uint32_t> counts(static_cast<std::size_t>(bins));
+  if (single_blocks_) {
+    for (std::size_t k = 0; k < regions.size(); ++k) {
+      const Geometry& g = geometry_[static_cast<std::size_t>(regions[k])];
+      std::fill(counts.begin(), counts.end(), 0u);
+      count_block(crop, g.bx0, g.by0, counts.data());
+      finish_slot(counts.data(), block_px_ * block_px_, static_cast<int>(k), out);
+    }
+    return;
+  }
+  std::vector<std::uint32_t> integral;
+  build_integral(crop, integral);
+  const std::size_t stride = static_cast<std::size_t>(blocks_x_ + 1) * static_cast<std::size_t>(bins);
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const std::size_t r = static_cast<std::size_t>(regions[k]);
+    const Geometry& g = geometry_[r];
+    const std::uint32_t* a = integral.data() + static_cast<std::size_t>(g.by0) * stride + g.bx0 * bins;
+    const std::uint32_t* b = integral.data() + static_cast<std::size_t>(g.by0) * stride + g.bx1 * bins;
+    const std::uint32_t* c = integral.data() + static_cast<std::size_t>(g.by1) * stride + g.bx0 * bins;
+    const std::uint32_t* d = integral.data() + static_cast<std::size_t>(g.by1) * stride + g.bx1 * bins;
+    for (int bin = 0; bin < bins; ++bin) counts[static_cast<std::size_t>(bin)] = d[bin] - b[bin] - c[bin] + a[bin];
+    finish_slot(counts.data(), regions_[r].area(), static_cast<int>(k), out);
+  }
+}
+
+void RegionHistogramBuilder::compute_all(const cv::Mat1w& crop, RootHistograms& out) const {
+  std::vector<int> all(regions_.size());
+  std::iota(all.begin(), all.end(), 0);
+  compute(crop, all, out);
+}
+
+}  // namespace rdsf
