@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
         "With --truth, every --model is evaluated over a threshold sweep as in the thesis."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     rdsf::cli::apply_calibration(o.camera, calibration);
+    o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = rdsf::cli::parse_thresholds(thresholds);
     return rdsf::run_detect(o);
   });

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "support/test_support.hpp"
 #include "features/feature_subset.hpp"
 #include "features/rdsf_extractor.hpp"
 
@@ -62,14 +63,8 @@ std::vector<float> brute_force(const FeatureSpec& spec, const cv::Mat1w& crop) {
   return out;
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_message;
+const auto& error_of = error_message;
 
 }  // namespace
 

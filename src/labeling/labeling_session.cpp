@@ -33,6 +33,7 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
       core_(config_.detector),
       journal_((std::filesystem::path(writer.dir()) / "labeler-answers.tsv").string()) {
   if (config_.sources.empty()) throw Error("no --source given");
+  if (model_ != nullptr) scorer_.emplace(*model_);
   // Open every source now, so that a bad one is reported before the first question.
   std::int64_t total = 0;
   bool known = true;
@@ -67,8 +68,8 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
     }
     loaded->source = source_name_;
     loaded->ordinal = ++ordinal_;
-    loaded->analysis = core_.analyse(loaded->frame, model_ != nullptr);
-    if (model_ != nullptr) loaded->scores = model_->score(loaded->analysis.features);
+    loaded->analysis = core_.analyse(loaded->frame, /*with_features=*/false);
+    if (scorer_) loaded->scores = scorer_->score(loaded->analysis.candidates);
     if (truth_ != nullptr) {
       for (const Candidate& c : loaded->analysis.candidates) {
         double best = 0;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "classifier/boosted_model.hpp"
+#include "pipeline/model_scorer.hpp"
 #include "dataset/sample_set_writer.hpp"
 #include "detector/detector_core.hpp"
 #include "evaluation/ground_truth.hpp"
@@ -100,6 +101,7 @@ class LabelingSession {
   LabelingConfig config_;
   SampleSetWriter& writer_;
   const BoostedModel* model_;
+  std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
   const GroundTruth* truth_;
   DetectorCore core_;
   AnswerJournal journal_;

@@ -1,6 +1,7 @@
 #pragma once
 // The whole system for one frame, as the thesis ran it:
 //   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) -> person when H(x) >= threshold
+//   (RDSF: only the features the model reads, see model_scorer.hpp)
 //         -> tracking (colour histogram + centroid, lkh matching)
 // with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include "classifier/boosted_model.hpp"
 #include "detector/detector_core.hpp"
 #include "frame/depth_frame.hpp"
+#include "pipeline/model_scorer.hpp"
 #include "tracking/tracker.hpp"
 
 namespace rdsf {
@@ -19,6 +21,9 @@ struct PipelineParams {
   TrackingParams tracking;
   /// A candidate is a person when H(x) >= threshold_classifier.
   double threshold_classifier = 0.0;
+  /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
+  /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
+  bool full_feature_vector = false;
 };
 
 /// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
@@ -33,7 +38,8 @@ struct PipelineTimes {
 };
 
 struct PipelineFrame {
-  FrameAnalysis analysis;                 ///< layers, candidates, features
+  FrameAnalysis analysis;                 ///< layers, candidates (features only with full_feature_vector)
+  cv::Mat1f model_features;               ///< per candidate the features the model reads (ModelScorer order)
   std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
   std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
   std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
@@ -43,7 +49,7 @@ struct PipelineFrame {
 class PeoplePipeline {
  public:
   /// `model` may be null (candidates only); it must outlive the pipeline. Throws Error when the model's
-  /// feature spec differs from the detector's.
+  /// feature spec differs from the detector's (naming both).
   PeoplePipeline(PipelineParams params, const BoostedModel* model);
 
   PipelineFrame process(const DepthFrame& frame);
@@ -54,6 +60,7 @@ class PeoplePipeline {
  private:
   PipelineParams params_;
   const BoostedModel* model_;
+  std::optional<ModelScorer> scorer_;
   DetectorCore core_;
   Tracker tracker_;
 };
