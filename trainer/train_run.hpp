@@ -22,6 +22,10 @@ struct TrainOptions {
   std::optional<std::uint64_t> seed;
   std::optional<double> validation_fraction, weight_trim;
   int threads = 0;
+  FeatureSpec feature_spec;          ///< --feature-spec (checked against the sets only when given)
+  bool feature_spec_given = false;
+  std::size_t feature_pool = 0;      ///< see SampleChoice::feature_pool
+  std::size_t memory_budget_mb = 4096;
   std::string inspect;      ///< model to describe instead of training
   int top = 20;             ///< --inspect: features listed
   std::string export_text;  ///< write the chosen samples here instead of training

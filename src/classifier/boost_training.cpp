@@ -66,6 +66,16 @@ void validate_training_params(const BoostTrainingParams& p) {
   }
   if (p.report_every < 1) throw Error("report-every must be at least 1");
   if (p.early_stopping < 0) throw Error("early stopping must be 0 (off) or a number of rounds");
+  p.feature_spec.validate();
+  if (!p.feature_columns.empty()) {
+    if (p.backend != "native") throw Error("a feature pool needs the native backend");
+    std::vector<int> sorted = p.feature_columns;
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted.front() < 0 || sorted.back() >= p.feature_spec.dimension() ||
+        std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      throw Error("feature pool: columns must be distinct features of " + p.feature_spec.name());
+    }
+  }
 }
 
 BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& labels,
@@ -76,11 +86,14 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
   if (rows.rows != static_cast<int>(labels.size())) {
     throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
   }
-  const FeatureSpec spec;
-  if (rows.cols != spec.dimension()) {
+  const FeatureSpec& spec = params.feature_spec;
+  const std::vector<int>& columns = params.feature_columns;
+  const int column_count = columns.empty() ? spec.dimension() : static_cast<int>(columns.size());
+  if (rows.cols != column_count) {
     throw Error("training: rows of " + std::to_string(rows.cols) + " features, the feature spec has " +
-                std::to_string(spec.dimension()));
+                std::to_string(column_count) + (columns.empty() ? "" : " in the pool"));
   }
+  auto feature_of = [&columns](int column) { return columns.empty() ? column : columns[static_cast<std::size_t>(column)]; };
 
   // Training and validation samples.
   std::vector<std::size_t> train_index;
@@ -143,12 +156,12 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
                          double mean_round_s) {
     RoundFigures figures;
     figures.round = round;
-    figures.feature = weak.feature;
+    figures.feature = feature_of(weak.feature);
     figures.train_error = train_error;
     TrainingProgress report;
     report.round = round;
     report.rounds = params.rounds;
-    report.feature = weak.feature;
+    report.feature = feature_of(weak.feature);
     report.train_error = train_error;
     if (validating) {
       for (std::size_t k = 0; k < validation.index.size(); ++k) {
@@ -257,6 +270,11 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     }
     record.validation.summary = summarise_roc(final_scores, validation.labels);
     record.validation.roc = roc_at_far_levels(roc_curve(final_scores, validation.labels));
+  }
+  if (!columns.empty()) {  // columns of the pool -> features of the spec
+    std::vector<WeakClassifier> renumbered = model.weak_classifiers();
+    for (WeakClassifier& w : renumbered) w.feature = feature_of(w.feature);
+    model = BoostedModel(spec, bins, std::move(renumbered));
   }
   model.training() = record;
   model.set_opencv_model_yaml(std::move(opencv_yaml));

@@ -12,6 +12,7 @@
 
 #include "classifier/bin_scheme.hpp"
 #include "classifier/boosted_model.hpp"
+#include "features/feature_spec.hpp"
 
 namespace rdsf {
 
@@ -26,6 +27,11 @@ struct BoostTrainingParams {
   std::uint64_t seed = 1;           ///< validation split
   int report_every = 10;            ///< rounds between the figures kept in the model file (last always kept)
   int early_stopping = 0;           ///< stop after this many rounds without a better validation AUC, keep the best; 0 = off
+  FeatureSpec feature_spec;         ///< the features the rows hold and the model reads (the thesis's by default)
+  /// When the rows hold only some of the spec's features (a pool, e.g. of the 120,786 rdsf-rect pairs): the
+  /// feature of each column, distinct. Empty: every feature, column c = feature c. The model and the
+  /// figures name features, not columns. Native backend only.
+  std::vector<int> feature_columns;
 };
 
 struct TrainingProgress {

@@ -6,7 +6,47 @@
 
 #include "core/error.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace rdsf {
+namespace {
+
+// Smallest and largest depth of a block of `g` x `g` pixels at (x0, y0).
+void block_range(const cv::Mat1w& crop, int x0, int y0, int g, std::uint16_t& lo, std::uint16_t& hi) {
+#if defined(__SSE2__)
+  if (g % 8 == 0) {  // unsigned 16-bit order through the signed comparisons: flip the top bit
+    const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000));
+    __m128i mn = _mm_set1_epi16(0x7fff), mx = _mm_set1_epi16(static_cast<short>(0x8000));
+    for (int y = y0; y < y0 + g; ++y) {
+      const std::uint16_t* row = crop.ptr<std::uint16_t>(y) + x0;
+      for (int x = 0; x < g; x += 8) {
+        const __m128i v = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + x)), flip);
+        mn = _mm_min_epi16(mn, v);
+        mx = _mm_max_epi16(mx, v);
+      }
+    }
+    alignas(16) std::uint16_t a[8], b[8];
+    _mm_store_si128(reinterpret_cast<__m128i*>(a), _mm_xor_si128(mn, flip));
+    _mm_store_si128(reinterpret_cast<__m128i*>(b), _mm_xor_si128(mx, flip));
+    lo = *std::min_element(a, a + 8);
+    hi = *std::max_element(b, b + 8);
+    return;
+  }
+#endif
+  lo = 65535;
+  hi = 0;
+  for (int y = y0; y < y0 + g; ++y) {
+    const std::uint16_t* row = crop.ptr<std::uint16_t>(y) + x0;
+    for (int x = 0; x < g; ++x) {
+      lo = std::min(lo, row[x]);
+      hi = std::max(hi, row[x]);
+    }
+  }
+}
+
+}  // namespace
 
 void RootHistograms::resize(int slots, int bin_count) {
   bins = bin_count;
@@ -41,20 +81,14 @@ void RegionHistogramBuilder::check(const cv::Mat1w& crop) const {
   }
 }
 
-void RegionHistogramBuilder::count_block(const cv::Mat1w& crop, int bx, int by, std::uint32_t* counts) const {
+int RegionHistogramBuilder::count_block(const cv::Mat1w& crop, int bx, int by, std::uint32_t* counts) const {
   const int g = block_px_, x0 = bx * g, y0 = by * g;
-  std::uint16_t lo = 65535, hi = 0;
-  for (int y = y0; y < y0 + g; ++y) {
-    const std::uint16_t* row = crop.ptr<std::uint16_t>(y) + x0;
-    for (int x = 0; x < g; ++x) {
-      lo = std::min(lo, row[x]);
-      hi = std::max(hi, row[x]);
-    }
-  }
+  std::uint16_t lo = 0, hi = 0;
+  block_range(crop, x0, y0, g, lo, hi);
   const std::uint8_t* lut = lut_.data();
   if (lut[lo] == lut[hi]) {  // bin_of is monotonic: every pixel is in this bin
     counts[lut[lo]] += static_cast<std::uint32_t>(g * g);
-    return;
+    return lut[lo];
   }
   // Runs of equal bins: neighbouring pixels mostly share one, and a run costs one store.
   for (int y = y0; y < y0 + g; ++y) {
@@ -72,6 +106,7 @@ void RegionHistogramBuilder::count_block(const cv::Mat1w& crop, int bx, int by, 
     }
     counts[current] += run;
   }
+  return -1;
 }
 
 void RegionHistogramBuilder::build_integral(const cv::Mat1w& crop, std::vector<std::uint32_t>& integral) const {
@@ -119,17 +154,26 @@ void RegionHistogramBuilder::compute(const cv::Mat1w& crop, const std::vector<in
   check(crop);
   const int bins = spec_.bin_count();
   out.resize(static_cast<int>(regions.size()), bins);
-  std::vector<std::uint32_t> counts(static_cast<std::size_t>(bins));
+  thread_local std::vector<std::uint32_t> counts, integral;  // reused: no allocation per crop
+  counts.resize(static_cast<std::size_t>(bins));
   if (single_blocks_) {
     for (std::size_t k = 0; k < regions.size(); ++k) {
       const Geometry& g = geometry_[static_cast<std::size_t>(regions[k])];
       std::fill(counts.begin(), counts.end(), 0u);
-      count_block(crop, g.bx0, g.by0, counts.data());
-      finish_slot(counts.data(), block_px_ * block_px_, static_cast<int>(k), out);
+      const int bin = count_block(crop, g.bx0, g.by0, counts.data());
+      if (bin >= 0) {  // one bin: root sqrt(A / A) = 1, the same bits finish_slot would give
+        const std::size_t base = k * static_cast<std::size_t>(bins);
+        std::fill(out.dense.begin() + static_cast<long>(base), out.dense.begin() + static_cast<long>(base) + bins, 0.0f);
+        out.dense[base + static_cast<std::size_t>(bin)] = 1.0f;
+        out.nz_bin[base] = static_cast<std::uint8_t>(bin);
+        out.nz_root[base] = 1.0f;
+        out.nz_count[k] = 1;
+      } else {
+        finish_slot(counts.data(), block_px_ * block_px_, static_cast<int>(k), out);
+      }
     }
     return;
   }
-  std::vector<std::uint32_t> integral;
   build_integral(crop, integral);
   const std::size_t stride = static_cast<std::size_t>(blocks_x_ + 1) * static_cast<std::size_t>(bins);
   for (std::size_t k = 0; k < regions.size(); ++k) {

@@ -42,6 +42,10 @@ inline float pair_value(const RootHistograms& h, int slot_i, int slot_j) {
   const std::uint8_t* bin = h.nz_bin.data() + base;
   const float* root = h.nz_root.data() + base;
   const int n = h.nz_count[static_cast<std::size_t>(slot_j)];
+  if (n == 1) {  // the common uniform region: 0 + x is x, so the same bits as the loop
+    const float value = dense[bin[0]] * root[0];
+    return value > 1.0f ? 1.0f : value;
+  }
   float sum = 0.0f;
   for (int k = 0; k < n; ++k) sum += dense[bin[k]] * root[k];
   return sum > 1.0f ? 1.0f : sum;  // rounding can leave 1 + 1e-7; the sum is never negative
@@ -69,8 +73,9 @@ class RegionHistogramBuilder {
     int bx0, by0, bx1, by1;  // block range [bx0, bx1) x [by0, by1)
   };
   void check(const cv::Mat1w& crop) const;
-  /// Adds the counts of block (bx, by) to `counts` (bin_count values).
-  void count_block(const cv::Mat1w& crop, int bx, int by, std::uint32_t* counts) const;
+  /// Adds the counts of block (bx, by) to `counts` (bin_count values); returns the bin when all its
+  /// pixels share one, else -1.
+  int count_block(const cv::Mat1w& crop, int bx, int by, std::uint32_t* counts) const;
   /// Counts of every block, then their integral: integral_[((by * (blocks_x + 1)) + bx) * bins + b].
   void build_integral(const cv::Mat1w& crop, std::vector<std::uint32_t>& integral) const;
   void finish_slot(const std::uint32_t* counts, int area, int slot, RootHistograms& out) const;
