@@ -7,6 +7,7 @@
 // Run: build/bench/bench_core
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <vector>
 
@@ -132,16 +133,23 @@ void BM_ScoreFullVector(benchmark::State& state) {
 }
 BENCHMARK(BM_ScoreFullVector)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
-// Only the features the 100-round model reads (the regions they name, then the pairs), then H(x).
+// Only the features the 100-round model reads (the regions they name, then the pairs), then H(x). With
+// RDSF_BENCH_MODEL=FILE (a trained model, e.g. of scripts/feature-spec-compare.sh) argument 2 scores with it.
 void BM_ScoreModelFeaturesOnly(benchmark::State& state) {
-  const rdsf::ModelScorer scorer(random_model(spec_of(state), 100));
+  const char* trained = std::getenv("RDSF_BENCH_MODEL");
+  if (state.range(0) == 2 && trained == nullptr) {
+    state.SkipWithError("set RDSF_BENCH_MODEL=FILE to score with a trained model");
+    return;
+  }
+  const rdsf::ModelScorer scorer(state.range(0) == 2 ? rdsf::BoostedModel::load(trained)
+                                                     : random_model(spec_of(state), 100));
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(scorer.score(crops()[i++ % crops().size()]));
   per_candidate(state);
   state.counters["features"] = scorer.features().size();
   state.counters["regions"] = scorer.features().region_count();
 }
-BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 void BM_WholeCoreFrame(benchmark::State& state) {
   const rdsf::DetectorCore core;

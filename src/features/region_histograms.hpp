@@ -6,9 +6,11 @@
 // Counting: the window is cut into blocks of g x g pixels, g the greatest common divisor of the region
 // geometry (the cell side for "rdsf"; gcd(min, step, stride) for "rdsf-rect", 8 by default), so that every
 // region is a union of whole blocks. A block whose smallest and largest depth fall into the same bin is
-// counted at once (bin_of is monotonic); other blocks pixel by pixel. A region that is one block takes the
-// block's counts; larger regions take four look-ups per bin in the integral histogram of the block counts
-// (Porikli's integral histogram at block resolution: exact, as counts are integers).
+// counted at once (bin_of is monotonic); in others the pixels below each bin edge between the smallest
+// non-zero and the largest depth are counted with 8-wide comparisons (SSE2), or pixel by pixel without it.
+// A region that is one block takes the block's counts; larger regions take four look-ups per bin in the
+// integral histogram of the block counts (Porikli's integral histogram at block resolution: exact, as
+// counts are integers).
 //
 // The coefficient of regions (i, j) is pair_value(): the sequential float sum over j's non-zero bins,
 // ascending, of dense_i[b] * sparse_j[b], clamped to [0, 1]. Bins where either root is zero add exactly
@@ -78,7 +80,10 @@ class RegionHistogramBuilder {
   int count_block(const cv::Mat1w& crop, int bx, int by, std::uint32_t* counts) const;
   /// Counts of every block, then their integral: integral_[((by * (blocks_x + 1)) + bx) * bins + b].
   void build_integral(const cv::Mat1w& crop, std::vector<std::uint32_t>& integral) const;
-  void finish_slot(const std::uint32_t* counts, int area, int slot, RootHistograms& out) const;
+  void finish_slot(const std::uint32_t* counts, int region, int slot, RootHistograms& out) const;
+  /// The roots of every count for the region's area, or null when it has no table (very large areas).
+  const float* roots_of(int region) const;
+  static constexpr std::uint32_t kNoTable = 0xffffffffu;
 
   FeatureSpec spec_;
   int block_px_ = 8;
@@ -87,6 +92,9 @@ class RegionHistogramBuilder {
   std::vector<FeatureRegion> regions_;
   std::vector<Geometry> geometry_;
   std::vector<std::uint8_t> lut_;  ///< depth (0..65535) -> bin
+  std::vector<std::uint16_t> upper_edge_;  ///< per bin b: the smallest depth of a higher bin
+  std::vector<float> root_table_;           ///< per distinct area A: sqrt(float(c) / float(A)), c = 0..A
+  std::vector<std::uint32_t> root_offset_;  ///< per region: where its area's roots start (or kNoTable)
 };
 
 }  // namespace rdsf
