@@ -1,6 +1,7 @@
 #include "detector/detect_run.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -142,10 +143,21 @@ int run_detect(const DetectOptions& o) {
   if (evaluate) {
     std::vector<SweepResult> results;
     for (std::size_t m = 0; m < models.size(); ++m) {
-      results.push_back(sweep_thresholds(evaluated[m], truth, o.thresholds, o.pipeline.tracking, model_label(models[m])));
+      const BoostedModel& model = models[m];
+      const double operating = o.pipeline.score_threshold ? model.probability(*o.pipeline.score_threshold)
+                                                          : o.pipeline.probability_threshold;
+      results.push_back(sweep_thresholds(evaluated[m], truth, o.thresholds, o.pipeline.tracking, model_label(model),
+                                         model.calibration(), operating));
       results.back().fps = wall_s > 0 ? static_cast<double>(frames) / wall_s : 0.0;
+      // What the model file's validation predicted at (the kept level nearest) the operating probability.
+      for (const ProbabilityPoint& p : model.training().validation.by_probability) {
+        if (!results.back().validation ||
+            std::abs(p.probability - operating) < std::abs(results.back().validation->probability - operating)) {
+          results.back().validation = p;
+        }
+      }
     }
-    std::cout << write_evaluation_report(results, o.report_dir, o.pipeline.threshold_classifier);
+    std::cout << write_evaluation_report(results, o.report_dir);
     std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, summary.txt, summary.md, roc.png, det.png)\n";
   }
   return 0;

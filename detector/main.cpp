@@ -2,6 +2,7 @@
 // and evaluates models against ground truth.
 #include "cli/cli.hpp"
 #include "detector/detect_run.hpp"
+#include "evaluation/threshold_sweep.hpp"
 
 int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-detect", [&] {
@@ -16,15 +17,18 @@ int main(int argc, char** argv) {
         ("model", po::value(&o.models)->composing(),
          "model file, NAME (newest version) or NAME/vN; repeat to compare models in the evaluation")
         ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
-        ("threshold", po::value(&o.pipeline.threshold_classifier)->default_value(o.pipeline.threshold_classifier),
-         "threshold_classifier: a candidate is a person when H(x) >= this")
+        ("threshold", po::value(&o.pipeline.probability_threshold)->default_value(o.pipeline.probability_threshold),
+         "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
+        ("score-threshold", po::value<double>()->notifier([&o](double h) { o.pipeline.score_threshold = h; }),
+         "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
         ("out", po::value(&o.out_csv), "write one row per candidate to this CSV")
         ("save-dir", po::value(&o.save_dir), "write NAME.detections.png per frame here")
         ("show", po::bool_switch(&o.show), "show each frame in a window (q or Esc stops)")
         ("truth", po::value(&o.truth_csv), "boxes.csv of the source: evaluate the models (needs --report-dir)")
         ("report-dir", po::value(&o.report_dir), "write metrics.csv, summary.txt, roc.png, det.png here")
         ("thresholds", po::value(&thresholds),
-         "evaluation sweep: 40,20,0 or from:to:step (default the thesis's 40 20 10 0 -5 ... -40 -60)")
+         "evaluation tables at these P(person) thresholds: 0.3,0.5,0.7 or from:to:step (default 0.01 0.02 0.05 "
+         "0.1 ... 0.95 0.98 0.99); the ROC and DET curves are exact (every distinct score)")
         ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible),
          "evaluation: people with visible_fraction below this are don't-care (no miss, no false positive)")
         ("force", po::bool_switch(&o.force), "replace an existing --out file or report");
@@ -35,12 +39,19 @@ int main(int argc, char** argv) {
     const rdsf::cli::ProgramInfo info{
         "rdsf-detect", "--source SRC [--model M] [--out FILE.csv] [--save-dir DIR] [--truth boxes.csv --report-dir DIR]",
         "Runs the detector core on every frame of SRC. Without a model every candidate is reported unscored;\n"
-        "with one, candidates are scored (H(x)), those >= --threshold are people, and people are tracked.\n"
-        "With --truth, every --model is evaluated over a threshold sweep as in the thesis."};
+        "with one, candidates are scored (H(x) and the calibrated P(person)), those with P >= --threshold are\n"
+        "people, and people are tracked. With --truth, every --model is evaluated: exact ROC and DET curves,\n"
+        "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     rdsf::cli::apply_calibration(o.camera, calibration);
     o.feature_spec_given = !values["feature-spec"].defaulted();
-    o.thresholds = rdsf::cli::parse_thresholds(thresholds);
+    o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
+    for (double p : o.thresholds) {
+      if (!(p > 0.0 && p < 1.0)) throw rdsf::cli::UsageError("--thresholds are probabilities inside (0, 1), got " + std::to_string(p));
+    }
+    if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
+      throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
+    }
     return rdsf::run_detect(o);
   });
 }

@@ -82,7 +82,7 @@ train_recipe() {  # recipe, negative sets...
     hugeTree) pos=5628 neg=22454 ;; treeLast) pos=1115 neg=10085 ;;
   esac
   "$train" --recipe "models/recipes/$recipe.yml" --models-dir "$models" --pos "$sets/people" --neg "$@" \
-    --positives "$(count "$pos" "$scale")" --negatives "$(count "$neg" "$scale")" --rounds "$rounds"
+    --positives "$(count "$pos" "$scale")" --negatives "$(count "$neg" "$scale")" --rounds "$rounds" --group-by block
 }
 
 step 4 "train the recipes (scale $scale of the thesis's sample counts, $rounds rounds)"
@@ -96,7 +96,7 @@ train_recipe treeLast "$sets/negatives" "$sets/hard-negatives" "$sets/people"
 step 5 "evaluate on the held-out synthetic sequence$([ -n "$real" ] && [ -f "$real/boxes.csv" ] && echo ' and on real frames')"
 evaluate() {  # source, truth, report folder
   "$detect" --source "$1" --truth "$2" --report-dir "$3" --models-dir "$models" \
-    --model tree --model tree2 --model hugeTree --model treeLast --thresholds=-60:60:5 --save-dir "$3/frames" \
+    --model tree --model tree2 --model hugeTree --model treeLast --save-dir "$3/frames" \
     >/dev/null
 }
 evaluate "$data/test" "$data/test/boxes.csv" "$run/synthetic"

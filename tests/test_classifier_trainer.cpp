@@ -141,8 +141,10 @@ TEST_F(TrainerProgram, InspectShowsHeaderFiguresAndCellPairs) {
   const test::RunResult r = train("--inspect toy --top 3");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("model        toy v1"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("format       rdsf-model version 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("format       rdsf-model version 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("AUC"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("calibration  platt: P(person) = 1 / (1 + exp(-("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("by P(person)  P>=0.1: TAR"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("most used features"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("(row "), std::string::npos) << r.out;
   const test::RunResult missing = train("--inspect nothing-here");
@@ -254,6 +256,56 @@ TEST(FeatureSpecOption, UnknownNamesAndParametersAreUsageErrorsInEveryProgram) {
       EXPECT_FALSE(std::filesystem::exists(out + ".csv")) << program;
     }
   }
+}
+
+// The levers of issue "honest figures": refused before any work when they make no sense.
+TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
+  const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name x ";
+  const test::RunResult shared = train(sets + "--validation-pos " + test::quote(people) + " --validation-neg " +
+                                       test::quote(negatives));
+  EXPECT_EQ(shared.exit_code, 1);
+  EXPECT_NE(shared.err.find("validation sets share"), std::string::npos) << shared.err;
+  const test::RunResult augment = train(sets + "--augment mirror,rotate");
+  EXPECT_EQ(augment.exit_code, 1);
+  EXPECT_NE(augment.err.find("'rotate' is not known"), std::string::npos) << augment.err;
+  const test::RunResult copies = train(sets + "--augment mirror --augment-copies 3");
+  EXPECT_EQ(copies.exit_code, 1);
+  EXPECT_NE(copies.err.find("need shift, scale or occlusion"), std::string::npos) << copies.err;
+  const test::RunResult depth = train(sets + "--depth 7");
+  EXPECT_EQ(depth.exit_code, 1);
+  EXPECT_NE(depth.err.find("depth must be"), std::string::npos) << depth.err;
+  const test::RunResult rate = train(sets + "--learning-rate 1.5");
+  EXPECT_EQ(rate.exit_code, 1);
+  const test::RunResult calibration = train(sets + "--calibration magic");
+  EXPECT_EQ(calibration.exit_code, 1);
+  EXPECT_NE(calibration.err.find("'magic' is not known"), std::string::npos) << calibration.err;
+  for (const test::RunResult* r : {&shared, &augment, &copies, &depth, &rate, &calibration}) {
+    // One error line, and it is the last thing printed.
+    std::size_t errors = 0;
+    for (std::size_t at = r->err.find("error:"); at != std::string::npos; at = r->err.find("error:", at + 1)) ++errors;
+    EXPECT_EQ(errors, 1u) << r->err;
+    EXPECT_EQ(r->err.find('\n', r->err.find("error:")), r->err.size() - 1) << r->err;
+  }
+  EXPECT_FALSE(fs::exists(models + "/x"));
+}
+
+// Trees, shrinkage, augmentation and group validation through the program: recorded in the model file.
+TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
+  const test::RunResult r = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) +
+                                  " --name levers --rounds 4 --depth 2 --learning-rate 0.5 --augment mirror");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("augmentation (mirror, seed 1): 60 more positives"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("calibration platt"), std::string::npos) << r.err;
+  const BoostedModel model = BoostedModel::load("levers", models);
+  EXPECT_EQ(model.format_version(), 2);
+  EXPECT_EQ(model.weak_classifiers().front().kind, WeakClassifier::Kind::Tree);
+  EXPECT_NE(model.training().validation.source.find("held-out groups"), std::string::npos);
+  // Augmented copies are trained on, never validated: validation holds originals only.
+  EXPECT_LE(model.training().validation.positives, 60u);
+  EXPECT_GT(model.training().train_positives + model.training().validation.positives, 60u);
+  bool recorded = false;
+  for (const auto& [key, value] : model.training().parameters) recorded = recorded || (key == "depth" && value == "2");
+  EXPECT_TRUE(recorded);
 }
 
 }  // namespace

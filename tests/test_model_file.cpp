@@ -2,6 +2,7 @@
 // unknown format versions and foreign feature specs, and the reference files every release must load.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -151,7 +152,7 @@ TEST(ModelFile, UnknownFormatVersionIsRefused) {
   BoostedModel model = small_model(2);
   const std::string path = save_new_model_version(model, "toy", dir.path().string());
   const std::string bad = dir / "future.yml";
-  write_text(bad, replace_once(read_text(path), "format_version: 1", "format_version: 7"));
+  write_text(bad, replace_once(read_text(path), "format_version: 2", "format_version: 7"));
   const std::string message = message_of([&] { BoostedModel::load(bad); });
   EXPECT_NE(message.find(bad + ": model format version 7 is not known"), std::string::npos) << message;
   const std::string other = dir / "other.yml";
@@ -257,6 +258,30 @@ TEST(ReferenceModels, FormatVersion1OpenCvLoadsWithKnownScores) {
   EXPECT_FALSE(model.opencv_model_yaml().empty());
   const cv::Mat1f input = reference_input();
   EXPECT_NEAR(model.score(input[0]), -0.4877636329465857, 1e-9);
+}
+
+// Format version 2: trees of look-up tables and a Platt calibration.
+TEST(ReferenceModels, FormatVersion2TreeLoadsWithKnownScoreAndProbability) {
+  const BoostedModel model = BoostedModel::load(reference_path("rdsf-model-v2-tree.yml"));
+  EXPECT_EQ(model.name(), "reference-tree");
+  EXPECT_EQ(model.format_version(), 2);
+  ASSERT_EQ(model.weak_classifiers().size(), 4u);
+  EXPECT_EQ(model.weak_classifiers().front().kind, WeakClassifier::Kind::Tree);
+  EXPECT_EQ(model.weak_classifiers().front().nodes.size(), 3u);
+  EXPECT_EQ(model.calibration().method, "platt");
+  EXPECT_EQ(model.training().validation.by_probability.size(), 19u);
+  const cv::Mat1f input = reference_input();
+  const double h = model.score(input[0]);
+  EXPECT_NEAR(h, -0.78159114377759153, 1e-9);
+  EXPECT_NEAR(model.probability(h), 0.20575998946820628, 1e-9);
+}
+
+// Format 1 files have no calibration: P(person) is Real AdaBoost's reading of H as half the log-odds.
+TEST(ReferenceModels, FormatVersion1ReadsAsUncalibrated) {
+  const BoostedModel model = BoostedModel::load(reference_path("rdsf-model-v1-native.yml"));
+  EXPECT_EQ(model.format_version(), 1);
+  EXPECT_EQ(model.calibration().method, "none");
+  EXPECT_NEAR(model.probability(-1.2211271644717994), 1.0 / (1.0 + std::exp(2 * 1.2211271644717994)), 1e-12);
 }
 
 }  // namespace

@@ -41,7 +41,15 @@ BoostedModel random_model(const FeatureSpec& spec, int rounds, unsigned seed) {
   for (int r = 0; r < rounds; ++r) {
     WeakClassifier w;
     w.feature = static_cast<int>(random() % static_cast<unsigned>(spec.dimension()));
-    if (r % 7 == 3) {  // a stump now and then
+    if (r % 5 == 1) {  // a depth-2 tree of look-up tables: three nodes, three features
+      w.kind = WeakClassifier::Kind::Tree;
+      for (int k = 0; k < 3; ++k) {
+        LutNode node;
+        node.feature = k == 0 ? w.feature : static_cast<int>(random() % static_cast<unsigned>(spec.dimension()));
+        for (int b = 0; b < 64; ++b) node.responses.push_back(response(random));
+        w.nodes.push_back(node);
+      }
+    } else if (r % 7 == 3) {  // a stump now and then
       w.kind = WeakClassifier::Kind::Stump;
       w.threshold = 0.5;
       w.left = response(random);
@@ -65,10 +73,14 @@ TEST(FeaturesRead, AreTheWeakClassifiersFeaturesAscendingWithoutRepeats) {
   const std::vector<int> read = features_read(model);
   EXPECT_TRUE(std::is_sorted(read.begin(), read.end()));
   EXPECT_EQ(std::adjacent_find(read.begin(), read.end()), read.end());
+  std::size_t nodes = 0;
   for (const WeakClassifier& w : model.weak_classifiers()) {
     EXPECT_TRUE(std::binary_search(read.begin(), read.end(), w.feature));
+    for (const LutNode& n : w.nodes) EXPECT_TRUE(std::binary_search(read.begin(), read.end(), n.feature));
+    nodes += w.nodes.size();
   }
-  EXPECT_LE(read.size(), 30u);
+  EXPECT_GT(nodes, 0u);  // trees are among them
+  EXPECT_LE(read.size(), 30u + nodes);
 }
 
 TEST(ModelScorer, ScoresEqualTheFullVectorsBitForBit) {
@@ -77,11 +89,12 @@ TEST(ModelScorer, ScoresEqualTheFullVectorsBitForBit) {
     for (int rounds : {1, 100, 300}) {
       const BoostedModel model = random_model(spec, rounds, static_cast<unsigned>(rounds));
       const ModelScorer scorer(model);
-      EXPECT_LE(scorer.features().size(), rounds);
+      EXPECT_EQ(scorer.features().features(), features_read(model));  // trees read several
       for (unsigned seed = 0; seed < 6; ++seed) {
         const cv::Mat1w crop = person_crop(seed);
         const std::vector<float> full = extractor.compute(crop);
         EXPECT_EQ(scorer.score(crop), model.score(full.data())) << spec.name() << " rounds " << rounds;
+        EXPECT_EQ(scorer.probability(crop), model.probability(model.score(full.data())));
       }
     }
   }

@@ -2,6 +2,7 @@
 // assisted mode, mine negatives, train, then detect, track and evaluate on a held-out sequence.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -30,10 +31,10 @@ TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
            "/train/boxes.csv --answers /dev/null");
   must_run(tool("rdsf-mine") + " --source " + d + "/empty --out " + d + "/negatives");
   must_run(tool("rdsf-train") + " --name system --models-dir " + d + "/models --pos " + d + "/people --neg " + d +
-           "/negatives --rounds 100");
+           "/negatives --rounds 100 --folds 4");
   const test::RunResult r = test::run(tool("rdsf-detect") + " --source " + d + "/test --truth " + d +
                                       "/test/boxes.csv --model system --models-dir " + d + "/models --report-dir " +
-                                      d + "/report --thresholds=-30:30:1 --out " + d + "/detections.csv");
+                                      d + "/report --thresholds=0.01:0.99:0.01 --out " + d + "/detections.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::cout << r.out;
   for (const char* file : {"metrics.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
@@ -48,13 +49,13 @@ TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
     std::vector<std::string> f;
     std::stringstream fields(line);
     for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
-    ASSERT_EQ(f.size(), 20u) << line;
+    ASSERT_EQ(f.size(), 21u) << line;
     if (f[1] != "all") continue;
-    best_mota = std::max(best_mota, std::stod(f[14]));
-    if (std::stod(f[2]) == 0) tar_at_zero = std::stod(f[8]);
+    best_mota = std::max(best_mota, std::stod(f[15]));
+    if (std::abs(std::stod(f[2]) - 0.5) < 1e-9) tar_at_zero = std::stod(f[9]);
   }
   std::cout.precision(6);
-  std::cout << "best MOTA " << best_mota << ", TAR at threshold 0 " << tar_at_zero << "\n";
+  std::cout << "best MOTA " << best_mota << ", TAR at P >= 0.5 " << tar_at_zero << "\n";
   // Measured here (deterministic: same seeds, same bytes, same model): best MOTA 0.800 at threshold 7,
   // TAR 0.84 at FPPF <= 0.1. The issue asks for MOTA >= 0.8 at the best threshold.
   EXPECT_GE(best_mota, 0.8);

@@ -41,10 +41,20 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
   out << "format       " << kModelFormat << " version " << model.format_version() << ", created " << model.created()
       << "\n";
   out << "features     " << spec.canonical() << "  (hash " << spec.hash() << ")\n";
-  const bool lut = !model.weak_classifiers().empty() && model.weak_classifiers().front().kind == WeakClassifier::Kind::Lut;
+  const WeakClassifier::Kind kind =
+      model.weak_classifiers().empty() ? WeakClassifier::Kind::Lut : model.weak_classifiers().front().kind;
+  const std::string tables = "look-up tables of " + std::to_string(model.bins().count) + " bins";
   out << "classifier   " << model.weak_classifiers().size() << " weak classifiers, "
-      << (lut ? "look-up tables of " + std::to_string(model.bins().count) + " bins" : std::string("stumps"))
+      << (kind == WeakClassifier::Kind::Lut    ? tables
+          : kind == WeakClassifier::Kind::Tree ? "trees of depth " + std::to_string(model.weak_classifiers().front().depth()) +
+                                                     " (" + tables + ", " +
+                                                     std::to_string(model.used_features().size()) + " features read)"
+                                               : std::string("stumps"))
       << (model.opencv_model_yaml().empty() ? "" : ", embedded OpenCV model") << "\n";
+  const ScoreCalibration& c = model.calibration();
+  std::snprintf(line, sizeof line, "calibration  %s: P(person) = 1 / (1 + exp(-(%.4f H %+.4f)))%s%s\n", c.method.c_str(),
+                c.a, c.b, c.source.empty() ? "" : ", fitted on ", c.source.c_str());
+  out << line;
   out << "backend      " << t.backend << "\n";
   out << "recipe       " << t.recipe << "\n";
   out << "parameters  ";
@@ -70,6 +80,15 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
       out << line;
     }
     out << "\n";
+    if (!v.by_probability.empty()) {
+      out << "by P(person) ";
+      for (const ProbabilityPoint& p : v.by_probability) {
+        if (std::lround(p.probability * 100) % 10 != 0) continue;  // 0.1, 0.2, ..., 0.9
+        std::snprintf(line, sizeof line, " P>=%.1f: TAR %.3f FAR %.3f", p.probability, p.tar, p.far);
+        out << line;
+      }
+      out << "\n";
+    }
   }
   if (!v.rounds.empty()) {
     out << "rounds        round  feature  train err  val err     AUC   TAR@1%  TAR@5%\n";

@@ -80,6 +80,11 @@ Recipe load_recipe(const std::string& name_or_path, const std::string& models_di
   p.weight_trim = real(root, "weight_trim", p.weight_trim, path);
   p.early_stopping = integer(root, "early_stopping", p.early_stopping, path);
   p.report_every = integer(root, "report_every", p.report_every, path);
+  p.depth = integer(root, "depth", p.depth, path);
+  p.folds = integer(root, "folds", p.folds, path);
+  p.learning_rate = real(root, "learning_rate", p.learning_rate, path);
+  const cv::FileNode calibration = root["calibration"];
+  if (calibration.isString()) p.calibration = static_cast<std::string>(calibration);
   try {
     validate_training_params(p);
   } catch (const Error& e) {

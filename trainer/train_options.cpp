@@ -42,6 +42,25 @@ po::options_description train_options(TrainOptions& o) {
       ("early-stopping", optional_into(o.early_stopping),
        "stop after this many rounds without a better validation AUC, keep the best (0 = off). Default 0")
       ("report-every", optional_into(o.report_every), "rounds between the figures kept in the model file. Default 10")
+      ("depth", optional_into(o.depth),
+       "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees). Default 1")
+      ("learning-rate", optional_into(o.learning_rate), "native: shrinkage of every response, in (0, 1]. Default 1")
+      ("smoothing", optional_into(o.smoothing), "native: eps of the responses (0 = 1 / training samples). Default 0")
+      ("calibration", optional_into(o.calibration),
+       "platt (fit P(person) on the validation samples) or none (P = 1 / (1 + exp(-2 H))). Default platt")
+      ("folds", optional_into(o.folds),
+       "K-fold validation by group (2-20): K models on K-1 folds of whole groups give the validation figures and "
+       "calibration of the final model, trained on all samples (0 = one held-out fraction). Default 0")
+      ("group-frames", po::value(&o.group_frames)->default_value(o.group_frames),
+       "validation groups: a recording's frames in blocks of this many (consecutive frames never split); "
+       "0 = split by sample (dishonest: near-identical crops on both sides; only for comparison)")
+      ("group-by", po::value(&o.group_by)->default_value(o.group_by),
+       "validation groups: recording-block (a recording's frame blocks), block (frame blocks of all recordings "
+       "together: recordings of the same scenes in step) or recording (whole recordings)")
+      ("augment", po::value(&o.augment)->default_value(o.augment),
+       "positives augmented at training time: off, or a list of mirror, shift, scale, occlusion")
+      ("augment-copies", po::value(&o.augment_copies)->default_value(o.augment_copies),
+       "random variants per positive (shift / scale / occlusion), besides the mirror")
       ("threads", po::value(&o.threads)->default_value(o.threads), "threads for features and histograms (0 = all cores)")
       ("feature-pool", po::value(&o.feature_pool)->default_value(o.feature_pool),
        "train on a seeded pool of this many of the spec's features (0 = all when the rows fit --memory-budget-mb, "

@@ -1,12 +1,15 @@
 #include "trainer/train_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <iostream>
 #include <limits>
 
 #include "classifier/boosted_model.hpp"
 #include "classifier/model_registry.hpp"
+#include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "trainer/recipe.hpp"
 #include "trainer/training_samples.hpp"
@@ -38,6 +41,11 @@ Recipe effective_recipe(const TrainOptions& o) {
   if (o.seed) p.seed = *o.seed;
   if (o.validation_fraction) p.validation_fraction = *o.validation_fraction;
   if (o.weight_trim) p.weight_trim = *o.weight_trim;
+  if (o.depth) p.depth = *o.depth;
+  if (o.folds) p.folds = *o.folds;
+  if (o.learning_rate) p.learning_rate = *o.learning_rate;
+  if (o.smoothing) p.smoothing = *o.smoothing;
+  if (o.calibration) p.calibration = *o.calibration;
   p.threads = o.threads;
   validate_training_params(p);
   if (r.pos_sets.empty() || r.neg_sets.empty()) {
@@ -61,6 +69,9 @@ SampleChoice training_choice(const Recipe& r, const TrainOptions& o) {
   if (o.feature_spec_given) c.spec = o.feature_spec;
   c.feature_pool = o.feature_pool;
   c.memory_budget_mb = o.memory_budget_mb;
+  c.group_frames = o.group_frames;
+  c.group_by = parse_group_by(o.group_by);
+  c.augmentation = parse_augmentation(o.augment, o.augment_copies, r.params.seed);
   return c;
 }
 
@@ -74,10 +85,22 @@ std::string duration_text(double seconds) {
   return text;
 }
 
+// A separate validation set must not share a group (recording and frame block) with the training rows.
+void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& validation) {
+  std::vector<std::string> shared;
+  std::set_intersection(train.group_names.begin(), train.group_names.end(), validation.group_names.begin(),
+                        validation.group_names.end(), std::back_inserter(shared));
+  if (!shared.empty()) {
+    throw Error("the validation sets share " + std::to_string(shared.size()) + " groups with the training sets (e.g. '" +
+                shared.front() + "': the same recording and frames): validate on other recordings");
+  }
+}
+
 }  // namespace
 
 int run_train(const TrainOptions& o) {
   const Recipe recipe = effective_recipe(o);
+  if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
   const std::string name = o.name.empty() ? recipe.name : o.name;
   if (name.empty()) throw Error("ad hoc training needs a model name: give --name NAME");
   validate_model_name(name);
@@ -97,7 +120,10 @@ int run_train(const TrainOptions& o) {
     v.spec = train.spec;          // the same spec ...
     v.columns = train.columns;    // ... and the same features as training
     v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
+    v.group_frames = o.group_frames;
+    v.group_by = parse_group_by(o.group_by);
     validation = choose_samples(v, std::cerr, o.threads);
+    check_disjoint_groups(train, validation);
   }
   const std::size_t positives = static_cast<std::size_t>(std::count(train.labels.begin(), train.labels.end(), 1));
   std::cerr << "rdsf-train: " << positives << " positives, " << train.labels.size() - positives
@@ -121,12 +147,15 @@ int run_train(const TrainOptions& o) {
               << "/round  " << duration_text(p.left_s) << " left\n";
   };
   const bool separate = !validation.labels.empty();
+  TrainingRowInfo info;
+  info.groups = train.groups;
+  info.augmented = train.augmented;
   BoostTrainingParams params = recipe.params;
   params.feature_spec = train.spec;
   params.feature_columns = train.columns;
   BoostedModel model = train_boosted_model(train.rows, train.labels, params, progress,
                                            separate ? &validation.rows : nullptr,
-                                           separate ? &validation.labels : nullptr);
+                                           separate ? &validation.labels : nullptr, info);
   TrainingRecord& record = model.training();
   record.recipe = o.recipe.empty() ? "ad hoc" : recipe.name + " (" + recipe.path + ")";
   record.sample_sets = train.sets;
@@ -136,6 +165,9 @@ int run_train(const TrainOptions& o) {
   record.parameters.emplace_back("feature_spec", train.spec.option_text());
   record.parameters.emplace_back("feature_pool", train.columns.empty() ? std::string("all")
                                                                        : std::to_string(train.columns.size()));
+  record.parameters.emplace_back("group_frames", std::to_string(o.group_frames));
+  record.parameters.emplace_back("group_by", o.group_by);
+  record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
 
   const std::string path = save_new_model_version(model, name, o.models_dir);
   const ValidationFigures& v = record.validation;
@@ -144,6 +176,15 @@ int run_train(const TrainOptions& o) {
   if (v.positives > 0 && v.negatives > 0) {
     std::fprintf(stderr, "rdsf-train: validation AUC %.4f, TAR %.3f at FAR 1%%, %.3f at FAR 5%%, error %.4f\n",
                  v.summary.auc, v.summary.tar_at_far_1, v.summary.tar_at_far_5, v.summary.error_rate);
+    const ScoreCalibration& c = model.calibration();
+    std::fprintf(stderr, "rdsf-train: calibration %s: P(person) = 1 / (1 + exp(-(%.4f H + %.4f)))", c.method.c_str(),
+                 c.a, c.b);
+    for (const ProbabilityPoint& p : v.by_probability) {
+      if (std::abs(p.probability - 0.5) < 1e-9) {
+        std::fprintf(stderr, "; at P >= 0.5: TAR %.3f, FAR %.3f", p.tar, p.far);
+      }
+    }
+    std::fprintf(stderr, "\n");
   }
   std::cerr << "rdsf-train: wrote " << path << "\n";
   return 0;

@@ -21,6 +21,13 @@ struct TrainOptions {
   std::optional<std::string> backend;
   std::optional<std::uint64_t> seed;
   std::optional<double> validation_fraction, weight_trim;
+  std::optional<int> depth, folds;
+  std::optional<double> learning_rate, smoothing;
+  std::optional<std::string> calibration;
+  int group_frames = 30;        ///< frames per validation group block
+  std::string group_by = "recording-block";  ///< recording-block, block or recording
+  std::string augment = "off";  ///< mirror,shift,scale,occlusion or off
+  int augment_copies = 0;       ///< random variants per positive
   int threads = 0;
   FeatureSpec feature_spec;          ///< --feature-spec (checked against the sets only when given)
   bool feature_spec_given = false;

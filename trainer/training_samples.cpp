@@ -1,5 +1,6 @@
 #include "trainer/training_samples.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <ostream>
 
@@ -8,6 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/stable_hash.hpp"
+#include "dataset/sample_groups.hpp"
 #include "dataset/sample_set.hpp"
 #include "features/feature_spec_record.hpp"
 #include "features/feature_subset.hpp"
@@ -72,8 +74,11 @@ ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size
 // Features are fetched in chunks: little memory beyond the result, and progress as they come.
 constexpr std::size_t kChunk = 2048;
 
+using RowOrigin = SampleOrigin;
+
 void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, const RdsfExtractor& extractor,
-                 int threads, ChosenSamples& out, int& row, cli::Progress& progress) {
+                 int threads, ChosenSamples& out, int& row, cli::Progress& progress, std::vector<RowOrigin>& origins,
+                 std::vector<std::pair<std::size_t, std::size_t>>& sources) {
   for (std::size_t s = 0; s < pick.sets.size(); ++s) {
     std::vector<std::size_t> indices;
     for (const PoolEntry& e : pick.chosen) {
@@ -90,6 +95,11 @@ void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, 
       rows.copyTo(out.rows.rowRange(row, row + rows.rows));
       row += rows.rows;
       out.labels.insert(out.labels.end(), chunk.size(), label);
+      for (std::size_t r : chunk) {
+        const SampleRecord& record = pick.sets[s].records()[r];
+        origins.push_back({record.source, record.frame});
+        sources.emplace_back(s, r);
+      }
       progress.update(row, (label == 1 ? "positives from " : "negatives from ") + pick.sets[s].dir());
     }
   }
@@ -123,12 +133,54 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   const RdsfExtractor extractor(out.spec);
   std::optional<FeatureSubset> subset;
   if (!out.columns.empty()) subset.emplace(out.spec, out.columns);
-  out.rows.create(static_cast<int>(samples), subset ? subset->size() : extractor.dimension());
+  const int columns = subset ? subset->size() : extractor.dimension();
+  // One crop's row: the pool's features, or all of them.
+  auto compute_row = [&](const cv::Mat1w& crop, float* values) {
+    if (subset) {
+      subset->compute(crop, values);
+    } else {
+      extractor.compute(crop, values);
+    }
+  };
+  out.rows.create(static_cast<int>(samples), columns);
+  choice.augmentation.validate();
   int row = 0;
   cli::Progress progress(log, "samples", out.rows.rows);
-  append_rows(pos, 1, subset ? &*subset : nullptr, extractor, threads, out, row, progress);
-  append_rows(neg, 0, subset ? &*subset : nullptr, extractor, threads, out, row, progress);
+  std::vector<RowOrigin> origins;
+  std::vector<std::pair<std::size_t, std::size_t>> pos_sources, neg_sources;
+  append_rows(pos, 1, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, pos_sources);
+  append_rows(neg, 0, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, neg_sources);
   progress.finish(row, "features ready");
+  out.augmented.assign(out.labels.size(), false);
+  if (choice.augmentation.enabled()) {
+    // Variants of every positive with a crop, after the originals, with their original's origin (group).
+    std::vector<float> values(static_cast<std::size_t>(columns));
+    cv::Mat1f extra(0, columns);
+    std::vector<RowOrigin> extra_origins;
+    for (std::size_t k = 0; k < pos_sources.size(); ++k) {
+      const SampleSet& set = pos.sets[pos_sources[k].first];
+      const SampleRecord& record = set.records()[pos_sources[k].second];
+      if (!record.has_crop) continue;
+      for (const cv::Mat1w& crop : augmented_crops(set.depth_crop(pos_sources[k].second), choice.augmentation, record.id)) {
+        compute_row(crop, values.data());
+        extra.push_back(cv::Mat1f(1, columns, values.data()));
+        extra_origins.push_back(origins[k]);
+      }
+    }
+    if (!extra.empty()) {
+      cv::vconcat(out.rows, extra, out.rows);
+      out.labels.insert(out.labels.end(), static_cast<std::size_t>(extra.rows), 1);
+      out.augmented.insert(out.augmented.end(), static_cast<std::size_t>(extra.rows), true);
+      origins.insert(origins.end(), extra_origins.begin(), extra_origins.end());
+    }
+    log << "rdsf-train: augmentation (" << choice.augmentation.describe() << "): " << extra.rows
+        << " more positives\n";
+  }
+  if (choice.group_frames > 0) {
+    SampleGroups groups = sample_groups(origins, choice.group_frames, choice.group_by);
+    out.groups = std::move(groups.group);
+    out.group_names = std::move(groups.names);
+  }
   out.sets = pos.uses;
   out.sets.insert(out.sets.end(), neg.uses.begin(), neg.uses.end());
   return out;

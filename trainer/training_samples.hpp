@@ -12,6 +12,8 @@
 
 #include "classifier/training_record.hpp"
 #include "features/feature_spec.hpp"
+#include "dataset/crop_augmentation.hpp"
+#include "dataset/sample_groups.hpp"
 
 namespace rdsf {
 
@@ -29,6 +31,11 @@ struct SampleChoice {
   /// N: a seeded pool of N features (all when the spec has no more).
   std::size_t feature_pool = 0;
   std::size_t memory_budget_mb = 4096;  ///< for the float rows and their 8-bit bins (5 bytes per value)
+  /// Validation groups: recording and block of this many consecutive frames (dataset/sample_groups.hpp);
+  /// 0 = no groups (the validation split is by sample).
+  int group_frames = 30;
+  GroupBy group_by = GroupBy::recording_block;
+  CropAugmentation augmentation;  ///< positives only; off by default
 };
 
 struct ChosenSamples {
@@ -37,7 +44,11 @@ struct ChosenSamples {
   cv::Mat1f rows;           ///< one feature row per sample, positives first
   std::vector<int> labels;  ///< 1 / 0
   std::vector<SampleSetUse> sets;  ///< per set and role: path, manifest hash, available, used
+  std::vector<std::size_t> groups;    ///< per row: group id (dataset/sample_groups.hpp)
+  std::vector<std::string> group_names;  ///< group id -> "recording#block"
+  std::vector<bool> augmented;        ///< per row: an augmented copy (after the originals)
 };
+
 
 /// Reads the sets, picks the samples and computes (or reads) their features. Warnings go to `log`.
 /// Throws Error when a set cannot be read, has another feature spec (naming both), or a class ends up empty.

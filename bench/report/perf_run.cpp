@@ -155,7 +155,7 @@ double run_frames_in_parallel(int count, int threads, const std::function<DepthF
         a->analysis = core.analyse(a->frame, params.full_feature_vector);
         a->scores = params.full_feature_vector ? model.score(a->analysis.features) : scorer.score(a->analysis.candidates);
         for (std::size_t c = 0; c < a->scores.size(); ++c) {
-          if (a->scores[c] < params.threshold_classifier) continue;
+          if (a->scores[c] < params.score_threshold_for(model)) continue;
           const Candidate& cand = a->analysis.candidates[c];
           a->detections.push_back({cand.strict_box, cand.layer_depth_mm,
                                    ColourHistogram::of(cand.colour_crop, cand.depth_crop, params.tracking.histogram_bins)});

@@ -1,14 +1,18 @@
 #include "classifier/boost_training.hpp"
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cstdio>
+#include <random>
 
 #include "classifier/binned_matrix.hpp"
+#include "classifier/features_read.hpp"
 #include "classifier/opencv_boost.hpp"
+#include "classifier/platt_calibration.hpp"
+#include "classifier/seeded_sampling.hpp"
 #include "classifier/real_adaboost.hpp"
 #include "classifier/roc_metrics.hpp"
-#include "classifier/seeded_sampling.hpp"
 #include "core/error.hpp"
 
 namespace rdsf {
@@ -43,7 +47,11 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
     out.emplace_back("bin_min", number_text(p.bins.min_value));
     out.emplace_back("bin_max", number_text(p.bins.max_value));
     out.emplace_back("smoothing", p.smoothing > 0.0 ? number_text(p.smoothing) : "auto (1/N)");
+    out.emplace_back("depth", std::to_string(p.depth));
+    out.emplace_back("learning_rate", number_text(p.learning_rate));
   }
+  out.emplace_back("calibration", p.calibration);
+  if (p.folds > 0) out.emplace_back("folds", std::to_string(p.folds));
   out.emplace_back("weight_trim", number_text(p.weight_trim));
   out.emplace_back("validation_fraction", number_text(p.validation_fraction));
   out.emplace_back("seed", std::to_string(p.seed));
@@ -53,6 +61,29 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
 }
 
 }  // namespace
+
+void record_validation(BoostedModel& model, ValidationFigures& figures, const std::vector<double>& scores,
+                       const std::vector<int>& labels, const std::string& calibration, const std::string& source) {
+  figures.summary = summarise_roc(scores, labels);
+  figures.roc = roc_at_far_levels(roc_curve(scores, labels));
+  if (calibration == "platt") {
+    ScoreCalibration c = fit_platt(scores, labels);
+    c.source = source;
+    model.set_calibration(c);
+  }
+  const auto positives = static_cast<double>(std::count(labels.begin(), labels.end(), 1));
+  const double negatives = static_cast<double>(labels.size()) - positives;
+  figures.by_probability.clear();
+  for (double p : probability_levels()) {
+    const double h = model.calibration().score_at(p);
+    std::size_t tp = 0, fp = 0;
+    for (std::size_t k = 0; k < scores.size(); ++k) {
+      if (scores[k] < h) continue;
+      (labels[k] == 1 ? tp : fp) += 1;
+    }
+    figures.by_probability.push_back({p, static_cast<double>(tp) / positives, static_cast<double>(fp) / negatives});
+  }
+}
 
 void validate_training_params(const BoostTrainingParams& p) {
   if (p.backend != "native" && p.backend != "opencv") {
@@ -66,6 +97,14 @@ void validate_training_params(const BoostTrainingParams& p) {
   }
   if (p.report_every < 1) throw Error("report-every must be at least 1");
   if (p.early_stopping < 0) throw Error("early stopping must be 0 (off) or a number of rounds");
+  if (p.depth < 1 || p.depth > 4) throw Error("depth must be 1 (one look-up table) to 4 (" + std::to_string(p.depth) + " given)");
+  if (p.depth > 1 && p.backend != "native") throw Error("trees (depth > 1) need the native backend");
+  if (!(p.learning_rate > 0.0 && p.learning_rate <= 1.0)) throw Error("learning rate must be in (0, 1]");
+  if (p.folds < 0 || p.folds == 1 || p.folds > 20) throw Error("folds must be 0 (off) or 2-20");
+  if (p.folds > 0 && p.early_stopping > 0) throw Error("early stopping and group folds do not go together (give one)");
+  if (p.calibration != "platt" && p.calibration != "none") {
+    throw Error("calibration '" + p.calibration + "' is not known (platt or none)");
+  }
   p.feature_spec.validate();
   if (!p.feature_columns.empty()) {
     if (p.backend != "native") throw Error("a feature pool needs the native backend");
@@ -78,10 +117,20 @@ void validate_training_params(const BoostTrainingParams& p) {
   }
 }
 
+std::vector<double> probability_levels() {
+  std::vector<double> out;
+  for (int k = 1; k <= 19; ++k) out.push_back(k * 0.05);
+  return out;
+}
+
 BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& labels,
                                  const BoostTrainingParams& params, const TrainingProgressFn& progress,
-                                 const cv::Mat1f* validation_rows, const std::vector<int>* validation_labels) {
+                                 const cv::Mat1f* validation_rows, const std::vector<int>* validation_labels,
+                                 const TrainingRowInfo& info) {
   validate_training_params(params);
+  if (params.folds >= 2 && (validation_labels == nullptr || validation_labels->empty())) {
+    return train_with_group_folds(rows, labels, params, progress, info);
+  }
   const Clock::time_point start = Clock::now();
   if (rows.rows != static_cast<int>(labels.size())) {
     throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
@@ -94,6 +143,12 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
                 std::to_string(column_count) + (columns.empty() ? "" : " in the pool"));
   }
   auto feature_of = [&columns](int column) { return columns.empty() ? column : columns[static_cast<std::size_t>(column)]; };
+
+  if ((!info.groups.empty() && info.groups.size() != labels.size()) ||
+      (!info.augmented.empty() && info.augmented.size() != labels.size())) {
+    throw Error("training: groups or augmentation marks do not match the rows");
+  }
+  auto is_augmented = [&](std::size_t i) { return !info.augmented.empty() && info.augmented[i]; };
 
   // Training and validation samples.
   std::vector<std::size_t> train_index;
@@ -108,6 +163,30 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     validation.labels = *validation_labels;
     for (std::size_t i = 0; i < validation.labels.size(); ++i) validation.index.push_back(i);
     validation_source = "separate sets";
+  } else if (!info.groups.empty() && params.validation_fraction > 0.0) {
+    std::vector<bool> counts;
+    if (!info.augmented.empty()) {
+      for (bool a : info.augmented) counts.push_back(!a);
+    }
+    const HoldOutSplit split = group_split(labels, info.groups, params.validation_fraction, params.seed, counts);
+    train_index = split.train;
+    validation.rows = &rows;
+    for (std::size_t i : split.validation) {
+      if (is_augmented(i)) continue;  // copies of held-out samples are neither trained on nor validated
+      validation.index.push_back(i);
+      validation.labels.push_back(labels[i]);
+    }
+    std::vector<std::size_t> held_groups;
+    for (std::size_t i : split.validation) held_groups.push_back(info.groups[i]);
+    std::sort(held_groups.begin(), held_groups.end());
+    held_groups.erase(std::unique(held_groups.begin(), held_groups.end()), held_groups.end());
+    std::vector<std::size_t> all_groups = info.groups;
+    std::sort(all_groups.begin(), all_groups.end());
+    all_groups.erase(std::unique(all_groups.begin(), all_groups.end()), all_groups.end());
+    validation_source = "held-out groups: " + std::to_string(held_groups.size()) + " of " +
+                        std::to_string(all_groups.size()) + " (recording and frame range), about " +
+                        number_text(params.validation_fraction * 100.0) + "% per class (seed " +
+                        std::to_string(params.seed) + ")";
   } else {
     const HoldOutSplit split = stratified_split(labels, params.validation_fraction, params.seed);
     train_index = split.train;
@@ -116,7 +195,7 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     for (std::size_t i : split.validation) validation.labels.push_back(labels[i]);
     if (!validation.index.empty()) {
       validation_source = "held-out " + number_text(params.validation_fraction * 100.0) + "% per class (seed " +
-                          std::to_string(params.seed) + ")";
+                          std::to_string(params.seed) + "; samples, not groups)";
     }
   }
   const bool validating = std::count(validation.labels.begin(), validation.labels.end(), 1) > 0 &&
@@ -165,7 +244,7 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     report.train_error = train_error;
     if (validating) {
       for (std::size_t k = 0; k < validation.index.size(); ++k) {
-        validation_scores[k] += weak.respond((*validation.rows)(static_cast<int>(validation.index[k]), weak.feature), bins);
+        validation_scores[k] += weak.respond_row((*validation.rows)[static_cast<int>(validation.index[k])], bins);
       }
       const RocSummary s = summarise_roc(validation_scores, validation.labels);
       figures.roc = roc_at_far_levels(roc_curve(validation_scores, validation.labels));
@@ -202,6 +281,8 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     rp.smoothing = params.smoothing;
     rp.weight_trim = params.weight_trim;
     rp.threads = params.threads;
+    rp.depth = params.depth;
+    rp.learning_rate = params.learning_rate;
     RealAdaBoost booster(binned, train_labels, rp);
     const Clock::time_point boost_start = Clock::now();
     for (int round = 1; round <= params.rounds; ++round) {
@@ -268,16 +349,139 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     for (std::size_t k = 0; k < validation.index.size(); ++k) {
       final_scores[k] = model.score((*validation.rows)[static_cast<int>(validation.index[k])]);
     }
-    record.validation.summary = summarise_roc(final_scores, validation.labels);
-    record.validation.roc = roc_at_far_levels(roc_curve(final_scores, validation.labels));
+    record_validation(model, record.validation, final_scores, validation.labels, params.calibration, validation_source);
   }
   if (!columns.empty()) {  // columns of the pool -> features of the spec
     std::vector<WeakClassifier> renumbered = model.weak_classifiers();
-    for (WeakClassifier& w : renumbered) w.feature = feature_of(w.feature);
+    renumber_features(renumbered, feature_of);
+    const ScoreCalibration calibration = model.calibration();
     model = BoostedModel(spec, bins, std::move(renumbered));
+    model.set_calibration(calibration);
   }
   model.training() = record;
   model.set_opencv_model_yaml(std::move(opencv_yaml));
+  return model;
+}
+
+BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int>& labels,
+                                    const BoostTrainingParams& params, const TrainingProgressFn& progress,
+                                    const TrainingRowInfo& info) {
+  validate_training_params(params);
+  if (info.groups.size() != labels.size()) throw Error("group folds need the rows' groups");
+  // Groups dealt to folds in a seeded order: every group in exactly one fold.
+  std::vector<std::size_t> ids = info.groups;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  const auto folds = static_cast<std::size_t>(params.folds);
+  if (ids.size() < folds) {
+    throw Error("group folds: " + std::to_string(folds) + " folds need at least as many groups (" +
+                std::to_string(ids.size()) + " given)");
+  }
+  std::vector<std::size_t> shuffled(ids.size());
+  for (std::size_t k = 0; k < ids.size(); ++k) shuffled[k] = k;
+  std::mt19937_64 rng(params.seed);
+  for (std::size_t k = 0; k + 1 < shuffled.size(); ++k) {
+    std::swap(shuffled[k], shuffled[k + static_cast<std::size_t>(rng() % (shuffled.size() - k))]);
+  }
+  std::vector<std::size_t> fold_of_group(ids.size());
+  for (std::size_t k = 0; k < shuffled.size(); ++k) fold_of_group[shuffled[k]] = k % folds;
+  auto fold_of = [&](std::size_t row) {
+    return fold_of_group[static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), info.groups[row]) - ids.begin())];
+  };
+  auto augmented = [&](std::size_t row) { return !info.augmented.empty() && info.augmented[row]; };
+
+  BoostTrainingParams inner = params;
+  inner.folds = 0;
+  inner.validation_fraction = 0.0;
+  inner.early_stopping = 0;
+  inner.calibration = "none";
+  std::vector<double> pooled_scores;
+  std::vector<int> pooled_labels;
+  std::vector<std::vector<double>> per_round;  // pooled out-of-fold scores after each reported round
+  for (std::size_t f = 0; f < folds; ++f) {
+    std::vector<int> train_rows_index, held;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if (fold_of(i) != f) {
+        train_rows_index.push_back(static_cast<int>(i));
+      } else if (!augmented(i)) {
+        held.push_back(static_cast<int>(i));
+      }
+    }
+    cv::Mat1f fold_rows(static_cast<int>(train_rows_index.size()), rows.cols);
+    std::vector<int> fold_labels;
+    TrainingRowInfo fold_info;
+    for (std::size_t k = 0; k < train_rows_index.size(); ++k) {
+      rows.row(train_rows_index[k]).copyTo(fold_rows.row(static_cast<int>(k)));
+      fold_labels.push_back(labels[static_cast<std::size_t>(train_rows_index[k])]);
+    }
+    const auto fold_pos = std::count(fold_labels.begin(), fold_labels.end(), 1);
+    const auto held_pos = std::count_if(held.begin(), held.end(), [&](int i) { return labels[static_cast<std::size_t>(i)] == 1; });
+    if (fold_pos == 0 || fold_pos == static_cast<long>(fold_labels.size()) || held_pos == 0 ||
+        held_pos == static_cast<long>(held.size())) {
+      throw Error("group fold " + std::to_string(f + 1) + " of " + std::to_string(folds) +
+                  " leaves a class empty: give more recordings or clips, or fewer folds");
+    }
+    const TrainingProgressFn fold_progress = [&](const TrainingProgress& p) {
+      if (!progress) return;
+      TrainingProgress q = p;
+      q.rounds = p.rounds * static_cast<int>(folds + 1);
+      q.round = p.round + p.rounds * static_cast<int>(f);
+      q.left_s = p.left_s + p.round_s * p.rounds * static_cast<double>(folds - f);
+      progress(q);
+    };
+    const BoostedModel model = train_boosted_model(fold_rows, fold_labels, inner, fold_progress, nullptr, nullptr, fold_info);
+    // The model names the spec's features; the rows hold the pool's columns (when there is a pool).
+    std::vector<WeakClassifier> weak_on_rows = model.weak_classifiers();
+    if (!params.feature_columns.empty()) {
+      std::map<int, int> column_of;
+      for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
+      renumber_features(weak_on_rows, [&column_of](int feature) { return column_of.at(feature); });
+    }
+    const std::size_t rounds = weak_on_rows.size();
+    if (per_round.size() < rounds) per_round.resize(rounds);
+    for (int i : held) {
+      double h = 0.0;
+      for (std::size_t r = 0; r < rounds; ++r) {
+        h += weak_on_rows[r].respond_row(rows[i], model.bins());
+        per_round[r].push_back(h);
+      }
+      pooled_scores.push_back(h);
+      pooled_labels.push_back(labels[static_cast<std::size_t>(i)]);
+    }
+  }
+  // The final model on every row; its validation figures are the folds' pooled out-of-fold figures.
+  const TrainingProgressFn final_progress = [&](const TrainingProgress& p) {
+    if (!progress) return;
+    TrainingProgress q = p;
+    q.rounds = p.rounds * static_cast<int>(folds + 1);
+    q.round = p.round + p.rounds * static_cast<int>(folds);
+    progress(q);
+  };
+  BoostedModel model = train_boosted_model(rows, labels, inner, final_progress, nullptr, nullptr, {});
+  TrainingRecord& record = model.training();
+  record.parameters = parameter_record(params);
+  const std::string source = std::to_string(folds) + " folds of whole groups (" + std::to_string(ids.size()) +
+                             " groups, seed " + std::to_string(params.seed) +
+                             "): figures of the folds' models on their held-out groups, pooled";
+  record.validation = ValidationFigures{};
+  record.validation.source = source;
+  record.validation.positives = static_cast<std::size_t>(std::count(pooled_labels.begin(), pooled_labels.end(), 1));
+  record.validation.negatives = pooled_labels.size() - record.validation.positives;
+  for (std::size_t r = 0; r < per_round.size(); ++r) {
+    const int round = static_cast<int>(r + 1);
+    if (round % params.report_every != 0 && r + 1 != per_round.size()) continue;
+    const RocSummary s = summarise_roc(per_round[r], pooled_labels);
+    RoundFigures f;
+    f.round = round;
+    f.feature = model.weak_classifiers()[r].feature;
+    f.validation_error = s.error_rate;
+    f.auc = s.auc;
+    f.tar_at_far_1 = s.tar_at_far_1;
+    f.tar_at_far_5 = s.tar_at_far_5;
+    f.roc = roc_at_far_levels(roc_curve(per_round[r], pooled_labels));
+    record.validation.rounds.push_back(f);
+  }
+  record_validation(model, record.validation, pooled_scores, pooled_labels, params.calibration, source);
   return model;
 }
 

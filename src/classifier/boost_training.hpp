@@ -1,7 +1,9 @@
 #pragma once
-// One training run from feature rows to a BoostedModel (not yet saved): validation split, the chosen
-// backend round by round, validation figures (AUC, TAR at FAR 1 % and 5 %) after every round, optional
-// early stopping, and a progress report per round. Takes feature matrices, not sample sets.
+// One training run from feature rows to a BoostedModel (not yet saved): validation split (by group when
+// the rows' groups are given: recording and frame range, so near-identical crops of consecutive frames never
+// sit on both sides), the chosen backend round by round, validation figures (AUC, TAR at FAR 1 % and 5 %)
+// after every round, optional early stopping, Platt calibration of the scores on the validation samples,
+// and a progress report per round. Takes feature matrices, not sample sets.
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -27,11 +29,28 @@ struct BoostTrainingParams {
   std::uint64_t seed = 1;           ///< validation split
   int report_every = 10;            ///< rounds between the figures kept in the model file (last always kept)
   int early_stopping = 0;           ///< stop after this many rounds without a better validation AUC, keep the best; 0 = off
+  int depth = 1;                    ///< native: levels of look-up tables per weak classifier (1 = one table; 2-4 = trees)
+  double learning_rate = 1.0;       ///< native: shrinkage nu in (0, 1]
+  std::string calibration = "platt";  ///< "platt" (fitted on the validation samples) or "none" (P = sigmoid(2 H))
+  /// K-fold validation by group (2-20; 0 = off): K models each trained without one fold of whole groups
+  /// and scored on it; their pooled out-of-fold scores give every validation figure and the calibration
+  /// of the final model, trained on all rows. For few data, where one held-out fraction is too noisy.
+  int folds = 0;
   FeatureSpec feature_spec;         ///< the features the rows hold and the model reads (the thesis's by default)
   /// When the rows hold only some of the spec's features (a pool, e.g. of the 120,786 rdsf-rect pairs): the
   /// feature of each column, distinct. Empty: every feature, column c = feature c. The model and the
   /// figures name features, not columns. Native backend only.
   std::vector<int> feature_columns;
+};
+
+/// What is known of the rows beyond features and labels.
+struct TrainingRowInfo {
+  /// Group id per row (recording and frame range): the validation split holds out whole groups. Empty:
+  /// every row is its own group (only right when rows are independent, e.g. generated data).
+  std::vector<std::size_t> groups;
+  /// Per row: true for augmented copies, which are only ever trained on (dropped with their group when it
+  /// is held out). Empty: none.
+  std::vector<bool> augmented;
 };
 
 struct TrainingProgress {
@@ -56,6 +75,21 @@ void validate_training_params(const BoostTrainingParams& params);
 BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& labels,
                                  const BoostTrainingParams& params, const TrainingProgressFn& progress = {},
                                  const cv::Mat1f* validation_rows = nullptr,
-                                 const std::vector<int>* validation_labels = nullptr);
+                                 const std::vector<int>* validation_labels = nullptr,
+                                 const TrainingRowInfo& info = {});
+
+/// The probabilities at which the model file keeps validation TAR and FAR: 0.05, 0.10, ..., 0.95.
+std::vector<double> probability_levels();
+
+/// params.folds-fold validation by group (what train_boosted_model does when folds >= 2 and no separate
+/// validation rows are given). Throws Error when there are fewer groups than folds or a fold lacks a class.
+BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int>& labels,
+                                    const BoostTrainingParams& params, const TrainingProgressFn& progress,
+                                    const TrainingRowInfo& info);
+
+/// Fills `figures` (summary, ROC points, by_probability) from validation scores and, with calibration
+/// "platt", fits the model's calibration on them.
+void record_validation(BoostedModel& model, ValidationFigures& figures, const std::vector<double>& scores,
+                       const std::vector<int>& labels, const std::string& calibration, const std::string& source);
 
 }  // namespace rdsf

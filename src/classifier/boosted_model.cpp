@@ -1,5 +1,7 @@
 #include "classifier/boosted_model.hpp"
 
+#include <algorithm>
+
 #include "classifier/model_file.hpp"
 #include "classifier/model_registry.hpp"
 #include "core/error.hpp"
@@ -9,14 +11,30 @@ namespace rdsf {
 BoostedModel::BoostedModel(FeatureSpec spec, BinScheme bins, std::vector<WeakClassifier> weak)
     : spec_(spec), bins_(bins), weak_(std::move(weak)) {
   bins_.validate();
-  for (const WeakClassifier& w : weak_) {
-    if (w.feature < 0 || w.feature >= spec_.dimension()) {
-      throw Error("boosted model: weak classifier on feature " + std::to_string(w.feature) + " outside 0.." +
+  auto check_feature = [&](int feature) {
+    if (feature < 0 || feature >= spec_.dimension()) {
+      throw Error("boosted model: weak classifier on feature " + std::to_string(feature) + " outside 0.." +
                   std::to_string(spec_.dimension() - 1));
     }
-    if (w.kind == WeakClassifier::Kind::Lut && w.responses.size() != static_cast<std::size_t>(bins_.count)) {
-      throw Error("boosted model: look-up table of " + std::to_string(w.responses.size()) + " responses for " +
+  };
+  auto check_table = [&](const std::vector<double>& responses) {
+    if (responses.size() != static_cast<std::size_t>(bins_.count)) {
+      throw Error("boosted model: look-up table of " + std::to_string(responses.size()) + " responses for " +
                   std::to_string(bins_.count) + " bins");
+    }
+  };
+  for (const WeakClassifier& w : weak_) {
+    check_feature(w.feature);
+    if (w.kind == WeakClassifier::Kind::Lut) check_table(w.responses);
+    if (w.kind == WeakClassifier::Kind::Tree) {
+      const std::size_t n = w.nodes.size();
+      if (n < 3 || n > 15 || ((n + 1) & n) != 0) {
+        throw Error("boosted model: a tree of " + std::to_string(n) + " nodes (a complete tree of depth 2-4 has 3, 7 or 15)");
+      }
+      for (const LutNode& node : w.nodes) {
+        check_feature(node.feature);
+        check_table(node.responses);
+      }
     }
   }
 }
@@ -27,8 +45,18 @@ BoostedModel BoostedModel::load(const std::string& path_or_name, const std::stri
 
 double BoostedModel::score(const float* features) const {
   double sum = 0.0;
-  for (const WeakClassifier& w : weak_) sum += w.respond(features[w.feature], bins_);
+  for (const WeakClassifier& w : weak_) sum += w.respond_row(features, bins_);
   return sum;
+}
+
+std::vector<int> BoostedModel::used_features() const {
+  std::vector<int> out;
+  for (const WeakClassifier& w : weak_) {
+    for (int f : w.features_read()) out.push_back(f);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 std::vector<double> BoostedModel::score(const cv::Mat1f& rows) const {

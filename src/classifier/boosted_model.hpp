@@ -1,5 +1,7 @@
 #pragma once
-// A trained person classifier: H(x) = sum of weak responses over one RDSF vector (H > 0 means person).
+// A trained person classifier: H(x) = sum of weak responses over one RDSF vector (H > 0 means person), and
+// P(person | x) = calibration.probability(H(x)): Platt scaling fitted on validation groups (format 2), or
+// 1 / (1 + exp(-2 H)) for models without one (format 1 files: Real AdaBoost's half log-odds reading).
 // Loaded from a model file (see model_file.hpp for the format, model_registry.hpp for NAME and NAME/vN).
 #include <string>
 #include <vector>
@@ -7,6 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "classifier/bin_scheme.hpp"
+#include "classifier/platt_calibration.hpp"
 #include "classifier/training_record.hpp"
 #include "classifier/weak_classifier.hpp"
 #include "features/feature_spec.hpp"
@@ -26,6 +29,12 @@ class BoostedModel {
   double score(const float* features) const;
   /// One score per row (rows x dimension CV_32F); throws Error on a wrong column count.
   std::vector<double> score(const cv::Mat1f& rows) const;
+  /// P(person) of a score H(x).
+  double probability(double score) const { return calibration_.probability(score); }
+  const ScoreCalibration& calibration() const { return calibration_; }
+  void set_calibration(ScoreCalibration c) { calibration_ = std::move(c); }
+  /// Every feature index the weak classifiers read, ascending, without repeats.
+  std::vector<int> used_features() const;
 
   const std::string& name() const { return name_; }  ///< "tree2"
   int version() const { return version_; }           ///< N of vN (0 before saving)
@@ -61,6 +70,7 @@ class BoostedModel {
   std::vector<WeakClassifier> weak_;
   TrainingRecord training_;
   std::string opencv_yaml_;
+  ScoreCalibration calibration_;
 };
 
 }  // namespace rdsf

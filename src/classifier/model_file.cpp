@@ -1,5 +1,6 @@
 #include "classifier/model_file.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cfloat>
 #include <cmath>
@@ -84,6 +85,15 @@ void write_training(FileStorage& fs, const TrainingRecord& t) {
   fs.startWriteStruct("roc", FileNode::SEQ);
   for (const RocPoint& p : v.roc) write_roc_point(fs, p);
   fs.endWriteStruct();
+  fs.startWriteStruct("by_probability", FileNode::SEQ);
+  for (const ProbabilityPoint& p : v.by_probability) {
+    fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
+    cv::write(fs, "probability", p.probability);
+    cv::write(fs, "tar", p.tar);
+    cv::write(fs, "far", p.far);
+    fs.endWriteStruct();
+  }
+  fs.endWriteStruct();
   fs.startWriteStruct("rounds", FileNode::SEQ);
   for (const RoundFigures& r : v.rounds) {
     fs.startWriteStruct("", FileNode::MAP);
@@ -120,6 +130,17 @@ void write_classifier(FileStorage& fs, const BoostedModel& model) {
       cv::write(fs, "kind", std::string("lut"));
       cv::write(fs, "feature", w.feature);
       cv::write(fs, "responses", w.responses);
+    } else if (w.kind == WeakClassifier::Kind::Tree) {
+      cv::write(fs, "kind", std::string("tree"));
+      cv::write(fs, "feature", w.feature);
+      fs.startWriteStruct("nodes", FileNode::SEQ);
+      for (const LutNode& node : w.nodes) {
+        fs.startWriteStruct("", FileNode::MAP);
+        cv::write(fs, "feature", node.feature);
+        cv::write(fs, "responses", node.responses);
+        fs.endWriteStruct();
+      }
+      fs.endWriteStruct();
     } else {
       cv::write(fs, "kind", std::string("stump"));
       cv::write(fs, "feature", w.feature);
@@ -130,6 +151,17 @@ void write_classifier(FileStorage& fs, const BoostedModel& model) {
     fs.endWriteStruct();
   }
   fs.endWriteStruct();
+  fs.endWriteStruct();
+}
+
+void write_calibration(FileStorage& fs, const ScoreCalibration& c) {
+  fs.startWriteStruct("calibration", FileNode::MAP);
+  cv::write(fs, "method", c.method);
+  cv::write(fs, "a", c.a);
+  cv::write(fs, "b", c.b);
+  cv::write(fs, "positives", static_cast<int>(c.positives));
+  cv::write(fs, "negatives", static_cast<int>(c.negatives));
+  cv::write(fs, "source", c.source);
   fs.endWriteStruct();
 }
 
@@ -271,16 +303,63 @@ TrainingRecord read_training_v1(const FileNode& node) {
         f.rounds.push_back(r);
       }
     }
+    const FileNode by_p = v["by_probability"];
+    if (by_p.isSeq()) {
+      for (auto it = by_p.begin(); it != by_p.end(); ++it) {
+        const FileNode p = *it;
+        f.by_probability.push_back({Reader::opt_real(Reader::child(p, "probability")),
+                                    Reader::opt_real(Reader::child(p, "tar")),
+                                    Reader::opt_real(Reader::child(p, "far"))});
+      }
+    }
   }
   return t;
 }
 
-BoostedModel read_v1(const Reader& r, const FileNode& root, const FeatureSpec* expected) {
+// Nodes of a tree (format 2).
+std::vector<LutNode> read_tree_nodes(const Reader& r, const FileNode& n, const std::string& context) {
+  const FileNode nodes = r.need(n, "nodes", context);
+  if (!nodes.isSeq()) r.bad("'" + context + "nodes' is not a list");
+  std::vector<LutNode> out;
+  int k = 0;
+  for (auto it = nodes.begin(); it != nodes.end(); ++it, ++k) {
+    const std::string where = context + "nodes[" + std::to_string(k) + "].";
+    LutNode node;
+    node.feature = r.integer(*it, "feature", where);
+    const FileNode responses = r.need(*it, "responses", where);
+    if (!responses.isSeq()) r.bad("'" + where + "responses' is not a list");
+    responses >> node.responses;
+    out.push_back(std::move(node));
+  }
+  return out;
+}
+
+ScoreCalibration read_calibration(const Reader& r, const FileNode& root) {
+  const FileNode c = r.need(root, "calibration", "");
+  ScoreCalibration out;
+  out.method = r.text(c, "method", "calibration.");
+  if (out.method != "platt" && out.method != "none") {
+    r.bad("'calibration.method' is '" + out.method + "' (known: platt, none)");
+  }
+  out.a = r.real(c, "a", "calibration.");
+  out.b = r.real(c, "b", "calibration.");
+  if (!std::isfinite(out.a) || !std::isfinite(out.b) || out.a <= 0.0) {
+    r.bad("'calibration' has a = " + std::to_string(out.a) + ", b = " + std::to_string(out.b) +
+          " (a must be a positive finite number)");
+  }
+  out.positives = static_cast<std::size_t>(std::max(0, Reader::opt_int(c["positives"])));
+  out.negatives = static_cast<std::size_t>(std::max(0, Reader::opt_int(c["negatives"])));
+  out.source = Reader::opt_text(c["source"]);
+  return out;
+}
+
+// Format 1 and 2 share their layout; 2 adds `calibration`, trees and validation.by_probability.
+BoostedModel read_v1_or_v2(const Reader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
   const FeatureSpec spec = read_feature_spec_v1(r, root, expected);
   const FileNode classifier = r.need(root, "classifier", "");
   const FileNode bins_node = r.need(classifier, "bins", "classifier.");
   const std::string scheme = r.text(bins_node, "scheme", "classifier.bins.");
-  if (scheme != "uniform") r.bad("bin scheme '" + scheme + "' is not known (format 1 has 'uniform')");
+  if (scheme != "uniform") r.bad("bin scheme '" + scheme + "' is not known (formats 1 and 2 have 'uniform')");
   BinScheme bins;
   bins.count = r.integer(bins_node, "count", "classifier.bins.");
   bins.min_value = r.single(bins_node, "min", "classifier.bins.");
@@ -305,8 +384,14 @@ BoostedModel read_v1(const Reader& r, const FileNode& root, const FeatureSpec* e
       w.threshold = r.real(n, "threshold", context);
       w.left = r.real(n, "left", context);
       w.right = r.real(n, "right", context);
+    } else if (kind == "tree" && format_version >= 2) {
+      w.kind = WeakClassifier::Kind::Tree;
+      w.nodes = read_tree_nodes(r, n, context);
+      if (w.nodes.empty() || w.nodes.front().feature != w.feature) {
+        r.bad("'" + context + "feature' is not the feature of the tree's root");
+      }
     } else {
-      r.bad("'" + context + "kind' is '" + kind + "' (known: lut, stump)");
+      r.bad("'" + context + "kind' is '" + kind + "' (known: lut, stump" + (format_version >= 2 ? ", tree)" : ")"));
     }
     weak.push_back(std::move(w));
   }
@@ -323,7 +408,8 @@ BoostedModel read_v1(const Reader& r, const FileNode& root, const FeatureSpec* e
   }
   model.set_identity(r.text(root, "name", ""), r.integer(root, "version", ""), r.path, r.text(root, "created", ""));
   model.training() = read_training_v1(root["training"]);
-  model.set_format_version(1);
+  model.set_format_version(format_version);
+  if (format_version >= 2) model.set_calibration(read_calibration(r, root));
   const FileNode opencv = root["opencv_model"];
   if (opencv.isMap()) {
     FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
@@ -345,10 +431,11 @@ BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpe
   const int format_version = static_cast<int>(version);
   switch (format_version) {
     case 1:
-      return read_v1(r, root, expected);
+    case 2:
+      return read_v1_or_v2(r, root, expected, format_version);
     default:
       r.bad("model format version " + std::to_string(format_version) + " is not known (this build reads " +
-            "version 1 only; a newer rdsf wrote it?)");
+            "versions 1 and 2; a newer rdsf wrote it?)");
   }
 }
 
@@ -364,6 +451,7 @@ std::string model_file_text(const BoostedModel& model) {
   write_feature_spec(fs, model.feature_spec());
   write_training(fs, model.training());
   write_classifier(fs, model);
+  write_calibration(fs, model.calibration());
   if (!model.opencv_model_yaml().empty()) {
     FileStorage embedded(model.opencv_model_yaml(), FileStorage::READ | FileStorage::MEMORY);
     copy_yaml_node(fs, "opencv_model", embedded["opencv_model"]);

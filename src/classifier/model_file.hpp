@@ -1,7 +1,7 @@
 #pragma once
 // The model file: YAML written with cv::FileStorage, self-describing and versioned.
 //
-//   format: "rdsf-model"            format_version: 1
+//   format: "rdsf-model"            format_version: 2 (1: no calibration, no trees; still read)
 //   name, version (N of vN), created (ISO 8601 UTC)
 //   feature_spec: canonical text, hash, name, and the numbers (window, cells or squares, bins)
 //   training: recipe, backend, parameters, sample_sets (role, path, manifest_hash, available, used),
@@ -9,7 +9,10 @@
 //             error_rate, roc points, per-round figures each with its roc points)
 //   classifier: bins (scheme uniform, count, min, max) and weak_classifiers, each
 //             { kind: lut, feature, responses: [count values] } or
-//             { kind: stump, feature, threshold, left, right }
+//             { kind: stump, feature, threshold, left, right } or (format 2)
+//             { kind: tree, feature (the root's), nodes: [ {feature, responses}, ... ] } (breadth first)
+//   calibration: (format 2) method platt|none, a, b, positives, negatives, source:
+//             P(person) = 1 / (1 + exp(-(a H + b))); format 1 files read as method none (a = 2, b = 0)
 //   opencv_model: (OpenCV backend only) the cv::ml::Boost exactly as it wrote itself
 //
 // Reading has one branch per known format version and refuses any other; it accepts every feature spec
@@ -23,7 +26,7 @@
 namespace rdsf {
 
 inline constexpr const char* kModelFormat = "rdsf-model";
-inline constexpr int kModelFormatVersion = 1;  ///< the version written
+inline constexpr int kModelFormatVersion = 2;  ///< the version written
 
 /// The file text of `model` (its name, version and created time included as they are set).
 std::string model_file_text(const BoostedModel& model);

@@ -83,6 +83,29 @@ void four_feature_histograms(const std::uint8_t* const bins[4], const double* w,
   }
 }
 
+// The best two-way split of a feature's bins, bins <= t left and the others right: the smallest
+// Z = 2 (sqrt(W+_L W-_L) + sqrt(W+_R W-_R)) over t = 0 .. bins - 2, and that t (the lowest of equals).
+std::pair<double, int> split_z(const double* sums, int bin_count) {
+  double total_pos = 0.0, total_neg = 0.0;
+  for (int j = 0; j < bin_count; ++j) {
+    total_neg += sums[2 * j];
+    total_pos += sums[2 * j + 1];
+  }
+  double left_pos = 0.0, left_neg = 0.0, best = std::numeric_limits<double>::infinity();
+  int best_t = 0;
+  for (int t = 0; t + 1 < bin_count; ++t) {
+    left_neg += sums[2 * t];
+    left_pos += sums[2 * t + 1];
+    const double z = 2.0 * (std::sqrt(left_pos * left_neg) +
+                            std::sqrt(std::max(0.0, total_pos - left_pos) * std::max(0.0, total_neg - left_neg)));
+    if (z < best) {
+      best = z;
+      best_t = t;
+    }
+  }
+  return {best, best_t};
+}
+
 }  // namespace
 
 std::vector<std::size_t> positives_first_order(const std::vector<int>& labels, const std::vector<std::size_t>& indices) {
@@ -114,6 +137,12 @@ RealAdaBoost::RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, Re
   }
   const double n = static_cast<double>(labels_.size());
   eps_ = params_.smoothing > 0.0 ? params_.smoothing : 1.0 / n;
+  if (params_.depth < 1 || params_.depth > 4) {
+    throw Error("Real AdaBoost: depth " + std::to_string(params_.depth) + " is outside 1..4");
+  }
+  if (!(params_.learning_rate > 0.0 && params_.learning_rate <= 1.0)) {
+    throw Error("Real AdaBoost: learning rate " + std::to_string(params_.learning_rate) + " is outside (0, 1]");
+  }
   threads_ = resolve_thread_count(params_.threads);
   positives_first_ = std::is_sorted(labels_.begin(), labels_.end(), [](int a, int b) { return a > b; });
   positives_ = static_cast<std::size_t>(positives);
@@ -134,14 +163,10 @@ std::vector<std::size_t> RealAdaBoost::trimmed_samples() const {
   return order;
 }
 
-RealAdaBoostRound RealAdaBoost::next_round() {
+RealAdaBoost::TableFit RealAdaBoost::best_table(const std::vector<std::size_t>* subset,
+                                                const std::vector<std::uint8_t>& y, bool split) const {
   const std::size_t n = data_.samples(), features = data_.features();
   const int bin_count = data_.scheme().count;
-  const std::vector<std::size_t> subset =
-      params_.weight_trim > 0.0 ? trimmed_samples() : std::vector<std::size_t>{};
-  std::vector<std::uint8_t> y(n);
-  for (std::size_t i = 0; i < n; ++i) y[i] = static_cast<std::uint8_t>(labels_[i]);
-
   // Best feature per chunk, then across chunks in chunk order (lowest index wins ties). Chunks are made of
   // whole blocks of four features, so every feature's sums are taken the same way whatever the thread count.
   const std::size_t blocks = (features + 3) / 4;
@@ -149,6 +174,8 @@ RealAdaBoostRound RealAdaBoost::next_round() {
   std::vector<double> chunk_z(static_cast<std::size_t>(chunks), std::numeric_limits<double>::infinity());
   std::vector<std::size_t> chunk_feature(static_cast<std::size_t>(chunks), 0);
   const std::size_t step = (blocks + static_cast<std::size_t>(chunks) - 1) / static_cast<std::size_t>(chunks);
+  const std::size_t* subset_data = subset == nullptr ? nullptr : subset->data();
+  const std::size_t subset_size = subset == nullptr ? 0 : subset->size();
   parallel_chunks(blocks, chunks, [&](std::size_t block0, std::size_t block1) {
     const std::size_t chunk = block0 / step;
     const std::size_t f0 = block0 * 4, f1 = std::min(features, block1 * 4);
@@ -157,15 +184,19 @@ RealAdaBoostRound RealAdaBoost::next_round() {
     std::size_t best_f = f0;
     auto consider = [&](std::size_t f, const double* s) {
       double z = 0.0;
-      for (int j = 0; j < bin_count; ++j) z += std::sqrt(s[2 * j] * s[2 * j + 1]);
-      z *= 2.0;
+      if (split) {
+        z = split_z(s, bin_count).first;
+      } else {
+        for (int j = 0; j < bin_count; ++j) z += std::sqrt(s[2 * j] * s[2 * j + 1]);
+        z *= 2.0;
+      }
       if (z < best_z) {
         best_z = z;
         best_f = f;
       }
     };
     std::size_t f = f0;
-    if (subset.empty() && positives_first_) {
+    if (subset == nullptr && positives_first_) {
       for (; f + 4 <= f1; f += 4) {
         const std::uint8_t* const bins4[4] = {data_.feature(f), data_.feature(f + 1), data_.feature(f + 2),
                                               data_.feature(f + 3)};
@@ -175,8 +206,7 @@ RealAdaBoostRound RealAdaBoost::next_round() {
       }
     }
     for (; f < f1; ++f) {
-      feature_histogram(data_.feature(f), y.data(), weights_.data(), n, subset.empty() ? nullptr : subset.data(),
-                        subset.size(), bin_count, sums[0]);
+      feature_histogram(data_.feature(f), y.data(), weights_.data(), n, subset_data, subset_size, bin_count, sums[0]);
       consider(f, sums[0]);
     }
     chunk_z[chunk] = best_z;
@@ -186,45 +216,114 @@ RealAdaBoostRound RealAdaBoost::next_round() {
   for (std::size_t c = 1; c < chunk_z.size(); ++c) {
     if (chunk_z[c] < chunk_z[best]) best = c;
   }
-  const std::size_t feature = chunk_feature[best];
-
-  // Responses of the chosen feature, from all samples (trimmed or not, as the histograms were).
+  TableFit fit;
+  fit.feature = chunk_feature[best];
+  fit.z = chunk_z[best];
+  // Responses of the chosen feature, from the same samples as its histograms.
   double sums[2 * kMaxBins];
-  feature_histogram(data_.feature(feature), y.data(), weights_.data(), n, subset.empty() ? nullptr : subset.data(),
-                    subset.size(), bin_count, sums);
-  WeakClassifier weak;
-  weak.kind = WeakClassifier::Kind::Lut;
-  weak.feature = static_cast<int>(feature);
-  weak.responses.resize(static_cast<std::size_t>(bin_count));
+  feature_histogram(data_.feature(fit.feature), y.data(), weights_.data(), n, subset_data, subset_size, bin_count,
+                    sums);
+  fit.responses.resize(static_cast<std::size_t>(bin_count));
+  if (split) {
+    const int t = split_z(sums, bin_count).second;  // bins <= t go left (-1), the others right (+1)
+    for (int j = 0; j < bin_count; ++j) fit.responses[static_cast<std::size_t>(j)] = j <= t ? -1.0 : 1.0;
+    return fit;
+  }
   for (int j = 0; j < bin_count; ++j) {
-    weak.responses[static_cast<std::size_t>(j)] = 0.5 * std::log((sums[2 * j + 1] + eps_) / (sums[2 * j] + eps_));
+    fit.responses[static_cast<std::size_t>(j)] = 0.5 * std::log((sums[2 * j + 1] + eps_) / (sums[2 * j] + eps_));
+  }
+  return fit;
+}
+
+RealAdaBoostRound RealAdaBoost::next_round() {
+  const std::size_t n = data_.samples();
+  const std::vector<std::size_t> trimmed =
+      params_.weight_trim > 0.0 ? trimmed_samples() : std::vector<std::size_t>{};
+  std::vector<std::uint8_t> y(n);
+  for (std::size_t i = 0; i < n; ++i) y[i] = static_cast<std::uint8_t>(labels_[i]);
+  const double nu = params_.learning_rate;
+
+  WeakClassifier weak;
+  std::vector<double> response(n);  // the weak classifier's (shrunk) response per sample
+  double z = 0.0;
+  if (params_.depth <= 1) {
+    TableFit fit = best_table(trimmed.empty() ? nullptr : &trimmed, y, false);
+    weak.kind = WeakClassifier::Kind::Lut;
+    weak.feature = static_cast<int>(fit.feature);
+    for (double& r : fit.responses) r *= nu;
+    weak.responses = std::move(fit.responses);
+    const std::uint8_t* bins = data_.feature(fit.feature);
+    for (std::size_t i = 0; i < n; ++i) response[i] = weak.responses[bins[i]];
+    z = fit.z;
+  } else {
+    // Grown level by level; node_of[i] is the node sample i has reached.
+    const std::size_t node_count = (std::size_t{1} << params_.depth) - 1;
+    weak.kind = WeakClassifier::Kind::Tree;
+    weak.nodes.resize(node_count);
+    std::vector<std::size_t> node_of(n, 0);
+    const std::size_t first_leaf = node_count / 2;
+    for (std::size_t k = 0; k < node_count; ++k) {
+      // The samples of node k that enter its histograms (trimmed ones stay out, as at depth 1).
+      std::vector<std::size_t> members;
+      double mass = 0.0;
+      if (trimmed.empty()) {
+        for (std::size_t i = 0; i < n; ++i) {
+          if (node_of[i] == k) members.push_back(i);
+        }
+      } else {
+        for (std::size_t i : trimmed) {
+          if (node_of[i] == k) members.push_back(i);
+        }
+      }
+      for (std::size_t i : members) mass += weights_[i];
+      LutNode& node = weak.nodes[k];
+      if (k > 0 && mass <= 1e-12) {
+        // Nothing reaches it: a table of zeros (a leaf responds 0, an inner node sends everything left).
+        node.feature = weak.nodes[(k - 1) / 2].feature;
+        node.responses.assign(static_cast<std::size_t>(data_.scheme().count), k < first_leaf ? -1.0 : 0.0);
+      } else {
+        const TableFit fit = best_table(k == 0 && trimmed.empty() ? nullptr : &members, y, k < first_leaf);
+        node.feature = static_cast<int>(fit.feature);
+        node.responses = fit.responses;
+        if (k >= first_leaf) z += fit.z;
+      }
+      if (k < first_leaf) {
+        const std::uint8_t* bins = data_.feature(static_cast<std::size_t>(node.feature));
+        for (std::size_t i = 0; i < n; ++i) {
+          if (node_of[i] == k) node_of[i] = 2 * k + (node.responses[bins[i]] > 0.0 ? 2 : 1);
+        }
+      }
+    }
+    // Leaves respond (shrunk); inner tables only route (+1 / -1).
+    for (std::size_t k = first_leaf; k < node_count; ++k) {
+      for (double& r : weak.nodes[k].responses) r *= nu;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const LutNode& leaf = weak.nodes[node_of[i]];
+      response[i] = leaf.responses[data_.at(static_cast<std::size_t>(leaf.feature), i)];
+    }
+    weak.feature = weak.nodes[0].feature;
   }
 
   // Reweighting: w_i exp(-y_i h(x_i)), then normalise.
-  std::vector<double> factor_pos(static_cast<std::size_t>(bin_count)), factor_neg(factor_pos.size());
-  for (std::size_t j = 0; j < factor_pos.size(); ++j) {
-    factor_pos[j] = std::exp(-weak.responses[j]);
-    factor_neg[j] = std::exp(weak.responses[j]);
-  }
-  const std::uint8_t* bins = data_.feature(feature);
   double total = 0.0;
   std::size_t wrong = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t b = bins[i];
-    weights_[i] *= labels_[i] == 1 ? factor_pos[b] : factor_neg[b];
+    weights_[i] *= std::exp(labels_[i] == 1 ? -response[i] : response[i]);
     total += weights_[i];
-    scores_[i] += weak.responses[b];
+    scores_[i] += response[i];
     wrong += ((scores_[i] > 0.0) != (labels_[i] == 1)) ? 1 : 0;
   }
   for (double& w : weights_) w /= total;
+  const int feature = weak.feature;
   weak_.push_back(std::move(weak));
 
   RealAdaBoostRound report;
   report.round = static_cast<int>(weak_.size());
-  report.feature = static_cast<int>(feature);
-  report.z = chunk_z[best];
+  report.feature = feature;
+  report.z = z;
   report.train_error = static_cast<double>(wrong) / static_cast<double>(n);
-  report.samples_used = subset.empty() ? n : subset.size();
+  report.samples_used = trimmed.empty() ? n : trimmed.size();
   return report;
 }
 

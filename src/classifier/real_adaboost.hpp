@@ -5,6 +5,16 @@
 // responses are h_j = 0.5 ln((W+_j + eps) / (W-_j + eps)), and the weights become w_i exp(-y_i h(x_i)),
 // normalised to sum 1 (y = +1 person, -1 not). Deterministic: no randomness, ties go to the lower feature
 // index, and every feature's sums are taken in sample order whatever the thread count.
+//
+// Deeper weak learners (depth d >= 2): a tree grown level by level (domain-partitioning trees). An inner
+// node is the best two-way split of one feature's bins, bins <= t left and the others right, by the same
+// criterion: the smallest Z = 2 (sqrt(W+_L W-_L) + sqrt(W+_R W-_R)) over the samples that reach it (stored as
+// a table of -1 / +1: > 0 routes right). A leaf is the best look-up table over the samples that reach it.
+// Every level reads each sample once, so a level costs about one depth-1 round. The tree's response is its
+// leaf's; Z of the tree is the sum of its leaves' Z.
+//
+// Shrinkage: every response is multiplied by the learning rate nu (0 < nu <= 1) before it is added and
+// before the reweighting (nu = 1: plain Real AdaBoost).
 #include <cstddef>
 #include <vector>
 
@@ -22,6 +32,11 @@ struct RealAdaBoostParams {
   double weight_trim = 0.0;
   /// Threads for the per-feature histograms; 0 = all cores.
   int threads = 0;
+  /// Levels of look-up tables per weak classifier: 1 = one table (the thesis's kind of weak learner),
+  /// 2-4 = trees of tables.
+  int depth = 1;
+  /// Shrinkage nu in (0, 1]: responses are multiplied by it.
+  double learning_rate = 1.0;
 };
 
 struct RealAdaBoostRound {
@@ -51,6 +66,14 @@ class RealAdaBoost {
 
  private:
   std::vector<std::size_t> trimmed_samples() const;
+  struct TableFit {
+    std::size_t feature = 0;
+    double z = 0.0;
+    std::vector<double> responses;
+  };
+  /// The table with the smallest Z over `subset` (all samples when null), responses unshrunk; with
+  /// `split`, the best two-way split instead, as a routing table of -1 (left) / +1 (right).
+  TableFit best_table(const std::vector<std::size_t>* subset, const std::vector<std::uint8_t>& y, bool split) const;
 
   const BinnedMatrix& data_;
   std::vector<int> labels_;

@@ -54,4 +54,75 @@ HoldOutSplit stratified_split(const std::vector<int>& labels, double fraction, s
   return split;
 }
 
+HoldOutSplit group_split(const std::vector<int>& labels, const std::vector<std::size_t>& group, double fraction,
+                         std::uint64_t seed, const std::vector<bool>& counts) {
+  if (!(fraction > 0.0 && fraction < 1.0)) {
+    throw Error("validation fraction " + std::to_string(fraction) + " is outside (0, 1) for a group split");
+  }
+  if (group.size() != labels.size() || (!counts.empty() && counts.size() != labels.size())) {
+    throw Error("group split: labels, groups and counts differ in number");
+  }
+  // Dense group numbers in order of first appearance, with their counted positives and negatives.
+  std::vector<std::size_t> ids = group;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<std::size_t> dense(labels.size());
+  std::vector<std::size_t> pos(ids.size(), 0), neg(ids.size(), 0);
+  std::size_t total_pos = 0, total_neg = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    dense[i] = static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), group[i]) - ids.begin());
+    if (!counts.empty() && !counts[i]) continue;
+    (labels[i] == 1 ? pos : neg)[dense[i]] += 1;
+    (labels[i] == 1 ? total_pos : total_neg) += 1;
+  }
+  const double want_pos = std::round(fraction * static_cast<double>(total_pos));
+  const double want_neg = std::round(fraction * static_cast<double>(total_neg));
+  std::vector<std::size_t> order(ids.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937_64 rng(seed);
+  shuffle_prefix(order, order.size(), rng);
+  std::vector<bool> held(ids.size(), false);
+  double got_pos = 0, got_neg = 0;
+  for (std::size_t g : order) {
+    if (got_pos >= want_pos && got_neg >= want_neg) break;
+    const double p = static_cast<double>(pos[g]), n = static_cast<double>(neg[g]);
+    const bool helps = (p > 0 && got_pos < want_pos) || (n > 0 && got_neg < want_neg);
+    const bool fits = (p == 0 || got_pos + p <= 1.5 * want_pos + 1) && (n == 0 || got_neg + n <= 1.5 * want_neg + 1);
+    if (!helps || !fits) continue;
+    held[g] = true;
+    got_pos += p;
+    got_neg += n;
+  }
+  // Few large groups: when a class has none held out, the first group (same order) that has some, as long
+  // as it leaves that class some training samples.
+  for (int label : {1, 0}) {
+    const double got = label == 1 ? got_pos : got_neg;
+    const std::size_t total = label == 1 ? total_pos : total_neg;
+    if (got > 0) continue;
+    for (std::size_t g : order) {
+      const std::size_t c = label == 1 ? pos[g] : neg[g];
+      if (held[g] || c == 0 || c >= total) continue;
+      held[g] = true;
+      got_pos += static_cast<double>(pos[g]);
+      got_neg += static_cast<double>(neg[g]);
+      break;
+    }
+  }
+  HoldOutSplit split;
+  std::size_t val_pos = 0, val_neg = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const bool validation = held[dense[i]];
+    (validation ? split.validation : split.train).push_back(i);
+    if (validation && (counts.empty() || counts[i])) (labels[i] == 1 ? val_pos : val_neg) += 1;
+  }
+  const std::size_t train_pos = total_pos - val_pos, train_neg = total_neg - val_neg;
+  if (val_pos == 0 || val_neg == 0 || train_pos == 0 || train_neg == 0) {
+    throw Error("the group split leaves a class empty (" + std::to_string(ids.size()) + " groups; validation " +
+                std::to_string(val_pos) + " positives / " + std::to_string(val_neg) + " negatives, training " +
+                std::to_string(train_pos) + " / " + std::to_string(train_neg) +
+                "): give more recordings or clips, a larger validation fraction, or separate validation sets");
+  }
+  return split;
+}
+
 }  // namespace rdsf

@@ -20,4 +20,13 @@ struct HoldOutSplit {
 /// training; a class with at least 2 samples keeps at least one on each side.
 HoldOutSplit stratified_split(const std::vector<int>& labels, double fraction, std::uint64_t seed);
 
+/// Holds out whole groups (group[i] is sample i's group id, any numbers): no group has samples on both
+/// sides. Groups are taken in a seeded random order; a group joins the validation side while that brings a
+/// class still short of round(fraction * count) closer to it and takes no class beyond 1.5 times its share,
+/// so each class ends near `fraction`; when that holds out none of a class (a few large groups), the first
+/// group with some of it is held out too. Samples with counts[i] == false (augmented copies) go with their
+/// group but are not counted. Throws Error when a class ends up empty on either side (too few groups).
+HoldOutSplit group_split(const std::vector<int>& labels, const std::vector<std::size_t>& group, double fraction,
+                         std::uint64_t seed, const std::vector<bool>& counts = {});
+
 }  // namespace rdsf

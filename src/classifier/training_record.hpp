@@ -32,11 +32,20 @@ struct RoundFigures {
   std::vector<RocPoint> roc;  ///< validation ROC at the standard FAR levels (roc_at_far_levels)
 };
 
+/// Validation figures at a probability threshold: the samples with P(person) >= probability.
+struct ProbabilityPoint {
+  double probability = 0.0;
+  double tar = 0.0;  ///< positives accepted / positives
+  double far = 0.0;  ///< negatives accepted / negatives
+};
+
 struct ValidationFigures {
-  std::string source;  ///< "held-out 20% (seed 1)", "separate sets", or "none"
+  std::string source;  ///< "held-out groups: 20% ...", "separate sets", or "none"
   std::size_t positives = 0, negatives = 0;
   RocSummary summary;            ///< of the final model
   std::vector<RocPoint> roc;     ///< final model, at standard FAR levels
+  /// Final model with its calibration, at P(person) >= 0.05, 0.10, ..., 0.95 (format 2).
+  std::vector<ProbabilityPoint> by_probability;
   std::vector<RoundFigures> rounds;
 };
 

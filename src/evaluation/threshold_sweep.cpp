@@ -9,33 +9,128 @@
 #include "candidates/candidate_finder.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "classifier/roc_metrics.hpp"
 #include "evaluation/curve_plot.hpp"
+#include "evaluation/exact_curve.hpp"
 #include "frame/depth_png.hpp"
 
 namespace rdsf {
 
 const SweepRow& SweepResult::best_mota() const {
-  if (rows.empty()) throw Error("evaluation of " + model + ": no thresholds");
+  if (rows.empty()) return operating;
   std::size_t best = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     if (rows[i].mot.mota() > rows[best].mot.mota()) best = i;
   }
-  return rows[best];
+  return operating.mot.mota() > rows[best].mot.mota() ? operating : rows[best];
 }
 
 double SweepResult::tar_at_fppf(double max_fppf) const {
   double tar = 0;
-  for (const SweepRow& row : rows) {
-    if (row.all.fppf <= max_fppf) tar = std::max(tar, row.all.tar);
+  for (const DetectionFigures& f : curve) {
+    if (f.fppf <= max_fppf) tar = std::max(tar, f.tar);
   }
   return tar;
 }
 
+double SweepResult::candidate_recall() const {
+  const long people = operating.all.n_people;
+  return people > 0 ? static_cast<double>(people - segmentation_errors) / static_cast<double>(people) : 0.0;
+}
+
+std::vector<double> default_probability_thresholds() {
+  std::vector<double> out = {0.01, 0.02};
+  for (int k = 1; k <= 19; ++k) out.push_back(k * 0.05);
+  out.push_back(0.98);
+  out.push_back(0.99);
+  return out;
+}
+
+namespace {
+
+MotFigures tracking_figures(const std::vector<EvaluatedFrame>& frames, const GroundTruth& truth, double threshold,
+                            const TrackingParams& tracking) {
+  Tracker tracker(tracking);
+  ClearMot mot;
+  for (const EvaluatedFrame& f : frames) {
+    std::vector<TrackInput> detections;
+    for (const EvaluatedCandidate& c : f.candidates) {
+      if (c.score >= threshold) detections.push_back({c.box, c.depth_mm, c.histogram});
+    }
+    const std::vector<int> ids = tracker.update(detections, f.camera, f.index);
+    std::vector<TrackedBox> hypotheses, people;
+    for (const TruthBox& t : truth.in(f.frame)) {
+      if (!t.ignored) people.push_back({t.box, t.track});
+    }
+    for (std::size_t i = 0; i < detections.size(); ++i) {
+      // A hypothesis on an ignored (hardly visible) person, and on no counted one, is left out.
+      bool on_ignored = false, on_counted = false;
+      for (const TruthBox& t : truth.in(f.frame)) {
+        if (iou(detections[i].box, t.box) < 0.5) continue;
+        (t.ignored ? on_ignored : on_counted) = true;
+      }
+      if (on_ignored && !on_counted) continue;
+      hypotheses.push_back({detections[i].box, ids[i]});
+    }
+    mot.add_frame(people, hypotheses);
+  }
+  return mot.figures();
+}
+
+SweepRow row_at(const std::vector<EvaluatedFrame>& frames, const std::vector<FrameCandidates>& scored,
+                const GroundTruth& truth, double probability, const ScoreCalibration& calibration,
+                const TrackingParams& tracking) {
+  const double threshold = calibration.score_at(probability);
+  SweepRow row;
+  row.probability = probability;
+  row.all = detection_figures(scored, truth, threshold, false);
+  row.clean = detection_figures(scored, truth, threshold, true);
+  row.mot = tracking_figures(frames, truth, threshold, tracking);
+  return row;
+}
+
+// Candidates covering a counted person are positives, those covering nobody (not even a don't-care
+// person) negatives.
+CandidateFigures classifier_figures(const std::vector<FrameCandidates>& scored, const GroundTruth& truth,
+                                    double threshold) {
+  std::vector<double> scores;
+  std::vector<int> labels;
+  for (const FrameCandidates& frame : scored) {
+    for (const ScoredCandidate& c : frame.candidates) {
+      bool counted = false, any = false;
+      for (const TruthBox& t : truth.in(frame.frame)) {
+        if (iou(c.box, t.box) < 0.5) continue;
+        any = true;
+        counted = counted || !t.ignored;
+      }
+      if (any && !counted) continue;
+      scores.push_back(c.score);
+      labels.push_back(counted ? 1 : 0);
+    }
+  }
+  CandidateFigures f;
+  f.positives = std::count(labels.begin(), labels.end(), 1);
+  f.negatives = static_cast<long>(labels.size()) - f.positives;
+  if (f.positives == 0 || f.negatives == 0) return f;
+  f.auc = roc_auc(scores, labels);
+  long tp = 0, fp = 0;
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    if (scores[i] >= threshold) (labels[i] == 1 ? tp : fp) += 1;
+  }
+  f.tar = static_cast<double>(tp) / static_cast<double>(f.positives);
+  f.far = static_cast<double>(fp) / static_cast<double>(f.negatives);
+  return f;
+}
+
+}  // namespace
+
 SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const GroundTruth& truth,
-                             const std::vector<double>& thresholds, const TrackingParams& tracking,
-                             const std::string& model_label) {
+                             const std::vector<double>& probabilities, const TrackingParams& tracking,
+                             const std::string& model_label, const ScoreCalibration& calibration,
+                             double operating_probability) {
   SweepResult result;
   result.model = model_label;
+  result.operating_probability = operating_probability;
   std::vector<FrameCandidates> scored;
   for (const EvaluatedFrame& f : frames) {
     FrameCandidates fc{f.frame, {}};
@@ -43,37 +138,11 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
     scored.push_back(std::move(fc));
   }
   result.segmentation_errors = segmentation_errors(scored, truth);
-  for (double threshold : thresholds) {
-    SweepRow row;
-    row.all = detection_figures(scored, truth, threshold, false);
-    row.clean = detection_figures(scored, truth, threshold, true);
-    Tracker tracker(tracking);
-    ClearMot mot;
-    for (const EvaluatedFrame& f : frames) {
-      std::vector<TrackInput> detections;
-      for (const EvaluatedCandidate& c : f.candidates) {
-        if (c.score >= threshold) detections.push_back({c.box, c.depth_mm, c.histogram});
-      }
-      const std::vector<int> ids = tracker.update(detections, f.camera, f.index);
-      std::vector<TrackedBox> hypotheses, people;
-      for (const TruthBox& t : truth.in(f.frame)) {
-        if (!t.ignored) people.push_back({t.box, t.track});
-      }
-      for (std::size_t i = 0; i < detections.size(); ++i) {
-        // A hypothesis on an ignored (hardly visible) person, and on no counted one, is left out.
-        bool on_ignored = false, on_counted = false;
-        for (const TruthBox& t : truth.in(f.frame)) {
-          if (iou(detections[i].box, t.box) < 0.5) continue;
-          (t.ignored ? on_ignored : on_counted) = true;
-        }
-        if (on_ignored && !on_counted) continue;
-        hypotheses.push_back({detections[i].box, ids[i]});
-      }
-      mot.add_frame(people, hypotheses);
-    }
-    row.mot = mot.figures();
-    result.rows.push_back(row);
-  }
+  for (double p : probabilities) result.rows.push_back(row_at(frames, scored, truth, p, calibration, tracking));
+  result.operating = row_at(frames, scored, truth, operating_probability, calibration, tracking);
+  result.curve = exact_detection_curve(scored, truth, false);
+  for (const DetectionFigures& f : result.curve) result.curve_probability.push_back(calibration.probability(f.threshold));
+  result.candidates = classifier_figures(scored, truth, calibration.score_at(operating_probability));
   return result;
 }
 
@@ -81,14 +150,14 @@ namespace {
 
 void write_table(std::ostream& out, const SweepResult& r, bool clean) {
   char line[256];
-  std::snprintf(line, sizeof line, "  %9s %7s %7s %7s %7s %6s %7s %6s %7s %7s %7s %7s\n", "threshold", "TAR", "FAR",
-                "TRR", "FRR", "n_fp", "n_det", "FPPF", "n_miss", "MPF", "MOTA", "MOTP");
+  std::snprintf(line, sizeof line, "  %6s %9s %7s %7s %7s %7s %6s %7s %6s %7s %7s %7s %7s\n", "P >=", "H(x) >=",
+                "TAR", "FAR", "TRR", "FRR", "n_fp", "n_det", "FPPF", "n_miss", "MPF", "MOTA", "MOTP");
   out << line;
   for (const SweepRow& row : r.rows) {
     const DetectionFigures& f = clean ? row.clean : row.all;
-    std::snprintf(line, sizeof line, "  %9g %7.4f %7.4f %7.4f %7.4f %6ld %7ld %6.3f %7ld %7.3f %7.3f %7.1f\n",
-                  f.threshold, f.tar, f.far, f.trr, f.frr, f.n_fp, f.n_det, f.fppf, f.n_miss, f.mpf, row.mot.mota(),
-                  row.mot.motp());
+    std::snprintf(line, sizeof line, "  %6.2f %9.3f %7.4f %7.4f %7.4f %7.4f %6ld %7ld %6.3f %7ld %7.3f %7.3f %7.1f\n",
+                  row.probability, f.threshold, f.tar, f.far, f.trr, f.frr, f.n_fp, f.n_det, f.fppf, f.n_miss, f.mpf,
+                  row.mot.mota(), row.mot.motp());
     out << line;
   }
 }
@@ -101,21 +170,21 @@ std::vector<cv::Point2d> sorted_points(std::vector<cv::Point2d> points) {
 
 }  // namespace
 
-std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir,
-                                    double operating_threshold) {
+std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) fail(dir, "cannot create report folder: " + ec.message());
   const std::filesystem::path folder(dir);
 
   AtomicTextFile csv((folder / "metrics.csv").string(), true);
-  csv.stream() << "model,table,threshold,n_frames,n_people,n_det,n_fp,n_miss,TAR,FAR,TRR,FRR,FPPF,MPF,"
+  csv.stream() << "model,table,probability,threshold,n_frames,n_people,n_det,n_fp,n_miss,TAR,FAR,TRR,FRR,FPPF,MPF,"
                   "MOTA,MOTP,matches,misses,false_positives,mismatches\n";
   for (const SweepResult& r : results) {
     for (const SweepRow& row : r.rows) {
       for (int clean = 0; clean < 2; ++clean) {
         const DetectionFigures& f = clean ? row.clean : row.all;
-        csv.stream() << r.model << ',' << (clean ? "without_segmentation_errors" : "all") << ',' << f.threshold
+        csv.stream() << r.model << ',' << (clean ? "without_segmentation_errors" : "all") << ',' << row.probability
+                     << ',' << f.threshold
                      << ',' << f.n_frames << ',' << f.n_people << ',' << f.n_det << ',' << f.n_fp << ','
                      << f.n_miss << ',' << f.tar << ',' << f.far << ',' << f.trr << ',' << f.frr << ',' << f.fppf
                      << ',' << f.mpf << ',' << row.mot.mota() << ',' << row.mot.motp() << ',' << row.mot.matches
@@ -125,24 +194,48 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   }
   csv.commit();
 
+  AtomicTextFile curve_csv((folder / "curve.csv").string(), true);
+  curve_csv.stream() << "model,probability,threshold,n_frames,n_people,n_det,n_fp,TAR,FAR,FPPF,FRR\n";
+  for (const SweepResult& r : results) {
+    for (std::size_t k = 0; k < r.curve.size(); ++k) {
+      const DetectionFigures& f = r.curve[k];
+      curve_csv.stream() << r.model << ',' << r.curve_probability[k] << ',' << f.threshold << ',' << f.n_frames << ','
+                         << f.n_people << ',' << f.n_det << ',' << f.n_fp << ',' << f.tar << ',' << f.far << ','
+                         << f.fppf << ',' << f.frr << '\n';
+    }
+  }
+  curve_csv.commit();
+
   std::ostringstream summary;
   for (const SweepResult& r : results) {
-    if (r.rows.empty()) continue;
     const SweepRow& best = r.best_mota();
-    summary << "Model " << r.model << ": " << r.rows.front().all.n_frames << " frames, "
-            << r.rows.front().all.n_people << " people, " << r.segmentation_errors
-            << " segmentation errors (no candidate with IoU >= 0.5)";
+    summary << "Model " << r.model << ": " << r.operating.all.n_frames << " frames, " << r.operating.all.n_people
+            << " people, " << r.segmentation_errors << " segmentation errors (no candidate with IoU >= 0.5)";
     if (r.fps > 0) summary << ", " << std::lround(r.fps * 10) / 10.0 << " fps";
     summary << "\n";
     summary << " All people (FAR = n_fp / (n_fp + n_frames), as the thesis's tables):\n";
     write_table(summary, r, false);
     summary << " Without segmentation errors:\n";
     write_table(summary, r, true);
-    char line[200];
+    char line[400];
     std::snprintf(line, sizeof line,
-                  " Best MOTA %.3f at threshold %g (MOTP %.1f, %ld mismatches); TAR at FPPF <= 0.1: %.3f\n\n",
-                  best.mot.mota(), best.all.threshold, best.mot.motp(), best.mot.mismatches, r.tar_at_fppf(0.1));
+                  " Best MOTA %.3f at P >= %.2f (MOTP %.1f, %ld mismatches); exact curve: TAR %.3f at FPPF <= 0.1, "
+                  "%.3f at FPPF <= 0.5\n",
+                  best.mot.mota(), best.probability, best.mot.motp(), best.mot.mismatches, r.tar_at_fppf(0.1),
+                  r.tar_at_fppf(0.5));
     summary << line;
+    std::snprintf(line, sizeof line,
+                  " At the operating point P >= %.2f: TAR %.3f, FPPF %.3f, MOTA %.3f. Classifier on the %ld + %ld "
+                  "candidates: AUC %.4f, TAR %.3f, FAR %.3f",
+                  r.operating_probability, r.operating.all.tar, r.operating.all.fppf, r.operating.mot.mota(),
+                  r.candidates.positives, r.candidates.negatives, r.candidates.auc, r.candidates.tar, r.candidates.far);
+    summary << line;
+    if (r.validation) {
+      std::snprintf(line, sizeof line, "; the model file's validation said TAR %.3f, FAR %.3f (gap %+.3f)",
+                    r.validation->tar, r.validation->far, r.candidates.tar - r.validation->tar);
+      summary << line;
+    }
+    summary << "\n\n";
   }
   AtomicTextFile text((folder / "summary.txt").string(), true);
   text.stream() << summary.str();
@@ -150,15 +243,21 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
 
   // The one-table view: models x TAR at FPPF 0.1, best MOTA, fps.
   AtomicTextFile table((folder / "summary.md").string(), true);
-  table.stream() << "| model | TAR at FPPF <= 0.1 | best MOTA (threshold) | MOTP | segmentation errors | fps |\n"
-                    "| --- | --- | --- | --- | --- | --- |\n";
+  table.stream() << "| model | TAR at FPPF <= 0.1 | TAR at FPPF <= 0.5 | best MOTA (P >=) | MOTP | candidate recall | "
+                    "candidate AUC | TAR at P >= op: validation / held-out (gap) | fps |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const SweepResult& r : results) {
-    if (r.rows.empty()) continue;
     const SweepRow& best = r.best_mota();
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %.3f | %.3f (%g) | %.1f | %ld of %ld | %.1f |\n", r.model.c_str(),
-                  r.tar_at_fppf(0.1), best.mot.mota(), best.all.threshold, best.mot.motp(), r.segmentation_errors,
-                  r.rows.front().all.n_people, r.fps);
+    char validation[96] = "no validation";
+    if (r.validation) {
+      std::snprintf(validation, sizeof validation, "%.3f / %.3f (%+.3f)", r.validation->tar, r.candidates.tar,
+                    r.candidates.tar - r.validation->tar);
+    }
+    char row[512];
+    std::snprintf(row, sizeof row, "| %s | %.3f | %.3f | %.3f (%.2f) | %.1f | %.3f (%ld of %ld) | %.4f | %s at %.2f | %.1f |\n",
+                  r.model.c_str(), r.tar_at_fppf(0.1), r.tar_at_fppf(0.5), best.mot.mota(), best.probability,
+                  best.mot.motp(), r.candidate_recall(), r.operating.all.n_people - r.segmentation_errors,
+                  r.operating.all.n_people, r.candidates.auc, validation, r.operating_probability, r.fps);
     table.stream() << row;
   }
   table.commit();
@@ -180,22 +279,18 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   det.y_min = 1e-3;
   det.y_max = 1;
   std::vector<PlotCurve> roc_curves, det_curves;
-  char label[64];
-  std::snprintf(label, sizeof label, "T=%g", operating_threshold);
   for (const SweepResult& r : results) {
+    char label[64];
+    std::snprintf(label, sizeof label, "P>=%.2f", r.operating_probability);
     PlotCurve rc{r.model, {}, std::nullopt, label}, dc{r.model, {}, std::nullopt, label};
-    double closest = 1e300;
-    for (const SweepRow& row : r.rows) {
-      rc.points.emplace_back(row.all.far, row.all.tar);
-      dc.points.emplace_back(std::max(row.all.fppf, det.x_min), std::max(row.all.frr, det.y_min));
-      if (std::abs(row.all.threshold - operating_threshold) < closest) {
-        closest = std::abs(row.all.threshold - operating_threshold);
-        rc.operating_point = cv::Point2d(row.all.far, row.all.tar);
-        dc.operating_point = cv::Point2d(std::max(row.all.fppf, det.x_min), std::max(row.all.frr, det.y_min));
-        std::snprintf(label, sizeof label, "T=%g", row.all.threshold);
-        rc.operating_label = dc.operating_label = label;
-      }
+    rc.points.emplace_back(0.0, 0.0);
+    for (const DetectionFigures& f : r.curve) {
+      rc.points.emplace_back(f.far, f.tar);
+      dc.points.emplace_back(std::max(f.fppf, det.x_min), std::max(f.frr, det.y_min));
     }
+    const DetectionFigures& op = r.operating.all;
+    rc.operating_point = cv::Point2d(op.far, op.tar);
+    dc.operating_point = cv::Point2d(std::max(op.fppf, det.x_min), std::max(op.frr, det.y_min));
     rc.points = sorted_points(rc.points);
     dc.points = sorted_points(dc.points);
     roc_curves.push_back(rc);

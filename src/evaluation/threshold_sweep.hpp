@@ -1,10 +1,20 @@
 #pragma once
-// Evaluation of one model over a recording with ground truth, for a sweep of threshold_classifier: the
-// thesis's detection tables (with and without segmentation errors) and CLEAR MOT tracking figures, the
-// tracker being rerun at every threshold on the detections that pass it.
+// Evaluation of one model over a recording with ground truth:
+//   - the exact detection curve (the thesis's figures at every distinct score: exact_curve.hpp), from which
+//     TAR at FPPF <= x and the ROC and DET charts come;
+//   - the thesis's tables (with and without segmentation errors) and CLEAR MOT tracking figures at a list of
+//     probability thresholds P(person) >= p, the tracker being rerun at each on the detections that pass;
+//   - the classifier alone on the recording's candidates (those covering a counted person with IoU >= 0.5
+//     are positives, those covering nobody negatives): AUC, and TAR / FAR at the operating probability,
+//     the figures a model file's validation predicts.
+// Thresholds are probabilities; a score threshold is h = calibration.score_at(p).
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "classifier/platt_calibration.hpp"
+#include "classifier/training_record.hpp"
 #include "evaluation/clear_mot.hpp"
 #include "evaluation/detection_metrics.hpp"
 #include "evaluation/ground_truth.hpp"
@@ -29,30 +39,50 @@ struct EvaluatedFrame {
 };
 
 struct SweepRow {
+  double probability = 0;  ///< P(person) >= this; all.threshold / clean.threshold hold the score threshold
   DetectionFigures all;    ///< every ground-truth person
   DetectionFigures clean;  ///< without segmentation errors
   MotFigures mot;
 };
 
-struct SweepResult {
-  std::string model;             ///< label, e.g. "tree2 v3"
-  std::vector<SweepRow> rows;    ///< one per threshold, in the given order
-  long segmentation_errors = 0;
-  double fps = 0;                ///< whole-system frames per second measured while running it
-  /// Row with the best MOTA (first of equals).
-  const SweepRow& best_mota() const;
-  /// TAR at the largest FPPF <= max_fppf (interpolated between sweep points is not done: the best row
-  /// whose FPPF does not exceed it); 0 when none does.
-  double tar_at_fppf(double max_fppf) const;
+/// The classifier alone on the evaluated candidates.
+struct CandidateFigures {
+  long positives = 0, negatives = 0;  ///< candidates covering a counted person (IoU >= 0.5) / nobody
+  double auc = 0;
+  double tar = 0, far = 0;            ///< at the operating probability
 };
 
-SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const GroundTruth& truth,
-                             const std::vector<double>& thresholds, const TrackingParams& tracking,
-                             const std::string& model_label);
+struct SweepResult {
+  std::string model;             ///< label, e.g. "tree2 v3"
+  std::vector<SweepRow> rows;    ///< one per probability threshold, in the given order
+  SweepRow operating;            ///< at the operating probability
+  double operating_probability = 0.5;
+  std::vector<DetectionFigures> curve;  ///< exact, every distinct score, thresholds descending
+  std::vector<double> curve_probability;  ///< P(person) of each curve threshold
+  CandidateFigures candidates;
+  /// The model file's validation at the operating probability (nearest kept level), when it has one.
+  std::optional<ProbabilityPoint> validation;
+  long segmentation_errors = 0;
+  double fps = 0;                ///< whole-system frames per second measured while running it
+  /// Row with the best MOTA among rows and the operating row (first of equals).
+  const SweepRow& best_mota() const;
+  /// Highest TAR on the exact curve with FPPF <= max_fppf; 0 when no point qualifies.
+  double tar_at_fppf(double max_fppf) const;
+  /// People with a candidate (IoU >= 0.5) over people.
+  double candidate_recall() const;
+};
 
-/// Writes metrics.csv, summary.txt, summary.md (one Markdown row per model), roc.png and det.png into `dir` (created when missing); returns the
-/// summary text (also what summary.txt holds).
-std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir,
-                                    double operating_threshold);
+/// The default probability thresholds of the tables: 0.01, 0.02, 0.05, 0.10, ..., 0.95, 0.98, 0.99.
+std::vector<double> default_probability_thresholds();
+
+SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const GroundTruth& truth,
+                             const std::vector<double>& probabilities, const TrackingParams& tracking,
+                             const std::string& model_label, const ScoreCalibration& calibration,
+                             double operating_probability);
+
+/// Writes metrics.csv (the tables), curve.csv (the exact curves), summary.txt, summary.md (one Markdown row
+/// per model), roc.png and det.png into `dir` (created when missing); returns the summary text (also what
+/// summary.txt holds).
+std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir);
 
 }  // namespace rdsf

@@ -7,8 +7,10 @@ namespace {
 
 BoostedModel renumbered(const BoostedModel& model, const FeatureSubset& subset) {
   std::vector<WeakClassifier> weak = model.weak_classifiers();
-  for (WeakClassifier& w : weak) w.feature = subset.position(w.feature);
-  return BoostedModel(model.feature_spec(), model.bins(), std::move(weak));
+  renumber_features(weak, [&subset](int feature) { return subset.position(feature); });
+  BoostedModel compact(model.feature_spec(), model.bins(), std::move(weak));
+  compact.set_calibration(model.calibration());
+  return compact;
 }
 
 }  // namespace

@@ -24,6 +24,8 @@ class ModelScorer {
 
   /// H(x) of one window-sized masked depth crop (throws Error on another size). Thread-safe.
   double score(const cv::Mat1w& crop_depth_mm) const;
+  /// P(person) of one crop: the model's calibration of score(crop).
+  double probability(const cv::Mat1w& crop_depth_mm) const { return compact_.probability(score(crop_depth_mm)); }
   /// H(x) from the features() values of one crop (features().size() values).
   double score_features(const float* values) const { return compact_.score(values); }
   /// H(x) of every candidate's depth crop.

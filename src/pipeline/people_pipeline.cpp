@@ -47,7 +47,6 @@ PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
   auto start = std::chrono::steady_clock::now();
   if (full) {
     out.scores = model_->score(out.analysis.features);
-    out.times.classifier_ms = ms_since(start);
   } else {
     out.model_features.create(static_cast<int>(n), scorer_->features().size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -57,15 +56,17 @@ PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
     start = std::chrono::steady_clock::now();
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
-    out.times.classifier_ms = ms_since(start);
   }
+  for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
+  out.times.classifier_ms = ms_since(start);
+  const double threshold = params_.score_threshold_for(*model_);
 
   start = std::chrono::steady_clock::now();
   std::vector<TrackInput> detections;
   std::vector<std::size_t> which;
   out.histograms.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (out.scores[i] < params_.threshold_classifier) continue;
+    if (out.scores[i] < threshold) continue;
     const Candidate& c = out.analysis.candidates[i];
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
     detections.push_back({c.strict_box, c.layer_depth_mm, out.histograms[i]});

@@ -1,6 +1,7 @@
 #pragma once
 // The whole system for one frame, as the thesis ran it:
-//   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) -> person when H(x) >= threshold
+//   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) and P(person)
+//         -> person when P(person) >= probability_threshold (or H(x) >= score_threshold, the thesis's way)
 //   (RDSF: only the features the model reads, see model_scorer.hpp)
 //         -> tracking (colour histogram + centroid, lkh matching)
 // with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
@@ -19,8 +20,14 @@ namespace rdsf {
 struct PipelineParams {
   DetectorParams detector;
   TrackingParams tracking;
-  /// A candidate is a person when H(x) >= threshold_classifier.
-  double threshold_classifier = 0.0;
+  /// A candidate is a person when P(person) >= this (the model's calibrated probability).
+  double probability_threshold = 0.5;
+  /// When set, a candidate is a person when H(x) >= this instead: the thesis's threshold_classifier.
+  std::optional<double> score_threshold;
+  /// The score threshold these mean for `model`.
+  double score_threshold_for(const BoostedModel& model) const {
+    return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold);
+  }
   /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
   /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
   bool full_feature_vector = false;
@@ -41,6 +48,7 @@ struct PipelineFrame {
   FrameAnalysis analysis;                 ///< layers, candidates (features only with full_feature_vector)
   cv::Mat1f model_features;               ///< per candidate the features the model reads (ModelScorer order)
   std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
+  std::vector<double> probabilities;      ///< P(person) per candidate (empty without a model)
   std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
   std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
   PipelineTimes times;

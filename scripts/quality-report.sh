@@ -1,0 +1,180 @@
+#!/usr/bin/env bash
+# The quality report: how well the detectors this workbench trains find people in recordings they have
+# never seen, and whether the figures the trainer prints predict it.
+#   1. renders (or reuses) the main job's synthetic recordings: training (seed 11), the same rooms empty,
+#      other empty rooms (seed 21) and the held-out test sequence (seed 31: other rooms, other people)
+#   2. mines negatives and labels positives from the training recordings (as the main job)
+#   3. the lever table: one recipe (tree2 at the main job's scale) trained with each training lever added
+#      in turn (thesis baseline, group validation + calibration, regularisation, trees, augmentation,
+#      iterated hard-negative bootstrapping), each evaluated on the held-out sequence and on real frames
+#   4. the recipes table: the four recipes with the chosen defaults, evaluated the same way
+# Each evaluation prints one row per model: TAR at FPPF <= 0.1 and <= 0.5 (exact curve), best MOTA,
+# candidate recall, the classifier's AUC on the candidates, and the gap between the TAR the model file's
+# validation predicts at P(person) >= 0.5 and the TAR measured on the held-out candidates.
+# Everything goes under out/quality (--out); the tables are collected in REPORT.md there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+usage() {
+  cat <<USAGE
+Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes]
+  --out DIR      output folder (default out/quality); recordings and sample sets there are reused
+  --real DIR     real frames with boxes.csv (default ../shared/realdata/people)
+  --no-real      skip the real frames
+  --only WHAT    run only the lever table or only the recipes table
+USAGE
+}
+out=out/quality
+real=../shared/realdata/people
+only=""
+while (($#)); do
+  case "$1" in
+    --out) out="$2"; shift 2 ;;
+    --real) real="$2"; shift 2 ;;
+    --no-real) real=""; shift ;;
+    --only) only="$2"; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "quality-report: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+case "$only" in ""|levers|recipes) ;; *) echo "quality-report: --only takes levers or recipes" >&2; exit 2 ;; esac
+
+started=$(date +%s)
+step() { printf '\n== %s (%ds)\n' "$1" "$(( $(date +%s) - started ))" >&2; }
+scripts/setup.sh >&2
+bin=${RDSF_BUILD_DIR:-build}
+synth=$bin/synth/rdsf-synth mine=$bin/miner/rdsf-mine label=$bin/labeler/rdsf-label
+train=$bin/trainer/rdsf-train detect=$bin/detector/rdsf-detect
+data=$out/data sets=$out/sets models=$out/models logs=$out/logs
+run=$out/runs/$(date -u +%Y%m%dT%H%M%SZ)
+mkdir -p "$data" "$sets" "$models" "$logs" "$run"
+have_real=0
+if [ -n "$real" ] && [ -f "$real/boxes.csv" ]; then have_real=1; fi
+
+step "render the synthetic recordings (reused when present)"
+render() {
+  local name=$1; shift
+  if [ -f "$data/$name/synth.yml" ]; then echo "$data/$name: already rendered" >&2; return; fi
+  "$synth" --out "$data/$name" --force "$@" >&2
+}
+render train --frames 900 --people 1..4 --seed 11 --rgb --clip-frames 15
+render empty --frames 500 --people 1..4 --seed 11 --empty --rgb --clip-frames 15
+render empty-hard --frames 500 --people 0..0 --seed 21 --empty --rgb --clip-frames 15
+render test --frames 240 --people 1..4 --seed 31 --rgb --clip-frames 60
+
+step "mine negatives and label positives"
+"$mine" --source "$data/empty" --out "$sets/negatives" 2>"$logs/mine.log" || { cat "$logs/mine.log" >&2; exit 1; }
+"$label" --source "$data/train" --out "$sets/people" --truth "$data/train/boxes.csv" --answers /dev/null \
+  --keep-rejected 2>"$logs/label.log" || { cat "$logs/label.log" >&2; exit 1; }
+
+# The main job's tree2 at scale 0.3: 1208 positives, 2245 negatives, 100 rounds.
+pos=1208 neg=2245
+evaluate() {  # report folder, models...
+  local dir=$1; shift
+  local args=()
+  for m in "$@"; do args+=(--model "$m"); done
+  "$detect" --source "$data/test" --truth "$data/test/boxes.csv" --report-dir "$dir/synthetic" --models-dir "$models" \
+    "${args[@]}" --force >/dev/null 2>"$logs/detect.log" || { cat "$logs/detect.log" >&2; exit 1; }
+  if ((have_real)); then
+    "$detect" --source "$real" --truth "$real/boxes.csv" --report-dir "$dir/real" --models-dir "$models" \
+      "${args[@]}" --force >/dev/null 2>"$logs/detect.log" || { cat "$logs/detect.log" >&2; exit 1; }
+  fi
+}
+train_model() {  # name, extra rdsf-train options...
+  local name=$1; shift
+  local t0; t0=$(date +%s)
+  "$train" --models-dir "$models" --name "$name" --pos "$sets/people" --positives "$pos" --negatives "$neg" \
+    --rounds 100 "$@" 2>"$logs/train-$name.log" || { tail -3 "$logs/train-$name.log" >&2; exit 1; }
+  grep -E "validation AUC|calibration|wrote" "$logs/train-$name.log" | sed 's/^/  /' >&2
+  echo "  trained $name in $(( $(date +%s) - t0 )) s" >&2
+}
+hard_negatives() {  # model, set: mines the model's false positives on the other empty rooms; prints FPPF
+  "$mine" --source "$data/empty-hard" --out "$2" --model "$1" --models-dir "$models" --min-score 0 \
+    2>"$logs/mine-hard.log" || { cat "$logs/mine-hard.log" >&2; exit 1; }
+  awk '/hard negatives:/ { printf "%.4f", $4 / 500 }' "$logs/mine-hard.log"
+}
+
+table_of() {  # report folder, title
+  echo "### $2"
+  echo
+  echo "Held-out synthetic sequence (240 frames, seed 31):"
+  echo
+  cat "$1/synthetic/summary.md"
+  if ((have_real)); then
+    echo
+    echo "Real frames ($real):"
+    echo
+    cat "$1/real/summary.md"
+  fi
+  echo
+}
+
+report=$run/REPORT.md
+{
+  echo "# Quality report ($(date -u +%Y-%m-%dT%H:%M:%SZ), $(nproc) cores)"
+  echo
+  echo "Training data: the main job's synthetic recordings (900 frames seed 11, negatives from the same rooms"
+  echo "empty, hard negatives from other empty rooms seed 21); tree2 counts at scale 0.3 ($pos positives,"
+  echo "$neg negatives), 100 rounds. 'TAR at P >= op' compares the model file's validation TAR with the"
+  echo "classifier's TAR on the evaluated recording's candidates at the same probability threshold."
+  echo
+} > "$report"
+
+# A common hard-negative set mined with the thesis baseline, so that every lever trains on the same data.
+if [ "$only" != "recipes" ]; then
+  step "lever table"
+  base_neg=("$sets/negatives" "$sets/people")
+  train_model L0-thesis --neg "${base_neg[@]}" --calibration none --group-frames 0
+  fppf=$(hard_negatives L0-thesis "$sets/hard-L0")
+  echo "  hard negatives of L0 on the other empty rooms: FPPF $fppf" >&2
+  neg_sets=("$sets/negatives" "$sets/hard-L0" "$sets/people")
+  train_model L1-groups --neg "${neg_sets[@]}" --calibration platt
+  train_model L2-regularised --neg "${neg_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5}
+  train_model L3-trees --neg "${neg_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5} --depth 2
+  train_model L4-augmented --neg "${neg_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5} --depth 2 \
+    --augment mirror,shift,scale,occlusion --augment-copies 2
+  # Iterated bootstrapping: mine the newest model's false positives, retrain, until FPPF stops falling.
+  last=L4-augmented boot_sets=("${neg_sets[@]}") prev=""
+  for round in 1 2 3 4; do
+    fppf=$(hard_negatives "$last" "$sets/hard-boot")
+    echo "  bootstrapping round $round: $last has FPPF $fppf on the other empty rooms" >&2
+    echo "bootstrapping round $round: $last FPPF $fppf on the other empty rooms" >> "$run/bootstrapping.txt"
+    if [ -n "$prev" ] && awk -v a="$fppf" -v b="$prev" 'BEGIN { exit !(a >= 0.9 * b) }'; then break; fi
+    prev=$fppf
+    [ "$round" = 1 ] && boot_sets+=("$sets/hard-boot")
+    train_model "L5-boot$round" --neg "${boot_sets[@]}" ${RDSF_QUALITY_REG:---learning-rate 0.5} --depth 2 \
+      --augment mirror,shift,scale,occlusion --augment-copies 2
+    last="L5-boot$round"
+  done
+  lever_models=(L0-thesis L1-groups L2-regularised L3-trees L4-augmented)
+  for m in "$models"/L5-boot*; do [ -d "$m" ] && lever_models+=("$(basename "$m")"); done
+  step "evaluate the levers"
+  evaluate "$run/levers" "${lever_models[@]}"
+  {
+    table_of "$run/levers" "Training levers, one after the other (tree2 size)"
+    echo "Bootstrapping:"
+    echo
+    sed 's/^/    /' "$run/bootstrapping.txt"
+    echo
+  } >> "$report"
+fi
+
+if [ "$only" != "levers" ]; then
+  step "recipes with the defaults"
+  count() { awk -v s="$1" 'BEGIN { printf "%d", s * 0.3 + 0.5 }'; }
+  recipe_neg=("$sets/negatives" "$sets/people")
+  [ -d "$sets/hard-boot" ] && recipe_neg+=("$sets/hard-boot")
+  [ -d "$sets/hard-L0" ] && recipe_neg+=("$sets/hard-L0")
+  for r in tree:2814:7484 tree2:4028:7484 hugeTree:5628:22454 treeLast:1115:10085; do
+    IFS=: read -r name p n <<<"$r"
+    "$train" --recipe "models/recipes/$name.yml" --models-dir "$models" --pos "$sets/people" --neg "${recipe_neg[@]}" \
+      --positives "$(count "$p")" --negatives "$(count "$n")" 2>"$logs/train-$name.log" || { tail -3 "$logs/train-$name.log" >&2; exit 1; }
+    grep -E "validation AUC|calibration" "$logs/train-$name.log" | sed 's/^/  /' >&2
+  done
+  step "evaluate the recipes"
+  evaluate "$run/recipes" tree tree2 hugeTree treeLast
+  table_of "$run/recipes" "The thesis's recipes (scale 0.3) with the workbench's defaults" >> "$report"
+fi
+
+cat "$report"
+echo "quality-report: done in $(( $(date +%s) - started )) s. Report: $report" >&2
