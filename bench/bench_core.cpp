@@ -1,13 +1,21 @@
 // Speed of the detector core's stages on one core, on the real frames of ../shared/realdata when present
 // (else a hand-built scene). Targets (issue 2): segmentation < 10 ms per 640x480 frame (thesis 200-320 ms),
 // candidate shaping < 1 ms per candidate (thesis 10 ms), RDSF < 100 us per candidate (thesis ~16 ms with the
-// classifier). Run: build/bench/bench_core
+// classifier). Issue 17: a 100-round model scored from only the features it reads < 5 us per candidate
+// (BM_ScoreModelFeaturesOnly/rdsf), the full 8128 vector < 20 us (BM_RdsfPerCandidate); issue 13: the
+// rdsf-rect spec scored at most at the old full-vector cost, about 64 us (BM_ScoreModelFeaturesOnly/rect).
+// Run: build/bench/bench_core
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <vector>
 
+#include <random>
+
 #include "candidates/candidate_finder.hpp"
+#include "classifier/boosted_model.hpp"
+#include "pipeline/model_scorer.hpp"
 #include "detector/detector_core.hpp"
 #include "frame/frame_source.hpp"
 #include "segmentation/depth_layers.hpp"
@@ -65,21 +73,83 @@ void BM_CandidateShaping(benchmark::State& state) {
 }
 BENCHMARK(BM_CandidateShaping)->Unit(benchmark::kMillisecond);
 
-void BM_RdsfPerCandidate(benchmark::State& state) {
-  std::vector<cv::Mat1w> crops;
-  const rdsf::DetectorCore core;
-  for (const auto& frame : frames()) {
-    for (const auto& c : core.analyse(frame, false).candidates) crops.push_back(c.depth_crop);
+const std::vector<cv::Mat1w>& crops() {
+  static const std::vector<cv::Mat1w> all = [] {
+    std::vector<cv::Mat1w> out;
+    const rdsf::DetectorCore core;
+    for (const auto& frame : frames()) {
+      for (const auto& c : core.analyse(frame, false).candidates) out.push_back(c.depth_crop);
+    }
+    return out;
+  }();
+  return all;
+}
+
+// Argument 0: the thesis's spec (rdsf, 8128 features), 1: the paper's squares (rdsf-rect, 120,786).
+rdsf::FeatureSpec spec_of(const benchmark::State& state) {
+  return state.range(0) == 0 ? rdsf::FeatureSpec{} : rdsf::FeatureSpec::rect();
+}
+
+// A 100-round model of look-up tables on seeded random features: as many distinct regions as 100 pairs
+// can name (a trained model reuses cells, so it reads fewer).
+rdsf::BoostedModel random_model(const rdsf::FeatureSpec& spec, int rounds) {
+  std::mt19937 random(17);
+  std::vector<rdsf::WeakClassifier> weak(static_cast<std::size_t>(rounds));
+  for (rdsf::WeakClassifier& w : weak) {
+    w.feature = static_cast<int>(random() % static_cast<unsigned>(spec.dimension()));
+    for (int b = 0; b < 64; ++b) w.responses.push_back(static_cast<double>(random() % 1000) / 500.0 - 1.0);
   }
-  const rdsf::RdsfExtractor extractor;
+  return rdsf::BoostedModel(spec, rdsf::BinScheme{}, weak);
+}
+
+void per_candidate(benchmark::State& state) {
+  state.counters["time_per_candidate"] = benchmark::Counter(
+      static_cast<double>(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_RdsfPerCandidate(benchmark::State& state) {
+  const rdsf::RdsfExtractor extractor(spec_of(state));
   std::vector<float> out(static_cast<std::size_t>(extractor.dimension()));
   std::size_t i = 0;
   for (auto _ : state) {
-    extractor.compute(crops[i++ % crops.size()], out.data());
+    extractor.compute(crops()[i++ % crops().size()], out.data());
     benchmark::DoNotOptimize(out.data());
   }
+  per_candidate(state);
 }
-BENCHMARK(BM_RdsfPerCandidate)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RdsfPerCandidate)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The full vector, then H(x): the thesis's way of scoring.
+void BM_ScoreFullVector(benchmark::State& state) {
+  const rdsf::RdsfExtractor extractor(spec_of(state));
+  const rdsf::BoostedModel model = random_model(extractor.spec(), 100);
+  std::vector<float> out(static_cast<std::size_t>(extractor.dimension()));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    extractor.compute(crops()[i++ % crops().size()], out.data());
+    benchmark::DoNotOptimize(model.score(out.data()));
+  }
+  per_candidate(state);
+}
+BENCHMARK(BM_ScoreFullVector)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// Only the features the 100-round model reads (the regions they name, then the pairs), then H(x). With
+// RDSF_BENCH_MODEL=FILE (a trained model, e.g. of scripts/feature-spec-compare.sh) argument 2 scores with it.
+void BM_ScoreModelFeaturesOnly(benchmark::State& state) {
+  const char* trained = std::getenv("RDSF_BENCH_MODEL");
+  if (state.range(0) == 2 && trained == nullptr) {
+    state.SkipWithError("set RDSF_BENCH_MODEL=FILE to score with a trained model");
+    return;
+  }
+  const rdsf::ModelScorer scorer(state.range(0) == 2 ? rdsf::BoostedModel::load(trained)
+                                                     : random_model(spec_of(state), 100));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(scorer.score(crops()[i++ % crops().size()]));
+  per_candidate(state);
+  state.counters["features"] = scorer.features().size();
+  state.counters["regions"] = scorer.features().region_count();
+}
+BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 void BM_WholeCoreFrame(benchmark::State& state) {
   const rdsf::DetectorCore core;

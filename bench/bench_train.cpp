@@ -14,7 +14,8 @@
 // the rounds OpenCV ran, and the native AUC after all its rounds is reported too.
 //
 // Options (before Google Benchmark's own): --positives=N --negatives=N --native-rounds=N
-// --opencv-rounds=A,B (0,0 skips OpenCV) --threads=N.
+// --opencv-rounds=A,B (0,0 skips OpenCV) --threads=N --feature-spec=rdsf|rdsf-rect[:...] --feature-pool=N
+// (a seeded pool of N of the spec's features, as rdsf-train --feature-pool; 0 = all).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -33,6 +34,7 @@
 #include "classifier/opencv_boost.hpp"
 #include "classifier/real_adaboost.hpp"
 #include "classifier/roc_metrics.hpp"
+#include "classifier/seeded_sampling.hpp"
 #include "features/rdsf_extractor.hpp"
 #include "report/training_crops.hpp"
 
@@ -45,7 +47,19 @@ struct Config {
   int native_rounds = 100;
   int opencv_a = 1, opencv_b = 3;
   int threads = 0;
+  std::string spec = "rdsf";
+  std::size_t pool = 0;
 } config;
+
+std::vector<int> pool_columns() {
+  const rdsf::FeatureSpec spec = rdsf::FeatureSpec::parse(config.spec);
+  std::vector<int> columns;
+  if (config.pool == 0 || config.pool >= static_cast<std::size_t>(spec.dimension())) return columns;
+  for (std::size_t f : rdsf::seeded_subset(static_cast<std::size_t>(spec.dimension()), config.pool, 1)) {
+    columns.push_back(static_cast<int>(f));
+  }
+  return columns;
+}
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -68,7 +82,9 @@ struct Data {
 };
 
 void make_rows(int positives, int negatives, std::uint64_t seed, cv::Mat1f& rows, std::vector<int>& labels) {
-  rdsf::perf::TrainingRows made = rdsf::perf::make_training_rows(positives, negatives, seed);
+  static const std::vector<int> columns = pool_columns();
+  rdsf::perf::TrainingRows made = rdsf::perf::make_training_rows(positives, negatives, seed,
+                                                                 rdsf::FeatureSpec::parse(config.spec), columns);
   rows = made.rows;
   labels = std::move(made.labels);
 }
@@ -166,6 +182,8 @@ void parse_own_flags(int& argc, char** argv) {
     else if (const char* v3 = value("--native-rounds=")) config.native_rounds = std::atoi(v3);
     else if (const char* v4 = value("--threads=")) config.threads = std::atoi(v4);
     else if (const char* v5 = value("--opencv-rounds=")) std::sscanf(v5, "%d,%d", &config.opencv_a, &config.opencv_b);
+    else if (const char* v6 = value("--feature-spec=")) config.spec = v6;
+    else if (const char* v7 = value("--feature-pool=")) config.pool = static_cast<std::size_t>(std::atoll(v7));
     else argv[kept++] = argv[i];
   }
   argc = kept;

@@ -146,8 +146,25 @@ po::options_description detector_options(DetectorParams& p) {
       ("thesis", po::bool_switch(),
        "the thesis's exact behaviour: every departure off (options given explicitly still win)");
   po::options_description all;
-  all.add(segmentation).add(candidates);
+  all.add(segmentation).add(candidates).add(feature_spec_options(p.features));
   return all;
+}
+
+po::options_description feature_spec_options(FeatureSpec& spec) {
+  po::options_description features("Features");
+  features.add_options()(
+      "feature-spec",
+      po::value<std::string>()->default_value(spec.option_text())->notifier([&spec](const std::string& text) {
+        try {
+          spec = FeatureSpec::parse(text);
+        } catch (const Error& e) {
+          throw UsageError(std::string("--feature-spec: ") + e.what());
+        }
+      }),
+      "RDSF regions: rdsf (the thesis's 128 cells of 8x8 px, 8128 features) or rdsf-rect (the paper's squares of "
+      "8-64 px at an 8 px stride, 120,786 features), optionally with parameters, e.g. "
+      "rdsf-rect:min=8,max=32,stride=8 (keys: rdsf cell; rdsf-rect min, max, step, stride; both bin, clamp in mm)");
+  return features;
 }
 
 po::options_description tracking_options(TrackingParams& t) {

@@ -35,6 +35,10 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
 /// Options of the detector core (segmentation, candidates), bound to `params`, with the thesis's names.
 po::options_description detector_options(DetectorParams& params);
 
+/// --feature-spec NAME[:key=value,...] bound to `spec` (part of detector_options; rdsf-train adds it alone).
+/// A name or parameter that is not known is a UsageError.
+po::options_description feature_spec_options(FeatureSpec& spec);
+
 /// Options of the tracker (thesis names), bound to `params`.
 po::options_description tracking_options(TrackingParams& params);
 

@@ -93,6 +93,12 @@ int run_detect(const DetectOptions& o) {
 
   std::vector<BoostedModel> models;
   for (const std::string& m : o.models) models.push_back(BoostedModel::load(m, o.models_dir));
+  PipelineParams pipeline_params = o.pipeline;
+  // The detector computes the first model's feature spec unless --feature-spec names one (then they must
+  // agree: PeoplePipeline refuses otherwise). Further models score the same crops in their own specs.
+  if (!models.empty() && !o.feature_spec_given) pipeline_params.detector.features = models.front().feature_spec();
+  std::vector<ModelScorer> scorers;
+  for (const BoostedModel& m : models) scorers.emplace_back(m);
   GroundTruth truth;
   if (evaluate) {
     truth = read_ground_truth(o.truth_csv);
@@ -101,7 +107,7 @@ int run_detect(const DetectOptions& o) {
               << " of them less than " << o.min_visible * 100 << "% visible (ignored: no miss, no false positive)\n";
   }
 
-  PeoplePipeline pipeline(o.pipeline, models.empty() ? nullptr : &models.front());
+  PeoplePipeline pipeline(pipeline_params, models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.camera);
   std::unique_ptr<DetectionCsv> csv;
   if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), box);
@@ -141,7 +147,7 @@ int run_detect(const DetectOptions& o) {
                                             o.pipeline.tracking.histogram_bins)});
       }
       for (std::size_t m = 0; m < models.size(); ++m) {
-        const std::vector<double> scores = m == 0 ? processed.scores : models[m].score(processed.analysis.features);
+        const std::vector<double> scores = m == 0 ? processed.scores : scorers[m].score(found);
         EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
         for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
         evaluated[m].push_back(std::move(e));

@@ -23,6 +23,8 @@ struct DetectOptions {
   double min_visible = 0.5;        ///< people less visible than this are "don't care" in the evaluation
   CameraModel camera;
   PipelineParams pipeline;
+  /// --feature-spec was given: the first model must have that spec (else the detector takes the model's).
+  bool feature_spec_given = false;
 };
 
 /// Returns the process exit code.

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
         "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     rdsf::cli::apply_calibration(o.camera, calibration);
+    o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
     for (double p : o.thresholds) {
       if (!(p > 0.0 && p < 1.0)) throw rdsf::cli::UsageError("--thresholds are probabilities inside (0, 1), got " + std::to_string(p));

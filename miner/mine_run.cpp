@@ -12,6 +12,8 @@
 #include "dataset/sample_set.hpp"
 #include "dataset/sample_set_merge.hpp"
 #include "dataset/sample_set_writer.hpp"
+#include "features/feature_spec_record.hpp"
+#include "pipeline/model_scorer.hpp"
 
 namespace rdsf {
 
@@ -62,11 +64,12 @@ int run_mine(MineOptions& o) {
   if (!o.model.empty()) {
     model = BoostedModel::load(o.model, o.models_dir);
     if (model->feature_spec() != p.detector.features) {
-      fail(model->path(), "model feature spec " + model->feature_spec().hash() + " differs from the detector's " +
-                              p.detector.features.hash());
+      fail(model->path(), feature_spec_mismatch("model feature spec", model->feature_spec(),
+                                                "the detector's (--feature-spec)", p.detector.features));
     }
     const BoostedModel& m = *model;
-    p.scorer = [&m](const float* features) { return m.score(features); };
+    const ModelScorer scorer(m);  // only the features the model reads
+    p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
     p.min_score = o.min_score;
     p.model = m.name().empty() ? m.path() : m.name() + "/v" + std::to_string(m.version());
     std::cerr << "rdsf-mine: hard-negative mode: keeping candidates that " << p.model << " (" << m.path()

@@ -2,7 +2,9 @@
 // --inspect, --export-text and bad command lines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <numeric>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -38,8 +40,8 @@ cv::Mat1w crop(bool person, std::mt19937_64& rng) {
   return out;
 }
 
-void make_set(const std::string& dir, int label, int count, std::uint64_t seed) {
-  SampleSetWriter writer = SampleSetWriter::open_or_create(dir, FeatureSpec{}, CameraModel{}, "test");
+void make_set(const std::string& dir, int label, int count, std::uint64_t seed, const FeatureSpec& spec = {}) {
+  SampleSetWriter writer = SampleSetWriter::open_or_create(dir, spec, CameraModel{}, "test");
   std::mt19937_64 rng(seed);
   for (int i = 0; i < count; ++i) {
     SampleRecord r;
@@ -193,6 +195,67 @@ TEST_F(TrainerProgram, BadCommandLinesFailWithOneLine) {
   EXPECT_EQ(set.exit_code, 1);
   EXPECT_NE(set.err.find("nope"), std::string::npos) << set.err;
   EXPECT_FALSE(fs::exists(models + "/x"));
+}
+
+TEST_F(TrainerProgram, RectSpecSetsTrainARectModelOnAFeaturePool) {
+  const std::string people_rect = dir / "people-rect", negatives_rect = dir / "negatives-rect";
+  make_set(people_rect, 1, 60, 1, FeatureSpec::rect());
+  make_set(negatives_rect, 0, 90, 2, FeatureSpec::rect());
+  const auto result = train("--pos " + test::quote(people_rect) + " --neg " + test::quote(negatives_rect) +
+                            " --name rect --rounds 5 --feature-pool 3000 --threads 1");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("feature pool of 3000 of the 120786 features of rdsf-rect"), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("rects "), std::string::npos) << result.err;  // progress names the squares
+  const BoostedModel model = BoostedModel::load("rect", models);
+  EXPECT_EQ(model.feature_spec(), FeatureSpec::rect());
+  ASSERT_EQ(model.weak_classifiers().size(), 5u);
+  // The weak classifiers name features of the spec (not pool columns): the same score from the crops'
+  // full vectors as from the training's own figures.
+  const SampleSet pos = SampleSet::open_read(people_rect);
+  const RdsfExtractor extractor(FeatureSpec::rect());
+  const std::vector<double> scores = model.score(pos.features(extractor));
+  const double mean = std::accumulate(scores.begin(), scores.end(), 0.0) / static_cast<double>(scores.size());
+  EXPECT_GT(mean, 0.0);  // positives score as people
+  const auto& parameters = model.training().parameters;
+  EXPECT_NE(std::find(parameters.begin(), parameters.end(), std::make_pair(std::string("feature_pool"), std::string("3000"))),
+            parameters.end());
+}
+
+TEST_F(TrainerProgram, SetsOfAnotherSpecAreRefusedNamingBoth) {
+  const std::string negatives_rect = dir / "negatives-rect";
+  make_set(negatives_rect, 0, 20, 2, FeatureSpec::rect());
+  auto result = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives_rect) + " --name mixed --rounds 2");
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.err.find("rdsf-rect/1"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("rdsf/1"), std::string::npos) << result.err;
+  result = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) +
+                 " --name asked --rounds 2 --feature-spec rdsf-rect");
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.err.find("differs from the training's"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(models) / "mixed"));
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(models) / "asked"));
+}
+
+TEST(FeatureSpecOption, UnknownNamesAndParametersAreUsageErrorsInEveryProgram) {
+  const test::TempDir dir("rdsf-spec-option");
+  const std::string out = dir / "out";
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"rdsf-mine", "--source " + test::quote(out) + " --out " + test::quote(out)},
+      {"rdsf-label", "--source " + test::quote(out) + " --out " + test::quote(out) + " --answers /dev/null"},
+      {"rdsf-detect", "--source " + test::quote(out) + " --out " + test::quote(out + ".csv")},
+      {"rdsf-train", "--pos " + test::quote(out) + " --neg " + test::quote(out) + " --name x --models-dir " +
+                         test::quote(out)}};
+  for (const auto& [program, arguments] : runs) {
+    for (const char* spec : {"hog", "rdsf-rect:size=3", "rdsf:cell=7"}) {
+      const auto result = test::run(test::quote(test::program(program)) + " " + arguments + " --feature-spec " + spec);
+      EXPECT_EQ(result.exit_code, 2) << program << " " << spec << ": " << result.err;
+      EXPECT_NE(result.err.find("--feature-spec"), std::string::npos) << result.err;
+      EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+      EXPECT_FALSE(std::filesystem::exists(out)) << program;
+      EXPECT_FALSE(std::filesystem::exists(out + ".csv")) << program;
+    }
+  }
 }
 
 // The levers of issue "honest figures": refused before any work when they make no sense.

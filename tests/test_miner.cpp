@@ -233,7 +233,7 @@ TEST(Miner, HardNegativeModeKeepsOnlyWhatTheModelScoresHigh) {
   rdsf::test::TempDir dir;
   // A stand-in model: the score is the first feature value (the similarity of the two top-left cells).
   rdsf::MineParams p = params_for(empty_frames());
-  p.scorer = [](const float* features) { return static_cast<double>(features[0]); };
+  p.scorer = [](const cv::Mat1w& crop) { return static_cast<double>(rdsf::RdsfExtractor{}.compute(crop)[0]); };
   p.min_score = 0.5;
   p.model = "first-value/v1";
   rdsf::SampleSetWriter writer = new_set(dir / "hard");

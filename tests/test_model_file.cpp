@@ -164,7 +164,7 @@ TEST(ModelFile, UnknownFormatVersionIsRefused) {
 
 TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
   const test::TempDir dir("rdsf-model-file");
-  // A model made for 16-pixel cells (32 cells, 496 features).
+  // A model made for 16-pixel cells (32 cells, 496 features): a spec this build knows, so it loads...
   FeatureSpec coarse;
   coarse.cell_px = 16;
   WeakClassifier w;
@@ -172,13 +172,14 @@ TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
   w.responses.assign(64, 0.25);
   BoostedModel model(coarse, BinScheme{}, {w});
   const std::string path = save_new_model_version(model, "coarse", dir.path().string());
-  const std::string message = message_of([&] { BoostedModel::load(path); });
+  EXPECT_EQ(BoostedModel::load(path).feature_spec(), coarse);
+  EXPECT_EQ(read_model_file(path, coarse).feature_spec(), coarse);
+  // ... but a caller computing the thesis's features refuses it, naming both.
+  const std::string message = message_of([&] { read_model_file(path, FeatureSpec{}); });
   EXPECT_NE(message.find("feature spec differs"), std::string::npos) << message;
   EXPECT_NE(message.find("cell=16"), std::string::npos) << message;
   EXPECT_NE(message.find("cell=8"), std::string::npos) << message;
   EXPECT_NE(message.find(coarse.hash()), std::string::npos) << message;
-  // A build that computes 16-pixel cells reads it.
-  EXPECT_EQ(read_model_file(path, coarse).feature_spec(), coarse);
   // And a default model refused by a build computing something else.
   BoostedModel normal = small_model(2);
   const std::string normal_path = save_new_model_version(normal, "normal", dir.path().string());
@@ -188,6 +189,30 @@ TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
   const std::string damaged = dir / "damaged.yml";
   write_text(damaged, replace_once(read_text(normal_path), "cell_px: 8", "cell_px: 4"));
   EXPECT_NE(message_of([&] { BoostedModel::load(damaged); }).find("damaged"), std::string::npos);
+  // A spec this build does not know is refused on one line.
+  const std::string unknown = dir / "unknown.yml";
+  write_text(unknown, replace_once(read_text(normal_path), "pairs=upper-row-major", "pairs=lower-column-major"));
+  const std::string unknown_message = message_of([&] { BoostedModel::load(unknown); });
+  EXPECT_NE(unknown_message.find("is not one this build knows"), std::string::npos) << unknown_message;
+  EXPECT_EQ(unknown_message.find('\n'), std::string::npos);
+}
+
+TEST(ModelFile, RectFeatureSpecModelsRoundTrip) {
+  const test::TempDir dir("rdsf-model-file");
+  WeakClassifier w;
+  w.feature = 120000;  // beyond the thesis's 8128
+  w.responses.assign(64, -0.5);
+  BoostedModel model(FeatureSpec::rect(), BinScheme{}, {w});
+  const std::string path = save_new_model_version(model, "rect", dir.path().string());
+  const std::string text = read_text(path);
+  EXPECT_NE(text.find("name: rdsf-rect"), std::string::npos);
+  EXPECT_NE(text.find("rect_stride_px: 8"), std::string::npos);
+  const BoostedModel loaded = BoostedModel::load(path);
+  EXPECT_EQ(loaded.feature_spec(), FeatureSpec::rect());
+  EXPECT_EQ(loaded.weak_classifiers(), model.weak_classifiers());
+  const std::string message = message_of([&] { read_model_file(path, FeatureSpec{}); });
+  EXPECT_NE(message.find("rdsf-rect/1"), std::string::npos) << message;
+  EXPECT_NE(message.find("rdsf/1"), std::string::npos) << message;
 }
 
 TEST(ModelFile, TruncatedWeakListIsRefused) {

@@ -18,9 +18,15 @@ struct FeatureUse {
   double spread = 0.0;  // sum over its weak classifiers of (highest - lowest response) / 2
 };
 
-std::string cell_text(const FeatureSpec& spec, int cell) {
+// "  3 (row  0, col 3)" for a cell, "16x16 at (8, 24)" for a square.
+std::string region_text(const FeatureSpec& spec, int region) {
   char text[48];
-  std::snprintf(text, sizeof text, "%3d (row %2d, col %d)", cell, cell / spec.cells_x(), cell % spec.cells_x());
+  if (spec.layout == FeatureSpec::Layout::Cells) {
+    std::snprintf(text, sizeof text, "%3d (row %2d, col %d)", region, region / spec.cells_x(), region % spec.cells_x());
+  } else {
+    const FeatureRegion r = spec.region(region);
+    std::snprintf(text, sizeof text, "%dx%d at (%d, %d)", r.width, r.height, r.x, r.y);
+  }
   return text;
 }
 
@@ -111,12 +117,13 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
     return a.uses != b.uses ? a.uses > b.uses : a.spread > b.spread;
   });
   out << "most used features (" << ranked.size() << " distinct; spread = sum of (max - min response) / 2)\n";
-  out << "  rank  feature  uses  spread   cell pair\n";
+  out << "  rank  feature  uses  spread   " << (spec.layout == FeatureSpec::Layout::Cells ? "cell" : "square")
+      << " pair\n";
   for (std::size_t k = 0; k < ranked.size() && k < static_cast<std::size_t>(std::max(0, o.top)); ++k) {
     int i = 0, j = 0;
     spec.pair_at(ranked[k].feature, i, j);
     std::snprintf(line, sizeof line, "  %4zu  %7d  %4d  %6.3f   %s - %s\n", k + 1, ranked[k].feature, ranked[k].uses,
-                  ranked[k].spread, cell_text(spec, i).c_str(), cell_text(spec, j).c_str());
+                  ranked[k].spread, region_text(spec, i).c_str(), region_text(spec, j).c_str());
     out << line;
   }
   return 0;

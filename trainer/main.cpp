@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
         "at 28,000 samples on 2 cores), OpenCV's boosting with --backend opencv. Progress per round on stderr."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     o.augment_given = !values["augment"].defaulted();
+    o.feature_spec_given = !values["feature-spec"].defaulted();  // else the sets' spec
     const int modes = static_cast<int>(!o.inspect.empty()) + static_cast<int>(!o.export_text.empty());
     if (modes > 1) throw rdsf::cli::UsageError("give either --inspect or --export-text, not both");
     if (!o.inspect.empty()) return rdsf::run_inspect(o, std::cout);

@@ -63,7 +63,13 @@ po::options_description train_options(TrainOptions& o) {
        "positives augmented at training time: off, or a list of mirror, shift, scale, occlusion")
       ("augment-copies", po::value(&o.augment_copies)->default_value(o.augment_copies),
        "random variants per positive (shift / scale / occlusion), besides the mirror")
-      ("threads", po::value(&o.threads)->default_value(o.threads), "threads for features and histograms (0 = all cores)");
+      ("threads", po::value(&o.threads)->default_value(o.threads), "threads for features and histograms (0 = all cores)")
+      ("feature-pool", po::value(&o.feature_pool)->default_value(o.feature_pool),
+       "train on a seeded pool of this many of the spec's features (0 = all when the rows fit --memory-budget-mb, "
+       "else as many as fit; rdsf-rect has 120,786)")
+      ("memory-budget-mb", po::value(&o.memory_budget_mb)->default_value(o.memory_budget_mb),
+       "--feature-pool 0: memory for the feature rows and their bins (5 bytes per sample and feature)");
+  po::options_description features = cli::feature_spec_options(o.feature_spec);
   po::options_description other("Instead of training");
   other.add_options()
       ("inspect", po::value(&o.inspect), "print a model's header, figures and most used features (file, NAME or NAME/vN)")
@@ -72,7 +78,7 @@ po::options_description train_options(TrainOptions& o) {
        "write the chosen samples to this file in the thesis's text format (label f1 ... f8128)")
       ("force", po::bool_switch(&o.force), "--export-text may replace an existing file");
   po::options_description options;
-  options.add(what).add(how).add(other);
+  options.add(what).add(how).add(features).add(other);
   return options;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iterator>
 #include <iostream>
+#include <limits>
 
 #include "classifier/boosted_model.hpp"
 #include "classifier/model_registry.hpp"
@@ -69,20 +70,14 @@ SampleChoice training_choice(const Recipe& r, const TrainOptions& o) {
   c.seed = r.params.seed;
   c.asked_by = o.recipe.empty() || o.positives || o.negatives ? std::string("the command line")
                                                                : "recipe " + r.name;
+  if (o.feature_spec_given) c.spec = o.feature_spec;
+  c.feature_pool = o.feature_pool;
+  c.memory_budget_mb = o.memory_budget_mb;
   c.group_frames = o.group_frames;
   c.group_by = parse_group_by(o.group_by);
   c.augmentation = parse_augmentation(o.thesis && !o.augment_given ? std::string("off") : o.augment, o.augment_copies,
                                      r.params.seed);
   return c;
-}
-
-std::string cells_text(int feature) {
-  const FeatureSpec spec;
-  int i = 0, j = 0;
-  spec.pair_at(feature, i, j);
-  char text[64];
-  std::snprintf(text, sizeof text, "cells %d-%d", i, j);
-  return text;
 }
 
 std::string duration_text(double seconds) {
@@ -127,6 +122,9 @@ int run_train(const TrainOptions& o) {
     v.seed = recipe.params.seed;
     v.asked_by = "validation";
     v.role_prefix = "validation-";
+    v.spec = train.spec;          // the same spec ...
+    v.columns = train.columns;    // ... and the same features as training
+    v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
     v.group_frames = o.group_frames;
     v.group_by = parse_group_by(o.group_by);
     validation = choose_samples(v, std::cerr, o.threads);
@@ -140,10 +138,11 @@ int run_train(const TrainOptions& o) {
                  "per round at 28,000 samples)\n";
   }
 
-  const auto progress = [](const TrainingProgress& p) {
+  const FeatureSpec spec = train.spec;
+  const auto progress = [&spec](const TrainingProgress& p) {
     char line[256];
     int n = std::snprintf(line, sizeof line, "round %d/%d  feature %d (%s)  train err %.4f", p.round, p.rounds,
-                          p.feature, cells_text(p.feature).c_str(), p.train_error);
+                          p.feature, spec.describe_feature(p.feature).c_str(), p.train_error);
     if (p.validation_error && n > 0 && n < static_cast<int>(sizeof line)) {
       n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), "  val err %.4f  AUC %.4f",
                          *p.validation_error, *p.validation_auc);
@@ -156,7 +155,10 @@ int run_train(const TrainOptions& o) {
   TrainingRowInfo info;
   info.groups = train.groups;
   info.augmented = train.augmented;
-  BoostedModel model = train_boosted_model(train.rows, train.labels, recipe.params, progress,
+  BoostTrainingParams params = recipe.params;
+  params.feature_spec = train.spec;
+  params.feature_columns = train.columns;
+  BoostedModel model = train_boosted_model(train.rows, train.labels, params, progress,
                                            separate ? &validation.rows : nullptr,
                                            separate ? &validation.labels : nullptr, info);
   TrainingRecord& record = model.training();
@@ -165,6 +167,9 @@ int run_train(const TrainOptions& o) {
   record.sample_sets.insert(record.sample_sets.end(), validation.sets.begin(), validation.sets.end());
   record.parameters.insert(record.parameters.begin(), {"positives_wanted", std::to_string(recipe.positives)});
   record.parameters.insert(record.parameters.begin() + 1, {"negatives_wanted", std::to_string(recipe.negatives)});
+  record.parameters.emplace_back("feature_spec", train.spec.option_text());
+  record.parameters.emplace_back("feature_pool", train.columns.empty() ? std::string("all")
+                                                                       : std::to_string(train.columns.size()));
   record.parameters.emplace_back("group_frames", std::to_string(o.group_frames));
   record.parameters.emplace_back("group_by", o.group_by);
   record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
@@ -194,6 +199,7 @@ int run_export_text(const TrainOptions& o) {
   const Recipe recipe = effective_recipe(o);
   SampleChoice choice = training_choice(recipe, o);
   choice.augmentation = CropAugmentation{};  // the samples as they are, not training-time copies
+  choice.feature_pool = std::numeric_limits<std::size_t>::max();  // the text format holds whole vectors
   const ChosenSamples samples = choose_samples(choice, std::cerr, o.threads);
   const std::size_t lines = write_thesis_text(samples, o.export_text, o.force);
   std::cerr << "rdsf-train: wrote " << lines << " samples to " << o.export_text << "\n";

@@ -31,6 +31,10 @@ struct TrainOptions {
   bool thesis = false;             ///< the thesis's weak learners: depth 1, learning rate 1, no augmentation
   int augment_copies = 0;       ///< random variants per positive
   int threads = 0;
+  FeatureSpec feature_spec;          ///< --feature-spec (checked against the sets only when given)
+  bool feature_spec_given = false;
+  std::size_t feature_pool = 0;      ///< see SampleChoice::feature_pool
+  std::size_t memory_budget_mb = 4096;
   std::string inspect;      ///< model to describe instead of training
   int top = 20;             ///< --inspect: features listed
   std::string export_text;  ///< write the chosen samples here instead of training

@@ -11,6 +11,8 @@
 #include "core/stable_hash.hpp"
 #include "dataset/sample_groups.hpp"
 #include "dataset/sample_set.hpp"
+#include "features/feature_spec_record.hpp"
+#include "features/feature_subset.hpp"
 #include "features/rdsf_extractor.hpp"
 
 namespace rdsf {
@@ -28,17 +30,16 @@ struct ClassPick {
 };
 
 ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size_t wanted, std::uint64_t seed,
-                     const std::string& role, const std::string& asked_by, std::ostream& log) {
-  const FeatureSpec spec;
+                     const std::string& role, const std::string& asked_by, std::optional<FeatureSpec>& spec,
+                     std::ostream& log) {
   const char* what = label == 1 ? "positives" : "negatives";
   ClassPick pick;
   std::vector<PoolEntry> pool;
   for (const std::string& path : paths) {
     SampleSet set = SampleSet::open_read(path);
-    if (set.feature_spec() != spec) {
-      fail(path, "sample set feature spec '" + set.feature_spec().canonical() + "' (hash " +
-                     set.feature_spec().hash() + ") differs from this build's '" + spec.canonical() + "' (hash " +
-                     spec.hash() + ")");
+    if (!spec) spec = set.feature_spec();
+    if (set.feature_spec() != *spec) {
+      fail(path, feature_spec_mismatch("sample set feature spec", set.feature_spec(), "the training's", *spec));
     }
     SampleSetUse use;
     use.role = role;
@@ -75,8 +76,8 @@ constexpr std::size_t kChunk = 2048;
 
 using RowOrigin = SampleOrigin;
 
-void append_rows(const ClassPick& pick, int label, const RdsfExtractor& extractor, int threads, ChosenSamples& out,
-                 int& row, cli::Progress& progress, std::vector<RowOrigin>& origins,
+void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, const RdsfExtractor& extractor,
+                 int threads, ChosenSamples& out, int& row, cli::Progress& progress, std::vector<RowOrigin>& origins,
                  std::vector<std::pair<std::size_t, std::size_t>>& sources) {
   for (std::size_t s = 0; s < pick.sets.size(); ++s) {
     std::vector<std::size_t> indices;
@@ -86,8 +87,9 @@ void append_rows(const ClassPick& pick, int label, const RdsfExtractor& extracto
     for (std::size_t begin = 0; begin < indices.size(); begin += kChunk) {
       const std::vector<std::size_t> chunk(indices.begin() + static_cast<long>(begin),
                                           indices.begin() + static_cast<long>(std::min(indices.size(), begin + kChunk)));
-      const cv::Mat1f rows = pick.sets[s].features(extractor, chunk, threads);
-      if (rows.rows != static_cast<int>(chunk.size()) || rows.cols != extractor.dimension()) {
+      const cv::Mat1f rows = subset != nullptr ? pick.sets[s].features(*subset, chunk, threads)
+                                               : pick.sets[s].features(extractor, chunk, threads);
+      if (rows.rows != static_cast<int>(chunk.size()) || rows.cols != out.rows.cols) {
         fail(pick.sets[s].dir(), "feature rows of the wrong size were returned");
       }
       rows.copyTo(out.rows.rowRange(row, row + rows.rows));
@@ -106,34 +108,62 @@ void append_rows(const ClassPick& pick, int label, const RdsfExtractor& extracto
 }  // namespace
 
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads) {
+  std::optional<FeatureSpec> spec = choice.spec;
   const ClassPick pos = pick_class(choice.pos_sets, 1, choice.positives, choice.seed, choice.role_prefix + "pos",
-                                   choice.asked_by, log);
+                                   choice.asked_by, spec, log);
   const ClassPick neg = pick_class(choice.neg_sets, 0, choice.negatives, choice.seed, choice.role_prefix + "neg",
-                                   choice.asked_by, log);
-  const RdsfExtractor extractor;
+                                   choice.asked_by, spec, log);
   ChosenSamples out;
-  out.rows.create(static_cast<int>(pos.chosen.size() + neg.chosen.size()), extractor.dimension());
+  out.spec = *spec;
+  const std::size_t samples = pos.chosen.size() + neg.chosen.size();
+  const auto dimension = static_cast<std::size_t>(out.spec.dimension());
+  std::size_t pool = choice.feature_pool;
+  if (pool == 0) {  // as many as fit the budget: 4 bytes of float and 1 of bin per value
+    pool = std::max<std::size_t>(1, choice.memory_budget_mb * (std::size_t{1} << 20) / (5 * std::max<std::size_t>(1, samples)));
+  }
+  if (!choice.columns.empty()) {
+    out.columns = choice.columns;
+  } else if (pool < dimension) {
+    for (const std::size_t f : seeded_subset(dimension, pool, choice.seed ^ fnv1a64("feature pool"))) {
+      out.columns.push_back(static_cast<int>(f));
+    }
+    log << "rdsf-train: feature pool of " << out.columns.size() << " of the " << dimension << " features of "
+        << out.spec.name() << " (seeded; --feature-pool)\n";
+  }
+  const RdsfExtractor extractor(out.spec);
+  std::optional<FeatureSubset> subset;
+  if (!out.columns.empty()) subset.emplace(out.spec, out.columns);
+  const int columns = subset ? subset->size() : extractor.dimension();
+  // One crop's row: the pool's features, or all of them.
+  auto compute_row = [&](const cv::Mat1w& crop, float* values) {
+    if (subset) {
+      subset->compute(crop, values);
+    } else {
+      extractor.compute(crop, values);
+    }
+  };
+  out.rows.create(static_cast<int>(samples), columns);
   choice.augmentation.validate();
   int row = 0;
   cli::Progress progress(log, "samples", out.rows.rows);
   std::vector<RowOrigin> origins;
   std::vector<std::pair<std::size_t, std::size_t>> pos_sources, neg_sources;
-  append_rows(pos, 1, extractor, threads, out, row, progress, origins, pos_sources);
-  append_rows(neg, 0, extractor, threads, out, row, progress, origins, neg_sources);
+  append_rows(pos, 1, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, pos_sources);
+  append_rows(neg, 0, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, neg_sources);
   progress.finish(row, "features ready");
   out.augmented.assign(out.labels.size(), false);
   if (choice.augmentation.enabled()) {
     // Variants of every positive with a crop, after the originals, with their original's origin (group).
-    std::vector<float> values(static_cast<std::size_t>(extractor.dimension()));
-    cv::Mat1f extra(0, extractor.dimension());
+    std::vector<float> values(static_cast<std::size_t>(columns));
+    cv::Mat1f extra(0, columns);
     std::vector<RowOrigin> extra_origins;
     for (std::size_t k = 0; k < pos_sources.size(); ++k) {
       const SampleSet& set = pos.sets[pos_sources[k].first];
       const SampleRecord& record = set.records()[pos_sources[k].second];
       if (!record.has_crop) continue;
       for (const cv::Mat1w& crop : augmented_crops(set.depth_crop(pos_sources[k].second), choice.augmentation, record.id)) {
-        extractor.compute(crop, values.data());
-        extra.push_back(cv::Mat1f(1, extractor.dimension(), values.data()));
+        compute_row(crop, values.data());
+        extra.push_back(cv::Mat1f(1, columns, values.data()));
         extra_origins.push_back(origins[k]);
       }
     }

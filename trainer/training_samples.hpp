@@ -4,12 +4,14 @@
 // (with a clear warning when they hold fewer than asked), and their feature rows.
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "classifier/training_record.hpp"
+#include "features/feature_spec.hpp"
 #include "dataset/crop_augmentation.hpp"
 #include "dataset/sample_groups.hpp"
 
@@ -21,6 +23,14 @@ struct SampleChoice {
   std::uint64_t seed = 1;
   std::string asked_by;  ///< "recipe tree2" or "--positives", for the warning
   std::string role_prefix;  ///< "" for training, "validation-" for a separate validation set
+  /// The feature spec the sets must have; empty: the first set's (all must agree).
+  std::optional<FeatureSpec> spec;
+  /// Features to compute (a pool, ascending); empty: feature_pool decides.
+  std::vector<int> columns;
+  /// 0: every feature when the rows fit in memory_budget_mb, else a seeded pool of as many as fit;
+  /// N: a seeded pool of N features (all when the spec has no more).
+  std::size_t feature_pool = 0;
+  std::size_t memory_budget_mb = 4096;  ///< for the float rows and their 8-bit bins (5 bytes per value)
   /// Validation groups: recording and block of this many consecutive frames (dataset/sample_groups.hpp);
   /// 0 = no groups (the validation split is by sample).
   int group_frames = 30;
@@ -29,6 +39,8 @@ struct SampleChoice {
 };
 
 struct ChosenSamples {
+  FeatureSpec spec;         ///< of the sets
+  std::vector<int> columns; ///< feature of each column when the rows hold a pool; empty: all features
   cv::Mat1f rows;           ///< one feature row per sample, positives first
   std::vector<int> labels;  ///< 1 / 0
   std::vector<SampleSetUse> sets;  ///< per set and role: path, manifest hash, available, used
@@ -39,7 +51,7 @@ struct ChosenSamples {
 
 
 /// Reads the sets, picks the samples and computes (or reads) their features. Warnings go to `log`.
-/// Throws Error when a set cannot be read, has another feature spec, or a class ends up empty.
+/// Throws Error when a set cannot be read, has another feature spec (naming both), or a class ends up empty.
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads = 0);
 
 /// Writes `samples` in the thesis's text format ("label f1 ... f8128", shortest round-trip floats) through

@@ -31,6 +31,7 @@
 #include "frame/depth_png.hpp"
 #include "frame/frame_source.hpp"
 #include "labeling/labeling_session.hpp"
+#include "pipeline/model_scorer.hpp"
 #include "memory_peak.hpp"
 #include "synth/synth_sequence.hpp"
 #include "synth/synth_writer.hpp"
@@ -128,6 +129,7 @@ double run_frames_in_parallel(int count, int threads, const std::function<DepthF
                               const PipelineParams& params, const BoostedModel& model,
                               std::vector<std::vector<int>>& person) {
   const DetectorCore core(params.detector);
+  const ModelScorer scorer(model);  // as PeoplePipeline: only the features the model reads
   Tracker tracker(params.tracking);
   std::vector<std::unique_ptr<Analysed>> slots(static_cast<std::size_t>(count));
   std::mutex mutex;
@@ -150,8 +152,8 @@ double run_frames_in_parallel(int count, int threads, const std::function<DepthF
       try {
         auto a = std::make_unique<Analysed>();
         a->frame = load(i);
-        a->analysis = core.analyse(a->frame, true);
-        a->scores = model.score(a->analysis.features);
+        a->analysis = core.analyse(a->frame, params.full_feature_vector);
+        a->scores = params.full_feature_vector ? model.score(a->analysis.features) : scorer.score(a->analysis.candidates);
         for (std::size_t c = 0; c < a->scores.size(); ++c) {
           if (a->scores[c] < params.score_threshold_for(model)) continue;
           const Candidate& cand = a->analysis.candidates[c];

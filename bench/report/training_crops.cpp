@@ -6,6 +6,7 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "features/feature_subset.hpp"
 #include "features/rdsf_extractor.hpp"
 
 namespace rdsf::perf {
@@ -105,10 +106,12 @@ cv::Mat1w clutter_crop(std::mt19937_64& rng) {
 
 }  // namespace
 
-TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed) {
-  const RdsfExtractor extractor;
+TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed, const FeatureSpec& spec,
+                                const std::vector<int>& columns) {
+  const RdsfExtractor extractor(spec);
+  const FeatureSubset subset(spec, columns);
   TrainingRows out;
-  out.rows.create(positives + negatives, extractor.dimension());
+  out.rows.create(positives + negatives, columns.empty() ? extractor.dimension() : subset.size());
   out.labels.assign(static_cast<std::size_t>(positives + negatives), 0);
   std::mt19937_64 order_rng(seed);
   for (int i = 0; i < positives; ++i) out.labels[static_cast<std::size_t>(i)] = 1;
@@ -117,7 +120,11 @@ TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed
     for (int r = range.start; r < range.end; ++r) {
       std::mt19937_64 rng(seed * 1000003ULL + static_cast<std::uint64_t>(r));
       const cv::Mat1w crop = out.labels[static_cast<std::size_t>(r)] == 1 ? person_crop(rng) : clutter_crop(rng);
-      extractor.compute(crop, out.rows[r]);
+      if (columns.empty()) {
+        extractor.compute(crop, out.rows[r]);
+      } else {
+        subset.compute(crop, out.rows[r]);
+      }
     }
   });
   return out;

@@ -7,6 +7,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "features/feature_spec.hpp"
+
 namespace rdsf::perf {
 
 struct TrainingRows {
@@ -14,7 +16,9 @@ struct TrainingRows {
   std::vector<int> labels;  ///< 1 person, 0 not (shuffled)
 };
 
-/// `positives` + `negatives` rows, deterministic for a seed, computed on all cores.
-TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed);
+/// `positives` + `negatives` rows, deterministic for a seed, computed on all cores: every feature of `spec`,
+/// or only the features `columns` (ascending) when given.
+TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed, const FeatureSpec& spec = {},
+                                const std::vector<int>& columns = {});
 
 }  // namespace rdsf::perf

@@ -1,11 +1,13 @@
 #include "classifier/boost_training.hpp"
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cstdio>
 #include <random>
 
 #include "classifier/binned_matrix.hpp"
+#include "classifier/features_read.hpp"
 #include "classifier/opencv_boost.hpp"
 #include "classifier/platt_calibration.hpp"
 #include "classifier/seeded_sampling.hpp"
@@ -102,6 +104,16 @@ void validate_training_params(const BoostTrainingParams& p) {
   if (p.calibration != "platt" && p.calibration != "none") {
     throw Error("calibration '" + p.calibration + "' is not known (platt or none)");
   }
+  p.feature_spec.validate();
+  if (!p.feature_columns.empty()) {
+    if (p.backend != "native") throw Error("a feature pool needs the native backend");
+    std::vector<int> sorted = p.feature_columns;
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted.front() < 0 || sorted.back() >= p.feature_spec.dimension() ||
+        std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      throw Error("feature pool: columns must be distinct features of " + p.feature_spec.name());
+    }
+  }
 }
 
 std::vector<double> probability_levels() {
@@ -122,11 +134,14 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
   if (rows.rows != static_cast<int>(labels.size())) {
     throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
   }
-  const FeatureSpec spec;
-  if (rows.cols != spec.dimension()) {
+  const FeatureSpec& spec = params.feature_spec;
+  const std::vector<int>& columns = params.feature_columns;
+  const int column_count = columns.empty() ? spec.dimension() : static_cast<int>(columns.size());
+  if (rows.cols != column_count) {
     throw Error("training: rows of " + std::to_string(rows.cols) + " features, the feature spec has " +
-                std::to_string(spec.dimension()));
+                std::to_string(column_count) + (columns.empty() ? "" : " in the pool"));
   }
+  auto feature_of = [&columns](int column) { return columns.empty() ? column : columns[static_cast<std::size_t>(column)]; };
 
   if ((!info.groups.empty() && info.groups.size() != labels.size()) ||
       (!info.augmented.empty() && info.augmented.size() != labels.size())) {
@@ -219,12 +234,12 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
                          double mean_round_s) {
     RoundFigures figures;
     figures.round = round;
-    figures.feature = weak.feature;
+    figures.feature = feature_of(weak.feature);
     figures.train_error = train_error;
     TrainingProgress report;
     report.round = round;
     report.rounds = params.rounds;
-    report.feature = weak.feature;
+    report.feature = feature_of(weak.feature);
     report.train_error = train_error;
     if (validating) {
       for (std::size_t k = 0; k < validation.index.size(); ++k) {
@@ -335,6 +350,13 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     }
     record_validation(model, record.validation, final_scores, validation.labels, params.calibration, validation_source);
   }
+  if (!columns.empty()) {  // columns of the pool -> features of the spec
+    std::vector<WeakClassifier> renumbered = model.weak_classifiers();
+    renumber_features(renumbered, feature_of);
+    const ScoreCalibration calibration = model.calibration();
+    model = BoostedModel(spec, bins, std::move(renumbered));
+    model.set_calibration(calibration);
+  }
   model.training() = record;
   model.set_opencv_model_yaml(std::move(opencv_yaml));
   return model;
@@ -407,12 +429,19 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
       progress(q);
     };
     const BoostedModel model = train_boosted_model(fold_rows, fold_labels, inner, fold_progress, nullptr, nullptr, fold_info);
-    const std::size_t rounds = model.weak_classifiers().size();
+    // The model names the spec's features; the rows hold the pool's columns (when there is a pool).
+    std::vector<WeakClassifier> weak_on_rows = model.weak_classifiers();
+    if (!params.feature_columns.empty()) {
+      std::map<int, int> column_of;
+      for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
+      renumber_features(weak_on_rows, [&column_of](int feature) { return column_of.at(feature); });
+    }
+    const std::size_t rounds = weak_on_rows.size();
     if (per_round.size() < rounds) per_round.resize(rounds);
     for (int i : held) {
       double h = 0.0;
       for (std::size_t r = 0; r < rounds; ++r) {
-        h += model.weak_classifiers()[r].respond_row(rows[i], model.bins());
+        h += weak_on_rows[r].respond_row(rows[i], model.bins());
         per_round[r].push_back(h);
       }
       pooled_scores.push_back(h);

@@ -14,6 +14,7 @@
 
 #include "classifier/bin_scheme.hpp"
 #include "classifier/boosted_model.hpp"
+#include "features/feature_spec.hpp"
 
 namespace rdsf {
 
@@ -38,6 +39,11 @@ struct BoostTrainingParams {
   /// and scored on it; their pooled out-of-fold scores give every validation figure and the calibration
   /// of the final model, trained on all rows. For few data, where one held-out fraction is too noisy.
   int folds = 0;
+  FeatureSpec feature_spec;         ///< the features the rows hold and the model reads (the thesis's by default)
+  /// When the rows hold only some of the spec's features (a pool, e.g. of the 120,786 rdsf-rect pairs): the
+  /// feature of each column, distinct. Empty: every feature, column c = feature c. The model and the
+  /// figures name features, not columns. Native backend only.
+  std::vector<int> feature_columns;
 };
 
 /// What is known of the rows beyond features and labels.

@@ -14,6 +14,7 @@
 #include "classifier/yaml_node_copy.hpp"
 #include "core/error.hpp"
 #include "core/yaml_guard.hpp"
+#include "features/feature_spec_record.hpp"
 
 namespace rdsf {
 namespace {
@@ -37,11 +38,8 @@ void write_feature_spec(FileStorage& fs, const FeatureSpec& spec) {
   fs.startWriteStruct("feature_spec", FileNode::MAP);
   cv::write(fs, "canonical", spec.canonical());
   cv::write(fs, "hash", spec.hash());
-  cv::write(fs, "window_width_px", spec.window_width_px);
-  cv::write(fs, "window_height_px", spec.window_height_px);
-  cv::write(fs, "cell_px", spec.cell_px);
-  cv::write(fs, "bin_width_mm", spec.bin_width_mm);
-  cv::write(fs, "max_depth_mm", spec.max_depth_mm);
+  cv::write(fs, "name", spec.name());
+  for (const auto& [key, value] : feature_spec_numbers(spec)) cv::write(fs, key, value);
   cv::write(fs, "dimension", spec.dimension());
   fs.endWriteStruct();
 }
@@ -213,44 +211,25 @@ struct Reader {
   static int opt_int(const FileNode& n) { return n.isInt() ? static_cast<int>(n) : 0; }
 };
 
-/// Largest window size, cell size, bin width or depth a feature spec in a file may give.
-constexpr int kMaxSpecNumber = 1 << 15;  // (w / cell) * (h / cell) then stays within int
-
-FeatureSpec read_feature_spec_v1(const Reader& r, const FileNode& root, const FeatureSpec& expected) {
+// Any spec this build knows; `expected` (when given) is the one the caller computes.
+FeatureSpec read_feature_spec_v1(const Reader& r, const FileNode& root, const FeatureSpec* expected) {
   const FileNode node = r.need(root, "feature_spec", "");
-  FeatureSpec spec;
-  spec.window_width_px = r.integer(node, "window_width_px", "feature_spec.");
-  spec.window_height_px = r.integer(node, "window_height_px", "feature_spec.");
-  spec.cell_px = r.integer(node, "cell_px", "feature_spec.");
-  spec.bin_width_mm = r.integer(node, "bin_width_mm", "feature_spec.");
-  spec.max_depth_mm = r.integer(node, "max_depth_mm", "feature_spec.");
-  // The numbers must make a valid spec before its canonical text is computed (a zero bin width divides by
-  // zero); bounded first so that the checks themselves cannot overflow.
-  const std::pair<const char*, int> numbers[] = {{"window_width_px", spec.window_width_px},
-                                                 {"window_height_px", spec.window_height_px},
-                                                 {"cell_px", spec.cell_px},
-                                                 {"bin_width_mm", spec.bin_width_mm},
-                                                 {"max_depth_mm", spec.max_depth_mm}};
-  for (const auto& [key, value] : numbers) {
-    if (value > kMaxSpecNumber) {  // smaller ones are checked by validate()
-      r.bad("'feature_spec." + std::string(key) + "' = " + std::to_string(value) + " is larger than " +
-            std::to_string(kMaxSpecNumber));
-    }
-  }
-  try {
-    spec.validate();
-  } catch (const Error& e) {
-    r.bad(std::string(e.what()) + " (damaged file?)");
-  }
   const std::string canonical = r.text(node, "canonical", "feature_spec.");
   const std::string hash = r.text(node, "hash", "feature_spec.");
-  if (spec.canonical() != canonical) {
-    r.bad("feature_spec numbers give '" + spec.canonical() + "' but its canonical text says '" + canonical +
-          "' (damaged file?)");
+  FeatureSpecNumbers numbers;  // optional beside the text; checked against it
+  for (const char* key : {"window_width_px", "window_height_px", "cell_px", "rect_min_px", "rect_max_px",
+                          "rect_step_px", "rect_stride_px", "bin_width_mm", "max_depth_mm"}) {
+    if (node.isMap() && !node[key].empty()) numbers.emplace_back(key, r.integer(node, key, "feature_spec."));
   }
-  if (hash != expected.hash()) {
+  FeatureSpec spec;
+  try {
+    spec = feature_spec_from_record(canonical, hash, numbers);
+  } catch (const Error& e) {
+    r.bad(e.what());
+  }
+  if (expected != nullptr && spec != *expected) {
     r.bad("feature spec differs: the model was trained on '" + canonical + "' (hash " + hash +
-          "), this build computes '" + expected.canonical() + "' (hash " + expected.hash() + ")");
+          "), this build computes '" + expected->canonical() + "' (hash " + expected->hash() + ")");
   }
   return spec;
 }
@@ -375,7 +354,7 @@ ScoreCalibration read_calibration(const Reader& r, const FileNode& root) {
 }
 
 // Format 1 and 2 share their layout; 2 adds `calibration`, trees and validation.by_probability.
-BoostedModel read_v1_or_v2(const Reader& r, const FileNode& root, const FeatureSpec& expected, int format_version) {
+BoostedModel read_v1_or_v2(const Reader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
   const FeatureSpec spec = read_feature_spec_v1(r, root, expected);
   const FileNode classifier = r.need(root, "classifier", "");
   const FileNode bins_node = r.need(classifier, "bins", "classifier.");
@@ -441,7 +420,7 @@ BoostedModel read_v1_or_v2(const Reader& r, const FileNode& root, const FeatureS
 }
 
 // The file once OpenCV has parsed it.
-BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpec& expected) {
+BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpec* expected) {
   if (!root.isMap()) r.bad("not an rdsf model file (no 'format: " + std::string(kModelFormat) + "')");
   const FileNode format = root["format"];
   if (!format.isString() || static_cast<std::string>(format) != kModelFormat) {
@@ -480,7 +459,9 @@ std::string model_file_text(const BoostedModel& model) {
   return fs.releaseAndGetString();
 }
 
-BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected) {
+namespace {
+
+BoostedModel read_model_file_checked(const std::string& path, const FeatureSpec* expected) {
   Reader r{path};
   std::string text;
   {
@@ -515,6 +496,14 @@ BoostedModel read_model_file(const std::string& path, const FeatureSpec& expecte
   } catch (const std::exception& e) {
     r.bad("unreadable model (" + one_line(e.what()) + ")");
   }
+}
+
+}  // namespace
+
+BoostedModel read_model_file(const std::string& path) { return read_model_file_checked(path, nullptr); }
+
+BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected) {
+  return read_model_file_checked(path, &expected);
 }
 
 }  // namespace rdsf

@@ -3,7 +3,7 @@
 //
 //   format: "rdsf-model"            format_version: 2 (1: no calibration, no trees; still read)
 //   name, version (N of vN), created (ISO 8601 UTC)
-//   feature_spec: canonical text, hash, and the numbers (window, cell, bins)
+//   feature_spec: canonical text, hash, name, and the numbers (window, cells or squares, bins)
 //   training: recipe, backend, parameters, sample_sets (role, path, manifest_hash, available, used),
 //             train_positives/negatives, stopped, validation (source, counts, auc, tar_at_far_1/5,
 //             error_rate, roc points, per-round figures each with its roc points)
@@ -15,8 +15,9 @@
 //             P(person) = 1 / (1 + exp(-(a H + b))); format 1 files read as method none (a = 2, b = 0)
 //   opencv_model: (OpenCV backend only) the cv::ml::Boost exactly as it wrote itself
 //
-// Reading has one branch per known format version and refuses any other, and refuses a model whose
-// feature spec differs from the one this build computes; each message names the file and what differs.
+// Reading has one branch per known format version and refuses any other; it accepts every feature spec
+// this build knows (features/feature_spec_record.hpp) and refuses unknown ones, and, when the caller names
+// the spec it computes, a model whose spec differs; each message names the file and what differs.
 #include <string>
 
 #include "classifier/boosted_model.hpp"
@@ -30,7 +31,9 @@ inline constexpr int kModelFormatVersion = 2;  ///< the version written
 /// The file text of `model` (its name, version and created time included as they are set).
 std::string model_file_text(const BoostedModel& model);
 
-/// Reads a model file (any known format version). `expected` is the feature spec the caller computes.
-BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected = FeatureSpec{});
+/// Reads a model file (any known format version, any known feature spec).
+BoostedModel read_model_file(const std::string& path);
+/// The same, refusing a model whose feature spec is not `expected` (the one the caller computes).
+BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected);
 
 }  // namespace rdsf

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "features/feature_spec_record.hpp"
 #include "dataset/sample_crop.hpp"
 #include "frame/depth_png.hpp"
 #include "frame/frame_source.hpp"
@@ -115,7 +116,7 @@ namespace {
 FrameResult analyse_frame(const DetectorCore& core, const MineParams& params, const std::string& source,
                           const DepthFrame& frame) {
   const bool hard = static_cast<bool>(params.scorer);
-  const FrameAnalysis analysis = core.analyse(frame, /*with_features=*/hard);
+  const FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);  // the scorer computes its own
   FrameResult result;
   result.items.resize(analysis.candidates.size());
   for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
@@ -129,7 +130,7 @@ FrameResult analyse_frame(const DetectorCore& core, const MineParams& params, co
     m.record.window = c.window;
     m.record.layer_depth_mm = c.layer_depth_mm;
     if (hard) {
-      const double score = params.scorer(analysis.features.ptr<float>(static_cast<int>(i)));
+      const double score = params.scorer(c.depth_crop);
       m.record.model = params.model;
       m.record.score = score;
       m.below_score = score < params.min_score;
@@ -195,8 +196,8 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
   const MineParams& params = params_;
   const DetectorCore core(params.detector);
   if (core.params().features != out.manifest().feature_spec) {
-    fail(out.dir(), "sample set has feature spec " + out.manifest().feature_spec.hash() +
-                        ", the detector computes " + core.params().features.hash());
+    fail(out.dir(), feature_spec_mismatch("sample set feature spec", out.manifest().feature_spec,
+                                          "the detector's", core.params().features));
   }
   int workers = params.threads > 0 ? params.threads : static_cast<int>(std::thread::hardware_concurrency());
   workers = std::max(1, workers);

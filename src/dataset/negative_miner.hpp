@@ -30,8 +30,9 @@ struct MineParams {
   bool depth_only = false;           ///< do not read colour: crops without colour, faster on PNG folders
   CameraModel camera;
   DetectorParams detector;
-  /// Hard-negative mode when set: the score H(x) of one feature row; candidates below min_score are dropped.
-  std::function<double(const float*)> scorer;
+  /// Hard-negative mode when set: the score H(x) of one candidate's masked depth crop (called from the
+  /// worker threads); candidates below min_score are dropped.
+  std::function<double(const cv::Mat1w&)> scorer;
   double min_score = 0;
   std::string model;  ///< recorded with each sample in hard-negative mode ("tree2/v3")
 };

@@ -93,6 +93,22 @@ cv::Mat3b SampleSet::colour_crop(std::size_t index) const {
 
 cv::Mat1f SampleSet::features(const RdsfExtractor& extractor, const std::vector<std::size_t>& indices,
                               int threads) const {
+  return rows_of(extractor.spec(), extractor.dimension(),
+                 [&extractor](const cv::Mat1w& crop, float* out) { extractor.compute(crop, out); }, nullptr, indices,
+                 threads);
+}
+
+cv::Mat1f SampleSet::features(const FeatureSubset& subset, const std::vector<std::size_t>& indices,
+                              int threads) const {
+  return rows_of(subset.spec(), subset.size(),
+                 [&subset](const cv::Mat1w& crop, float* out) { subset.compute(crop, out); }, &subset.features(),
+                 indices, threads);
+}
+
+cv::Mat1f SampleSet::rows_of(const FeatureSpec& spec, int columns,
+                             const std::function<void(const cv::Mat1w&, float*)>& from_crop,
+                             const std::vector<int>* pick, const std::vector<std::size_t>& indices,
+                             int threads) const {
   std::vector<std::size_t> chosen = indices;
   if (chosen.empty()) {
     chosen.resize(records_.size());
@@ -104,8 +120,8 @@ cv::Mat1f SampleSet::features(const RdsfExtractor& extractor, const std::vector<
                      " samples)");
     }
   }
-  const int dimension = extractor.dimension();
-  cv::Mat1f rows(static_cast<int>(chosen.size()), dimension);
+  const int dimension = spec.dimension();
+  cv::Mat1f rows(static_cast<int>(chosen.size()), columns);
   if (chosen.empty()) return rows;
 
   // Stored vectors of samples without crop, only for the spec they were written with.
@@ -113,7 +129,7 @@ cv::Mat1f SampleSet::features(const RdsfExtractor& extractor, const std::vector<
   const bool any_without_crop =
       std::any_of(chosen.begin(), chosen.end(), [this](std::size_t i) { return !records_[i].has_crop; });
   if (any_without_crop) {
-    vectors = std::make_unique<FeatureVectorFile>(FeatureVectorFile::path_in(dir_, extractor.spec().hash()),
+    vectors = std::make_unique<FeatureVectorFile>(FeatureVectorFile::path_in(dir_, spec.hash()),
                                                   dimension);
   }
 
@@ -135,12 +151,16 @@ cv::Mat1f SampleSet::features(const RdsfExtractor& extractor, const std::vector<
           const SampleRecord& record = records_[index];
           float* out = rows.ptr<float>(static_cast<int>(k));
           if (record.has_crop) {
-            extractor.compute(depth_crop(index), out);
-          } else if (vectors->contains(record.id)) {
+            from_crop(depth_crop(index), out);
+          } else if (vectors->contains(record.id) && pick == nullptr) {
             vectors->read(record.id, out);
+          } else if (vectors->contains(record.id)) {
+            std::vector<float> whole(static_cast<std::size_t>(dimension));
+            vectors->read(record.id, whole.data());
+            for (const int f : *pick) *out++ = whole[static_cast<std::size_t>(f)];
           } else {
             fail(dir_, "sample " + std::to_string(record.id) +
-                           " has no crop and no stored feature vector for feature spec " + extractor.spec().hash() +
+                           " has no crop and no stored feature vector for feature spec " + spec.hash() +
                            " (" + vectors->path() + "); it was imported under spec " + manifest_.feature_spec.hash());
           }
         }

@@ -11,6 +11,7 @@
 //   lock                         present while a writer (SampleSetWriter) has the set open
 // SampleSet reads a set (no lock: a set being appended to can be read; rows appended later are not seen).
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "dataset/sample_record.hpp"
 #include "dataset/sample_set_manifest.hpp"
 #include "features/feature_spec.hpp"
+#include "features/feature_subset.hpp"
 #include "features/rdsf_extractor.hpp"
 
 namespace rdsf {
@@ -55,8 +57,16 @@ class SampleSet {
   /// samples without crop (which exist only for the spec they were imported with: other specs throw).
   cv::Mat1f features(const RdsfExtractor& extractor, const std::vector<std::size_t>& indices = {},
                      int threads = 0) const;
+  /// The same for only some features of a spec (subset.size() columns, in subset.features() order): crops
+  /// compute just those; stored vectors are read whole and the columns picked.
+  cv::Mat1f features(const FeatureSubset& subset, const std::vector<std::size_t>& indices = {},
+                     int threads = 0) const;
 
  private:
+  /// Rows of `columns` values per chosen sample: from_crop for samples with a crop; stored vectors of
+  /// `spec` otherwise (all of them, or the columns `pick` when given).
+  cv::Mat1f rows_of(const FeatureSpec& spec, int columns, const std::function<void(const cv::Mat1w&, float*)>& from_crop,
+                    const std::vector<int>* pick, const std::vector<std::size_t>& indices, int threads) const;
   std::string dir_;
   SampleSetManifest manifest_;
   std::string manifest_hash_;

@@ -9,6 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/yaml_guard.hpp"
+#include "features/feature_spec_record.hpp"
 
 namespace rdsf {
 
@@ -19,11 +20,8 @@ std::string SampleSetManifest::to_text() const {
   fs << "feature_spec" << "{";
   cv::write(fs, "canonical", feature_spec.canonical());
   cv::write(fs, "hash", feature_spec.hash());
-  fs << "window_width_px" << feature_spec.window_width_px;
-  fs << "window_height_px" << feature_spec.window_height_px;
-  fs << "cell_px" << feature_spec.cell_px;
-  fs << "bin_width_mm" << feature_spec.bin_width_mm;
-  fs << "max_depth_mm" << feature_spec.max_depth_mm;
+  cv::write(fs, "name", feature_spec.name());
+  for (const auto& [key, value] : feature_spec_numbers(feature_spec)) fs << key << value;
   fs << "}";
   fs << "camera" << "{";
   fs << "width_px" << camera.width_px;
@@ -40,9 +38,6 @@ std::string SampleSetManifest::to_text() const {
 }
 
 namespace {
-
-/// Largest feature spec number accepted: (w / cell) * (h / cell) then stays within int in validate().
-constexpr int kMaxSpecNumber = 1 << 15;
 
 SampleSetManifest parse_opened(const cv::FileStorage& fs, const std::string& path);
 
@@ -115,28 +110,17 @@ SampleSetManifest parse_opened(const cv::FileStorage& fs, const std::string& pat
   }
   SampleSetManifest m;
   const cv::FileNode spec = need(root, "feature_spec");
-  m.feature_spec.window_width_px = need_int(spec, "window_width_px");
-  m.feature_spec.window_height_px = need_int(spec, "window_height_px");
-  m.feature_spec.cell_px = need_int(spec, "cell_px");
-  m.feature_spec.bin_width_mm = need_int(spec, "bin_width_mm");
-  m.feature_spec.max_depth_mm = need_int(spec, "max_depth_mm");
-  for (const int value : {m.feature_spec.window_width_px, m.feature_spec.window_height_px, m.feature_spec.cell_px,
-                          m.feature_spec.bin_width_mm, m.feature_spec.max_depth_mm}) {
-    if (value > kMaxSpecNumber) {  // smaller ones are checked by validate()
-      fail(path, "feature spec number " + std::to_string(value) + " is larger than " + std::to_string(kMaxSpecNumber));
-    }
-  }
-  try {
-    m.feature_spec.validate();
-  } catch (const Error& e) {
-    fail(path, e.what());
-  }
   const std::string hash = need_string(spec, "hash");
   const std::string canonical = need_string(spec, "canonical");
-  if (canonical != m.feature_spec.canonical() || hash != m.feature_spec.hash()) {
-    fail(path, "feature spec '" + canonical + "' (hash " + hash + ") does not match its parameters, which give '" +
-                   m.feature_spec.canonical() + "' (hash " + m.feature_spec.hash() +
-                   "): written by another version of the workbench?");
+  FeatureSpecNumbers numbers;  // optional beside the text; checked against it
+  for (const char* key : {"window_width_px", "window_height_px", "cell_px", "rect_min_px", "rect_max_px",
+                          "rect_step_px", "rect_stride_px", "bin_width_mm", "max_depth_mm"}) {
+    if (!spec[key].empty()) numbers.emplace_back(key, need_int(spec, key));
+  }
+  try {
+    m.feature_spec = feature_spec_from_record(canonical, hash, numbers);
+  } catch (const Error& e) {
+    fail(path, e.what());
   }
   const cv::FileNode camera = need(root, "camera");
   m.camera.width_px = need_int(camera, "width_px");

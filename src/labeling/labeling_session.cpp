@@ -37,6 +37,7 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
   std::unordered_set<std::int64_t> ids;  // an undo cut short by a failed write or a power cut is finished
   for (const SampleRecord& r : writer_.records()) ids.insert(r.id);
   journal_.finish_interrupted_undos([&ids](std::int64_t id) { return ids.count(id) != 0; });
+  if (model_ != nullptr) scorer_.emplace(*model_);
   // Open every source now, so that a bad one is reported before the first question.
   std::int64_t total = 0;
   bool known = true;
@@ -71,14 +72,14 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
     }
     loaded->source = source_name_;
     loaded->ordinal = ++ordinal_;
-    loaded->analysis = core_.analyse(loaded->frame, model_ != nullptr);
-    if (model_ != nullptr) loaded->scores = model_->score(loaded->analysis.features);
+    loaded->analysis = core_.analyse(loaded->frame, /*with_features=*/false);
+    if (scorer_) loaded->scores = scorer_->score(loaded->analysis.candidates);
     if (truth_ != nullptr) {
       for (const Candidate& c : loaded->analysis.candidates) {
         double best = 0, ignored = 0;
         for (const TruthBox& person : truth_->in(loaded->frame.name)) {
           double& to = person.ignored ? ignored : best;
-          to = std::max(to, iou(c.strict_box, person.box));
+          to = std::max(to, iou(reported_box(c, config_.detector.reported_box), person.box));
         }
         loaded->truth_iou.push_back(best);
         loaded->ignored_iou.push_back(ignored);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "classifier/boosted_model.hpp"
+#include "pipeline/model_scorer.hpp"
 #include "dataset/sample_set_writer.hpp"
 #include "detector/detector_core.hpp"
 #include "evaluation/ground_truth.hpp"
@@ -32,7 +33,9 @@ struct LabelingConfig {
   std::vector<std::string> sources;
   bool keep_rejected = false;
   bool order_by_score = false;  ///< present a frame's candidates highest score first (needs a model)
-  double certain_iou = 0.5;     ///< assisted mode: IoU >= this is a person
+  /// Assisted mode: IoU of the box detections report (detector.reported_box: fitted by default, as the
+  /// evaluation matches) with a truth box; >= this is a person.
+  double certain_iou = 0.5;
   double uncertain_iou = 0.3;   ///< assisted mode: IoU < this is not a person; in between is asked
   /// Assisted mode: a candidate covering (IoU >= uncertain_iou) a person marked ignored in the truth
   /// (hardly visible, see ignore_hardly_visible) and no counted one is asked, never answered, as the
@@ -104,6 +107,7 @@ class LabelingSession {
   LabelingConfig config_;
   SampleSetWriter& writer_;
   const BoostedModel* model_;
+  std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
   const GroundTruth* truth_;
   DetectorCore core_;
   AnswerJournal journal_;

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/error.hpp"
+#include "features/feature_spec_record.hpp"
 
 namespace rdsf {
 namespace {
@@ -24,15 +25,18 @@ PipelineTimes& PipelineTimes::operator+=(const PipelineTimes& o) {
 
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
     : params_(params), model_(model), core_(params.detector), tracker_(params.tracking) {
-  if (model_ != nullptr && model_->feature_spec() != params_.detector.features) {
-    throw Error(model_->path() + ": model feature spec " + model_->feature_spec().hash() +
-                " differs from the detector's " + params_.detector.features.hash());
+  if (model_ == nullptr) return;
+  if (model_->feature_spec() != params_.detector.features) {
+    fail(model_->path(), feature_spec_mismatch("model feature spec", model_->feature_spec(), "the detector's",
+                                               params_.detector.features));
   }
+  scorer_.emplace(*model_);
 }
 
 PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
   PipelineFrame out;
-  out.analysis = core_.analyse(frame, model_ != nullptr);
+  const bool full = model_ != nullptr && params_.full_feature_vector;
+  out.analysis = core_.analyse(frame, full);
   out.times.segmentation_ms = out.analysis.times.segmentation_ms;
   out.times.candidates_ms = out.analysis.times.candidates_ms;
   out.times.features_ms = out.analysis.times.features_ms;
@@ -41,7 +45,18 @@ PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
   if (model_ == nullptr) return out;
 
   auto start = std::chrono::steady_clock::now();
-  out.scores = model_->score(out.analysis.features);
+  if (full) {
+    out.scores = model_->score(out.analysis.features);
+  } else {
+    out.model_features.create(static_cast<int>(n), scorer_->features().size());
+    for (std::size_t i = 0; i < n; ++i) {
+      scorer_->features().compute(out.analysis.candidates[i].depth_crop, out.model_features[static_cast<int>(i)]);
+    }
+    out.times.features_ms = ms_since(start);
+    start = std::chrono::steady_clock::now();
+    out.scores.resize(n);
+    for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
+  }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   out.times.classifier_ms = ms_since(start);
   const double threshold = params_.score_threshold_for(*model_);

@@ -2,6 +2,7 @@
 // The whole system for one frame, as the thesis ran it:
 //   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) and P(person)
 //         -> person when P(person) >= probability_threshold (or H(x) >= score_threshold, the thesis's way)
+//   (RDSF: only the features the model reads, see model_scorer.hpp)
 //         -> tracking (colour histogram + centroid, lkh matching)
 // with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include "classifier/boosted_model.hpp"
 #include "detector/detector_core.hpp"
 #include "frame/depth_frame.hpp"
+#include "pipeline/model_scorer.hpp"
 #include "tracking/tracker.hpp"
 
 namespace rdsf {
@@ -26,6 +28,9 @@ struct PipelineParams {
   double score_threshold_for(const BoostedModel& model) const {
     return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold);
   }
+  /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
+  /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
+  bool full_feature_vector = false;
 };
 
 /// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
@@ -40,7 +45,8 @@ struct PipelineTimes {
 };
 
 struct PipelineFrame {
-  FrameAnalysis analysis;                 ///< layers, candidates, features
+  FrameAnalysis analysis;                 ///< layers, candidates (features only with full_feature_vector)
+  cv::Mat1f model_features;               ///< per candidate the features the model reads (ModelScorer order)
   std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
   std::vector<double> probabilities;      ///< P(person) per candidate (empty without a model)
   std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
@@ -51,7 +57,7 @@ struct PipelineFrame {
 class PeoplePipeline {
  public:
   /// `model` may be null (candidates only); it must outlive the pipeline. Throws Error when the model's
-  /// feature spec differs from the detector's.
+  /// feature spec differs from the detector's (naming both).
   PeoplePipeline(PipelineParams params, const BoostedModel* model);
 
   PipelineFrame process(const DepthFrame& frame);
@@ -62,6 +68,7 @@ class PeoplePipeline {
  private:
   PipelineParams params_;
   const BoostedModel* model_;
+  std::optional<ModelScorer> scorer_;
   DetectorCore core_;
   Tracker tracker_;
 };

@@ -1,5 +1,7 @@
 #include "support/test_support.hpp"
 
+#include "core/error.hpp"
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -65,6 +67,15 @@ RunResult run(const std::string& command_line) {
   result.out = slurp(out_path);
   result.err = slurp(err_path);
   return result;
+}
+
+std::string error_message(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace rdsf::test

@@ -2,6 +2,7 @@
 // Shared helpers for the tests: the real frames beside the project, temporary folders, and running the
 // programs as a user would (exit code and output captured).
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace rdsf::test {
@@ -41,6 +42,9 @@ struct RunResult {
 
 /// Runs a shell command line, capturing stdout and stderr separately.
 RunResult run(const std::string& command_line);
+
+/// The message of the rdsf::Error that `f` throws; empty when it throws none.
+std::string error_message(const std::function<void()>& f);
 
 /// Quotes a path for the shell.
 std::string quote(const std::string& text);

@@ -1,0 +1,41 @@
+#include "pipeline/model_scorer.hpp"
+
+#include "classifier/features_read.hpp"
+
+namespace rdsf {
+namespace {
+
+BoostedModel renumbered(const BoostedModel& model, const FeatureSubset& subset) {
+  std::vector<WeakClassifier> weak = model.weak_classifiers();
+  renumber_features(weak, [&subset](int feature) { return subset.position(feature); });
+  BoostedModel compact(model.feature_spec(), model.bins(), std::move(weak));
+  compact.set_calibration(model.calibration());
+  return compact;
+}
+
+}  // namespace
+
+ModelScorer::ModelScorer(const BoostedModel& model)
+    : subset_(model.feature_spec(), features_read(model)), compact_(renumbered(model, subset_)) {}
+
+double ModelScorer::score(const cv::Mat1w& crop) const {
+  constexpr int kOnStack = 512;
+  float on_stack[kOnStack];
+  std::vector<float> on_heap;
+  float* values = on_stack;
+  if (subset_.size() > kOnStack) {
+    on_heap.resize(static_cast<std::size_t>(subset_.size()));
+    values = on_heap.data();
+  }
+  subset_.compute(crop, values);
+  return compact_.score(values);
+}
+
+std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates) const {
+  std::vector<double> out;
+  out.reserve(candidates.size());
+  for (const Candidate& c : candidates) out.push_back(score(c.depth_crop));
+  return out;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,147 @@
+// Scoring only the features a model reads (ModelScorer, FeatureSubset) gives the full vector's scores bit
+// for bit, in both feature specs; models and sample sets say which spec they use, and mismatches are refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "classifier/features_read.hpp"
+#include "core/error.hpp"
+#include "support/test_support.hpp"
+#include "dataset/sample_set_manifest.hpp"
+#include "features/rdsf_extractor.hpp"
+#include "pipeline/model_scorer.hpp"
+#include "pipeline/people_pipeline.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+// Masked person-like crops: background 0, a body with a ragged edge at 1.5-4 m, holes and odd readings.
+cv::Mat1w person_crop(unsigned seed) {
+  std::mt19937 random(seed);
+  cv::Mat1w crop(128, 64, std::uint16_t{0});
+  const int depth = 1500 + static_cast<int>(random() % 2500);
+  for (int y = 4; y < 126; ++y) {
+    const int half = (y < 24 ? 7 : 15) + static_cast<int>(random() % 4);
+    for (int x = 32 - half; x < 32 + half; ++x) {
+      crop(y, x) = static_cast<std::uint16_t>(depth + (x - 32) * (x - 32) / 2 + static_cast<int>(random() % 40));
+      if (random() % 23 == 0) crop(y, x) = 0;
+    }
+  }
+  return crop;
+}
+
+BoostedModel random_model(const FeatureSpec& spec, int rounds, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> response(-1.0, 1.0);
+  std::vector<WeakClassifier> weak;
+  for (int r = 0; r < rounds; ++r) {
+    WeakClassifier w;
+    w.feature = static_cast<int>(random() % static_cast<unsigned>(spec.dimension()));
+    if (r % 5 == 1) {  // a depth-2 tree of look-up tables: three nodes, three features
+      w.kind = WeakClassifier::Kind::Tree;
+      for (int k = 0; k < 3; ++k) {
+        LutNode node;
+        node.feature = k == 0 ? w.feature : static_cast<int>(random() % static_cast<unsigned>(spec.dimension()));
+        for (int b = 0; b < 64; ++b) node.responses.push_back(response(random));
+        w.nodes.push_back(node);
+      }
+    } else if (r % 7 == 3) {  // a stump now and then
+      w.kind = WeakClassifier::Kind::Stump;
+      w.threshold = 0.5;
+      w.left = response(random);
+      w.right = response(random);
+    } else {
+      for (int b = 0; b < 64; ++b) w.responses.push_back(response(random));
+    }
+    weak.push_back(w);
+  }
+  weak.push_back(weak.front());  // a feature read twice
+  return BoostedModel(spec, BinScheme{}, weak);
+}
+
+using test::error_message;
+const auto& error_of = error_message;
+
+}  // namespace
+
+TEST(FeaturesRead, AreTheWeakClassifiersFeaturesAscendingWithoutRepeats) {
+  const BoostedModel model = random_model(FeatureSpec{}, 30, 1);
+  const std::vector<int> read = features_read(model);
+  EXPECT_TRUE(std::is_sorted(read.begin(), read.end()));
+  EXPECT_EQ(std::adjacent_find(read.begin(), read.end()), read.end());
+  std::size_t nodes = 0;
+  for (const WeakClassifier& w : model.weak_classifiers()) {
+    EXPECT_TRUE(std::binary_search(read.begin(), read.end(), w.feature));
+    for (const LutNode& n : w.nodes) EXPECT_TRUE(std::binary_search(read.begin(), read.end(), n.feature));
+    nodes += w.nodes.size();
+  }
+  EXPECT_GT(nodes, 0u);  // trees are among them
+  EXPECT_LE(read.size(), 30u + nodes);
+}
+
+TEST(ModelScorer, ScoresEqualTheFullVectorsBitForBit) {
+  for (const FeatureSpec& spec : {FeatureSpec{}, FeatureSpec::rect()}) {
+    const RdsfExtractor extractor(spec);
+    for (int rounds : {1, 100, 300}) {
+      const BoostedModel model = random_model(spec, rounds, static_cast<unsigned>(rounds));
+      const ModelScorer scorer(model);
+      EXPECT_EQ(scorer.features().features(), features_read(model));  // trees read several
+      for (unsigned seed = 0; seed < 6; ++seed) {
+        const cv::Mat1w crop = person_crop(seed);
+        const std::vector<float> full = extractor.compute(crop);
+        EXPECT_EQ(scorer.score(crop), model.score(full.data())) << spec.name() << " rounds " << rounds;
+        EXPECT_EQ(scorer.probability(crop), model.probability(model.score(full.data())));
+      }
+    }
+  }
+}
+
+TEST(ModelScorer, ReferenceModelScoresCropsAsTheFullVectorDoes) {
+  const std::string path = std::string(RDSF_SOURCE_DIR) + "/tests/reference_models/rdsf-model-v1-native.yml";
+  const BoostedModel model = BoostedModel::load(path);
+  EXPECT_EQ(model.feature_spec(), FeatureSpec{});  // written before rdsf-rect existed: still the thesis's spec
+  const ModelScorer scorer(model);
+  const RdsfExtractor extractor;
+  for (unsigned seed = 10; seed < 20; ++seed) {
+    const cv::Mat1w crop = person_crop(seed);
+    EXPECT_EQ(scorer.score(crop), model.score(extractor.compute(crop).data()));
+  }
+}
+
+TEST(ModelScorer, PipelineRefusesAModelOfAnotherSpecNamingBoth) {
+  const BoostedModel rect_model = random_model(FeatureSpec::rect(), 5, 2);
+  PipelineParams params;  // detector computes the thesis's features
+  const std::string message = error_of([&] { PeoplePipeline pipeline(params, &rect_model); });
+  EXPECT_NE(message.find("rdsf-rect/1"), std::string::npos) << message;
+  EXPECT_NE(message.find("rdsf/1"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  params.detector.features = FeatureSpec::rect();
+  EXPECT_NO_THROW(PeoplePipeline(params, &rect_model));
+}
+
+TEST(SampleSetManifest, OldManifestsStillReadAndRectOnesRoundTrip) {
+  // A manifest as the workbench wrote it before rdsf-rect (the fuzzing corpus keeps one).
+  const std::string old_path = std::string(RDSF_SOURCE_DIR) + "/fuzz/corpus/manifest/kinect_v1.yml";
+  std::ifstream in(old_path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const SampleSetManifest old = SampleSetManifest::parse(text.str(), old_path);
+  EXPECT_EQ(old.feature_spec, FeatureSpec{});
+  EXPECT_EQ(old.feature_spec.hash(), "48d0ea6f3a48b97c");
+
+  SampleSetManifest rect = old;
+  rect.feature_spec = FeatureSpec::parse("rdsf-rect:max=32");
+  const SampleSetManifest again = SampleSetManifest::parse(rect.to_text(), "rect.yml");
+  EXPECT_EQ(again.feature_spec, rect.feature_spec);
+  EXPECT_EQ(again.feature_spec.rect_max_px, 32);
+
+  std::string unknown = rect.to_text();
+  unknown.replace(unknown.find("squares=8..32"), 13, "squares=8..33");
+  const std::string message = error_of([&] { SampleSetManifest::parse(unknown, "unknown.yml"); });
+  EXPECT_NE(message.find("unknown.yml: feature spec"), std::string::npos) << message;
+  EXPECT_NE(message.find("not one this build knows"), std::string::npos) << message;
+}
