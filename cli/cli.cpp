@@ -115,6 +115,13 @@ po::options_description detector_options(DetectorParams& p) {
        "cut bottom rows nearer than the object's median depth by more than this (mm): floor; 0 = thesis")
       ("window_scale", po::value(&c.window_scale)->default_value(c.window_scale),
        "window = strict box enlarged by this factor")
+      ("box", po::value<std::string>()->default_value(p.reported_box == BoxKind::strict ? "strict" : "fitted")
+                  ->notifier([&p](const std::string& box) {
+                    if (box != "fitted" && box != "strict") throw UsageError("--box: fitted or strict, got '" + box + "'");
+                    p.reported_box = box == "strict" ? BoxKind::strict : BoxKind::fitted;
+                  }),
+       "the box detections report and assisted labelling matches (CSV, pictures, tracking, evaluation): fitted "
+       "(the object's extent) or strict (the thesis's height x height/2)")
       ("height_at_column_depth", po::value(&c.height_at_column_depth)->default_value(c.height_at_column_depth),
        "a column failing threshold_height at the layer's mean depth is measured at its own; 0 = thesis")
       ("column_depth_layers_below", po::value(&c.column_depth_layers_below_mm)->default_value(c.column_depth_layers_below_mm),

@@ -9,7 +9,7 @@ int main(int argc, char** argv) {
     namespace po = rdsf::cli::po;
     rdsf::DetectOptions o;
     rdsf::EmpiricalCalibration calibration;
-    std::string thresholds, box = "fitted";
+    std::string thresholds;
     po::options_description options("rdsf-detect");
     options.add_options()
         ("source", po::value(&o.source)->required(),
@@ -27,9 +27,6 @@ int main(int argc, char** argv) {
         ("truth", po::value(&o.truth_csv),
          "boxes.csv of the source: evaluate the models (needs --report-dir); without a model, count the people "
          "with a candidate")
-        ("box", po::value(&box)->default_value(box),
-         "the box detections report (CSV, pictures, tracking, evaluation): fitted (the object's extent) or strict "
-         "(the thesis's height x height/2)")
         ("report-dir", po::value(&o.report_dir), "write metrics.csv, summary.txt, roc.png, det.png here")
         ("thresholds", po::value(&thresholds),
          "evaluation tables at these P(person) thresholds: 0.3,0.5,0.7 or from:to:step (default 0.01 0.02 0.05 "
@@ -57,8 +54,6 @@ int main(int argc, char** argv) {
     if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
       throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
     }
-    if (box != "fitted" && box != "strict") throw rdsf::cli::UsageError("--box: fitted or strict, got '" + box + "'");
-    o.pipeline.detector.reported_box = box == "strict" ? rdsf::BoxKind::strict : rdsf::BoxKind::fitted;
     return rdsf::run_detect(o);
   });
 }

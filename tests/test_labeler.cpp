@@ -153,7 +153,7 @@ TEST(Labeler, AssistedModeAgreesWithGroundTruth) {
   const test::RunResult labelled = test::run(label() + " --source " + test::quote(dir / "synth") + " --out " +
                                              test::quote(dir / "set2") + " --truth " +
                                              test::quote(dir / "synth/boxes.csv") + " --answers " +
-                                             test::quote(dir / "keys") + " --keep-rejected");
+                                             test::quote(dir / "keys") + " --keep-rejected --box strict");
   ASSERT_EQ(labelled.exit_code, 0) << labelled.err;
   const GroundTruth truth = read_ground_truth(dir / "synth/boxes.csv");
   const SampleSet set = SampleSet::open_read(dir / "set2");
