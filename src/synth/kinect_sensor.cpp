@@ -21,7 +21,26 @@ bool KinectSensor::in_band(int x, int y) const {
          y >= camera_.height_px - band_bottom_;
 }
 
-cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed) const {
+SensorProfile KinectSensor::draw_profile(Rng& rng) const {
+  SensorProfile profile;
+  const KinectSensorParams& p = params_;
+  const double xtion = rng.uniform(), eight = rng.uniform();
+  const double factor = rng.uniform(p.xtion_noise_min, p.xtion_noise_max);
+  const double step = rng.uniform(p.eight_bit_step_min_mm, p.eight_bit_step_max_mm);
+  const double offset = rng.uniform(p.eight_bit_offset_min_m, p.eight_bit_offset_max_m);
+  if (xtion < p.xtion_share) {
+    profile.noise_factor = factor;
+    profile.correlated_share = 0.5;
+  }
+  if (eight < p.eight_bit_share) {
+    profile.eight_bit_step_mm = step;
+    profile.eight_bit_offset_mm = 1000.0 * offset;
+  }
+  return profile;
+}
+
+cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed,
+                                const SensorProfile& profile) const {
   const int width = camera_.width_px, height = camera_.height_px;
   const KinectSensorParams& p = params_;
   Rng rng(seed);
@@ -67,12 +86,26 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
 
   // the field is roughly normal around 0.5 (sigma about 0.13): a dropout d removes about d of a surface
   // when the field is thresholded at its d-quantile (logistic approximation of the normal quantile)
-  auto field_threshold = [](double d) {
+  auto field_threshold_exact = [](double d) {
     if (d >= 0.999) return 2.0;
     if (d <= 0.0) return -1.0;
     return 0.5 + 0.13 * 0.5513 * std::log(d / (1.0 - d));
   };
+  // tabulated in steps of 1/1024 of the dropout (the logarithm per pixel was a tenth of the time)
+  constexpr int threshold_steps = 1024;
+  std::vector<float> threshold_table(threshold_steps + 1);
+  for (int k = 0; k <= threshold_steps; ++k) {
+    threshold_table[static_cast<std::size_t>(k)] = static_cast<float>(field_threshold_exact(static_cast<double>(k) / threshold_steps));
+  }
+  auto field_threshold = [&](double d) {
+    if (d >= 0.999) return 2.0f;
+    if (d <= 0.0) return -1.0f;
+    return threshold_table[static_cast<std::size_t>(d * threshold_steps + 0.5)];
+  };
   cv::Mat1w out(height, width, static_cast<std::uint16_t>(0));
+  const double noise_per_m2 = p.noise_per_m2 * profile.noise_factor;
+  const double correlated = profile.correlated_share;
+  const bool eight_bit = profile.eight_bit_step_mm > 0;
   const double fb = camera_.fx_px * p.baseline_m;
   std::vector<unsigned char> shadow(static_cast<std::size_t>(width));
   for (int v = 0; v < height; ++v) {
@@ -137,12 +170,25 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
                         0.3f * lerp_row(fine_row, fine_w, fine_fy, fine_x[i], fine_fx[i]);
         if (f < field_threshold(drop)) continue;
       }
-      // noise and disparity quantisation, both growing with z^2
-      const double noisy = depth + p.noise_per_m2 * depth * depth * normals[(r >> 8) & (table_size - 1)];
+      // noise and disparity quantisation, both growing with z^2; part of the noise may be shared by
+      // neighbouring pixels (the coarse field is about normal around 0.5 with sigma 0.13)
+      double unit_noise = normals[(r >> 8) & (table_size - 1)];
+      if (correlated > 0) {
+        const std::size_t i = static_cast<std::size_t>(u);
+        const float f = lerp_row(fine_row, fine_w, fine_fy, fine_x[i], fine_fx[i]);
+        unit_noise = (1.0 - correlated) * unit_noise + correlated * 1.4 * (f - 0.5) / 0.13;
+      }
+      const double noisy = depth + noise_per_m2 * depth * depth * unit_noise;
       const double steps = std::max(1.0, std::round(p.disparity_scale / noisy));
       const double measured = p.disparity_scale / steps;
       if (measured < p.min_range_m || measured > p.max_range_m) continue;
-      depth_mm[u] = static_cast<std::uint16_t>(std::lround(measured * 1000.0));
+      double mm = measured * 1000.0;
+      if (eight_bit) {  // an 8-bit linear capture: codes 1..255 (0 is no reading)
+        const double code = std::round((mm - profile.eight_bit_offset_mm) / profile.eight_bit_step_mm);
+        if (code < 1 || code > 255) continue;
+        mm = profile.eight_bit_offset_mm + code * profile.eight_bit_step_mm;
+      }
+      depth_mm[u] = static_cast<std::uint16_t>(std::lround(mm));
     }
   }
   return out;

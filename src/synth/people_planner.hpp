@@ -1,7 +1,9 @@
 #pragma once
 // Where the people of one clip are in every frame: each walks on a smooth path between free spots of the
 // room (turning gradually, around furniture, in and out of the camera's view) and stands still for a
-// while in between, facing any way (front, back, side). The gait phase advances with the distance walked.
+// while in between, facing any way (front, back, side), doing something with their arms or bending down.
+// Some walk and stand beside the person planned before them (pairs and groups), some sit on a free chair
+// of the room for the whole clip. The gait phase advances with the distance walked.
 #include <vector>
 
 #include "synth/person_model.hpp"
@@ -17,6 +19,10 @@ struct PeopleParams {
   double frame_interval_s = 1.0 / 30.0;
   /// Share of walks that head mostly towards or away from the camera (the rest go anywhere).
   double along_room_share = 0.75;
+  BodyParams body;            ///< bodies and outfits
+  bool poses = true;          ///< sitting, bending, arms raised, out, crossed, in pockets, pointing, waving
+  double sitting_share = 0.2; ///< chance that a person sits on a free chair (with poses)
+  double group_share = 0.3;   ///< chance that a person walks and stands beside the one planned before
 };
 
 struct PersonTrack {
