@@ -29,10 +29,19 @@ bool free_spot(const Room& room, const PeopleParams& p, double x, double z) {
   return z >= p.nearest_m && z <= p.farthest_m && room.walkable(x, z, clearance_m);
 }
 
-bool draw_spot(Rng& rng, const Room& room, const PeopleParams& p, double& x, double& z) {
+/// A free spot of the room; most (in_view_share) in the camera's view: within 0.45 rad of its heading, at
+/// nearest_m..farthest_m from it.
+bool draw_spot(Rng& rng, const Room& room, const PeopleParams& p, const CameraPose& camera, double& x, double& z) {
+  const bool in_view = rng.chance(p.in_view_share);
   for (int attempt = 0; attempt < 60; ++attempt) {
-    x = rng.uniform(room.left_x, room.right_x);
-    z = rng.uniform(p.nearest_m, std::min(p.farthest_m, room.front_z));
+    if (in_view && attempt < 40) {
+      const double r = rng.uniform(p.nearest_m, p.farthest_m), a = camera.yaw_rad + rng.uniform(-0.45, 0.45);
+      x = camera.x_m + r * std::sin(a);
+      z = camera.z_m + r * std::cos(a);
+    } else {
+      x = rng.uniform(room.left_x, room.right_x);
+      z = rng.uniform(p.nearest_m, std::min(p.farthest_m, room.front_z));
+    }
     if (free_spot(room, p, x, z)) return true;
   }
   return false;
@@ -159,7 +168,7 @@ bool plan_companion(Rng& rng, const Room& room, const PeopleParams& params, cons
 }  // namespace
 
 std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int frames, int first_track,
-                                     const PeopleParams& params) {
+                                     const PeopleParams& params, const CameraPose& camera) {
   std::vector<PersonTrack> tracks;
   std::vector<Seat> seats = room.seats;
   std::vector<bool> sitting;
@@ -186,7 +195,7 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
     }
     sitting.push_back(false);
     double x = 0, z = 0;
-    if (!draw_spot(rng, room, params, x, z)) {
+    if (!draw_spot(rng, room, params, camera, x, z)) {
       tracks.push_back(track);  // no room for this person: never present
       continue;
     }
@@ -214,7 +223,7 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
           double best_score = -1;
           for (int attempt = 0; attempt < 20; ++attempt) {
             double cx = 0, cz = 0;
-            if (draw_spot(rng, room, params, cx, cz) && std::hypot(cx - x, cz - z) > 1.0 &&
+            if (draw_spot(rng, room, params, camera, cx, cz) && std::hypot(cx - x, cz - z) > 1.0 &&
                 clear_line(room, params, x, z, cx, cz)) {
               const double score = along ? std::abs(cz - z) / std::hypot(cx - x, cz - z) : 1.0;
               if (score > best_score) {

@@ -24,7 +24,7 @@ struct RoomParams {
   int clutter_min = 3, clutter_max = 9;         ///< extra clutter pieces (with clutter)
   bool room_kinds = true;                       ///< corridors and open-plan offices besides rooms
   double corridor_share = 0.15, open_plan_share = 0.2;
-  double floor_dropout_max = 0.2, wall_dropout_max = 0.05, furniture_dropout_max = 0.3;
+  double floor_dropout_max = 0.1, wall_dropout_max = 0.02, furniture_dropout_max = 0.3;
   double camera_height_min_m = 0.5, camera_height_max_m = 1.6;
   double pitch_min_deg = -3.0, pitch_max_deg = 6.0;
   double roll_max_deg = 3.0;         ///< roll uniform in +-roll_max_deg

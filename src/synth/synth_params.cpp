@@ -83,6 +83,8 @@ void SynthParams::set_classic() {
   room.moving_share = 0;
   room.clutter = false;
   room.room_kinds = false;
+  room.floor_dropout_max = 0.2;
+  room.wall_dropout_max = 0.05;
   sensor.eight_bit_share = 0;
   sensor.xtion_share = 0;
   people.body.varied_bodies = false;
@@ -90,6 +92,8 @@ void SynthParams::set_classic() {
   people.poses = false;
   people.group_share = 0;
   people.sitting_share = 0;
+  people.in_view_share = 0;
+  people.nearest_m = 1.0;
 }
 
 void parse_people_range(const std::string& text, int& people_min, int& people_max) {

@@ -42,7 +42,8 @@ void SynthSequence::load_clip(int clip) {
     const int count = people_rng.integer(params_.people_min, params_.people_max);
     const int first_track = clip * std::max(1, params_.people_max) + 1;
     clip_.tracks =
-        plan_people(people_rng, clip_.room, count, params_.clip_frames, first_track, params_.people);
+        plan_people(people_rng, clip_.room, count, params_.clip_frames, first_track, params_.people,
+                    clip_.camera.start);
   }
 }
 
