@@ -87,6 +87,7 @@ void SynthParams::set_classic() {
   room.wall_dropout_max = 0.05;
   sensor.eight_bit_share = 0;
   sensor.xtion_share = 0;
+  sensor.patch_cell_px = 20;
   people.body.varied_bodies = false;
   people.body.outfits = false;
   people.poses = false;
