@@ -38,7 +38,7 @@ struct KinectSensorParams {
   double edge_fatten = 0.35;       ///< probability that a far-side edge pixel takes the near depth
   double edge_jump = 0.05;         ///< a depth edge: neighbours differ by more than this fraction of z
   int patch_cell_px = 10;          ///< scale of the blobby dropout field (at 640 px wide; 20 before issue 13)
-  double grazing_cosine = 0.22;    ///< surfaces seen at a cosine below this lose readings increasingly (0.3 before issue 13)
+  double grazing_cosine = 0.3;     ///< surfaces seen at a cosine below this lose readings increasingly
   double base_dropout = 0.0;       ///< dropout of every surface in addition to its material's
   /// Border band without readings (registration), in pixels at 640x480; scaled with the image.
   int band_left_px = 18, band_right_px = 30, band_top_px = 20, band_bottom_px = 8;

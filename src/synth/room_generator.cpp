@@ -230,11 +230,11 @@ void add_plant(Rng& rng, Room& room) {
   const cv::Vec3b leaves = {static_cast<unsigned char>(rng.integer(20, 70)), static_cast<unsigned char>(rng.integer(70, 150)),
                             static_cast<unsigned char>(rng.integer(30, 80))};
   room.furniture.push_back(make_capsule(at(p, 0, pot_h, 0), at(p, 0, height * 0.8, 0), 0.015, leaves));
-  const int balls = rng.integer(8, 18);
-  const double spread = rng.uniform(0.12, 0.3) * (0.6 + height / 3.0);
+  const int balls = rng.integer(4, 10);
+  const double spread = rng.uniform(0.15, 0.35);
   for (int k = 0; k < balls; ++k) {
-    const double y = pot_h + (height - pot_h) * rng.uniform(0.3, 1.0);
-    const double r = rng.uniform(0.03, 0.09) * (0.6 + height / 3.0);
+    const double y = pot_h + (height - pot_h) * rng.uniform(0.35, 0.95);
+    const double r = rng.uniform(0.06, 0.18) * (0.6 + height / 3.0);
     const Vec3 centre = at(p, rng.uniform(-spread, spread), y, rng.uniform(-spread, spread));
     room.furniture.push_back(make_capsule(centre, centre + Vec3{rng.uniform(-0.1, 0.1), rng.uniform(0.0, 0.15), 0}, r,
                                           leaves, static_cast<float>(rng.uniform(0.25, 0.55))));
@@ -511,12 +511,8 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
   }
   room.footprints.erase(room.footprints.begin());  // the camera's spot: people may walk there
   // materials: dark, glossy or finely structured surfaces lose some readings in patches
-  // (with clutter: most pieces hold their readings, a quarter are dark or shiny and lose many)
   for (Shape& shape : room.furniture) {
-    const double drop = !params.clutter       ? rng.uniform(0.0, params.furniture_dropout_max)
-                        : rng.chance(0.75) ? rng.uniform(0.0, 0.35 * params.furniture_dropout_max)
-                                           : rng.uniform(0.7, 1.7) * params.furniture_dropout_max;
-    shape.dropout = std::max(shape.dropout, static_cast<float>(drop));
+    shape.dropout = std::max(shape.dropout, static_cast<float>(rng.uniform(0.0, params.furniture_dropout_max)));
   }
   return room;
 }

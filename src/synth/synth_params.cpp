@@ -88,7 +88,6 @@ void SynthParams::set_classic() {
   sensor.eight_bit_share = 0;
   sensor.xtion_share = 0;
   sensor.patch_cell_px = 20;
-  sensor.grazing_cosine = 0.3;
   people.body.varied_bodies = false;
   people.body.outfits = false;
   people.poses = false;
