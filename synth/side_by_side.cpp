@@ -1,7 +1,7 @@
 // rdsf-side-by-side: pictures for docs/synthetic.md. Each row shows depth images side by side as colour
 // maps (near = warm, far = cool, 0-7 m, black = no reading), each with its ground-truth boxes when a
 // boxes.csv lies beside it (white; the synthetic ones labelled with their visible fraction).
-//   rdsf-side-by-side OUT.png COLUMNS IMAGE.depth.png...
+//   rdsf-side-by-side OUT.jpg COLUMNS IMAGE.depth.png...   (OUT.png works too; JPEG quality 80)
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
     }
     cv::Mat picture;
     cv::vconcat(rows, picture);
-    if (!cv::imwrite(argv[1], picture)) rdsf::fail(argv[1], "cannot write the picture");
+    const std::vector<int> small_jpeg = {cv::IMWRITE_JPEG_QUALITY, 80};  // ignored for PNG
+    if (!cv::imwrite(argv[1], picture, small_jpeg)) rdsf::fail(argv[1], "cannot write the picture");
     return 0;
   });
 }

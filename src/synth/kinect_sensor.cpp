@@ -86,22 +86,15 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
 
   // the field is roughly normal around 0.5 (sigma about 0.13): a dropout d removes about d of a surface
   // when the field is thresholded at its d-quantile (logistic approximation of the normal quantile)
-  auto field_threshold_exact = [](double d) {
+  auto field_threshold = [](double d) {
     if (d >= 0.999) return 2.0;
     if (d <= 0.0) return -1.0;
     return 0.5 + 0.13 * 0.5513 * std::log(d / (1.0 - d));
   };
-  // tabulated in steps of 1/1024 of the dropout (the logarithm per pixel was a tenth of the time)
-  constexpr int threshold_steps = 1024;
-  std::vector<float> threshold_table(threshold_steps + 1);
-  for (int k = 0; k <= threshold_steps; ++k) {
-    threshold_table[static_cast<std::size_t>(k)] = static_cast<float>(field_threshold_exact(static_cast<double>(k) / threshold_steps));
-  }
-  auto field_threshold = [&](double d) {
-    if (d >= 0.999) return 2.0f;
-    if (d <= 0.0) return -1.0f;
-    return threshold_table[static_cast<std::size_t>(d * threshold_steps + 0.5)];
-  };
+  // the threshold of each surface's own dropout once per image (a logarithm per pixel was a tenth of the
+  // time); only pixels seen at a grazing angle need their own
+  std::vector<double> surface_threshold(dropout.size());
+  for (std::size_t i = 0; i < dropout.size(); ++i) surface_threshold[i] = field_threshold(dropout[i]);
   cv::Mat1w out(height, width, static_cast<std::uint16_t>(0));
   const double noise_per_m2 = p.noise_per_m2 * profile.noise_factor;
   const double correlated = profile.correlated_share;
@@ -163,12 +156,16 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
       }
       // blobby dropout by material and viewing angle
       double drop = dropout[surface[u]];
-      if (incidence[u] < p.grazing_cosine) drop += 1.2 * (p.grazing_cosine - incidence[u]) / p.grazing_cosine;
+      double threshold = surface_threshold[surface[u]];
+      if (incidence[u] < p.grazing_cosine) {
+        drop += 1.2 * (p.grazing_cosine - incidence[u]) / p.grazing_cosine;
+        threshold = field_threshold(drop);
+      }
       if (drop > 0) {
         const std::size_t i = static_cast<std::size_t>(u);
         const float f = 0.7f * lerp_row(coarse_row, grid_w, coarse_fy, coarse_x[i], coarse_fx[i]) +
                         0.3f * lerp_row(fine_row, fine_w, fine_fy, fine_x[i], fine_fx[i]);
-        if (f < field_threshold(drop)) continue;
+        if (f < threshold) continue;
       }
       // noise and disparity quantisation, both growing with z^2; part of the noise may be shared by
       // neighbouring pixels (the coarse field is about normal around 0.5 with sigma 0.13)

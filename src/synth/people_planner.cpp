@@ -32,7 +32,7 @@ bool free_spot(const Room& room, const PeopleParams& p, double x, double z) {
 /// A free spot of the room; most (in_view_share) in the camera's view: within 0.45 rad of its heading, at
 /// nearest_m..farthest_m from it.
 bool draw_spot(Rng& rng, const Room& room, const PeopleParams& p, const CameraPose& camera, double& x, double& z) {
-  const bool in_view = rng.chance(p.in_view_share);
+  const bool in_view = p.in_view_share > 0 && rng.chance(p.in_view_share);
   for (int attempt = 0; attempt < 60; ++attempt) {
     if (in_view && attempt < 40) {
       const double r = rng.uniform(p.nearest_m, p.farthest_m), a = camera.yaw_rad + rng.uniform(-0.45, 0.45);
@@ -187,7 +187,7 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
       continue;
     }
     // walking and standing with the person planned before (a pair, a group)
-    if (slot > 0 && !sitting.back() && rng.chance(params.group_share) &&
+    if (params.group_share > 0 && slot > 0 && !sitting.back() && rng.chance(params.group_share) &&
         plan_companion(rng, room, params, tracks.back(), track)) {
       sitting.push_back(false);
       tracks.push_back(std::move(track));
@@ -242,11 +242,12 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
           target_x = tx;
           target_z = tz;
           speed = rng.uniform(params.speed_min_mps, params.speed_max_mps);
-          const double pick = rng.uniform();
-          arms = pick < 0.8 ? ArmPose::hanging
-                 : pick < 0.9 || !params.poses ? ArmPose::holding
-                 : pick < 0.95 ? ArmPose::phone
-                               : ArmPose::pockets;
+          if (params.poses) {
+            const double pick = rng.uniform();
+            arms = pick < 0.8 ? ArmPose::hanging : pick < 0.9 ? ArmPose::holding : pick < 0.95 ? ArmPose::phone : ArmPose::pockets;
+          } else {
+            arms = rng.chance(0.85) ? ArmPose::hanging : ArmPose::holding;
+          }
         } else {
           stand_frames = rng.integer(20, 90);
           stand_total = stand_frames;

@@ -96,7 +96,9 @@ void add_person_shapes(const PersonBody& body, const PersonPose& pose, int track
     return Vec3{pose.position.x + l.x * c + l.z * n, pose.position.y + l.y, pose.position.z - l.x * n + l.z * c};
   };
   // the upper body, built standing, raised or lowered to the hips and leant forward by `bend` about them
+  const bool upright = lift == 0 && hip_z == 0 && bend == 0;
   auto upper = [&](const Vec3& l) {
+    if (upright) return l;  // exactly the standing body
     const double dy = l.y + lift - hip_y, dz = l.z;
     return Vec3{l.x, hip_y + dy * cb - dz * sb, hip_z + dy * sb + dz * cb};
   };
@@ -121,7 +123,7 @@ void add_person_shapes(const PersonBody& body, const PersonPose& pose, int track
   // legs: hip flexion sinusoidal, knee flexed most in the swing phase; sitting: thighs forward, shins down
   const cv::Vec3b leg_colour = body.garment == Garment::trousers ? body.trousers : body.skin;
   for (int side = -1; side <= 1; side += 2) {
-    const Vec3 hip{side * 0.042 * h * std::sqrt(g) + sway, hip_y, hip_z};
+    const Vec3 hip{side * 0.042 * h + sway, hip_y, hip_z};
     Vec3 knee, ankle;
     if (sitting) {
       knee = hip + limb(1.45, 0.08, side) * thigh;

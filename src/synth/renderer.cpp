@@ -208,18 +208,14 @@ void Renderer::render(const Scene& scene, RenderBuffers& out) const {
     }
   }
 
-  // 2. the shapes, z-buffered, nearest first: a pixel already nearer than a shape's bounding box cannot
-  // show it, which skips most of the ray tests of hidden shapes
+  // 2. the shapes, z-buffered in list order (a shape listed later wins only when strictly nearer); a pixel
+  // already nearer than a shape's bounding box cannot show it, which skips the ray tests of hidden parts
   out.shapes.clear();
   out.shapes.reserve(scene.shapes.size());
-  for (const Shape& shape : scene.shapes) out.shapes.push_back(to_camera(axes, shape));
-  std::vector<std::size_t> order(scene.shapes.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return out.shapes[a].min_z_m < out.shapes[b].min_z_m; });
   const cv::Rect image(0, 0, width, height);
-  for (const std::size_t i : order) {
-    const CameraShape& s = out.shapes[i];
+  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+    out.shapes.push_back(to_camera(axes, scene.shapes[i]));
+    const CameraShape& s = out.shapes.back();
     if (!s.visible) continue;
     const cv::Rect area = s.bounds & image;
     const auto id = static_cast<std::uint16_t>(first_shape_surface + i);
@@ -230,7 +226,7 @@ void Renderer::render(const Scene& scene, RenderBuffers& out) const {
       float* incidence = out.incidence.ptr<float>(v);
       const double b = ray_y_[static_cast<std::size_t>(v)];
       for (int u = area.x; u < area.x + area.width; ++u) {
-        if (depth[u] <= nearest) continue;
+        if (depth[u] < nearest) continue;
         const double t = intersect(s, ray_x_[static_cast<std::size_t>(u)], b);
         if (t > 0 && t < depth[u]) {
           depth[u] = static_cast<float>(t);

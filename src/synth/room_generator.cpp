@@ -100,7 +100,8 @@ void add_table(Rng& rng, Room& room) {
   }
 }
 
-void chair_at(Rng& rng, Room& room, const Placement& p, double h, double seat, double back, cv::Vec3b colour) {
+void chair_at(Rng& rng, Room& room, const Placement& p, double h, double seat, double back, cv::Vec3b colour,
+              bool jackets) {
   room.furniture.push_back(make_box(at(p, 0, seat, 0), p.yaw, {h, 0.03, h}, colour));
   room.furniture.push_back(
       make_box(at(p, 0, seat + back / 2, -h + 0.02), p.yaw, {h, back / 2, 0.02}, colour));
@@ -111,7 +112,7 @@ void chair_at(Rng& rng, Room& room, const Placement& p, double h, double seat, d
     }
   }
   room.seats.push_back({p.x, p.z, seat + 0.03, p.yaw});
-  if (rng.chance(0.12)) {  // a jacket hung over the back
+  if (jackets && rng.chance(0.12)) {  // a jacket hung over the back
     room.furniture.push_back(make_capsule(at(p, -0.8 * h, seat + back - 0.05, -h), at(p, 0.8 * h, seat + back - 0.05, -h),
                                           0.06, tint(rng, 20, 120)));
     room.furniture.push_back(make_box(at(p, 0, seat + back / 2, -h - 0.03), p.yaw, {0.8 * h, back / 2, 0.03},
@@ -119,11 +120,11 @@ void chair_at(Rng& rng, Room& room, const Placement& p, double h, double seat, d
   }
 }
 
-void add_chair(Rng& rng, Room& room) {
+void add_chair(Rng& rng, Room& room, bool jackets) {
   const double h = rng.uniform(0.2, 0.25), seat = rng.uniform(0.42, 0.48), back = rng.uniform(0.35, 0.5);
   Placement p;
   if (!place(rng, room, h, h, false, p)) return;
-  chair_at(rng, room, p, h, seat, back, tint(rng, 30, 160));
+  chair_at(rng, room, p, h, seat, back, tint(rng, 30, 160), jackets);
 }
 
 void add_shelf(Rng& rng, Room& room) {
@@ -367,7 +368,7 @@ void add_desk(Rng& rng, Room& room) {
   chair.x = where.x;
   chair.z = where.z;
   chair.yaw = wrap_angle(chair.yaw);
-  chair_at(rng, room, chair, 0.23, rng.uniform(0.44, 0.5), rng.uniform(0.4, 0.55), tint(rng, 20, 90));
+  chair_at(rng, room, chair, 0.23, rng.uniform(0.44, 0.5), rng.uniform(0.4, 0.55), tint(rng, 20, 90), true);
 }
 
 /// A free-standing panel (office partition, whiteboard, screen) or a wall meeting the room at an angle.
@@ -443,10 +444,15 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
   camera = CameraPose{};
   camera.height_m = rng.uniform(params.camera_height_min_m, params.camera_height_max_m);
   camera.pitch_rad = rng.uniform(params.pitch_min_deg, params.pitch_max_deg) * pi / 180.0;
-  camera.roll_rad = rng.uniform(-params.roll_max_deg, params.roll_max_deg) * pi / 180.0;
-  camera.yaw_rad = rng.uniform(-params.yaw_max_deg, params.yaw_max_deg) * pi / 180.0 * (corridor ? 0.3 : 1.0);
-  const double x_room = std::max(0.0, std::min(-room.left_x, room.right_x) - 0.5);
-  camera.x_m = rng.uniform(-1.0, 1.0) * std::min(params.camera_offset_max_m, x_room);
+  // (each drawn only when asked for, so that --classic draws the same numbers as the generator before)
+  if (params.roll_max_deg > 0) camera.roll_rad = rng.uniform(-params.roll_max_deg, params.roll_max_deg) * pi / 180.0;
+  if (params.yaw_max_deg > 0) {
+    camera.yaw_rad = rng.uniform(-params.yaw_max_deg, params.yaw_max_deg) * pi / 180.0 * (corridor ? 0.3 : 1.0);
+  }
+  if (params.camera_offset_max_m > 0) {
+    const double x_room = std::max(0.0, std::min(-room.left_x, room.right_x) - 0.5);
+    camera.x_m = rng.uniform(-1.0, 1.0) * std::min(params.camera_offset_max_m, x_room);
+  }
 
   const int windows = rng.integer(0, 2);
   for (int k = 0; k < windows; ++k) {
@@ -462,8 +468,9 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
     w.top_m = std::min(room.ceiling_y - 0.2, w.bottom_m + rng.uniform(0.9, 1.5));
     room.windows.push_back(w);
   }
-  // keep the camera's own spot free
-  room.footprints.push_back({camera.x_m, 0.4, 0.4, 0.9, 0.0});
+  // keep the camera's own spot (and its way forward) free of clutter
+  const bool camera_spot = params.clutter || params.moving_share > 0;
+  if (camera_spot) room.footprints.push_back({camera.x_m, 0.4, 0.4, 0.9, 0.0});
 
   const double area_factor = open_plan ? 1.6 : corridor ? 0.6 : 1.0;
   const int pieces = static_cast<int>(std::lround(rng.integer(params.furniture_min, params.furniture_max) * area_factor));
@@ -472,7 +479,7 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
     if (pick < 0.18) {
       if (params.clutter && (open_plan || rng.chance(0.5))) add_desk(rng, room); else add_table(rng, room);
     } else if (pick < 0.40) {
-      add_chair(rng, room);
+      add_chair(rng, room, params.clutter);
     } else if (pick < 0.55) {
       if (params.clutter && rng.chance(0.35)) add_cupboard(rng, room); else add_shelf(rng, room);
     } else if (pick < 0.70) {
@@ -509,7 +516,7 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
       }
     }
   }
-  room.footprints.erase(room.footprints.begin());  // the camera's spot: people may walk there
+  if (camera_spot) room.footprints.erase(room.footprints.begin());  // the camera's spot: people may walk there
   // materials: dark, glossy or finely structured surfaces lose some readings in patches
   for (Shape& shape : room.furniture) {
     shape.dropout = std::max(shape.dropout, static_cast<float>(rng.uniform(0.0, params.furniture_dropout_max)));
