@@ -87,12 +87,11 @@ TEST(SynthSequence, SameSeedSameFramesOtherSeedOtherFrames) {
 // --classic is the generator before issue 13, byte for byte: the hash of 60 frames (depth, boxes and
 // visible fractions) of seed 5 as the generator at commit bb3e584 gave it.
 TEST(SynthSequence, ClassicIsTheGeneratorBefore) {
-  SynthParams p;
+  SynthParams p = small_params(5);
   p.frames = 60;
-  p.people_min = 1;
-  p.people_max = 3;
-  p.seed = 5;
   p.clip_frames = 10;
+  p.width_px = 640;
+  p.height_px = 480;
   p.set_classic();
   SynthSequence sequence(p);
   std::uint64_t h = 0;
