@@ -10,6 +10,13 @@ struct SynthOptions {
   std::string out_dir;
   std::string people = "0..3";  ///< MIN..MAX
   std::string size = "640x480";
+  // variety (issue 13), as given on the command line; parsed into params by run_synth
+  std::string camera_height = "0.5..1.6";
+  std::string camera_pitch = "-3..6";
+  std::string clutter = "3..9";
+  std::string eight_bit_step = "12..28";
+  std::string outfits = "on", poses = "on", bodies = "on", room_kinds = "on";
+  bool classic = false;  ///< turn every variety off (SynthParams::set_classic), after the other options
   bool force = false;
   std::string command_line;  ///< recorded in synth.yml
   synth::SynthParams params;

@@ -13,6 +13,7 @@
 #include "core/stable_hash.hpp"
 #include "detector/detector_core.hpp"
 #include "synth/people_planner.hpp"
+#include "synth/person_model.hpp"
 #include "synth/random.hpp"
 #include "synth/room_generator.hpp"
 #include "synth/synth_sequence.hpp"
@@ -83,6 +84,32 @@ TEST(SynthSequence, SameSeedSameFramesOtherSeedOtherFrames) {
   EXPECT_NE(ha, hc);
 }
 
+// --classic is the generator before issue 13, byte for byte: the hash of 60 frames (depth, boxes and
+// visible fractions) of seed 5 as the generator at commit bb3e584 gave it.
+TEST(SynthSequence, ClassicIsTheGeneratorBefore) {
+  SynthParams p = small_params(5);
+  p.frames = 60;
+  p.clip_frames = 10;
+  p.width_px = 640;
+  p.height_px = 480;
+  p.set_classic();
+  SynthSequence sequence(p);
+  std::uint64_t h = 0;
+  for (int i = 0; i < p.frames; ++i) {
+    const SynthFrame f = sequence.frame(i);
+    std::uint64_t fh = rdsf::fnv1a64(std::string_view(reinterpret_cast<const char*>(f.depth_mm.data),
+                                                      f.depth_mm.total() * f.depth_mm.elemSize()));
+    for (const auto& t : f.people) {
+      fh = rdsf::fnv1a64(std::to_string(t.track) + "," + std::to_string(t.box.x) + "," + std::to_string(t.box.y) +
+                             "," + std::to_string(t.box.width) + "," + std::to_string(t.box.height) + "," +
+                             std::to_string(t.visible_fraction),
+                         fh);
+    }
+    h = rdsf::fnv1a64(std::to_string(fh), h);
+  }
+  EXPECT_EQ(h, 0xc911653e222b8990ULL);
+}
+
 TEST(SynthSequence, BoxesLieInsideTheFrameAndCoverPixelsNearerThanTheEmptyRoom) {
   SynthParams with_people = small_params(21);
   SynthParams empty = with_people;
@@ -107,7 +134,8 @@ TEST(SynthSequence, BoxesLieInsideTheFrameAndCoverPixelsNearerThanTheEmptyRoom) 
       for (int y = p.box.y; y < p.box.y + p.box.height; ++y) {
         for (int x = p.box.x; x < p.box.x + p.box.width; ++x) {
           const int d = f.depth_mm(y, x), background = e.depth_mm(y, x);
-          if (d > 0 && background > 0 && d < background - 50) ++nearer;
+          // in front of the room, or a reading where the room has none (glass, beyond the capture's range)
+          if (d > 0 && (background == 0 || d < background - 50)) ++nearer;
         }
       }
       if (p.visible_px < 200) continue;  // slivers at the image edge are mostly edge holes
@@ -126,13 +154,21 @@ TEST(SynthPeople, PathsAreSmoothAndStayInTheRoom) {
   const auto tracks = rdsf::synth::plan_people(people_rng, room, 4, 300, 11, params);
   ASSERT_EQ(tracks.size(), 4U);
   double walked_m = 0;
+  int sitting_frames = 0;
   for (std::size_t t = 0; t < tracks.size(); ++t) {
     EXPECT_EQ(tracks[t].track, 11 + static_cast<int>(t));
-    EXPECT_GE(tracks[t].body.height_m, 1.5);
-    EXPECT_LE(tracks[t].body.height_m, 1.95);
+    EXPECT_GE(tracks[t].body.height_m, 1.0);
+    EXPECT_LE(tracks[t].body.height_m, 2.0);
     for (std::size_t f = 0; f < tracks[t].poses.size(); ++f) {
       const auto& pose = tracks[t].poses[f];
       if (!pose.present) continue;
+      if (pose.posture == rdsf::synth::Posture::sitting) {  // on a chair of the room, for the whole clip
+        bool on_a_seat = false;
+        for (const auto& seat : room.seats) on_a_seat |= seat.x == pose.position.x && seat.z == pose.position.z;
+        EXPECT_TRUE(on_a_seat) << "track " << t << " frame " << f;
+        ++sitting_frames;
+        continue;
+      }
       EXPECT_TRUE(room.walkable(pose.position.x, pose.position.z, 0.3)) << "track " << t << " frame " << f;
       if (f == 0) continue;
       const auto& before = tracks[t].poses[f - 1];
@@ -152,6 +188,7 @@ TEST(SynthSensor, ReadingsInRangeAndQuantisedCoarserWithDistance) {
   SynthParams p = small_params(9);
   p.width_px = 640;
   p.height_px = 480;
+  p.sensor.eight_bit_share = 0;  // 16-bit captures only: every reading on the disparity grid
   SynthSequence sequence(p);
   std::set<int> values;
   for (int i = 0; i < 24; i += 4) {
@@ -178,14 +215,116 @@ TEST(SynthSensor, ReadingsInRangeAndQuantisedCoarserWithDistance) {
   EXPECT_GT(values.size(), 100U);
 }
 
+// 8-bit captures (like ../shared/realdata): every reading of a frame lies on one linear grid
+// offset + k * step with k in 1..255 and a step of 12-28 mm, and the largest is at most 255 steps above it.
+TEST(SynthSensor, EightBitCapturesLieOnALinearGrid) {
+  SynthParams p = small_params(9);
+  p.width_px = 640;
+  p.height_px = 480;
+  p.sensor.eight_bit_share = 1;
+  p.clip_frames = 4;
+  SynthSequence sequence(p);
+  for (int i = 0; i < 24; i += 4) {
+    const SynthFrame f = sequence.frame(i);
+    std::set<int> values;
+    for (int y = 0; y < f.depth_mm.rows; ++y) {
+      for (int x = 0; x < f.depth_mm.cols; ++x) {
+        if (f.depth_mm(y, x) > 0) values.insert(f.depth_mm(y, x));
+      }
+    }
+    ASSERT_GT(values.size(), 20U) << "frame " << i;
+    ASSERT_LE(values.size(), 255U) << "frame " << i << ": more than 255 codes";
+    // some step of 12-28 mm puts every reading within 1 mm (rounding to millimetres) of a whole number of
+    // steps above the smallest
+    double best_residual = 1e9, best_step = 0;
+    for (double step = 11.5; step <= 28.5; step += 0.005) {
+      double worst = 0;
+      for (int v : values) {
+        const double k = (v - *values.begin()) / step;
+        worst = std::max(worst, std::abs(k - std::round(k)) * step);
+        if (worst > best_residual) break;
+      }
+      if (worst < best_residual) {
+        best_residual = worst;
+        best_step = step;
+      }
+    }
+    EXPECT_LE(best_residual, 1.01) << "frame " << i << ": the readings are not on a linear grid (step " << best_step << ")";
+    EXPECT_LE(*values.rbegin() - *values.begin(), 255 * best_step + 1) << "frame " << i;
+  }
+}
+
+// Everything a person wears or carries belongs to the person (so the truth box covers bags, boxes and
+// trays, as the real boxes from the middleware's user mask do), and carrying a box puts shapes in front.
+TEST(SynthPeople, CarriedThingsAndClothesBelongToThePerson) {
+  using namespace rdsf::synth;
+  PersonBody body;
+  body.height_m = 1.7;
+  PersonPose pose;
+  pose.present = true;
+  pose.yaw_rad = 0;  // facing +Z
+  std::vector<Shape> plain;
+  add_person_shapes(body, pose, 7, plain);
+  double plain_front = -1e9;
+  for (const Shape& s : plain) plain_front = std::max(plain_front, s.kind == ShapeKind::box ? s.centre.z : std::max(s.a.z, s.b.z) + s.radius_m);
+  for (const Carried carried : {Carried::backpack, Carried::shoulder_bag, Carried::handbag, Carried::box, Carried::tray}) {
+    PersonBody b = body;
+    b.carried = carried;
+    b.coat = true;
+    b.garment = Garment::skirt;
+    b.hair_style = HairStyle::long_hair;
+    b.bag_half_m = {0.2, carried == Carried::tray ? 0.012 : 0.15, 0.15};
+    std::vector<Shape> shapes;
+    add_person_shapes(b, pose, 7, shapes);
+    EXPECT_GT(shapes.size(), plain.size());
+    int boxes = 0;
+    double front = -1e9;
+    for (const Shape& s : shapes) {
+      EXPECT_EQ(s.owner, 7);
+      if (s.kind == ShapeKind::box) {
+        ++boxes;
+        front = std::max(front, s.centre.z + s.half_m.z);
+      }
+    }
+    EXPECT_EQ(boxes, 1) << static_cast<int>(carried);
+    if (carried == Carried::box || carried == Carried::tray) {
+      EXPECT_GT(front, plain_front + 0.1);
+    }
+    if (carried == Carried::backpack) {
+      EXPECT_LT(front, 0.0) << "a backpack hangs behind";
+    }
+  }
+  // sitting lowers the head; bending brings it forward
+  PersonPose sitting = pose, bending = pose;
+  sitting.posture = Posture::sitting;
+  bending.posture = Posture::bending;
+  bending.bend_rad = 1.0;
+  auto top = [&](const PersonPose& p) {
+    std::vector<Shape> shapes;
+    add_person_shapes(body, p, 7, shapes);
+    double y = 0;
+    for (const Shape& s : shapes) y = std::max(y, std::max(s.a.y, s.b.y) + s.radius_m);
+    return y;
+  };
+  EXPECT_NEAR(top(pose), 1.7, 0.03);
+  EXPECT_LT(top(sitting), 1.45);
+  EXPECT_LT(top(bending), 1.45);
+}
+
 // The detector core must find the people the generator renders: people with visible_fraction >= 0.8 at
-// 1.5-6 m need a candidate whose strict box has IoU >= 0.5 with their box (issue: at least 90%). The strict
-// box is height x height/2 (the thesis's), so a person seen from the side (box narrower than 0.26 x its
-// height) cannot reach IoU 0.5 even when found exactly; they are about a tenth of the rendered people and
-// are counted apart too. Four seeds, 690 frames, so that the figure does not hang on one room.
-TEST(SynthDetector, DetectorCoreFindsRenderedPeople) {
-  const rdsf::DetectorCore core;
+// 1.5-6 m need a candidate whose strict box has IoU >= 0.5 with their box. The strict box is
+// height x height/2 (the thesis's), so a person seen from the side (box narrower than 0.26 x its height)
+// cannot reach IoU 0.5 even when found exactly; they are counted apart too. Four seeds, 690 frames, so
+// that the figure does not hang on one room.
+struct Recall {
   int eligible = 0, found = 0, upright = 0, upright_found = 0;
+  double recall() const { return eligible > 0 ? static_cast<double>(found) / eligible : 0.0; }
+  double upright_recall() const { return upright > 0 ? static_cast<double>(upright_found) / upright : 0.0; }
+};
+
+Recall detector_recall(bool classic) {
+  const rdsf::DetectorCore core;
+  Recall r;
   for (const std::uint64_t seed : {2024, 11, 12, 13}) {
     SynthParams p;
     p.frames = seed == 2024 ? 240 : 150;
@@ -193,6 +332,7 @@ TEST(SynthDetector, DetectorCoreFindsRenderedPeople) {
     p.people_max = 5;
     p.seed = seed;
     p.clip_frames = 15;
+    if (classic) p.set_classic();
     SynthSequence sequence(p);
     for (int i = 0; i < p.frames; ++i) {
       const SynthFrame f = sequence.frame(i);
@@ -208,25 +348,41 @@ TEST(SynthDetector, DetectorCoreFindsRenderedPeople) {
         for (const auto& c : analysis.candidates) best = std::max(best, rdsf::iou(c.strict_box, person.box));
         const bool hit = best >= 0.5;
         const bool side_on = person.box.width < 0.26 * person.box.height;
-        ++eligible;
-        found += hit ? 1 : 0;
+        ++r.eligible;
+        r.found += hit ? 1 : 0;
         if (!side_on) {
-          ++upright;
-          upright_found += hit ? 1 : 0;
+          ++r.upright;
+          r.upright_found += hit ? 1 : 0;
         }
       }
     }
   }
-  const double recall = eligible > 0 ? static_cast<double>(found) / eligible : 0.0;
-  const double upright_recall = upright > 0 ? static_cast<double>(upright_found) / upright : 0.0;
   std::printf(
-      "detector core on synthetic frames: %d of %d people found (recall %.3f); without side-on people "
+      "detector core on synthetic frames (%s): %d of %d people found (recall %.3f); without side-on people "
       "%d of %d (recall %.3f)\n",
-      found, eligible, recall, upright_found, upright, upright_recall);
-  // Measured: 508 of 559 (0.909); without side-on people 502 of 509 (0.986).
-  EXPECT_GE(eligible, 500);
-  EXPECT_GE(recall, 0.90);
-  EXPECT_GE(upright_recall, 0.97);
+      classic ? "--classic" : "default variety", r.found, r.eligible, r.recall(), r.upright_found, r.upright,
+      r.upright_recall());
+  return r;
+}
+
+// The generator without the variety of issue 13 (--classic): the figures of before it.
+TEST(SynthDetector, DetectorCoreFindsRenderedPeopleClassic) {
+  const Recall r = detector_recall(/*classic=*/true);
+  // Measured before the variety, and with --classic now (the same frames): 508 of 559 (0.909); without
+  // side-on people 502 of 509 (0.986).
+  EXPECT_GE(r.eligible, 500);
+  EXPECT_GE(r.recall(), 0.90);
+  EXPECT_GE(r.upright_recall(), 0.97);
+}
+
+// With the default variety (sitting, bending, arms out, coats, bags and boxes, pairs side by side, clutter
+// beside people, 8-bit captures) the detector core misses more: these are the hard cases of real labs.
+TEST(SynthDetector, DetectorCoreFindsRenderedPeople) {
+  const Recall r = detector_recall(/*classic=*/false);
+  // Measured: 353 of 445 (0.793); without side-on people 352 of 420 (0.838).
+  EXPECT_GE(r.eligible, 350);
+  EXPECT_GE(r.recall(), 0.75);
+  EXPECT_GE(r.upright_recall(), 0.78);
 }
 
 }  // namespace

@@ -89,7 +89,11 @@ TEST(SynthProgram, EmptyWritesNoBoxes) {
 TEST(SynthProgram, ImpossibleArgumentsGiveOneLineAndTouchNothing) {
   TempDir dir("rdsf-synth");
   for (const std::string bad :
-       {"--people 5..2", "--people two", "--size 100x75", "--size 640", "--frames 0"}) {
+       {"--people 5..2", "--people two", "--size 100x75", "--size 640", "--frames 0", "--camera-height 0.1..1",
+        "--camera-pitch 6..-3", "--camera-roll 45", "--camera-yaw -5", "--moving-camera 1.5", "--camera-speed 3",
+        "--clutter 50", "--clutter 2.5", "--corridors 0.7 --open-plan 0.7", "--eight-bit -0.1",
+        "--eight-bit-step 0..10", "--xtion 2", "--children 1.1", "--sitting -1", "--groups 1.2", "--outfits yes",
+        "--poses 0", "--bodies x", "--room-kinds none"}) {
     const auto r = run(synth("--out " + quote(dir / "x") + " " + bad));
     EXPECT_NE(r.exit_code, 0) << bad;
     EXPECT_EQ(count_lines(r.err), 1) << bad << ": " << r.err;

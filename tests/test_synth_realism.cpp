@@ -6,13 +6,21 @@
 //   depth percentiles       p5 0.43-2.35 m, median 0.88-4.35 m, p95 1.46-8.08 m
 //   edge-hole fraction      per frame 0.15-0.73 (mean 0.58): the share of depth edges along rows
 //                           (jump > 300 mm and > 10%) that pass through missing readings
+// and what the detector core (default DetectorParams) makes of them: the candidates per frame and the
+// distribution of their sizes, measured on the 46 frames of ../shared/realdata/people (49 people):
+//   candidates per frame    mean 5.72, quartiles 4..7
+//   strict-box height       quartiles 200 / 320 / 349 px
+//   object height           quartiles 137 / 200 / 231 cm (the tallest column run, in the layer's depth)
+//   median candidate depth  3.7 m
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "detector/detector_core.hpp"
 #include "frame/depth_png.hpp"
 #include "support/test_support.hpp"
 #include "synth/depth_statistics.hpp"
@@ -117,6 +125,125 @@ TEST(SynthRealism, DepthStatisticsOfAKnownImage) {
   EXPECT_DOUBLE_EQ(s.valid_fraction, 190.0 / 200.0);
   EXPECT_EQ(s.p50_mm, 1000);  // 95 readings of 3000 and 100 of 1000 -> median 1000
   EXPECT_EQ(s.p95_mm, 3000);
+}
+
+// ---- candidates of the detector core ----
+
+struct CandidateSummary {
+  int frames = 0;
+  double per_frame = 0;                  ///< mean candidates per frame
+  double count_q25 = 0, count_q75 = 0;   ///< quartiles of the per-frame count
+  double height_px_q25 = 0, height_px_q50 = 0, height_px_q75 = 0;  ///< strict-box height
+  double height_cm_q25 = 0, height_cm_q50 = 0, height_cm_q75 = 0;  ///< object height
+  double depth_q50_mm = 0;
+};
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))];
+}
+
+CandidateSummary summarise_candidates(const std::vector<cv::Mat1w>& depths) {
+  const rdsf::DetectorCore core;
+  std::vector<double> counts, heights_px, heights_cm, depths_mm;
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    rdsf::DepthFrame frame;
+    frame.depth_mm = depths[i];
+    frame.index = static_cast<std::int64_t>(i);
+    frame.camera = rdsf::CameraModel::kinect_v1().scaled_to(depths[i].cols, depths[i].rows);
+    const rdsf::FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);
+    counts.push_back(static_cast<double>(analysis.candidates.size()));
+    for (const auto& c : analysis.candidates) {
+      heights_px.push_back(c.strict_box.height);
+      heights_cm.push_back(c.height_cm);
+      depths_mm.push_back(c.layer_depth_mm);
+    }
+  }
+  CandidateSummary s;
+  s.frames = static_cast<int>(depths.size());
+  double total = 0;
+  for (double c : counts) total += c;
+  s.per_frame = s.frames > 0 ? total / s.frames : 0.0;
+  s.count_q25 = quantile(counts, 0.25);
+  s.count_q75 = quantile(counts, 0.75);
+  s.height_px_q25 = quantile(heights_px, 0.25);
+  s.height_px_q50 = quantile(heights_px, 0.5);
+  s.height_px_q75 = quantile(heights_px, 0.75);
+  s.height_cm_q25 = quantile(heights_cm, 0.25);
+  s.height_cm_q50 = quantile(heights_cm, 0.5);
+  s.height_cm_q75 = quantile(heights_cm, 0.75);
+  s.depth_q50_mm = quantile(depths_mm, 0.5);
+  return s;
+}
+
+void print(const char* what, const CandidateSummary& s) {
+  std::printf(
+      "%s: %d frames, %.2f candidates per frame (quartiles %.0f..%.0f), strict-box height %.0f / %.0f / %.0f px, "
+      "object height %.0f / %.0f / %.0f cm, median depth %.0f mm\n",
+      what, s.frames, s.per_frame, s.count_q25, s.count_q75, s.height_px_q25, s.height_px_q50, s.height_px_q75,
+      s.height_cm_q25, s.height_cm_q50, s.height_cm_q75, s.depth_q50_mm);
+}
+
+// Measured on the 46 frames of ../shared/realdata/people (RealCandidatesFallInTheAcceptedRanges prints them).
+const CandidateSummary kRealCandidates = [] {
+  CandidateSummary s;
+  s.per_frame = 5.72;
+  s.height_px_q25 = 200;
+  s.height_px_q50 = 320;
+  s.height_px_q75 = 349;
+  s.height_cm_q25 = 137;
+  s.height_cm_q50 = 200;
+  s.height_cm_q75 = 231;
+  return s;
+}();
+
+// The accepted ranges around the real figures: candidates per frame within 35% of the real mean, the
+// quartiles of both heights within 25% of the real ones.
+void expect_like_real(const CandidateSummary& s) {
+  const CandidateSummary& r = kRealCandidates;
+  EXPECT_NEAR(s.per_frame, r.per_frame, 0.35 * r.per_frame) << "candidates per frame";
+  EXPECT_NEAR(s.height_px_q25, r.height_px_q25, 0.25 * r.height_px_q25) << "strict-box height, lower quartile";
+  EXPECT_NEAR(s.height_px_q50, r.height_px_q50, 0.25 * r.height_px_q50) << "strict-box height, median";
+  EXPECT_NEAR(s.height_px_q75, r.height_px_q75, 0.25 * r.height_px_q75) << "strict-box height, upper quartile";
+  EXPECT_NEAR(s.height_cm_q25, r.height_cm_q25, 0.25 * r.height_cm_q25) << "object height, lower quartile";
+  EXPECT_NEAR(s.height_cm_q50, r.height_cm_q50, 0.25 * r.height_cm_q50) << "object height, median";
+  EXPECT_NEAR(s.height_cm_q75, r.height_cm_q75, 0.25 * r.height_cm_q75) << "object height, upper quartile";
+}
+
+// Synthetic frames with 1-3 people (the real frames have 1-2) must give the detector core about as many
+// candidates per frame as the real frames, of about the same sizes.
+TEST(SynthRealism, CandidatesMatchRealKinectFrames) {
+  rdsf::synth::SynthParams p;
+  p.frames = 60;
+  p.clip_frames = 3;  // 20 rooms
+  p.people_min = 1;
+  p.people_max = 3;
+  p.seed = 31;
+  rdsf::synth::SynthSequence sequence(p);
+  std::vector<cv::Mat1w> depths;
+  for (int i = 0; i < p.frames; ++i) depths.push_back(sequence.frame(i).depth_mm);
+  const CandidateSummary s = summarise_candidates(depths);
+  print("synthetic candidates", s);
+  expect_like_real(s);
+}
+
+// Keeps the figures above honest: the real frames give them.
+TEST(SynthRealism, RealCandidatesFallInTheAcceptedRanges) {
+  RDSF_REQUIRE_REALDATA();
+  std::vector<cv::Mat1w> depths;
+  for (const auto& entry : std::filesystem::directory_iterator(rdsf::test::realdata_dir() / "people")) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() < 10 || name.compare(name.size() - 10, 10, ".depth.png") != 0) continue;
+    depths.push_back(rdsf::read_depth_png(entry.path().string()));
+  }
+  ASSERT_GE(depths.size(), 40U);
+  const CandidateSummary s = summarise_candidates(depths);
+  print("real candidates", s);
+  const CandidateSummary& r = kRealCandidates;
+  EXPECT_NEAR(s.per_frame, r.per_frame, 0.05 * r.per_frame);
+  EXPECT_NEAR(s.height_px_q50, r.height_px_q50, 0.05 * r.height_px_q50);
+  EXPECT_NEAR(s.height_cm_q50, r.height_cm_q50, 0.05 * r.height_cm_q50);
 }
 
 }  // namespace

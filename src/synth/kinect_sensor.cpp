@@ -21,7 +21,26 @@ bool KinectSensor::in_band(int x, int y) const {
          y >= camera_.height_px - band_bottom_;
 }
 
-cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed) const {
+SensorProfile KinectSensor::draw_profile(Rng& rng) const {
+  SensorProfile profile;
+  const KinectSensorParams& p = params_;
+  const double xtion = rng.uniform(), eight = rng.uniform();
+  const double factor = rng.uniform(p.xtion_noise_min, p.xtion_noise_max);
+  const double step = rng.uniform(p.eight_bit_step_min_mm, p.eight_bit_step_max_mm);
+  const double offset = rng.uniform(p.eight_bit_offset_min_m, p.eight_bit_offset_max_m);
+  if (xtion < p.xtion_share) {
+    profile.noise_factor = factor;
+    profile.correlated_share = 0.5;
+  }
+  if (eight < p.eight_bit_share) {
+    profile.eight_bit_step_mm = step;
+    profile.eight_bit_offset_mm = 1000.0 * offset;
+  }
+  return profile;
+}
+
+cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed,
+                                const SensorProfile& profile) const {
   const int width = camera_.width_px, height = camera_.height_px;
   const KinectSensorParams& p = params_;
   Rng rng(seed);
@@ -72,7 +91,14 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
     if (d <= 0.0) return -1.0;
     return 0.5 + 0.13 * 0.5513 * std::log(d / (1.0 - d));
   };
+  // the threshold of each surface's own dropout once per image (a logarithm per pixel was a tenth of the
+  // time); only pixels seen at a grazing angle need their own
+  std::vector<double> surface_threshold(dropout.size());
+  for (std::size_t i = 0; i < dropout.size(); ++i) surface_threshold[i] = field_threshold(dropout[i]);
   cv::Mat1w out(height, width, static_cast<std::uint16_t>(0));
+  const double noise_per_m2 = p.noise_per_m2 * profile.noise_factor;
+  const double correlated = profile.correlated_share;
+  const bool eight_bit = profile.eight_bit_step_mm > 0;
   const double fb = camera_.fx_px * p.baseline_m;
   std::vector<unsigned char> shadow(static_cast<std::size_t>(width));
   for (int v = 0; v < height; ++v) {
@@ -130,19 +156,36 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
       }
       // blobby dropout by material and viewing angle
       double drop = dropout[surface[u]];
-      if (incidence[u] < p.grazing_cosine) drop += 1.2 * (p.grazing_cosine - incidence[u]) / p.grazing_cosine;
+      double threshold = surface_threshold[surface[u]];
+      if (incidence[u] < p.grazing_cosine) {
+        drop += 1.2 * (p.grazing_cosine - incidence[u]) / p.grazing_cosine;
+        threshold = field_threshold(drop);
+      }
       if (drop > 0) {
         const std::size_t i = static_cast<std::size_t>(u);
         const float f = 0.7f * lerp_row(coarse_row, grid_w, coarse_fy, coarse_x[i], coarse_fx[i]) +
                         0.3f * lerp_row(fine_row, fine_w, fine_fy, fine_x[i], fine_fx[i]);
-        if (f < field_threshold(drop)) continue;
+        if (f < threshold) continue;
       }
-      // noise and disparity quantisation, both growing with z^2
-      const double noisy = depth + p.noise_per_m2 * depth * depth * normals[(r >> 8) & (table_size - 1)];
+      // noise and disparity quantisation, both growing with z^2; part of the noise may be shared by
+      // neighbouring pixels (the coarse field is about normal around 0.5 with sigma 0.13)
+      double unit_noise = normals[(r >> 8) & (table_size - 1)];
+      if (correlated > 0) {
+        const std::size_t i = static_cast<std::size_t>(u);
+        const float f = lerp_row(fine_row, fine_w, fine_fy, fine_x[i], fine_fx[i]);
+        unit_noise = (1.0 - correlated) * unit_noise + correlated * 1.4 * (f - 0.5) / 0.13;
+      }
+      const double noisy = depth + noise_per_m2 * depth * depth * unit_noise;
       const double steps = std::max(1.0, std::round(p.disparity_scale / noisy));
       const double measured = p.disparity_scale / steps;
       if (measured < p.min_range_m || measured > p.max_range_m) continue;
-      depth_mm[u] = static_cast<std::uint16_t>(std::lround(measured * 1000.0));
+      double mm = measured * 1000.0;
+      if (eight_bit) {  // an 8-bit linear capture: codes 1..255 (0 is no reading)
+        const double code = std::round((mm - profile.eight_bit_offset_mm) / profile.eight_bit_step_mm);
+        if (code < 1 || code > 255) continue;
+        mm = profile.eight_bit_offset_mm + code * profile.eight_bit_step_mm;
+      }
+      depth_mm[u] = static_cast<std::uint16_t>(std::lround(mm));
     }
   }
   return out;

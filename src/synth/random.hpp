@@ -14,7 +14,7 @@ std::uint64_t splitmix64(std::uint64_t& state);
 std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t purpose, std::uint64_t index);
 
 /// Purposes for derive_seed.
-enum Stream : std::uint64_t { stream_room = 1, stream_people = 2, stream_sensor = 3, stream_colour = 4 };
+enum Stream : std::uint64_t { stream_room = 1, stream_people = 2, stream_sensor = 3, stream_colour = 4, stream_profile = 5 };
 
 class Rng {
  public:

@@ -80,29 +80,20 @@ Renderer::Renderer(const CameraModel& camera) : camera_(camera) {
     ray_y_[static_cast<std::size_t>(v)] = (v - camera.cy_px) / camera.fy_px;
 }
 
-Vec3 Renderer::direction_to_camera(const CameraPose& pose, const Vec3& q) const {
-  const double c = std::cos(pose.pitch_rad), s = std::sin(pose.pitch_rad);
-  return {q.x, -c * q.y - s * q.z, -s * q.y + c * q.z};
-}
-
-Vec3 Renderer::point_to_camera(const CameraPose& pose, const Vec3& world) const {
-  return direction_to_camera(pose, world - Vec3{0, pose.height_m, 0});
-}
-
-CameraShape Renderer::to_camera(const Scene& scene, const Shape& shape) const {
+CameraShape Renderer::to_camera(const CameraAxes& axes, const Shape& shape) const {
   CameraShape s;
   s.kind = shape.kind;
   Vec3 corner_min, corner_max;
   if (shape.kind == ShapeKind::capsule) {
-    s.a = point_to_camera(scene.camera, shape.a);
-    s.b = point_to_camera(scene.camera, shape.b);
+    s.a = axes.to_camera(shape.a);
+    s.b = axes.to_camera(shape.b);
     s.radius_m = shape.radius_m;
     const double r = shape.radius_m;
     corner_min = {std::min(s.a.x, s.b.x) - r, std::min(s.a.y, s.b.y) - r, std::min(s.a.z, s.b.z) - r};
     corner_max = {std::max(s.a.x, s.b.x) + r, std::max(s.a.y, s.b.y) + r, std::max(s.a.z, s.b.z) + r};
   } else {
-    s.centre = point_to_camera(scene.camera, shape.centre);
-    for (int i = 0; i < 3; ++i) s.axis[i] = direction_to_camera(scene.camera, shape.axis[i]);
+    s.centre = axes.to_camera(shape.centre);
+    for (int i = 0; i < 3; ++i) s.axis[i] = axes.direction_to_camera(shape.axis[i]);
     s.half_m = shape.half_m;
     const Vec3 extent{std::abs(s.axis[0].x) * s.half_m.x + std::abs(s.axis[1].x) * s.half_m.y +
                           std::abs(s.axis[2].x) * s.half_m.z,
@@ -113,6 +104,7 @@ CameraShape Renderer::to_camera(const Scene& scene, const Shape& shape) const {
     corner_min = s.centre - extent;
     corner_max = s.centre + extent;
   }
+  s.min_z_m = corner_min.z;
   if (corner_max.z <= near_m) return s;  // behind the camera
   s.visible = true;
   if (corner_min.z <= near_m) {
@@ -145,48 +137,49 @@ void Renderer::render(const Scene& scene, RenderBuffers& out) const {
   out.surface.create(height, width);
   out.incidence.create(height, width);
   const Room& room = scene.room;
-  const double cam_h = scene.camera.height_m;
-  const double cp = std::cos(scene.camera.pitch_rad), sp = std::sin(scene.camera.pitch_rad);
+  const CameraAxes axes(scene.camera);
+  const Vec3 o = axes.origin;
 
-  // 1. the room: the ray leaves the (convex) room box through the nearest plane ahead of it
+  // 1. the room: the ray leaves the (convex) room box through the nearest plane ahead of it; the ray of
+  // pixel (u, v) has the world direction right * ray_x + down * ray_y + forward (camera z = 1, so the
+  // parameter t of the hit is the camera z)
   for (int v = 0; v < height; ++v) {
-    const double b = ray_y_[static_cast<std::size_t>(v)];
-    const double wy = -b * cp - sp, wz = -b * sp + cp;
+    const Vec3 row = axes.down * ray_y_[static_cast<std::size_t>(v)] + axes.forward;
     float* depth = out.depth_m.ptr<float>(v);
     std::uint16_t* surface = out.surface.ptr<std::uint16_t>(v);
     float* incidence = out.incidence.ptr<float>(v);
-    double t_y = 1e9;
-    int s_y = surface_floor;
-    if (wy < 0) {
-      t_y = -cam_h / wy;
-    } else if (wy > 0) {
-      t_y = (room.ceiling_y - cam_h) / wy;
-      s_y = surface_ceiling;
-    }
-    double t_z = 1e9;
-    int s_z = surface_front;
-    if (wz > 0) {
-      t_z = room.front_z / wz;
-    } else if (wz < 0) {
-      t_z = room.back_z / wz;
-      s_z = surface_back;
-    }
     for (int u = 0; u < width; ++u) {
-      const double wx = ray_x_[static_cast<std::size_t>(u)];
-      double t = t_y;
-      int s = s_y;
-      if (t_z < t) {
-        t = t_z;
-        s = s_z;
+      const double ru = ray_x_[static_cast<std::size_t>(u)];
+      const double wx = row.x + axes.right.x * ru, wy = row.y + axes.right.y * ru, wz = row.z + axes.right.z * ru;
+      double t = 1e9;
+      int s = surface_floor;
+      if (wy < 0) {
+        t = -o.y / wy;
+      } else if (wy > 0) {
+        t = (room.ceiling_y - o.y) / wy;
+        s = surface_ceiling;
+      }
+      if (wz > 0) {
+        const double tz = (room.front_z - o.z) / wz;
+        if (tz < t) {
+          t = tz;
+          s = surface_front;
+        }
+      } else if (wz < 0) {
+        const double tz = (room.back_z - o.z) / wz;
+        if (tz < t) {
+          t = tz;
+          s = surface_back;
+        }
       }
       if (wx < 0) {
-        const double tx = room.left_x / wx;
+        const double tx = (room.left_x - o.x) / wx;
         if (tx < t) {
           t = tx;
           s = surface_left;
         }
       } else if (wx > 0) {
-        const double tx = room.right_x / wx;
+        const double tx = (room.right_x - o.x) / wx;
         if (tx < t) {
           t = tx;
           s = surface_right;
@@ -202,7 +195,7 @@ void Renderer::render(const Scene& scene, RenderBuffers& out) const {
         cosine = std::abs(wz) / norm;
       }
       if (!room.windows.empty() && (s == surface_left || s == surface_right || s == surface_front)) {
-        const double hx = t * wx, hy = cam_h + t * wy, hz = t * wz;
+        const double hx = o.x + t * wx, hy = o.y + t * wy, hz = o.z + t * wz;
         for (const WallWindow& w : room.windows) {
           if (w.wall != s) continue;
           const double along = s == surface_front ? hx : hz;
@@ -215,22 +208,25 @@ void Renderer::render(const Scene& scene, RenderBuffers& out) const {
     }
   }
 
-  // 2. the shapes, z-buffered
+  // 2. the shapes, z-buffered in list order (a shape listed later wins only when strictly nearer); a pixel
+  // already nearer than a shape's bounding box cannot show it, which skips the ray tests of hidden parts
   out.shapes.clear();
   out.shapes.reserve(scene.shapes.size());
   const cv::Rect image(0, 0, width, height);
   for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
-    out.shapes.push_back(to_camera(scene, scene.shapes[i]));
+    out.shapes.push_back(to_camera(axes, scene.shapes[i]));
     const CameraShape& s = out.shapes.back();
     if (!s.visible) continue;
     const cv::Rect area = s.bounds & image;
     const auto id = static_cast<std::uint16_t>(first_shape_surface + i);
+    const float nearest = static_cast<float>(s.min_z_m);
     for (int v = area.y; v < area.y + area.height; ++v) {
       float* depth = out.depth_m.ptr<float>(v);
       std::uint16_t* surface = out.surface.ptr<std::uint16_t>(v);
       float* incidence = out.incidence.ptr<float>(v);
       const double b = ray_y_[static_cast<std::size_t>(v)];
       for (int u = area.x; u < area.x + area.width; ++u) {
+        if (depth[u] < nearest) continue;
         const double t = intersect(s, ray_x_[static_cast<std::size_t>(u)], b);
         if (t > 0 && t < depth[u]) {
           depth[u] = static_cast<float>(t);

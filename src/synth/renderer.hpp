@@ -1,6 +1,6 @@
 #pragma once
-// Renders the ideal (noise-free) depth of a scene through a pinhole camera: the room box by a closed-form
-// ray/plane test per pixel, then every shape with a z-buffer, testing only the pixels inside the shape's
+// Renders the ideal (noise-free) depth of a scene through a pinhole camera at any pose (CameraAxes): the
+// room box by a closed-form ray/plane test per pixel, then every shape with a z-buffer, testing only the pixels inside the shape's
 // projected bounding box (ray/capsule and ray/box intersections). Depth is the camera's z in metres (the
 // distance along the optical axis, as a Kinect reports it). Also knows which surface each pixel shows, the
 // cosine of the viewing angle on room surfaces, and can shade a colour image of the same view.
@@ -23,6 +23,7 @@ struct CameraShape {
   Vec3 axis[3];
   Vec3 half_m;
   cv::Rect bounds;       ///< pixels that may show the shape (unclipped)
+  double min_z_m = 0;    ///< nearest camera z of its bounding box
   bool visible = false;  ///< false when entirely behind the camera
 };
 
@@ -51,9 +52,7 @@ class Renderer {
   cv::Mat3b shade(const Scene& scene, const RenderBuffers& buffers, Rng& rng) const;
 
  private:
-  CameraShape to_camera(const Scene& scene, const Shape& shape) const;
-  Vec3 point_to_camera(const CameraPose& pose, const Vec3& world) const;
-  Vec3 direction_to_camera(const CameraPose& pose, const Vec3& world) const;
+  CameraShape to_camera(const CameraAxes& axes, const Shape& shape) const;
 
   CameraModel camera_;
   std::vector<double> ray_x_;  ///< (u - cx) / fx per column

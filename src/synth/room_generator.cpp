@@ -8,6 +8,12 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
+double wrap_angle(double a) {
+  while (a > pi) a -= 2 * pi;
+  while (a < -pi) a += 2 * pi;
+  return a;
+}
+
 cv::Vec3b grey(Rng& rng, int low, int high) {
   const int v = rng.integer(low, high);
   return {static_cast<unsigned char>(v), static_cast<unsigned char>(v), static_cast<unsigned char>(v)};
@@ -94,11 +100,8 @@ void add_table(Rng& rng, Room& room) {
   }
 }
 
-void add_chair(Rng& rng, Room& room) {
-  const double h = rng.uniform(0.2, 0.25), seat = rng.uniform(0.42, 0.48), back = rng.uniform(0.35, 0.5);
-  Placement p;
-  if (!place(rng, room, h, h, false, p)) return;
-  const cv::Vec3b colour = tint(rng, 30, 160);
+void chair_at(Rng& rng, Room& room, const Placement& p, double h, double seat, double back, cv::Vec3b colour,
+              bool jackets) {
   room.furniture.push_back(make_box(at(p, 0, seat, 0), p.yaw, {h, 0.03, h}, colour));
   room.furniture.push_back(
       make_box(at(p, 0, seat + back / 2, -h + 0.02), p.yaw, {h, back / 2, 0.02}, colour));
@@ -108,6 +111,20 @@ void add_chair(Rng& rng, Room& room) {
           make_box(at(p, i * (h - 0.03), seat / 2, j * (h - 0.03)), p.yaw, {0.02, seat / 2, 0.02}, colour));
     }
   }
+  room.seats.push_back({p.x, p.z, seat + 0.03, p.yaw});
+  if (jackets && rng.chance(0.12)) {  // a jacket hung over the back
+    room.furniture.push_back(make_capsule(at(p, -0.8 * h, seat + back - 0.05, -h), at(p, 0.8 * h, seat + back - 0.05, -h),
+                                          0.06, tint(rng, 20, 120)));
+    room.furniture.push_back(make_box(at(p, 0, seat + back / 2, -h - 0.03), p.yaw, {0.8 * h, back / 2, 0.03},
+                                      tint(rng, 20, 120)));
+  }
+}
+
+void add_chair(Rng& rng, Room& room, bool jackets) {
+  const double h = rng.uniform(0.2, 0.25), seat = rng.uniform(0.42, 0.48), back = rng.uniform(0.35, 0.5);
+  Placement p;
+  if (!place(rng, room, h, h, false, p)) return;
+  chair_at(rng, room, p, h, seat, back, tint(rng, 30, 160), jackets);
 }
 
 void add_shelf(Rng& rng, Room& room) {
@@ -200,23 +217,242 @@ void add_cabinet(Rng& rng, Room& room) {
   }
 }
 
+
+// ---- clutter of real labs and offices (RoomParams::clutter) ----
+
+/// A potted plant: a pot, a stem and a crown of leafy balls; tall ones are as tall as a person.
+void add_plant(Rng& rng, Room& room) {
+  const double pot_r = rng.uniform(0.1, 0.22), pot_h = rng.uniform(0.2, 0.45);
+  Placement p;
+  if (!place(rng, room, pot_r + 0.1, pot_r + 0.1, rng.chance(0.5), p)) return;
+  const double height = rng.chance(0.5) ? rng.uniform(1.2, 1.9) : rng.uniform(0.5, 1.2);
+  room.furniture.push_back(make_capsule(at(p, 0, pot_r * 0.5, 0), at(p, 0, pot_h - pot_r * 0.5, 0), pot_r,
+                                        tint(rng, 40, 180)));
+  const cv::Vec3b leaves = {static_cast<unsigned char>(rng.integer(20, 70)), static_cast<unsigned char>(rng.integer(70, 150)),
+                            static_cast<unsigned char>(rng.integer(30, 80))};
+  room.furniture.push_back(make_capsule(at(p, 0, pot_h, 0), at(p, 0, height * 0.8, 0), 0.015, leaves));
+  const int balls = rng.integer(4, 10);
+  const double spread = rng.uniform(0.15, 0.35);
+  for (int k = 0; k < balls; ++k) {
+    const double y = pot_h + (height - pot_h) * rng.uniform(0.35, 0.95);
+    const double r = rng.uniform(0.06, 0.18) * (0.6 + height / 3.0);
+    const Vec3 centre = at(p, rng.uniform(-spread, spread), y, rng.uniform(-spread, spread));
+    room.furniture.push_back(make_capsule(centre, centre + Vec3{rng.uniform(-0.1, 0.1), rng.uniform(0.0, 0.15), 0}, r,
+                                          leaves, static_cast<float>(rng.uniform(0.25, 0.55))));
+  }
+}
+
+/// A floor lamp: a round foot, a pole and a shade.
+void add_lamp(Rng& rng, Room& room) {
+  Placement p;
+  if (!place(rng, room, 0.18, 0.18, rng.chance(0.6), p)) return;
+  const double height = rng.uniform(1.3, 1.85);
+  const cv::Vec3b colour = tint(rng, 30, 220);
+  room.furniture.push_back(make_capsule(at(p, -0.1, 0.02, 0), at(p, 0.1, 0.02, 0), 0.03, colour));
+  room.furniture.push_back(make_capsule(at(p, 0, 0.03, 0), at(p, 0, height - 0.1, 0), 0.015, colour));
+  const double shade = rng.uniform(0.13, 0.24);
+  room.furniture.push_back(make_capsule(at(p, 0, height - 0.12, 0), at(p, 0, height, 0), shade, tint(rng, 150, 250)));
+}
+
+/// A door in a wall: a frame standing out of the wall, the leaf closed or swung open into the room.
+void add_door(Rng& rng, Room& room) {
+  const int wall = rng.integer(0, 2);
+  const double width = rng.uniform(0.8, 1.0), height = rng.uniform(2.0, 2.15), depth = rng.uniform(0.03, 0.1);
+  Placement p;
+  // the door's own frame: x along the wall, z out of the wall into the room
+  if (wall == 2) {
+    if (room.right_x - room.left_x < width + 0.6) return;
+    p = {rng.uniform(room.left_x + width, room.right_x - width), room.front_z, pi};
+  } else {
+    if (room.front_z < 2.5) return;
+    const double z = rng.uniform(1.0, room.front_z - width - 0.2);
+    p = wall == 0 ? Placement{room.left_x, z, pi / 2} : Placement{room.right_x, z, -pi / 2};
+  }
+  const cv::Vec3b frame = tint(rng, 120, 240), leaf = tint(rng, 60, 220);
+  for (int side = -1; side <= 1; side += 2) {
+    room.furniture.push_back(make_box(at(p, side * (width / 2 + 0.04), height / 2, depth / 2), p.yaw,
+                                      {0.04, height / 2, depth / 2}, frame));
+  }
+  room.furniture.push_back(make_box(at(p, 0, height + 0.04, depth / 2), p.yaw, {width / 2 + 0.08, 0.04, depth / 2}, frame));
+  const double open = rng.chance(0.5) ? rng.uniform(0.3, 1.6) : 0.0;  // radians the leaf is swung open
+  const double hinge_x = -width / 2;
+  const double yaw = p.yaw - open;
+  const Vec3 hinge = at(p, hinge_x, 0, 0.02);
+  const Vec3 along{std::cos(yaw), 0, -std::sin(yaw)};
+  const Vec3 centre = hinge + along * (width / 2) + Vec3{0, height / 2, 0};
+  room.furniture.push_back(make_box(centre, yaw, {width / 2, height / 2 - 0.01, 0.02}, leaf));
+  if (open > 0.2) room.footprints.push_back({centre.x, centre.z, width / 2 + 0.05, 0.1, yaw});
+}
+
+/// Chairs stacked on each other: a column as tall as a child or an adult.
+void add_stacked_chairs(Rng& rng, Room& room) {
+  const double h = rng.uniform(0.2, 0.24), seat = rng.uniform(0.42, 0.46), back = rng.uniform(0.35, 0.45);
+  Placement p;
+  if (!place(rng, room, h + 0.03, h + 0.05, rng.chance(0.6), p)) return;
+  const cv::Vec3b colour = tint(rng, 30, 160);
+  const int count = rng.integer(3, 8);
+  for (int k = 0; k < count; ++k) {
+    const double y = seat + k * 0.075;
+    room.furniture.push_back(make_box(at(p, 0, y, -0.012 * k), p.yaw, {h, 0.02, h}, colour));
+    room.furniture.push_back(make_box(at(p, 0, y + back / 2, -h + 0.02 - 0.012 * k), p.yaw, {h, back / 2, 0.015}, colour));
+  }
+  for (int i = -1; i <= 1; i += 2) {
+    for (int j = -1; j <= 1; j += 2) {
+      room.furniture.push_back(make_box(at(p, i * (h - 0.02), seat / 2, j * (h - 0.02)), p.yaw, {0.015, seat / 2, 0.015}, colour));
+    }
+  }
+}
+
+/// A coat rack: a rail on two feet with coats and bags hanging from it (the most person-like clutter).
+void add_coat_rack(Rng& rng, Room& room) {
+  const double half = rng.uniform(0.35, 0.7), height = rng.uniform(1.6, 1.85);
+  Placement p;
+  if (!place(rng, room, half, 0.25, rng.chance(0.6), p)) return;
+  const cv::Vec3b metal = tint(rng, 30, 200);
+  for (int side = -1; side <= 1; side += 2) {
+    room.furniture.push_back(make_capsule(at(p, side * half, 0.02, -0.2), at(p, side * half, 0.02, 0.2), 0.02, metal));
+    room.furniture.push_back(make_capsule(at(p, side * half, 0.02, 0), at(p, side * half, height, 0), 0.015, metal));
+  }
+  room.furniture.push_back(make_capsule(at(p, -half, height, 0), at(p, half, height, 0), 0.015, metal));
+  const int coats = rng.integer(1, 5);
+  for (int k = 0; k < coats; ++k) {
+    const double x = rng.uniform(-half + 0.12, half - 0.12), length = rng.uniform(0.6, 1.15);
+    const double r = rng.uniform(0.1, 0.17);
+    const cv::Vec3b colour = tint(rng, 15, 150);
+    room.furniture.push_back(make_capsule(at(p, x, height - 0.08 - r, rng.uniform(-0.03, 0.03)),
+                                          at(p, x, height - length, rng.uniform(-0.03, 0.03)), r, colour));
+    if (rng.chance(0.5)) {  // shoulders of the coat
+      room.furniture.push_back(make_capsule(at(p, x - 0.17, height - 0.12, 0), at(p, x + 0.17, height - 0.12, 0), 0.06, colour));
+    }
+  }
+}
+
+/// A tall cupboard or locker against a wall.
+void add_cupboard(Rng& rng, Room& room) {
+  const double hx = rng.uniform(0.3, 0.6), hz = rng.uniform(0.2, 0.32), height = rng.uniform(1.7, 2.2);
+  Placement p;
+  if (!place(rng, room, hx, hz, true, p)) return;
+  const cv::Vec3b colour = tint(rng, 60, 230);
+  room.furniture.push_back(make_box(at(p, 0, height / 2, 0), p.yaw, {hx, height / 2, hz}, colour));
+  if (rng.chance(0.5)) {  // things on top
+    room.furniture.push_back(make_box(at(p, rng.uniform(-hx / 2, hx / 2), height + 0.12, 0), p.yaw + rng.uniform(-0.3, 0.3),
+                                      {rng.uniform(0.1, 0.25), 0.12, rng.uniform(0.1, 0.2)}, tint(rng, 60, 190)));
+  }
+}
+
+/// An office desk with one or two monitors, a computer under it and its chair (often pulled out).
+void add_desk(Rng& rng, Room& room) {
+  const double hx = rng.uniform(0.55, 0.85), hz = rng.uniform(0.35, 0.45), height = rng.uniform(0.7, 0.76);
+  Placement p;
+  if (!place(rng, room, hx, hz + 0.35, rng.chance(0.5), p)) return;
+  const cv::Vec3b colour = tint(rng, 80, 220);
+  room.furniture.push_back(make_box(at(p, 0, height - 0.015, 0.15), p.yaw, {hx, 0.015, hz}, colour));
+  for (int side = -1; side <= 1; side += 2) {
+    room.furniture.push_back(make_box(at(p, side * (hx - 0.02), (height - 0.03) / 2, 0.15), p.yaw, {0.02, (height - 0.03) / 2, hz - 0.02}, colour));
+  }
+  const int monitors = rng.integer(1, 2);
+  for (int k = 0; k < monitors; ++k) {
+    const double w = rng.uniform(0.22, 0.3), mh = rng.uniform(0.15, 0.21);
+    const double x = monitors == 1 ? rng.uniform(-0.2, 0.2) : (k == 0 ? -1 : 1) * (w + 0.02);
+    const double twist = rng.uniform(-0.3, 0.3) + (monitors == 2 ? (k == 0 ? 0.15 : -0.15) : 0.0);
+    room.furniture.push_back(make_box(at(p, x, height + 0.1 + mh, 0.15 + 0.5 * hz), p.yaw + pi + twist, {w, mh, 0.025},
+                                      grey(rng, 10, 50), 0.5f));
+    room.furniture.push_back(make_box(at(p, x, height + 0.06, 0.15 + 0.5 * hz), p.yaw, {0.03, 0.06, 0.03}, grey(rng, 20, 60)));
+  }
+  if (rng.chance(0.6)) {  // the computer under the desk
+    room.furniture.push_back(make_box(at(p, hx - 0.2, 0.22, 0.2), p.yaw, {0.1, 0.22, 0.22}, grey(rng, 10, 60), 0.3f));
+  }
+  // the chair in front of the desk, facing it: its seat is z = -0.35 .. in the desk's frame
+  Placement chair{0, 0, p.yaw + rng.uniform(-0.6, 0.6)};
+  const Vec3 where = at(p, rng.uniform(-0.3, 0.3), 0, -hz - rng.uniform(0.05, 0.35));
+  chair.x = where.x;
+  chair.z = where.z;
+  chair.yaw = wrap_angle(chair.yaw);
+  chair_at(rng, room, chair, 0.23, rng.uniform(0.44, 0.5), rng.uniform(0.4, 0.55), tint(rng, 20, 90), true);
+}
+
+/// A free-standing panel (office partition, whiteboard, screen) or a wall meeting the room at an angle.
+void add_panel(Rng& rng, Room& room) {
+  const bool wall = rng.chance(0.35);
+  const double half = wall ? rng.uniform(0.6, 1.5) : rng.uniform(0.5, 1.0);
+  const double height = wall ? room.ceiling_y : rng.uniform(1.2, 1.9);
+  Placement p;
+  if (!place(rng, room, half, 0.05, false, p)) return;
+  room.furniture.push_back(make_box(at(p, 0, height / 2, 0), p.yaw, {half, height / 2, rng.uniform(0.02, 0.06)},
+                                    tint(rng, 80, 230)));
+}
+
+/// A small thing on the floor: a bin, a bag or a backpack, a pile of paper.
+void add_small_thing(Rng& rng, Room& room) {
+  const double r = rng.uniform(0.1, 0.2);
+  Placement p;
+  if (!place(rng, room, r, r, rng.chance(0.5), p)) return;
+  if (rng.chance(0.5)) {
+    room.furniture.push_back(make_capsule(at(p, 0, r * 0.6, 0), at(p, 0, rng.uniform(0.25, 0.45), 0), r, tint(rng, 20, 200)));
+  } else {
+    room.furniture.push_back(make_box(at(p, 0, r, 0), p.yaw, {r, r, r * 0.6}, tint(rng, 15, 120), 0.2f));
+  }
+}
+
+/// A service robot: a wheeled base, a body, sometimes an arm, a head with a screen.
+void add_service_robot(Rng& rng, Room& room) {
+  const double r = rng.uniform(0.2, 0.3);
+  Placement p;
+  if (!place(rng, room, r, r, false, p)) return;
+  const double height = rng.uniform(1.1, 1.5);
+  const cv::Vec3b colour = tint(rng, 120, 240);
+  room.furniture.push_back(make_capsule(at(p, 0, 0.12, 0), at(p, 0, 0.16, 0), r, grey(rng, 20, 60), 0.2f));
+  room.furniture.push_back(make_box(at(p, 0, height * 0.45, 0), p.yaw, {r * 0.6, height * 0.3, r * 0.5}, colour));
+  room.furniture.push_back(make_capsule(at(p, 0, height * 0.75, 0), at(p, 0, height - 0.12, 0), 0.04, colour));
+  room.furniture.push_back(make_box(at(p, 0, height - 0.08, 0.03), p.yaw, {0.14, 0.1, 0.05}, grey(rng, 10, 40), 0.4f));
+  if (rng.chance(0.5)) {
+    const double side = rng.chance(0.5) ? 1 : -1;
+    room.furniture.push_back(make_capsule(at(p, side * r * 0.6, height * 0.7, 0),
+                                          at(p, side * (r * 0.6 + 0.1), height * 0.45, 0.2), 0.035, colour));
+  }
+}
+
 }  // namespace
 
 Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
   Room room;
-  room.front_z = rng.chance(params.deep_room_share) ? rng.uniform(params.front_max_m, params.deep_front_max_m)
-                                                    : rng.uniform(params.front_min_m, params.front_max_m);
-  room.left_x = -rng.uniform(params.side_min_m, params.side_max_m);
-  room.right_x = rng.uniform(params.side_min_m, params.side_max_m);
+  // the kind of room: an ordinary room, a corridor, an open-plan office or hall
+  const double kind = params.room_kinds ? rng.uniform() : 1.0;
+  const bool corridor = kind < params.corridor_share;
+  const bool open_plan = !corridor && kind < params.corridor_share + params.open_plan_share;
+  if (corridor) {
+    room.front_z = rng.uniform(6.0, params.deep_front_max_m);
+    room.left_x = -rng.uniform(0.8, 1.5);
+    room.right_x = rng.uniform(0.8, 1.5);
+  } else if (open_plan) {
+    room.front_z = rng.uniform(5.5, params.deep_front_max_m);
+    room.left_x = -rng.uniform(2.5, 5.0);
+    room.right_x = rng.uniform(2.5, 5.0);
+  } else {
+    room.front_z = rng.chance(params.deep_room_share) ? rng.uniform(params.front_max_m, params.deep_front_max_m)
+                                                      : rng.uniform(params.front_min_m, params.front_max_m);
+    room.left_x = -rng.uniform(params.side_min_m, params.side_max_m);
+    room.right_x = rng.uniform(params.side_min_m, params.side_max_m);
+  }
   room.back_z = -rng.uniform(0.3, 1.0);
   room.ceiling_y = rng.uniform(2.4, 3.2);
   room.floor_colour = tint(rng, 50, 170);
   room.wall_colour = tint(rng, 160, 240);
   room.ceiling_colour = grey(rng, 200, 250);
-  room.floor_dropout = static_cast<float>(rng.uniform(0.0, 0.2));
-  room.wall_dropout = static_cast<float>(rng.uniform(0.0, 0.05));
+  room.floor_dropout = static_cast<float>(rng.uniform(0.0, params.floor_dropout_max));
+  room.wall_dropout = static_cast<float>(rng.uniform(0.0, params.wall_dropout_max));
+  camera = CameraPose{};
   camera.height_m = rng.uniform(params.camera_height_min_m, params.camera_height_max_m);
   camera.pitch_rad = rng.uniform(params.pitch_min_deg, params.pitch_max_deg) * pi / 180.0;
+  // (each drawn only when asked for, so that --classic draws the same numbers as the generator before)
+  if (params.roll_max_deg > 0) camera.roll_rad = rng.uniform(-params.roll_max_deg, params.roll_max_deg) * pi / 180.0;
+  if (params.yaw_max_deg > 0) {
+    camera.yaw_rad = rng.uniform(-params.yaw_max_deg, params.yaw_max_deg) * pi / 180.0 * (corridor ? 0.3 : 1.0);
+  }
+  if (params.camera_offset_max_m > 0) {
+    const double x_room = std::max(0.0, std::min(-room.left_x, room.right_x) - 0.5);
+    camera.x_m = rng.uniform(-1.0, 1.0) * std::min(params.camera_offset_max_m, x_room);
+  }
 
   const int windows = rng.integer(0, 2);
   for (int k = 0; k < windows; ++k) {
@@ -232,31 +468,97 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
     w.top_m = std::min(room.ceiling_y - 0.2, w.bottom_m + rng.uniform(0.9, 1.5));
     room.windows.push_back(w);
   }
+  // keep the camera's own spot (and its way forward) free of clutter
+  const bool camera_spot = params.clutter || params.moving_share > 0;
+  if (camera_spot) room.footprints.push_back({camera.x_m, 0.4, 0.4, 0.9, 0.0});
 
-  const int pieces = rng.integer(params.furniture_min, params.furniture_max);
+  const double area_factor = open_plan ? 1.6 : corridor ? 0.6 : 1.0;
+  const int pieces = static_cast<int>(std::lround(rng.integer(params.furniture_min, params.furniture_max) * area_factor));
   for (int k = 0; k < pieces; ++k) {
     const double pick = rng.uniform();
     if (pick < 0.18) {
-      add_table(rng, room);
+      if (params.clutter && (open_plan || rng.chance(0.5))) add_desk(rng, room); else add_table(rng, room);
     } else if (pick < 0.40) {
-      add_chair(rng, room);
+      add_chair(rng, room, params.clutter);
     } else if (pick < 0.55) {
-      add_shelf(rng, room);
+      if (params.clutter && rng.chance(0.35)) add_cupboard(rng, room); else add_shelf(rng, room);
     } else if (pick < 0.70) {
-      add_boxes(rng, room);
+      if (params.clutter && rng.chance(0.4)) add_small_thing(rng, room); else add_boxes(rng, room);
     } else if (pick < 0.80) {
-      add_coat_stand(rng, room);
+      if (params.clutter && rng.chance(0.6)) add_coat_rack(rng, room); else add_coat_stand(rng, room);
     } else if (pick < 0.88) {
-      add_robot(rng, room);
+      if (params.clutter && rng.chance(0.5)) add_service_robot(rng, room); else add_robot(rng, room);
     } else {
       add_cabinet(rng, room);
     }
   }
+  if (params.clutter) {
+    // more of what labs and offices hold, person-sized and not
+    const int extra = static_cast<int>(std::lround(rng.integer(params.clutter_min, params.clutter_max) * area_factor));
+    for (int k = 0; k < extra; ++k) {
+      const double pick = rng.uniform();
+      if (pick < 0.22) {
+        add_plant(rng, room);
+      } else if (pick < 0.34) {
+        add_lamp(rng, room);
+      } else if (pick < 0.46) {
+        add_door(rng, room);
+      } else if (pick < 0.54) {
+        add_stacked_chairs(rng, room);
+      } else if (pick < 0.66) {
+        add_coat_rack(rng, room);
+      } else if (pick < 0.76) {
+        add_panel(rng, room);
+      } else if (pick < 0.88) {
+        add_small_thing(rng, room);
+      } else {
+        add_service_robot(rng, room);
+      }
+    }
+  }
+  if (camera_spot) room.footprints.erase(room.footprints.begin());  // the camera's spot: people may walk there
   // materials: dark, glossy or finely structured surfaces lose some readings in patches
   for (Shape& shape : room.furniture) {
-    shape.dropout = std::max(shape.dropout, static_cast<float>(rng.uniform(0.0, 0.3)));
+    shape.dropout = std::max(shape.dropout, static_cast<float>(rng.uniform(0.0, params.furniture_dropout_max)));
   }
   return room;
+}
+
+CameraPath plan_camera_path(Rng& rng, const RoomParams& params, const Room& room, const CameraPose& start) {
+  CameraPath path;
+  path.start = start;
+  if (rng.chance(params.moving_share)) {
+    path.forward_mps = rng.uniform(-0.3, 1.0) * params.camera_speed_max_mps;
+    path.yaw_rate_rad_s = rng.uniform(-1.0, 1.0) * params.camera_turn_max_deg_s * pi / 180.0;
+    path.wobble_rad = params.camera_wobble_deg * pi / 180.0;
+    path.wobble_hz = rng.uniform(1.0, 3.0);
+    path.wobble_phase = rng.uniform(0, 2 * pi);
+  }
+  path.min_z = room.back_z + 0.3;
+  path.max_z = std::max(path.min_z, std::min(start.z_m + 0.6, room.front_z - 2.0));
+  path.min_x = room.left_x + 0.4;
+  path.max_x = std::max(path.min_x, room.right_x - 0.4);
+  return path;
+}
+
+CameraPose CameraPath::at(double t_s) const {
+  CameraPose pose = start;
+  if (forward_mps == 0 && yaw_rate_rad_s == 0) return pose;
+  // the heading turns at a constant rate; the position follows the heading (an arc)
+  pose.yaw_rad = start.yaw_rad + yaw_rate_rad_s * t_s;
+  double x = start.x_m, z = start.z_m;
+  const int steps = std::max(1, static_cast<int>(t_s / 0.05));
+  for (int k = 0; k < steps; ++k) {
+    const double yaw = start.yaw_rad + yaw_rate_rad_s * (k + 0.5) * t_s / steps;
+    x += forward_mps * t_s / steps * std::sin(yaw);
+    z += forward_mps * t_s / steps * std::cos(yaw);
+  }
+  pose.x_m = std::clamp(x, min_x, max_x);
+  pose.z_m = std::clamp(z, min_z, max_z);
+  // a driving robot rocks a little
+  pose.pitch_rad += wobble_rad * std::sin(2 * pi * wobble_hz * t_s + wobble_phase);
+  pose.roll_rad += 0.6 * wobble_rad * std::sin(2 * pi * wobble_hz * 1.3 * t_s + 2 * wobble_phase);
+  return pose;
 }
 
 }  // namespace rdsf::synth

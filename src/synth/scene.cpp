@@ -31,6 +31,17 @@ Shape make_box(const Vec3& centre, double yaw_rad, const Vec3& half_m, cv::Vec3b
   return s;
 }
 
+CameraAxes::CameraAxes(const CameraPose& pose) : origin{pose.x_m, pose.height_m, pose.z_m} {
+  const double cy = std::cos(pose.yaw_rad), sy = std::sin(pose.yaw_rad);
+  const double cp = std::cos(pose.pitch_rad), sp = std::sin(pose.pitch_rad);
+  const double cr = std::cos(pose.roll_rad), sr = std::sin(pose.roll_rad);
+  const Vec3 heading{sy, 0, cy}, right0{cy, 0, -sy}, up{0, 1, 0};
+  forward = heading * cp - up * sp;
+  const Vec3 down0 = up * (-cp) - heading * sp;
+  right = right0 * cr + down0 * sr;
+  down = down0 * cr - right0 * sr;
+}
+
 bool Footprint::contains(double px, double pz, double margin_m) const {
   const double dx = px - x, dz = pz - z;
   const double c = std::cos(yaw_rad), n = std::sin(yaw_rad);

@@ -1,9 +1,11 @@
 #pragma once
-// What the generator renders, in world coordinates (metres): X to the right of the camera, Y up from the
-// floor, Z forward along the floor. The camera stands at (0, height, 0) looking along +Z, tilted down by
-// pitch. A room is an axis-aligned box (floor, ceiling, four walls) with windows (glass: no reading) and
-// furniture; people are sets of capsules. Every solid is a Shape: a capsule (segment + radius; a sphere when
-// both ends coincide) or an oriented box.
+// What the generator renders, in world coordinates (metres): X to the right, Y up from the floor, Z forward
+// along the floor (the room's long axis). The camera stands at (x, height, z), turned by yaw about Y (0
+// looks along +Z, positive turns towards +X: the room's walls then appear at an angle), tilted down by
+// pitch and rolled by roll about its optical axis; a moving camera (a robot driving) has a pose per frame.
+// A room is an axis-aligned box (floor, ceiling, four walls) with windows (glass: no reading) and
+// furniture; people are sets of capsules and boxes. Every solid is a Shape: a capsule (segment + radius; a
+// sphere when both ends coincide) or an oriented box.
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -12,8 +14,24 @@
 namespace rdsf::synth {
 
 struct CameraPose {
+  double x_m = 0;          ///< position of the optical centre on the floor plan
   double height_m = 1.2;   ///< height of the optical centre above the floor
+  double z_m = 0;
+  double yaw_rad = 0;      ///< heading: 0 looks along +Z, positive turns towards +X
   double pitch_rad = 0.0;  ///< downward tilt (positive looks down)
+  double roll_rad = 0.0;   ///< rotation about the optical axis
+};
+
+/// The camera's axes in world coordinates: a camera point (x, y, z) (x right, y down, z forward) is the
+/// world point origin + x right + y down + z forward. With h = (sin yaw, 0, cos yaw) and
+/// r0 = (cos yaw, 0, -sin yaw): forward = cos(pitch) h - sin(pitch) Y, down0 = -cos(pitch) Y - sin(pitch) h,
+/// right = cos(roll) r0 + sin(roll) down0, down = cos(roll) down0 - sin(roll) r0.
+struct CameraAxes {
+  Vec3 origin, right, down, forward;
+  explicit CameraAxes(const CameraPose& pose);
+  /// World point -> camera coordinates.
+  Vec3 to_camera(const Vec3& world) const { return direction_to_camera(world - origin); }
+  Vec3 direction_to_camera(const Vec3& w) const { return {dot(w, right), dot(w, down), dot(w, forward)}; }
 };
 
 enum class ShapeKind { capsule, box };
@@ -62,6 +80,11 @@ enum RoomSurface : int {
   first_shape_surface = 8,  ///< shape i of the scene is surface first_shape_surface + i
 };
 
+/// A chair a person can sit on: the seat's centre on the floor plan, its top height and the way it faces.
+struct Seat {
+  double x = 0, z = 0, height_m = 0.45, yaw_rad = 0;
+};
+
 struct Room {
   double left_x = -3, right_x = 3, front_z = 6, back_z = -0.5, ceiling_y = 2.7;
   cv::Vec3b floor_colour{90, 110, 130}, wall_colour{200, 205, 210}, ceiling_colour{230, 230, 230};
@@ -69,6 +92,7 @@ struct Room {
   std::vector<WallWindow> windows;
   std::vector<Shape> furniture;
   std::vector<Footprint> footprints;
+  std::vector<Seat> seats;  ///< chairs free to sit on (facing into the room)
   /// True when (x, z) is on the floor, at least margin_m from walls and furniture.
   bool walkable(double x, double z, double margin_m) const;
 };

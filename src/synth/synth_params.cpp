@@ -1,6 +1,9 @@
 #include "synth/synth_params.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <exception>
 
 #include "core/error.hpp"
 
@@ -16,7 +19,83 @@ bool parse_int(const std::string& text, int& value) {
   return true;
 }
 
+bool parse_real(const std::string& text, double& value) {
+  if (text.empty() || text.size() > 12) return false;
+  std::size_t used = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return used == text.size() && std::isfinite(value);
+}
+
+std::string number(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+void need_value(const std::string& option, double value, double min, double max, const char* unit) {
+  if (!(value >= min && value <= max)) fail(option + " " + number(value), "must lie in " + number(min) + ".." + number(max) + " " + unit);
+}
+
+void need_share(const std::string& option, double value) {
+  if (!(value >= 0.0 && value <= 1.0)) fail(option + " " + number(value), "must be a share in 0..1");
+}
+
+void need_range(const std::string& option, double low, double high, double min, double max, const char* unit) {
+  if (!(low >= min && high <= max && low <= high)) {
+    char text[200];
+    std::snprintf(text, sizeof text, "%s %g..%g", option.c_str(), low, high);
+    char what[200];
+    std::snprintf(what, sizeof what, "must lie in %g..%g %s with MIN <= MAX", min, max, unit);
+    fail(text, what);
+  }
+}
+
 }  // namespace
+
+void parse_real_range(const std::string& option, const std::string& text, double& low, double& high) {
+  const std::size_t dots = text.find("..");
+  double a = 0, b = 0;
+  const bool ok = dots == std::string::npos
+                      ? parse_real(text, a) && parse_real(text, b)
+                      : parse_real(text.substr(0, dots), a) && parse_real(text.substr(dots + 2), b);
+  if (!ok) fail(option + " " + text, "expected MIN..MAX (two numbers, e.g. 0.5..1.6) or one number");
+  if (a > b) fail(option + " " + text, "MIN is larger than MAX");
+  low = a;
+  high = b;
+}
+
+bool parse_on_off(const std::string& option, const std::string& text) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  fail(option + " " + text, "expected on or off");
+}
+
+void SynthParams::set_classic() {
+  room.camera_height_min_m = 0.7;
+  room.camera_height_max_m = 1.2;
+  room.roll_max_deg = 0;
+  room.yaw_max_deg = 0;
+  room.camera_offset_max_m = 0;
+  room.moving_share = 0;
+  room.clutter = false;
+  room.room_kinds = false;
+  room.floor_dropout_max = 0.2;
+  room.wall_dropout_max = 0.05;
+  sensor.eight_bit_share = 0;
+  sensor.xtion_share = 0;
+  sensor.patch_cell_px = 20;
+  people.body.varied_bodies = false;
+  people.body.outfits = false;
+  people.poses = false;
+  people.group_share = 0;
+  people.sitting_share = 0;
+  people.in_view_share = 0;
+  people.nearest_m = 1.0;
+}
 
 void parse_people_range(const std::string& text, int& people_min, int& people_max) {
   const std::size_t dots = text.find("..");
@@ -53,6 +132,26 @@ void SynthParams::validate() const {
     fail(size, "must be between 64x48 and 1920x1440");
   }
   if (clip_frames < 1) fail("--clip-frames " + std::to_string(clip_frames), "must be at least 1");
+  need_range("--camera-height", room.camera_height_min_m, room.camera_height_max_m, 0.2, 2.5, "m");
+  need_range("--camera-pitch", room.pitch_min_deg, room.pitch_max_deg, -30, 30, "degrees");
+  need_value("--camera-roll", room.roll_max_deg, 0, 20, "degrees");
+  need_value("--camera-yaw", room.yaw_max_deg, 0, 60, "degrees");
+  need_share("--moving-camera", room.moving_share);
+  need_value("--camera-speed", room.camera_speed_max_mps, 0, 1.5, "m/s");
+  need_range("--clutter", room.clutter_min, room.clutter_max, 0, 40, "pieces");
+  need_range("--furniture", room.furniture_min, room.furniture_max, 0, 40, "pieces");
+  need_share("--corridors", room.corridor_share);
+  need_share("--open-plan", room.open_plan_share);
+  if (room.corridor_share + room.open_plan_share > 1.0) {
+    fail("--corridors " + number(room.corridor_share) + " --open-plan " + number(room.open_plan_share),
+         "the two shares add up to more than 1");
+  }
+  need_share("--eight-bit", sensor.eight_bit_share);
+  need_range("--eight-bit-step", sensor.eight_bit_step_min_mm, sensor.eight_bit_step_max_mm, 1, 60, "mm");
+  need_share("--xtion", sensor.xtion_share);
+  need_share("--children", people.body.child_share);
+  need_share("--sitting", people.sitting_share);
+  need_share("--groups", people.group_share);
 }
 
 }  // namespace rdsf::synth

@@ -29,7 +29,16 @@ struct SynthParams {
   CameraModel camera() const { return CameraModel::kinect_v1().scaled_to(width_px, height_px); }
   /// Throws Error (one line naming the option) for impossible values.
   void validate() const;
+  /// Turns off everything issue 13 added (the generator of before: camera 0.7-1.2 m without roll, turn or
+  /// motion, 16-bit Kinect captures only, box rooms with their furniture, adults in plain clothes, basic
+  /// poses, no pairs or sitting), for comparisons.
+  void set_classic();
 };
+
+/// "0.5..1.6" -> (0.5, 1.6); "2" -> (2, 2). Throws Error naming `option` for anything else or MIN > MAX.
+void parse_real_range(const std::string& option, const std::string& text, double& low, double& high);
+/// "on" -> true, "off" -> false. Throws Error naming `option` for anything else.
+bool parse_on_off(const std::string& option, const std::string& text);
 
 /// "1..3" -> (1, 3); "2" -> (2, 2). Throws Error naming --people for anything else or MIN > MAX.
 void parse_people_range(const std::string& text, int& people_min, int& people_max);

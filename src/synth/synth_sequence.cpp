@@ -32,13 +32,18 @@ void SynthSequence::load_clip(int clip) {
   clip_ = Clip{};
   clip_.index = clip;
   Rng room_rng(derive_seed(params_.seed, stream_room, static_cast<std::uint64_t>(clip)));
-  clip_.room = generate_room(room_rng, params_.room, clip_.camera);
+  CameraPose start;
+  clip_.room = generate_room(room_rng, params_.room, start);
+  clip_.camera = plan_camera_path(room_rng, params_.room, clip_.room, start);
+  Rng profile_rng(derive_seed(params_.seed, stream_profile, static_cast<std::uint64_t>(clip)));
+  clip_.profile = sensor_.draw_profile(profile_rng);
   if (!params_.empty) {
     Rng people_rng(derive_seed(params_.seed, stream_people, static_cast<std::uint64_t>(clip)));
     const int count = people_rng.integer(params_.people_min, params_.people_max);
     const int first_track = clip * std::max(1, params_.people_max) + 1;
     clip_.tracks =
-        plan_people(people_rng, clip_.room, count, params_.clip_frames, first_track, params_.people);
+        plan_people(people_rng, clip_.room, count, params_.clip_frames, first_track, params_.people,
+                    clip_.camera.start);
   }
 }
 
@@ -48,7 +53,7 @@ void SynthSequence::build_scene(int index) {
   const int within = index % params_.clip_frames;
   load_clip(clip);
   scene_.room = clip_.room;
-  scene_.camera = clip_.camera;
+  scene_.camera = clip_.camera.at(within * params_.people.frame_interval_s);
   scene_.shapes = clip_.room.furniture;
   shape_owner_.assign(scene_.shapes.size(), -1);
   for (std::size_t t = 0; t < clip_.tracks.size(); ++t) {
@@ -81,7 +86,7 @@ SynthFrame SynthSequence::frame(int index) {
   frame.index = index;
   frame.name = frame_name(index);
   frame.depth_mm = sensor_.measure(
-      scene_, buffers, derive_seed(params_.seed, stream_sensor, static_cast<std::uint64_t>(index)));
+      scene_, buffers, derive_seed(params_.seed, stream_sensor, static_cast<std::uint64_t>(index)), clip_.profile);
   if (params_.rgb) {
     Rng colour_rng(derive_seed(params_.seed, stream_colour, static_cast<std::uint64_t>(index)));
     frame.bgr = renderer_.shade(scene_, buffers, colour_rng);
@@ -93,13 +98,19 @@ SynthFrame SynthSequence::frame(int index) {
   std::vector<long long> count(people, 0);
   std::vector<int> x0(people, 1 << 30), y0(people, 1 << 30), x1(people, -1), y1(people, -1);
   const KinectSensorParams& sp = params_.sensor;
+  // what the capture can hold: the sensor's range, narrowed by an 8-bit capture's 255 steps
+  double near_m = sp.min_range_m, far_m = sp.max_range_m;
+  if (clip_.profile.eight_bit_step_mm > 0) {
+    near_m = std::max(near_m, (clip_.profile.eight_bit_offset_mm + 0.5 * clip_.profile.eight_bit_step_mm) / 1000.0);
+    far_m = std::min(far_m, (clip_.profile.eight_bit_offset_mm + 255.5 * clip_.profile.eight_bit_step_mm) / 1000.0);
+  }
   for (int v = 0; v < buffers.surface.rows; ++v) {
     const std::uint16_t* surface = buffers.surface.ptr<std::uint16_t>(v);
     const float* depth = buffers.depth_m.ptr<float>(v);
     for (int u = 0; u < buffers.surface.cols; ++u) {
       if (surface[u] < first_shape_surface) continue;
       const int owner = shape_owner_[static_cast<std::size_t>(surface[u] - first_shape_surface)];
-      if (owner < 0 || depth[u] < sp.min_range_m || depth[u] > sp.max_range_m || sensor_.in_band(u, v))
+      if (owner < 0 || depth[u] < near_m || depth[u] > far_m || sensor_.in_band(u, v))
         continue;
       const std::size_t p = static_cast<std::size_t>(owner);
       ++count[p];
@@ -110,7 +121,7 @@ SynthFrame SynthSequence::frame(int index) {
     }
   }
   const int within = index % params_.clip_frames;
-  const double cp = std::cos(scene_.camera.pitch_rad), spitch = std::sin(scene_.camera.pitch_rad);
+  const CameraAxes axes(scene_.camera);
   for (std::size_t p = 0; p < people; ++p) {
     if (count[p] == 0) continue;
     std::vector<int> shapes;
@@ -126,8 +137,8 @@ SynthFrame SynthSequence::frame(int index) {
     truth.visible_fraction =
         area > 0 ? std::min(1.0, static_cast<double>(count[p]) / static_cast<double>(area)) : 0.0;
     const PersonPose& pose = clip_.tracks[p].poses[static_cast<std::size_t>(within)];
-    const double torso_y = 0.65 * clip_.tracks[p].body.height_m - scene_.camera.height_m;
-    truth.distance_mm = 1000.0 * (-spitch * torso_y + cp * pose.position.z);
+    const Vec3 torso = pose.position + Vec3{0, torso_height_m(clip_.tracks[p].body, pose), 0};
+    truth.distance_mm = 1000.0 * axes.to_camera(torso).z;
     frame.people.push_back(truth);
   }
   return frame;

@@ -11,6 +11,7 @@
 #include "synth/kinect_sensor.hpp"
 #include "synth/people_planner.hpp"
 #include "synth/renderer.hpp"
+#include "synth/room_generator.hpp"
 #include "synth/synth_params.hpp"
 
 namespace rdsf::synth {
@@ -53,7 +54,8 @@ class SynthSequence {
   struct Clip {
     int index = -1;
     Room room;
-    CameraPose camera;
+    CameraPath camera;
+    SensorProfile profile;
     std::vector<PersonTrack> tracks;
   };
   void load_clip(int clip);

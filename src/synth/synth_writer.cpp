@@ -86,12 +86,15 @@ void SynthWriter::write(const SynthFrame& frame) {
 std::string SynthWriter::describe(const SynthParams& p, const std::string& command_line) {
   std::ostringstream out;
   const KinectSensorParams& s = p.sensor;
+  const RoomParams& r = p.room;
+  const BodyParams& b = p.people.body;
+  const auto on = [](bool value) { return value ? "true" : "false"; };
   std::string command = command_line;
   for (char& c : command) {
     if (c == '"' || c == '\\' || c == '\n') c = '\'';
   }
   out << "# Synthetic Kinect v1 recording made by rdsf-synth (same options and seed give the same bytes)\n"
-      << "generator: rdsf-synth 1\n"
+      << "generator: rdsf-synth 2\n"
       << "command: \"" << command << "\"\n"
       << "seed: " << p.seed << "\n"
       << "frames: " << p.frames << "\n"
@@ -111,6 +114,26 @@ std::string SynthWriter::describe(const SynthParams& p, const std::string& comma
       << "  edge_fatten_probability: " << s.edge_fatten << "\n"
       << "  border_band_px_at_640x480: {left: " << s.band_left_px << ", right: " << s.band_right_px
       << ", top: " << s.band_top_px << ", bottom: " << s.band_bottom_px << "}\n"
+      << "  eight_bit: {share: " << s.eight_bit_share << ", step_mm: [" << s.eight_bit_step_min_mm << ", "
+      << s.eight_bit_step_max_mm << "], offset_m: [" << s.eight_bit_offset_min_m << ", " << s.eight_bit_offset_max_m << "]}\n"
+      << "  xtion: {share: " << s.xtion_share << ", noise_factor: [" << s.xtion_noise_min << ", " << s.xtion_noise_max << "]}\n"
+      << "camera_pose:\n"
+      << "  height_m: [" << r.camera_height_min_m << ", " << r.camera_height_max_m << "]\n"
+      << "  pitch_deg: [" << r.pitch_min_deg << ", " << r.pitch_max_deg << "]\n"
+      << "  roll_max_deg: " << r.roll_max_deg << "\n"
+      << "  yaw_max_deg: " << r.yaw_max_deg << "\n"
+      << "  moving: {share: " << r.moving_share << ", speed_max_mps: " << r.camera_speed_max_mps
+      << ", turn_max_deg_s: " << r.camera_turn_max_deg_s << ", wobble_deg: " << r.camera_wobble_deg << "}\n"
+      << "rooms:\n"
+      << "  kinds: {on: " << on(r.room_kinds) << ", corridors: " << r.corridor_share << ", open_plan: " << r.open_plan_share << "}\n"
+      << "  furniture: [" << r.furniture_min << ", " << r.furniture_max << "]\n"
+      << "  clutter: {on: " << on(r.clutter) << ", pieces: [" << r.clutter_min << ", " << r.clutter_max << "]}\n"
+      << "people_variety:\n"
+      << "  bodies: {varied: " << on(b.varied_bodies) << ", children: " << b.child_share << "}\n"
+      << "  outfits: " << on(b.outfits) << "\n"
+      << "  poses: " << on(p.people.poses) << "\n"
+      << "  sitting: " << p.people.sitting_share << "\n"
+      << "  groups: " << p.people.group_share << "\n"
       << "boxes: \"boxes.csv: frame,person,x,y,w,h,visible_fraction,track (tight box of the visible pixels; "
          "person = track id)\"\n";
   return out.str();
