@@ -43,11 +43,11 @@ scripts/setup.sh >&2
 bin=${RDSF_BUILD_DIR:-build}
 export SOURCE_DATE_EPOCH=1764547200  # 2025-12-01T00:00:00Z: the files' "created" times
 if ((quick)); then
-  frames_train=120 frames_empty=60 rounds=8 folds=2
+  frames_train=120 frames_empty=120 rounds=8 folds=2 group_frames=15
   out=$(mktemp -d)
   trap 'rm -rf "$out"' EXIT
 else
-  frames_train=1500 frames_empty=800 rounds=100 folds=5
+  frames_train=1500 frames_empty=800 rounds=100 folds=5 group_frames=30
 fi
 
 train_once() {  # work folder -> prints the model path
@@ -63,13 +63,14 @@ train_once() {  # work folder -> prints the model path
   rm -rf "$w/models/people"
   "$bin/trainer/rdsf-train" --models-dir "$w/models" --name people --pos "$w/sets/people" \
     --neg "$w/sets/negatives" "$w/sets/people" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
+    --group-frames "$group_frames" \
     --threads 2 >&2
   echo "$w/models/people/v1.yml"
 }
 
-model=$(train_once "$out/a")
+model=$(train_once "$out/a") || exit 1
 if ((quick)); then
-  again=$(train_once "$out/b")
+  again=$(train_once "$out/b") || exit 1
   # The work folder's name is recorded with the sample sets: compare the files with it taken out.
   if ! cmp -s <(sed "s|$out/a|W|g" "$model") <(sed "s|$out/b|W|g" "$again"); then
     echo "train-default-model: two quick runs gave different model files" >&2

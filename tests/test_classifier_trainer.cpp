@@ -117,7 +117,7 @@ TEST_F(TrainerProgram, RecipeWarnsWhenASetHoldsFewerThanAsked) {
   std::ofstream(models + "/recipes/small.yml") << "%YAML:1.0\n---\nrecipe: small\npositives: 100\nnegatives: 50\n"
                                                << "pos_sets: [ \"" << people << "\" ]\nneg_sets: [ \"" << negatives
                                                << "\" ]\nrounds: 4\nseed: 3\n";
-  const test::RunResult r = train("--recipe small --augment off");
+  const test::RunResult r = train("--recipe small --augment off --folds 0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: recipe small asks for 100 positives but the sets hold 60: using all 60"),
             std::string::npos)
@@ -128,7 +128,7 @@ TEST_F(TrainerProgram, RecipeWarnsWhenASetHoldsFewerThanAsked) {
   EXPECT_EQ(model.training().train_negatives + model.training().validation.negatives, 50u);
   EXPECT_EQ(model.training().recipe.rfind("small (", 0), 0u) << model.training().recipe;
   // The same recipe and seed pick the same samples and give the same model.
-  ASSERT_EQ(train("--recipe small --augment off").exit_code, 0);
+  ASSERT_EQ(train("--recipe small --augment off --folds 0").exit_code, 0);
   const BoostedModel again = BoostedModel::load("small", models);
   EXPECT_EQ(again.version(), 2);
   EXPECT_EQ(again.weak_classifiers(), model.weak_classifiers());
@@ -299,10 +299,12 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   const BoostedModel model = BoostedModel::load("levers", models);
   EXPECT_EQ(model.format_version(), 2);
   EXPECT_EQ(model.weak_classifiers().front().kind, WeakClassifier::Kind::Tree);
-  EXPECT_NE(model.training().validation.source.find("held-out groups"), std::string::npos);
-  // Augmented copies are trained on, never validated: validation holds originals only.
-  EXPECT_LE(model.training().validation.positives, 60u);
-  EXPECT_GT(model.training().train_positives + model.training().validation.positives, 60u);
+  // The default 5 folds, one per group here (3 groups of 30 frames): every original validated once, by a
+  // model that never saw its group; augmented copies are trained on, never validated.
+  EXPECT_NE(model.training().validation.source.find("3 folds of whole groups (3 groups"), std::string::npos)
+      << model.training().validation.source;
+  EXPECT_EQ(model.training().validation.positives, 60u);
+  EXPECT_EQ(model.training().train_positives, 120u);
   bool recorded = false;
   for (const auto& [key, value] : model.training().parameters) recorded = recorded || (key == "depth" && value == "2");
   EXPECT_TRUE(recorded);

@@ -364,6 +364,7 @@ TEST(HonestTraining, GroupValidationCalibratesAndSavesFormatTwo) {
   p.depth = 2;
   p.learning_rate = 0.5;
   p.bins.count = 16;
+  p.folds = 0;  // one held-out fraction of the groups
   BoostedModel model = train_boosted_model(rows, labels, p, {}, nullptr, nullptr, info);
   const ValidationFigures& v = model.training().validation;
   EXPECT_NE(v.source.find("held-out groups"), std::string::npos) << v.source;

@@ -52,7 +52,8 @@ po::options_description train_options(TrainOptions& o) {
        "platt (fit P(person) on the validation samples) or none (P = 1 / (1 + exp(-2 H))). Default platt")
       ("folds", optional_into(o.folds),
        "K-fold validation by group (2-20): K models on K-1 folds of whole groups give the validation figures and "
-       "calibration of the final model, trained on all samples (0 = one held-out fraction). Default 0")
+       "calibration of the final model, trained on all samples (0 = one held-out fraction; early stopping and "
+       "separate validation sets use one held-out split). Default 5")
       ("group-frames", po::value(&o.group_frames)->default_value(o.group_frames),
        "validation groups: a recording's frames in blocks of this many (consecutive frames never split); "
        "0 = split by sample (dishonest: near-identical crops on both sides; only for comparison)")

@@ -140,8 +140,10 @@ int run_train(const TrainOptions& o) {
 
   const FeatureSpec spec = train.spec;
   const auto progress = [&spec](const TrainingProgress& p) {
-    char line[256];
-    int n = std::snprintf(line, sizeof line, "round %d/%d  feature %d (%s)  train err %.4f", p.round, p.rounds,
+    char line[256], fold[32] = "";
+    if (p.folds > 0 && p.fold <= p.folds) std::snprintf(fold, sizeof fold, "fold %d/%d  ", p.fold, p.folds);
+    if (p.folds > 0 && p.fold > p.folds) std::snprintf(fold, sizeof fold, "final model  ");
+    int n = std::snprintf(line, sizeof line, "%sround %d/%d  feature %d (%s)  train err %.4f", fold, p.round, p.rounds,
                           p.feature, spec.describe_feature(p.feature).c_str(), p.train_error);
     if (p.validation_error && n > 0 && n < static_cast<int>(sizeof line)) {
       n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), "  val err %.4f  AUC %.4f",

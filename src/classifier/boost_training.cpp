@@ -100,7 +100,6 @@ void validate_training_params(const BoostTrainingParams& p) {
   if (p.depth < 1 || p.depth > 4) throw Error("depth must be 1 (one look-up table) to 4 (" + std::to_string(p.depth) + " given)");
   if (!(p.learning_rate > 0.0 && p.learning_rate <= 1.0)) throw Error("learning rate must be in (0, 1]");
   if (p.folds < 0 || p.folds == 1 || p.folds > 20) throw Error("folds must be 0 (off) or 2-20");
-  if (p.folds > 0 && p.early_stopping > 0) throw Error("early stopping and group folds do not go together (give one)");
   if (p.calibration != "platt" && p.calibration != "none") {
     throw Error("calibration '" + p.calibration + "' is not known (platt or none)");
   }
@@ -127,7 +126,8 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
                                  const cv::Mat1f* validation_rows, const std::vector<int>* validation_labels,
                                  const TrainingRowInfo& info) {
   validate_training_params(params);
-  if (params.folds >= 2 && (validation_labels == nullptr || validation_labels->empty())) {
+  if (params.folds >= 2 && params.early_stopping == 0 && !info.groups.empty() &&
+      (validation_labels == nullptr || validation_labels->empty())) {
     return train_with_group_folds(rows, labels, params, progress, info);
   }
   const Clock::time_point start = Clock::now();
@@ -371,11 +371,9 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
   std::vector<std::size_t> ids = info.groups;
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  const auto folds = static_cast<std::size_t>(params.folds);
-  if (ids.size() < folds) {
-    throw Error("group folds: " + std::to_string(folds) + " folds need at least as many groups (" +
-                std::to_string(ids.size()) + " given)");
-  }
+  // Fewer groups than folds: one fold per group.
+  const auto folds = std::min(static_cast<std::size_t>(params.folds), ids.size());
+  if (folds < 2) throw Error("group folds need at least 2 groups (" + std::to_string(ids.size()) + " given)");
   std::vector<std::size_t> shuffled(ids.size());
   for (std::size_t k = 0; k < ids.size(); ++k) shuffled[k] = k;
   std::mt19937_64 rng(params.seed);
@@ -414,17 +412,16 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
       fold_labels.push_back(labels[static_cast<std::size_t>(train_rows_index[k])]);
     }
     const auto fold_pos = std::count(fold_labels.begin(), fold_labels.end(), 1);
-    const auto held_pos = std::count_if(held.begin(), held.end(), [&](int i) { return labels[static_cast<std::size_t>(i)] == 1; });
-    if (fold_pos == 0 || fold_pos == static_cast<long>(fold_labels.size()) || held_pos == 0 ||
-        held_pos == static_cast<long>(held.size())) {
+    // A held-out fold may hold one class only: the pooled scores need both (checked below).
+    if (fold_pos == 0 || fold_pos == static_cast<long>(fold_labels.size())) {
       throw Error("group fold " + std::to_string(f + 1) + " of " + std::to_string(folds) +
                   " leaves a class empty: give more recordings or clips, or fewer folds");
     }
     const TrainingProgressFn fold_progress = [&](const TrainingProgress& p) {
       if (!progress) return;
       TrainingProgress q = p;
-      q.rounds = p.rounds * static_cast<int>(folds + 1);
-      q.round = p.round + p.rounds * static_cast<int>(f);
+      q.fold = static_cast<int>(f + 1);
+      q.folds = static_cast<int>(folds);
       q.left_s = p.left_s + p.round_s * p.rounds * static_cast<double>(folds - f);
       progress(q);
     };
@@ -448,12 +445,16 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
       pooled_labels.push_back(labels[static_cast<std::size_t>(i)]);
     }
   }
+  const auto pooled_pos = std::count(pooled_labels.begin(), pooled_labels.end(), 1);
+  if (pooled_pos == 0 || pooled_pos == static_cast<long>(pooled_labels.size())) {
+    throw Error("group folds: the held-out samples lack a class");
+  }
   // The final model on every row; its validation figures are the folds' pooled out-of-fold figures.
   const TrainingProgressFn final_progress = [&](const TrainingProgress& p) {
     if (!progress) return;
     TrainingProgress q = p;
-    q.rounds = p.rounds * static_cast<int>(folds + 1);
-    q.round = p.round + p.rounds * static_cast<int>(folds);
+    q.fold = static_cast<int>(folds + 1);
+    q.folds = static_cast<int>(folds);
     progress(q);
   };
   BoostedModel model = train_boosted_model(rows, labels, inner, final_progress, nullptr, nullptr, {});
