@@ -46,6 +46,14 @@ int latest_model_version(const std::string& models_dir, const std::string& name)
   return latest_in_folder(fs::path(models_dir) / name);
 }
 
+std::string shipped_models_dir() {
+#ifdef RDSF_SHIPPED_MODELS_DIR
+  return RDSF_SHIPPED_MODELS_DIR;
+#else
+  return "";
+#endif
+}
+
 std::string resolve_model(const std::string& path_or_name, const std::string& models_dir) {
   std::error_code ec;
   const fs::path given(path_or_name);
@@ -64,8 +72,14 @@ std::string resolve_model(const std::string& path_or_name, const std::string& mo
   }
   static const std::regex plain_name("[A-Za-z0-9_][A-Za-z0-9_.-]*");
   if (std::regex_match(path_or_name, plain_name)) {
-    const fs::path folder = fs::path(models_dir) / path_or_name;
-    const int latest = latest_in_folder(folder);
+    fs::path folder = fs::path(models_dir) / path_or_name;
+    int latest = latest_in_folder(folder);
+    // The models shipped with the workbench (models/people: the default model) wherever the program runs.
+    const fs::path shipped = fs::path(shipped_models_dir()) / path_or_name;
+    if (latest == 0 && !shipped_models_dir().empty() && latest_in_folder(shipped) > 0) {
+      folder = shipped;
+      latest = latest_in_folder(folder);
+    }
     if (latest == 0) {
       fail(path_or_name, "no such model file, and no model versions under " + folder.string() + "/");
     }
