@@ -13,6 +13,8 @@ struct DetectOptions {
   std::string source;
   std::vector<std::string> models;  ///< files or names; the first drives CSV, pictures and tracking output
   std::string models_dir = "models";
+  /// Without --model: report candidates only instead of running the default model (models/people).
+  bool candidates_only = false;
   std::string out_csv;     ///< empty: no CSV
   std::string save_dir;    ///< empty: no pictures
   bool show = false;

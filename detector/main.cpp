@@ -2,6 +2,7 @@
 // and evaluates models against ground truth.
 #include "cli/cli.hpp"
 #include "detector/detect_run.hpp"
+#include "classifier/model_registry.hpp"
 #include "evaluation/threshold_sweep.hpp"
 
 int main(int argc, char** argv) {
@@ -15,7 +16,10 @@ int main(int argc, char** argv) {
         ("source", po::value(&o.source)->required(),
          "frames: a folder of NAME.depth.png, a list file, one PNG, an .oni file, 'openni' or a device URI")
         ("model", po::value(&o.models)->composing(),
-         "model file, NAME (newest version) or NAME/vN; repeat to compare models in the evaluation")
+         "model file, NAME (newest version) or NAME/vN; repeat to compare models in the evaluation. Default: the "
+         "shipped default model 'people' (synthetic data only; see README), unless --candidates-only")
+        ("candidates-only", po::bool_switch(&o.candidates_only),
+         "without --model: report every candidate unscored instead of running the default model")
         ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
         ("threshold", po::value(&o.pipeline.probability_threshold)->default_value(o.pipeline.probability_threshold),
          "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
@@ -51,6 +55,11 @@ int main(int argc, char** argv) {
     for (double p : o.thresholds) {
       if (!(p > 0.0 && p < 1.0)) throw rdsf::cli::UsageError("--thresholds are probabilities inside (0, 1), got " + std::to_string(p));
     }
+    if (o.candidates_only && !o.models.empty()) {
+      throw rdsf::cli::UsageError("--candidates-only and --model exclude each other");
+    }
+    // No model named: the default model, except for --truth without a model (candidate coverage only).
+    if (o.models.empty() && !o.candidates_only && o.truth_csv.empty()) o.models.push_back(rdsf::kDefaultModelName);
     if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
       throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
     }

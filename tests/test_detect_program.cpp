@@ -14,7 +14,8 @@ using namespace rdsf;
 
 namespace {
 
-std::string detect() { return test::quote(test::program("rdsf-detect")); }
+// Every run here is model-free: the candidates as the core finds them, not the default model's people.
+std::string detect() { return test::quote(test::program("rdsf-detect")) + " --candidates-only"; }
 
 int count_lines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
@@ -60,6 +61,23 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   ASSERT_FALSE(picture.empty());
   EXPECT_EQ(picture.size(), cv::Size(640, 480));
   EXPECT_FALSE(std::filesystem::exists(dir / "out.csv.partial"));
+}
+
+// No model named: the shipped default model scores the candidates and people are tracked.
+TEST(DetectProgram, WithoutAModelTheDefaultModelRuns) {
+  test::TempDir dir;
+  write_scene(dir);
+  const std::string program = test::quote(test::program("rdsf-detect"));
+  const test::RunResult r = test::run(program + " --source " + test::quote(dir.path().string()) + " --out " +
+                                      test::quote(dir / "out.csv") + " --models-dir " + test::quote(dir / "none"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("model people v1"), std::string::npos) << r.err;
+  const std::string csv = read_file(dir / "out.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')).find("frame,candidate,x,y,w,h,depth_mm,score,"), 0u) << csv;
+  EXPECT_EQ(count_lines(csv), 1 + 3);
+  const test::RunResult both = test::run(program + " --source x --out y.csv --candidates-only --model people");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("exclude each other"), std::string::npos) << both.err;
 }
 
 TEST(DetectProgram, BoxOptionAndThesisPreset) {

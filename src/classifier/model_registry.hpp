@@ -23,6 +23,9 @@ int latest_model_version(const std::string& models_dir, const std::string& name)
 /// (shipped_models_dir(): the source tree's models/, holding the default model people/v1.yml).
 std::string resolve_model(const std::string& path_or_name, const std::string& models_dir = "models");
 
+/// The name of the default model shipped in models/ (trained by scripts/train-default-model.sh).
+inline constexpr const char* kDefaultModelName = "people";
+
 /// The folder of the shipped models (compiled in; empty when the build has none).
 std::string shipped_models_dir();
 
