@@ -18,8 +18,8 @@ cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed,
     if (processed.person[i] != 0) continue;
     const cv::Rect& box = reported_box(candidates[i], kind);
     cv::rectangle(picture, box, cv::Scalar(170, 170, 170), 1, cv::LINE_AA);
-    if (i < processed.scores.size()) {
-      std::snprintf(text, sizeof text, "%.1f", processed.scores[i]);
+    if (i < processed.probabilities.size()) {
+      std::snprintf(text, sizeof text, "%.2f", processed.probabilities[i]);
       cv::putText(picture, text, box.tl() + cv::Point(3, 14), cv::FONT_HERSHEY_SIMPLEX, 0.4,
                   cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
     }
@@ -31,8 +31,9 @@ cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed,
     const cv::Scalar colour = person != nullptr ? person->colour : cv::Scalar(0, 255, 0);
     const cv::Rect& box = reported_box(candidates[i], kind);
     cv::rectangle(picture, box, colour, 3, cv::LINE_AA);
-    std::snprintf(text, sizeof text, "person %d  %.2f m walked  H=%.1f", id,
-                  person != nullptr ? person->distance_cm / 100.0 : 0.0, processed.scores[i]);
+    std::snprintf(text, sizeof text, "person %d  %.2f m walked  P=%.2f", id,
+                  person != nullptr ? person->distance_cm / 100.0 : 0.0,
+                  i < processed.probabilities.size() ? processed.probabilities[i] : 0.0);
     const cv::Point at(box.x, std::max(14, box.y - 6));
     int baseline = 0;
     const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.5, 1, &baseline);
