@@ -74,10 +74,9 @@ ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size
 // Features are fetched in chunks: little memory beyond the result, and progress as they come.
 constexpr std::size_t kChunk = 2048;
 
-using RowOrigin = SampleOrigin;
 
 void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, const RdsfExtractor& extractor,
-                 int threads, ChosenSamples& out, int& row, cli::Progress& progress, std::vector<RowOrigin>& origins,
+                 int threads, ChosenSamples& out, int& row, cli::Progress& progress, std::vector<SampleOrigin>& origins,
                  std::vector<std::pair<std::size_t, std::size_t>>& sources) {
   for (std::size_t s = 0; s < pick.sets.size(); ++s) {
     std::vector<std::size_t> indices;
@@ -146,7 +145,7 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   choice.augmentation.validate();
   int row = 0;
   cli::Progress progress(log, "samples", out.rows.rows);
-  std::vector<RowOrigin> origins;
+  std::vector<SampleOrigin> origins;
   std::vector<std::pair<std::size_t, std::size_t>> pos_sources, neg_sources;
   append_rows(pos, 1, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, pos_sources);
   append_rows(neg, 0, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, neg_sources);
@@ -156,7 +155,7 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
     // Variants of every positive with a crop, after the originals, with their original's origin (group).
     std::vector<float> values(static_cast<std::size_t>(columns));
     cv::Mat1f extra(0, columns);
-    std::vector<RowOrigin> extra_origins;
+    std::vector<SampleOrigin> extra_origins;
     for (std::size_t k = 0; k < pos_sources.size(); ++k) {
       const SampleSet& set = pos.sets[pos_sources[k].first];
       const SampleRecord& record = set.records()[pos_sources[k].second];

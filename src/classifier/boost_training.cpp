@@ -4,7 +4,6 @@
 #include <map>
 #include <chrono>
 #include <cstdio>
-#include <random>
 
 #include "classifier/binned_matrix.hpp"
 #include "classifier/features_read.hpp"
@@ -374,12 +373,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
   // Fewer groups than folds: one fold per group.
   const auto folds = std::min(static_cast<std::size_t>(params.folds), ids.size());
   if (folds < 2) throw Error("group folds need at least 2 groups (" + std::to_string(ids.size()) + " given)");
-  std::vector<std::size_t> shuffled(ids.size());
-  for (std::size_t k = 0; k < ids.size(); ++k) shuffled[k] = k;
-  std::mt19937_64 rng(params.seed);
-  for (std::size_t k = 0; k + 1 < shuffled.size(); ++k) {
-    std::swap(shuffled[k], shuffled[k + static_cast<std::size_t>(rng() % (shuffled.size() - k))]);
-  }
+  const std::vector<std::size_t> shuffled = seeded_permutation(ids.size(), params.seed);
   std::vector<std::size_t> fold_of_group(ids.size());
   for (std::size_t k = 0; k < shuffled.size(); ++k) fold_of_group[shuffled[k]] = k % folds;
   auto fold_of = [&](std::size_t row) {

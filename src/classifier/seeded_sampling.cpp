@@ -32,6 +32,14 @@ std::vector<std::size_t> seeded_subset(std::size_t n, std::size_t k, std::uint64
   return items;
 }
 
+std::vector<std::size_t> seeded_permutation(std::size_t n, std::uint64_t seed) {
+  std::vector<std::size_t> items(n);
+  std::iota(items.begin(), items.end(), std::size_t{0});
+  std::mt19937_64 rng(seed);
+  shuffle_prefix(items, n, rng);
+  return items;
+}
+
 HoldOutSplit stratified_split(const std::vector<int>& labels, double fraction, std::uint64_t seed) {
   if (!(fraction >= 0.0 && fraction < 1.0)) {
     throw Error("validation fraction " + std::to_string(fraction) + " is outside [0, 1)");
@@ -77,10 +85,7 @@ HoldOutSplit group_split(const std::vector<int>& labels, const std::vector<std::
   }
   const double want_pos = std::round(fraction * static_cast<double>(total_pos));
   const double want_neg = std::round(fraction * static_cast<double>(total_neg));
-  std::vector<std::size_t> order(ids.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::mt19937_64 rng(seed);
-  shuffle_prefix(order, order.size(), rng);
+  const std::vector<std::size_t> order = seeded_permutation(ids.size(), seed);
   std::vector<bool> held(ids.size(), false);
   double got_pos = 0, got_neg = 0;
   for (std::size_t g : order) {

@@ -11,6 +11,9 @@ namespace rdsf {
 /// `k` distinct indices of [0, n), ascending; all of them when k >= n.
 std::vector<std::size_t> seeded_subset(std::size_t n, std::size_t k, std::uint64_t seed);
 
+/// A seeded random order of [0, n) (Fisher-Yates, the same on every standard library).
+std::vector<std::size_t> seeded_permutation(std::size_t n, std::uint64_t seed);
+
 struct HoldOutSplit {
   std::vector<std::size_t> train;       ///< ascending
   std::vector<std::size_t> validation;  ///< ascending
