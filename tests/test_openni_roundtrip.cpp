@@ -140,7 +140,7 @@ TEST(OpenNIRoundTrip, TwoSourcesOnOneRecordingReadIndependently) {
 
 TEST(OpenNIRoundTrip, ReadersInParallelThreadsGetEveryFrame) {
   // OpenNI2 wakes every waiting thread on every new frame, which can make its player send a frame more
-  // than asked for; the source notices by the frame numbers and replays (README.md, "What was wrong").
+  // than asked for; the source notices by the frame numbers and replays (docs/frames-and-openni.md, "What was wrong").
   test::TempDir dir;
   fs::create_directory(dir / "png");
   write_sequence(dir / "png", 8, true);

@@ -25,7 +25,7 @@ struct DetectorParams {
   BoxKind reported_box = BoxKind::fitted;
 };
 
-/// `params` with every departure from the thesis turned off (README "Departures from the thesis"): no
+/// `params` with every departure from the thesis turned off (docs/detector-core.md, "Departures from the thesis"): no
 /// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no
 /// splitting. Everything else (the thesis's own parameters) is kept.
 DetectorParams thesis_params(DetectorParams params = {});

@@ -140,7 +140,7 @@ class RecordingAddresses {
 // True when the stream reports the cropping property. OpenNI2's recorder stores it only when the recorded
 // stream offers it, and OpenNI2's file player (OniFile, PlayerStream) silently drops every frame of a
 // stream whose recording lacks it: waits then time out although the frame count is right. Recordings of
-// the Dummy device, among others, are made that way (README.md, "What was wrong").
+// the Dummy device, among others, are made that way (docs/frames-and-openni.md, "What was wrong").
 bool reports_cropping(const openni::VideoStream& stream) {
   OniCropping cropping{};
   return stream.getProperty(openni::STREAM_PROPERTY_CROPPING, &cropping) == openni::STATUS_OK;
@@ -352,7 +352,7 @@ OpenNISource::OpenNISource(const std::string& spec, const CameraModel& camera, i
     if (!reports_cropping(s.depth)) {
       fail(spec, "recording lacks the depth stream's cropping property, so OpenNI2's file player delivers "
                  "none of its frames (recorded from a driver that does not report cropping, e.g. the Dummy "
-                 "device; see README.md, OpenNI2 recordings)");
+                 "device; see docs/frames-and-openni.md)");
     }
     if (s.has_colour) {
       s.colour_total = playback.getNumberOfFrames(s.colour);

@@ -7,7 +7,7 @@
 // Recordings: every depth frame once, in order; index 0, 1, 2...; timestamp_us as recorded (OpenNI2's
 // recorder starts each stream's clock at 0); colour is the recorded colour frame nearest in time. A
 // recording whose depth stream lacks the cropping property (e.g. from OpenNI2's Dummy device) is refused
-// with a one-line error: OpenNI2's file player would deliver none of its frames (README.md, "What was wrong").
+// with a one-line error: OpenNI2's file player would deliver none of its frames (docs/frames-and-openni.md, "What was wrong").
 // Recorded frame numbers are checked, so a frame the player skips (damaged record) is an Error. Several
 // sources may be open on one file at once, each playing independently.
 // Live devices: the newest depth frame and the newest colour frame at each call.

@@ -16,7 +16,7 @@
 //    spatially correlated (blocks of a few pixels move together), and captures stored as 8 bits with a
 //    linear scale, as the real frames of ../shared/realdata were: depth_mm = offset + step * v, v in 1..255,
 //    with steps of 12-28 mm (readings outside the 255 steps are lost), on top of the disparity steps.
-// Defaults reproduce the statistics measured on ../shared/realdata (see README.md, "Synthetic Kinect recordings").
+// Defaults reproduce the statistics measured on ../shared/realdata (see docs/rdsf-synth.md).
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
