@@ -13,12 +13,12 @@
 
 #include <random>
 
-#include "candidates/candidate_finder.hpp"
-#include "classifier/boosted_model.hpp"
-#include "pipeline/model_scorer.hpp"
-#include "detector/detector_core.hpp"
-#include "frame/frame_source.hpp"
-#include "segmentation/depth_layers.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/segmentation/depth_layers.hpp"
 
 namespace {
 

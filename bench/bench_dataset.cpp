@@ -18,10 +18,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "dataset/negative_miner.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "frame/frame_source.hpp"
+#include "rdsf/dataset/negative_miner.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/frame/frame_source.hpp"
 
 namespace fs = std::filesystem;
 

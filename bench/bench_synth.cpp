@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
-#include "synth/synth_sequence.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
 

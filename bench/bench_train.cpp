@@ -29,13 +29,13 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "classifier/binned_matrix.hpp"
-#include "classifier/boost_training.hpp"
-#include "classifier/opencv_boost.hpp"
-#include "classifier/real_adaboost.hpp"
-#include "classifier/roc_metrics.hpp"
-#include "classifier/seeded_sampling.hpp"
-#include "features/rdsf_extractor.hpp"
+#include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/classifier/opencv_boost.hpp"
+#include "rdsf/classifier/real_adaboost.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 #include "report/training_crops.hpp"
 
 namespace {

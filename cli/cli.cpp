@@ -7,7 +7,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf::cli {
 

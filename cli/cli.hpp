@@ -7,9 +7,9 @@
 
 #include <boost/program_options.hpp>
 
-#include "detector/detector_core.hpp"
-#include "tracking/tracker.hpp"
-#include "frame/camera_model.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/tracking/tracker.hpp"
+#include "rdsf/frame/camera_model.hpp"
 
 namespace rdsf::cli {
 

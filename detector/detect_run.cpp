@@ -10,16 +10,16 @@
 #include <opencv2/highgui.hpp>
 
 #include "cli/progress.hpp"
-#include "core/error.hpp"
-#include "detector/detection_csv.hpp"
-#include "detector/overlay.hpp"
-#include "evaluation/ground_truth.hpp"
-#include "evaluation/threshold_sweep.hpp"
-#include "candidates/candidate_finder.hpp"
-#include "frame/depth_png.hpp"
-#include "frame/frame_source.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/detector/detection_csv.hpp"
+#include "rdsf/detector/overlay.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/evaluation/threshold_sweep.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/frame/depth_png.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "gui/display.hpp"
-#include "pipeline/people_overlay.hpp"
+#include "rdsf/pipeline/people_overlay.hpp"
 
 namespace rdsf {
 namespace {

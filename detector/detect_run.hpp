@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "frame/camera_model.hpp"
-#include "pipeline/people_pipeline.hpp"
+#include "rdsf/frame/camera_model.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 
 namespace rdsf {
 

@@ -2,8 +2,8 @@
 // and evaluates models against ground truth.
 #include "cli/cli.hpp"
 #include "detector/detect_run.hpp"
-#include "classifier/model_registry.hpp"
-#include "evaluation/threshold_sweep.hpp"
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/evaluation/threshold_sweep.hpp"
 
 int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-detect", [&] {

@@ -18,17 +18,17 @@
 
 #include <filesystem>
 
-#include "classifier/model_file.hpp"
-#include "classifier/model_registry.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_check.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "core/error.hpp"
-#include "dataset/sample_set_manifest.hpp"
-#include "dataset/sample_tsv.hpp"
-#include "dataset/thesis_text.hpp"
-#include "evaluation/ground_truth.hpp"
-#include "labeling/answer_journal.hpp"
+#include "rdsf/classifier/model_file.hpp"
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_check.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set_manifest.hpp"
+#include "rdsf/dataset/sample_tsv.hpp"
+#include "rdsf/dataset/thesis_text.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
 
 namespace rdsf::fuzz {
 

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf::gui {
 

@@ -11,7 +11,7 @@
 
 #include <opencv2/highgui.hpp>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 #include "gui/display.hpp"
 #include "label_keys.hpp"
 #include "label_screen.hpp"

@@ -2,7 +2,7 @@
 // rdsf-label's work: a window (or an --answers file) in front of a LabelingSession.
 #include <string>
 
-#include "labeling/labeling_session.hpp"
+#include "rdsf/labeling/labeling_session.hpp"
 
 namespace rdsf {
 

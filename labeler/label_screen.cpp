@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "detector/overlay.hpp"
+#include "rdsf/detector/overlay.hpp"
 #include "label_keys.hpp"
 
 namespace rdsf {

@@ -6,7 +6,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "labeling/labeling_session.hpp"
+#include "rdsf/labeling/labeling_session.hpp"
 
 namespace rdsf {
 

@@ -5,15 +5,15 @@
 #include <iostream>
 #include <optional>
 
-#include "classifier/boosted_model.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
 #include "cli/cli.hpp"
 #include "cli/progress.hpp"
-#include "core/error.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_merge.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "features/feature_spec_record.hpp"
-#include "pipeline/model_scorer.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_merge.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
+#include "rdsf/pipeline/model_scorer.hpp"
 
 namespace rdsf {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "dataset/negative_miner.hpp"
+#include "rdsf/dataset/negative_miner.hpp"
 
 namespace rdsf {
 

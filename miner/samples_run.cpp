@@ -4,11 +4,11 @@
 #include <map>
 
 #include "cli/cli.hpp"
-#include "core/error.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_check.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "dataset/thesis_text.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_check.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/dataset/thesis_text.hpp"
 
 namespace rdsf {
 

@@ -10,9 +10,9 @@
 #include <OpenNI.h>
 
 #include "cli/progress.hpp"
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
-#include "frame/openni_source.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/openni_source.hpp"
 #include "recorder/stop_request.hpp"
 
 namespace rdsf::recorder {

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "cli/cli.hpp"
-#include "synth/synth_params.hpp"
+#include "rdsf/synth/synth_params.hpp"
 #include "synth/synth_run.hpp"
 
 int main(int argc, char** argv) {

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "cli/cli.hpp"
-#include "core/error.hpp"
-#include "detector/overlay.hpp"
-#include "evaluation/ground_truth.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/detector/overlay.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 namespace {
 

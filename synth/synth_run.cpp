@@ -4,11 +4,11 @@
 #include <cmath>
 #include <iostream>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 #include "cli/progress.hpp"
-#include "synth/synth_sequence.hpp"
-#include "synth/synth_writer.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
+#include "rdsf/synth/synth_writer.hpp"
 
 namespace rdsf {
 

@@ -2,7 +2,7 @@
 // rdsf-synth's work: check the options and the output folder, render every frame, write the set.
 #include <string>
 
-#include "synth/synth_params.hpp"
+#include "rdsf/synth/synth_params.hpp"
 
 namespace rdsf {
 

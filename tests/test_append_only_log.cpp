@@ -2,8 +2,8 @@
 
 #include <fstream>
 
-#include "core/append_only_log.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/append_only_log.hpp"
+#include "rdsf/core/error.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

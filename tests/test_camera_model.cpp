@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "frame/camera_model.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/camera_model.hpp"
 
 using rdsf::CameraModel;
 

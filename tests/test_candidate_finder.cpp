@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "candidates/candidate_finder.hpp"
-#include "candidates/column_heights.hpp"
-#include "detector/detector_core.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/candidates/column_heights.hpp"
+#include "rdsf/detector/detector_core.hpp"
 #include "support/depth_scenes.hpp"
 
 using namespace rdsf;

@@ -3,8 +3,8 @@
 // the thesis preset.
 #include <gtest/gtest.h>
 
-#include "candidates/candidate_finder.hpp"
-#include "detector/detector_core.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/detector/detector_core.hpp"
 #include "support/depth_scenes.hpp"
 
 using namespace rdsf;

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/stable_hash.hpp"
-#include "detector/detector_core.hpp"
-#include "frame/frame_source.hpp"
+#include "rdsf/core/stable_hash.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

@@ -5,15 +5,15 @@
 #include <algorithm>
 #include <set>
 
-#include "classifier/binned_matrix.hpp"
-#include "classifier/boost_training.hpp"
-#include "classifier/model_file.hpp"
-#include "classifier/opencv_boost.hpp"
-#include "classifier/real_adaboost.hpp"
-#include "classifier/roc_metrics.hpp"
-#include "classifier/seeded_sampling.hpp"
+#include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/classifier/model_file.hpp"
+#include "rdsf/classifier/opencv_boost.hpp"
+#include "rdsf/classifier/real_adaboost.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
 #include "classifier_support/toy_data.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <cstdio>
 
-#include "classifier/boost_training.hpp"
-#include "classifier/roc_metrics.hpp"
-#include "detector/detector_core.hpp"
-#include "synth/synth_sequence.hpp"
+#include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 namespace rdsf {
 namespace {

@@ -11,10 +11,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "classifier/boosted_model.hpp"
-#include "classifier/roc_metrics.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_writer.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
 #include "support/test_support.hpp"
 
 namespace rdsf {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "segmentation/depth_candidates.hpp"
+#include "rdsf/segmentation/depth_candidates.hpp"
 
 using namespace rdsf;
 

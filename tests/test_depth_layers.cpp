@@ -4,9 +4,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "frame/frame_source.hpp"
-#include "segmentation/depth_candidates.hpp"
-#include "segmentation/depth_layers.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/segmentation/depth_candidates.hpp"
+#include "rdsf/segmentation/depth_layers.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "frame/depth_png.hpp"
+#include "rdsf/frame/depth_png.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
 

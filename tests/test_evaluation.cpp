@@ -2,11 +2,11 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/error.hpp"
-#include "evaluation/clear_mot.hpp"
-#include "evaluation/curve_plot.hpp"
-#include "evaluation/detection_metrics.hpp"
-#include "evaluation/ground_truth.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/evaluation/clear_mot.hpp"
+#include "rdsf/evaluation/curve_plot.hpp"
+#include "rdsf/evaluation/detection_metrics.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
 
 using namespace rdsf;
 

@@ -4,10 +4,10 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/error.hpp"
-#include "frame/depth_png.hpp"
-#include "frame/frame_source.hpp"
-#include "frame/png_folder_source.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/depth_png.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

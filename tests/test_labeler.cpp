@@ -11,10 +11,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "candidates/candidate_finder.hpp"
-#include "dataset/sample_set.hpp"
-#include "evaluation/ground_truth.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/depth_png.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
 

@@ -14,7 +14,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

@@ -10,13 +10,13 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "classifier/boosted_model.hpp"
-#include "core/error.hpp"
-#include "dataset/negative_miner.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "detector/detector_core.hpp"
-#include "frame/frame_source.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/negative_miner.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "classifier/boost_training.hpp"
-#include "classifier/boosted_model.hpp"
-#include "classifier/model_file.hpp"
-#include "classifier/model_registry.hpp"
+#include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_file.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "classifier_support/toy_data.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 #include "support/test_support.hpp"
 
 namespace rdsf {

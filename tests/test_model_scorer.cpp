@@ -7,13 +7,13 @@
 #include <random>
 #include <sstream>
 
-#include "classifier/features_read.hpp"
-#include "core/error.hpp"
+#include "rdsf/classifier/features_read.hpp"
+#include "rdsf/core/error.hpp"
 #include "support/test_support.hpp"
-#include "dataset/sample_set_manifest.hpp"
-#include "features/rdsf_extractor.hpp"
-#include "pipeline/model_scorer.hpp"
-#include "pipeline/people_pipeline.hpp"
+#include "rdsf/dataset/sample_set_manifest.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
+#include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 
 using namespace rdsf;
 

@@ -11,8 +11,8 @@
 #include <iterator>
 #include <utility>
 
-#include "frame/frame_source.hpp"
-#include "frame/openni_source.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/frame/openni_source.hpp"
 #include "test_openni_fixture.hpp"
 
 using namespace rdsf;

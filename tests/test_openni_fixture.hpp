@@ -9,8 +9,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/error.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/depth_png.hpp"
 #include "support/test_support.hpp"
 
 namespace rdsf::test::openni {

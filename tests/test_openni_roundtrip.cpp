@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "frame/frame_source.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "test_openni_fixture.hpp"
 
 using namespace rdsf;

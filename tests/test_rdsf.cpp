@@ -2,8 +2,8 @@
 
 #include <random>
 
-#include "core/error.hpp"
-#include "features/rdsf_extractor.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 
 using namespace rdsf;
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 #include "support/test_support.hpp"
-#include "features/feature_subset.hpp"
-#include "features/rdsf_extractor.hpp"
+#include "rdsf/features/feature_subset.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 
 using namespace rdsf;
 

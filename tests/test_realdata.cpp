@@ -6,9 +6,9 @@
 #include <map>
 #include <sstream>
 
-#include "candidates/candidate_finder.hpp"
-#include "detector/detector_core.hpp"
-#include "frame/frame_source.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

@@ -11,10 +11,10 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/error.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "dataset/sample_tsv.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/dataset/sample_tsv.hpp"
 #include "support/test_support.hpp"
 
 namespace fs = std::filesystem;

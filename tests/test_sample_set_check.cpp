@@ -9,10 +9,10 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/error.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_check.hpp"
-#include "dataset/sample_set_writer.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_check.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

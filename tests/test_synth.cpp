@@ -9,14 +9,14 @@
 #include <map>
 #include <set>
 
-#include "candidates/candidate_finder.hpp"
-#include "core/stable_hash.hpp"
-#include "detector/detector_core.hpp"
-#include "synth/people_planner.hpp"
-#include "synth/person_model.hpp"
-#include "synth/random.hpp"
-#include "synth/room_generator.hpp"
-#include "synth/synth_sequence.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/core/stable_hash.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/synth/people_planner.hpp"
+#include "rdsf/synth/person_model.hpp"
+#include "rdsf/synth/random.hpp"
+#include "rdsf/synth/room_generator.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
 

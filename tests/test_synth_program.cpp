@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "core/stable_hash.hpp"
-#include "frame/frame_source.hpp"
+#include "rdsf/core/stable_hash.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
 namespace {

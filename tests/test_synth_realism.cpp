@@ -20,11 +20,11 @@
 #include <string>
 #include <vector>
 
-#include "detector/detector_core.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/frame/depth_png.hpp"
 #include "support/test_support.hpp"
-#include "synth/depth_statistics.hpp"
-#include "synth/synth_sequence.hpp"
+#include "rdsf/synth/depth_statistics.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
 

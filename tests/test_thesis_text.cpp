@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "dataset/thesis_text.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/dataset/thesis_text.hpp"
 #include "support/test_support.hpp"
 
 using rdsf::SampleRecord;

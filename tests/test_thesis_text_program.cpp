@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "dataset/sample_set.hpp"
-#include "dataset/sample_set_writer.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
 #include "support/test_support.hpp"
 
 using rdsf::test::quote;

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "tracking/colour_histogram.hpp"
-#include "tracking/tracker.hpp"
+#include "rdsf/tracking/colour_histogram.hpp"
+#include "rdsf/tracking/tracker.hpp"
 
 using namespace rdsf;
 

@@ -5,8 +5,8 @@
 #include <map>
 #include <ostream>
 
-#include "classifier/boosted_model.hpp"
-#include "classifier/model_file.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_file.hpp"
 #include "trainer/train_run.hpp"
 
 namespace rdsf {

@@ -4,7 +4,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "classifier/boost_training.hpp"
+#include "rdsf/classifier/boost_training.hpp"
 
 namespace rdsf {
 

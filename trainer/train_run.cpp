@@ -7,10 +7,10 @@
 #include <iostream>
 #include <limits>
 
-#include "classifier/boosted_model.hpp"
-#include "classifier/model_registry.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "cli/cli.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 #include "trainer/recipe.hpp"
 #include "trainer/training_samples.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "classifier/boost_training.hpp"
+#include "rdsf/classifier/boost_training.hpp"
 
 namespace rdsf {
 

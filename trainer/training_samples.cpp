@@ -4,16 +4,16 @@
 #include <charconv>
 #include <ostream>
 
-#include "classifier/seeded_sampling.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
 #include "cli/progress.hpp"
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/stable_hash.hpp"
-#include "dataset/sample_groups.hpp"
-#include "dataset/sample_set.hpp"
-#include "features/feature_spec_record.hpp"
-#include "features/feature_subset.hpp"
-#include "features/rdsf_extractor.hpp"
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/stable_hash.hpp"
+#include "rdsf/dataset/sample_groups.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
+#include "rdsf/features/feature_subset.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 
 namespace rdsf {
 namespace {

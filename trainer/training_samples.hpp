@@ -10,10 +10,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "classifier/training_record.hpp"
-#include "features/feature_spec.hpp"
-#include "dataset/crop_augmentation.hpp"
-#include "dataset/sample_groups.hpp"
+#include "rdsf/classifier/training_record.hpp"
+#include "rdsf/features/feature_spec.hpp"
+#include "rdsf/dataset/crop_augmentation.hpp"
+#include "rdsf/dataset/sample_groups.hpp"
 
 namespace rdsf {
 

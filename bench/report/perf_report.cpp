@@ -5,8 +5,8 @@
 #include <iostream>
 
 #include "cli/cli.hpp"
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/error.hpp"
 #include "perf_run.hpp"
 
 int main(int argc, char** argv) {

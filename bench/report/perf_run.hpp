@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/people_pipeline.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 
 namespace rdsf::perf {
 

@@ -6,8 +6,8 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "features/feature_subset.hpp"
-#include "features/rdsf_extractor.hpp"
+#include "rdsf/features/feature_subset.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 
 namespace rdsf::perf {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "features/feature_spec.hpp"
+#include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf::perf {
 

@@ -1,10 +1,10 @@
-#include "candidates/candidate_finder.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "candidates/column_heights.hpp"
-#include "candidates/layer_objects.hpp"
+#include "rdsf/candidates/column_heights.hpp"
+#include "rdsf/candidates/layer_objects.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "candidates/column_heights.hpp"
+#include "rdsf/candidates/column_heights.hpp"
 
 namespace rdsf {
 namespace {

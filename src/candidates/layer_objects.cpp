@@ -1,4 +1,4 @@
-#include "candidates/layer_objects.hpp"
+#include "rdsf/candidates/layer_objects.hpp"
 
 #include <algorithm>
 #include <cmath>

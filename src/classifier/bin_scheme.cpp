@@ -1,8 +1,8 @@
-#include "classifier/bin_scheme.hpp"
+#include "rdsf/classifier/bin_scheme.hpp"
 
 #include <string>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,9 +1,9 @@
-#include "classifier/binned_matrix.hpp"
+#include "rdsf/classifier/binned_matrix.hpp"
 
 #include <string>
 
-#include "classifier/parallel_chunks.hpp"
-#include "core/error.hpp"
+#include "rdsf/classifier/parallel_chunks.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

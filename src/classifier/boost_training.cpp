@@ -1,18 +1,18 @@
-#include "classifier/boost_training.hpp"
+#include "rdsf/classifier/boost_training.hpp"
 
 #include <algorithm>
 #include <map>
 #include <chrono>
 #include <cstdio>
 
-#include "classifier/binned_matrix.hpp"
-#include "classifier/features_read.hpp"
-#include "classifier/opencv_boost.hpp"
-#include "classifier/platt_calibration.hpp"
-#include "classifier/seeded_sampling.hpp"
-#include "classifier/real_adaboost.hpp"
-#include "classifier/roc_metrics.hpp"
-#include "core/error.hpp"
+#include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/features_read.hpp"
+#include "rdsf/classifier/opencv_boost.hpp"
+#include "rdsf/classifier/platt_calibration.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
+#include "rdsf/classifier/real_adaboost.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,10 +1,10 @@
-#include "classifier/boosted_model.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
 
 #include <algorithm>
 
-#include "classifier/model_file.hpp"
-#include "classifier/model_registry.hpp"
-#include "core/error.hpp"
+#include "rdsf/classifier/model_file.hpp"
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

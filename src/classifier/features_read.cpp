@@ -1,4 +1,4 @@
-#include "classifier/features_read.hpp"
+#include "rdsf/classifier/features_read.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "classifier/model_file.hpp"
+#include "rdsf/classifier/model_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -11,10 +11,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "classifier/yaml_node_copy.hpp"
-#include "core/error.hpp"
-#include "core/yaml_guard.hpp"
-#include "features/feature_spec_record.hpp"
+#include "rdsf/classifier/yaml_node_copy.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/yaml_guard.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,4 +1,4 @@
-#include "classifier/model_registry.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 
 #include <unistd.h>
 
@@ -6,10 +6,10 @@
 #include <fstream>
 #include <regex>
 
-#include "classifier/model_file.hpp"
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
-#include "core/utc_time.hpp"
+#include "rdsf/classifier/model_file.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/utc_time.hpp"
 
 namespace rdsf {
 namespace fs = std::filesystem;

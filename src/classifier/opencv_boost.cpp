@@ -1,8 +1,8 @@
-#include "classifier/opencv_boost.hpp"
+#include "rdsf/classifier/opencv_boost.hpp"
 
 #include <opencv2/ml.hpp>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,9 +1,9 @@
-#include "classifier/platt_calibration.hpp"
+#include "rdsf/classifier/platt_calibration.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "classifier/real_adaboost.hpp"
+#include "rdsf/classifier/real_adaboost.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <numeric>
 #include <string>
 
-#include "classifier/parallel_chunks.hpp"
-#include "core/error.hpp"
+#include "rdsf/classifier/parallel_chunks.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

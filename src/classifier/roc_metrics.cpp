@@ -1,10 +1,10 @@
-#include "classifier/roc_metrics.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
 
 #include <algorithm>
 #include <numeric>
 #include <string>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,4 +1,4 @@
-#include "classifier/seeded_sampling.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,4 +1,4 @@
-#include "classifier/yaml_node_copy.hpp"
+#include "rdsf/classifier/yaml_node_copy.hpp"
 
 namespace rdsf {
 

@@ -1,10 +1,10 @@
-#include "core/append_only_log.hpp"
+#include "rdsf/core/append_only_log.hpp"
 
 #include <fstream>
 #include <iterator>
 
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "core/atomic_file.hpp"
+#include "rdsf/core/atomic_file.hpp"
 
 #include <cerrno>
 #include <filesystem>
@@ -7,8 +7,8 @@
 
 #include <fcntl.h>
 
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "core/durable_io.hpp"
+#include "rdsf/core/durable_io.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

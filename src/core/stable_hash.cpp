@@ -1,4 +1,4 @@
-#include "core/stable_hash.hpp"
+#include "rdsf/core/stable_hash.hpp"
 
 #include <cstdio>
 

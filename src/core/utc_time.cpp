@@ -1,4 +1,4 @@
-#include "core/utc_time.hpp"
+#include "rdsf/core/utc_time.hpp"
 
 #include <cstdlib>
 #include <ctime>

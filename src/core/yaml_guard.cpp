@@ -1,4 +1,4 @@
-#include "core/yaml_guard.hpp"
+#include "rdsf/core/yaml_guard.hpp"
 
 namespace rdsf {
 

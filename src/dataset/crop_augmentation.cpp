@@ -1,12 +1,12 @@
-#include "dataset/crop_augmentation.hpp"
+#include "rdsf/dataset/crop_augmentation.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <random>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "core/stable_hash.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/stable_hash.hpp"
 
 namespace rdsf {
 namespace {

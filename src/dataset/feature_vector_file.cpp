@@ -1,4 +1,4 @@
-#include "dataset/feature_vector_file.hpp"
+#include "rdsf/dataset/feature_vector_file.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -9,7 +9,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

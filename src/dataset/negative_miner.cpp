@@ -1,4 +1,4 @@
-#include "dataset/negative_miner.hpp"
+#include "rdsf/dataset/negative_miner.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -11,12 +11,12 @@
 #include <mutex>
 #include <thread>
 
-#include "core/error.hpp"
-#include "features/feature_spec_record.hpp"
-#include "dataset/sample_crop.hpp"
-#include "frame/depth_png.hpp"
-#include "frame/frame_source.hpp"
-#include "frame/png_folder_source.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
+#include "rdsf/dataset/sample_crop.hpp"
+#include "rdsf/frame/depth_png.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 
 namespace rdsf {
 

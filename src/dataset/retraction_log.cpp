@@ -1,12 +1,12 @@
-#include "dataset/retraction_log.hpp"
+#include "rdsf/dataset/retraction_log.hpp"
 
 #include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "core/append_only_log.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/append_only_log.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

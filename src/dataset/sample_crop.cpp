@@ -1,12 +1,12 @@
-#include "dataset/sample_crop.hpp"
+#include "rdsf/dataset/sample_crop.hpp"
 
 #include <cstdio>
 #include <string_view>
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/error.hpp"
-#include "core/stable_hash.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/stable_hash.hpp"
 
 namespace rdsf {
 

@@ -1,10 +1,10 @@
-#include "dataset/sample_groups.hpp"
+#include "rdsf/dataset/sample_groups.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "dataset/sample_set.hpp"
+#include "rdsf/dataset/sample_set.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -8,14 +8,14 @@
 #include <mutex>
 #include <thread>
 
-#include "core/error.hpp"
-#include "core/stable_hash.hpp"
-#include "core/yaml_guard.hpp"
-#include "dataset/feature_vector_file.hpp"
-#include "dataset/retraction_log.hpp"
-#include "dataset/sample_crop.hpp"
-#include "dataset/sample_tsv.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/stable_hash.hpp"
+#include "rdsf/core/yaml_guard.hpp"
+#include "rdsf/dataset/feature_vector_file.hpp"
+#include "rdsf/dataset/retraction_log.hpp"
+#include "rdsf/dataset/sample_crop.hpp"
+#include "rdsf/dataset/sample_tsv.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 namespace rdsf {
 

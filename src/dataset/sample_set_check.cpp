@@ -1,4 +1,4 @@
-#include "dataset/sample_set_check.hpp"
+#include "rdsf/dataset/sample_set_check.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -9,16 +9,16 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/append_only_log.hpp"
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
-#include "core/utc_time.hpp"
-#include "dataset/retraction_log.hpp"
-#include "dataset/sample_crop.hpp"
-#include "dataset/sample_set_lock.hpp"
-#include "dataset/sample_set_manifest.hpp"
-#include "dataset/sample_set_writer.hpp"
-#include "dataset/sample_tsv.hpp"
+#include "rdsf/core/append_only_log.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/utc_time.hpp"
+#include "rdsf/dataset/retraction_log.hpp"
+#include "rdsf/dataset/sample_crop.hpp"
+#include "rdsf/dataset/sample_set_lock.hpp"
+#include "rdsf/dataset/sample_set_manifest.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/dataset/sample_tsv.hpp"
 
 namespace rdsf {
 

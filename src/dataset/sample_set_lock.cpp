@@ -1,4 +1,4 @@
-#include "dataset/sample_set_lock.hpp"
+#include "rdsf/dataset/sample_set_lock.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -10,8 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "dataset/sample_set_manifest.hpp"
+#include "rdsf/dataset/sample_set_manifest.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -6,10 +6,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/yaml_guard.hpp"
-#include "features/feature_spec_record.hpp"
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/yaml_guard.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
 
 namespace rdsf {
 

@@ -1,11 +1,11 @@
-#include "dataset/sample_set_merge.hpp"
+#include "rdsf/dataset/sample_set_merge.hpp"
 
 #include <fstream>
 #include <iterator>
 
-#include "core/error.hpp"
-#include "dataset/feature_vector_file.hpp"
-#include "dataset/sample_set.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/feature_vector_file.hpp"
+#include "rdsf/dataset/sample_set.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "dataset/sample_set_writer.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -9,13 +9,13 @@
 
 #include <fcntl.h>
 
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
-#include "core/utc_time.hpp"
-#include "dataset/feature_vector_file.hpp"
-#include "dataset/retraction_log.hpp"
-#include "dataset/sample_set_check.hpp"
-#include "dataset/sample_tsv.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/utc_time.hpp"
+#include "rdsf/dataset/feature_vector_file.hpp"
+#include "rdsf/dataset/retraction_log.hpp"
+#include "rdsf/dataset/sample_set_check.hpp"
+#include "rdsf/dataset/sample_tsv.hpp"
 
 namespace rdsf {
 

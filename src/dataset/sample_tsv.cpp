@@ -1,4 +1,4 @@
-#include "dataset/sample_tsv.hpp"
+#include "rdsf/dataset/sample_tsv.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/append_only_log.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/append_only_log.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,12 +1,12 @@
-#include "dataset/thesis_text.hpp"
+#include "rdsf/dataset/thesis_text.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <vector>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "detector/detection_csv.hpp"
+#include "rdsf/detector/detection_csv.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,9 +1,9 @@
-#include "detector/detector_core.hpp"
+#include "rdsf/detector/detector_core.hpp"
 
 #include <chrono>
 
-#include "candidates/candidate_finder.hpp"
-#include "core/error.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

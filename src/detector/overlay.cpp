@@ -1,4 +1,4 @@
-#include "detector/overlay.hpp"
+#include "rdsf/detector/overlay.hpp"
 
 #include <cstdio>
 

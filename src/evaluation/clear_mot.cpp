@@ -1,9 +1,9 @@
-#include "evaluation/clear_mot.hpp"
+#include "rdsf/evaluation/clear_mot.hpp"
 
 #include <algorithm>
 #include <tuple>
 
-#include "candidates/candidate_finder.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "evaluation/curve_plot.hpp"
+#include "rdsf/evaluation/curve_plot.hpp"
 
 #include <algorithm>
 #include <cmath>

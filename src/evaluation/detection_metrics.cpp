@@ -1,9 +1,9 @@
-#include "evaluation/detection_metrics.hpp"
+#include "rdsf/evaluation/detection_metrics.hpp"
 
 #include <algorithm>
 #include <numeric>
 
-#include "candidates/candidate_finder.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,9 +1,9 @@
-#include "evaluation/exact_curve.hpp"
+#include "rdsf/evaluation/exact_curve.hpp"
 
 #include <algorithm>
 #include <numeric>
 
-#include "candidates/candidate_finder.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
 
 namespace rdsf {
 namespace {

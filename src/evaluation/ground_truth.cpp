@@ -1,11 +1,11 @@
-#include "evaluation/ground_truth.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
 
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,4 +1,4 @@
-#include "evaluation/threshold_sweep.hpp"
+#include "rdsf/evaluation/threshold_sweep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,13 @@
 #include <filesystem>
 #include <sstream>
 
-#include "candidates/candidate_finder.hpp"
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "classifier/roc_metrics.hpp"
-#include "evaluation/curve_plot.hpp"
-#include "evaluation/exact_curve.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/classifier/roc_metrics.hpp"
+#include "rdsf/evaluation/curve_plot.hpp"
+#include "rdsf/evaluation/exact_curve.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 namespace rdsf {
 

@@ -1,11 +1,11 @@
-#include "features/feature_spec.hpp"
+#include "rdsf/features/feature_spec.hpp"
 
 #include <charconv>
 #include <map>
 #include <regex>
 
-#include "core/error.hpp"
-#include "core/stable_hash.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/stable_hash.hpp"
 
 namespace rdsf {
 namespace {

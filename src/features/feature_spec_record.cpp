@@ -1,6 +1,6 @@
-#include "features/feature_spec_record.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,8 +1,8 @@
-#include "features/feature_subset.hpp"
+#include "rdsf/features/feature_subset.hpp"
 
 #include <algorithm>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

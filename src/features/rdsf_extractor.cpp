@@ -1,4 +1,4 @@
-#include "features/rdsf_extractor.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 
 namespace rdsf {
 

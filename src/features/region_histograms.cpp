@@ -1,10 +1,10 @@
-#include "features/region_histograms.hpp"
+#include "rdsf/features/region_histograms.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

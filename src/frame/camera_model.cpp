@@ -1,8 +1,8 @@
-#include "frame/camera_model.hpp"
+#include "rdsf/frame/camera_model.hpp"
 
 #include <sstream>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

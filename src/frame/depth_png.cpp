@@ -1,4 +1,4 @@
-#include "frame/depth_png.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,9 +12,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
-#include "core/yaml_guard.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/yaml_guard.hpp"
 
 namespace rdsf {
 namespace {

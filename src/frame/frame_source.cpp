@@ -1,7 +1,7 @@
-#include "frame/frame_source.hpp"
+#include "rdsf/frame/frame_source.hpp"
 
-#include "frame/openni_source.hpp"
-#include "frame/png_folder_source.hpp"
+#include "rdsf/frame/openni_source.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "frame/openni_source.hpp"
+#include "rdsf/frame/openni_source.hpp"
 
 #include <chrono>
 #include <cstdlib>
@@ -13,7 +13,7 @@
 #include <OpenNI.h>
 #include <opencv2/imgproc.hpp>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,11 +1,11 @@
-#include "frame/png_folder_source.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 
-#include "core/error.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "labeling/answer_journal.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -6,9 +6,9 @@
 #include <sstream>
 #include <tuple>
 
-#include "core/append_only_log.hpp"
-#include "core/error.hpp"
-#include "core/utc_time.hpp"
+#include "rdsf/core/append_only_log.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/utc_time.hpp"
 
 namespace rdsf {
 namespace {

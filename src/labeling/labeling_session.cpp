@@ -1,12 +1,12 @@
-#include "labeling/labeling_session.hpp"
+#include "rdsf/labeling/labeling_session.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
 #include <unordered_set>
 
-#include "candidates/candidate_finder.hpp"
-#include "core/error.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,6 +1,6 @@
-#include "pipeline/model_scorer.hpp"
+#include "rdsf/pipeline/model_scorer.hpp"
 
-#include "classifier/features_read.hpp"
+#include "rdsf/classifier/features_read.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,10 +1,10 @@
-#include "pipeline/people_overlay.hpp"
+#include "rdsf/pipeline/people_overlay.hpp"
 
 #include <cstdio>
 
 #include <opencv2/imgproc.hpp>
 
-#include "detector/overlay.hpp"
+#include "rdsf/detector/overlay.hpp"
 
 namespace rdsf {
 

@@ -1,9 +1,9 @@
-#include "pipeline/people_pipeline.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 
 #include <chrono>
 
-#include "core/error.hpp"
-#include "features/feature_spec_record.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/features/feature_spec_record.hpp"
 
 namespace rdsf {
 namespace {

@@ -1,4 +1,4 @@
-#include "segmentation/depth_candidates.hpp"
+#include "rdsf/segmentation/depth_candidates.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,8 +1,8 @@
-#include "segmentation/depth_layers.hpp"
+#include "rdsf/segmentation/depth_layers.hpp"
 
 #include <algorithm>
 
-#include "segmentation/depth_candidates.hpp"
+#include "rdsf/segmentation/depth_candidates.hpp"
 
 namespace rdsf {
 namespace {

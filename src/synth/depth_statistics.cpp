@@ -1,4 +1,4 @@
-#include "synth/depth_statistics.hpp"
+#include "rdsf/synth/depth_statistics.hpp"
 
 #include <algorithm>
 #include <cstdlib>

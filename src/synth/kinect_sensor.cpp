@@ -1,9 +1,9 @@
-#include "synth/kinect_sensor.hpp"
+#include "rdsf/synth/kinect_sensor.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "synth/random.hpp"
+#include "rdsf/synth/random.hpp"
 
 namespace rdsf::synth {
 

@@ -1,4 +1,4 @@
-#include "synth/people_planner.hpp"
+#include "rdsf/synth/people_planner.hpp"
 
 #include <algorithm>
 #include <cmath>

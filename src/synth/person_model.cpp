@@ -1,4 +1,4 @@
-#include "synth/person_model.hpp"
+#include "rdsf/synth/person_model.hpp"
 
 #include <algorithm>
 #include <cmath>

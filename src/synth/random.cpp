@@ -1,4 +1,4 @@
-#include "synth/random.hpp"
+#include "rdsf/synth/random.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "synth/renderer.hpp"
+#include "rdsf/synth/renderer.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "synth/room_generator.hpp"
+#include "rdsf/synth/room_generator.hpp"
 
 #include <algorithm>
 #include <cmath>

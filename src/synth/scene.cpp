@@ -1,4 +1,4 @@
-#include "synth/scene.hpp"
+#include "rdsf/synth/scene.hpp"
 
 #include <cmath>
 

@@ -1,11 +1,11 @@
-#include "synth/synth_params.hpp"
+#include "rdsf/synth/synth_params.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf::synth {
 namespace {

@@ -1,11 +1,11 @@
-#include "synth/synth_sequence.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
 
-#include "synth/random.hpp"
+#include "rdsf/synth/random.hpp"
 
 namespace rdsf::synth {
 

@@ -1,4 +1,4 @@
-#include "synth/synth_writer.hpp"
+#include "rdsf/synth/synth_writer.hpp"
 
 #include <filesystem>
 #include <regex>
@@ -7,8 +7,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/durable_io.hpp"
-#include "core/error.hpp"
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf::synth {
 namespace fs = std::filesystem;

@@ -1,9 +1,9 @@
-#include "tracking/colour_histogram.hpp"
+#include "rdsf/tracking/colour_histogram.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf {
 

@@ -1,4 +1,4 @@
-#include "tracking/tracker.hpp"
+#include "rdsf/tracking/tracker.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 
 #include <fcntl.h>
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 namespace rdsf::test {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/durable_io.hpp"
+#include "rdsf/core/durable_io.hpp"
 
 namespace rdsf::test {
 

@@ -5,8 +5,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "frame/depth_frame.hpp"
-#include "frame/depth_png.hpp"
+#include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 namespace rdsf::test {
 

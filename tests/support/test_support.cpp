@@ -1,6 +1,6 @@
 #include "support/test_support.hpp"
 
-#include "core/error.hpp"
+#include "rdsf/core/error.hpp"
 
 #include <array>
 #include <cstdio>

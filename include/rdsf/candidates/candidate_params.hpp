@@ -1,0 +1,87 @@
+#pragma once
+// Parameters of candidate shaping (thesis names where the thesis names them), with their defaults.
+
+namespace rdsf {
+
+enum class HeightMode {
+  strict,   ///< threshold_height: near_height_cm for layers nearer than near_far_boundary_mm, else far_height_cm
+  relaxed,  ///< threshold_height: near_height_cm everywhere
+};
+
+struct CandidateParams {
+  /// Gap tolerance (pixels) inside a column's run of occupied pixels.
+  int k = 6;
+  HeightMode mode = HeightMode::strict;
+  /// threshold_height for near layers, and for every layer in relaxed mode (cm).
+  double near_height_cm = 50.0;
+  /// threshold_height for far layers in strict mode (cm).
+  double far_height_cm = 90.0;
+  /// Layers whose mean depth is below this are near (mm).
+  double near_far_boundary_mm = 1500.0;
+  /// Gap tolerance (columns) when joining passing columns into one object.
+  int column_gap = 6;
+  /// An object narrower than this in real centimetres is not a candidate.
+  double min_width_cm = 10.0;
+  /// A column's run goes on across things standing in front of the layer (pixels of nearer layers only)
+  /// up to this real height (cm): a table before a person's legs does not cut the person in two. 0 turns
+  /// it off (the thesis's behaviour).
+  double occlusion_gap_cm = 60.0;
+  /// Floor trimming: rows at the bottom of an object whose farthest layer pixel is nearer than the object's
+  /// median depth by more than this (mm) are floor in front of the feet, not the object, and are cut off
+  /// the box. 0 turns it off (the thesis's behaviour).
+  double floor_tolerance_mm = 150.0;
+  // --- Departures for recall and boxes that fit (include/rdsf/candidates/layer_objects.hpp; docs/candidates.md) ---
+  /// A column whose run fails threshold_height at the layer's mean depth is measured again at the median
+  /// depth of its own run (a layer spans up to candidate_threshold of depth, and a person at its far end
+  /// looks shorter than they are). false: the layer's mean depth only (the thesis).
+  bool height_at_column_depth = true;
+  /// ... in layers nearer than this (mm) only: the Kinect's people range; far layers are walls, and their
+  /// pieces would become candidates.
+  double column_depth_layers_below_mm = 3500.0;
+  /// Fitted extent: an object's fitted box reaches over the columns beside it that hold the layer's pixels
+  /// within its rows (arms, hands: too short to pass threshold_height) up to this far each side (cm). 0:
+  /// the fitted box spans the passing columns only.
+  double fit_reach_cm = 60.0;
+  /// ... over columns whose mean depth (of the layer's pixels in the object's rows) differs from the last
+  /// column taken by at most this (mm): an arm continues the body, a table beside it at another depth
+  /// within the layer does not. 0: any depth within the layer.
+  double fit_depth_step_mm = 150.0;
+  /// Joining pieces: neighbouring objects of a layer whose fitted extents touch are one object when
+  /// together no wider than max_person_width_cm (a person whose torso columns fail threshold_height
+  /// because the legs part below). false: the thesis's objects.
+  bool join_pieces = true;
+  /// ... pieces that are each narrower than min_width_cm join only in layers nearer than this (mm).
+  double join_narrow_layers_below_mm = 3500.0;
+  /// An object whose fitted extent (arms included) is narrower than this (cm) is not a candidate: pieces
+  /// of furniture, not people, whose narrowest (side-on) view is wider. Objects touching the left or right
+  /// image border are exempt (a person cut by it looks narrow). 0 turns it off.
+  double min_fitted_width_cm = 15.0;
+  /// Objects wider than this over their passing columns (cm) are walls, not candidates. 0 turns it off.
+  double max_object_width_cm = 400.0;
+  /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting,
+  /// narrower pieces may be joined.
+  double max_person_width_cm = 100.0;
+  /// Splitting: an object wider than max_person_width_cm is cut where the layer's median column depth
+  /// jumps by more than this between neighbouring columns (mm; a person before a cupboard in the same
+  /// layer). 0 turns it off.
+  double split_depth_jump_mm = 0.0;
+  /// ... else at a valley of its column-height profile this deep below the lower of the highest points on
+  /// either side (cm; two people side by side). 0 turns it off.
+  double split_valley_cm = 0.0;
+  /// ... else where the mean height of a min_part_width_cm band on one side differs from the other side's
+  /// by more than this (cm; a person beside a lower or taller piece of furniture). 0 turns it off.
+  double split_step_cm = 0.0;
+  /// The narrowest piece a split leaves (cm).
+  double min_part_width_cm = 25.0;
+  /// A split object stays a candidate as a whole besides its pieces.
+  bool split_keep_whole = false;
+  /// The window is the strict box enlarged by this factor in both directions (thesis: 25%).
+  double window_scale = 1.25;
+  /// threshold_height for a layer at the given depth.
+  double threshold_height_cm(double layer_depth_mm) const {
+    if (mode == HeightMode::relaxed) return near_height_cm;
+    return layer_depth_mm < near_far_boundary_mm ? near_height_cm : far_height_cm;
+  }
+};
+
+}  // namespace rdsf

@@ -1,0 +1,39 @@
+#pragma once
+// The model file: YAML written with cv::FileStorage, self-describing and versioned.
+//
+//   format: "rdsf-model"            format_version: 2 (1: no calibration, no trees; still read)
+//   name, version (N of vN), created (ISO 8601 UTC)
+//   feature_spec: canonical text, hash, name, and the numbers (window, cells or squares, bins)
+//   training: recipe, backend, parameters, sample_sets (role, path, manifest_hash, available, used),
+//             train_positives/negatives, stopped, validation (source, counts, auc, tar_at_far_1/5,
+//             error_rate, roc points, per-round figures each with its roc points)
+//   classifier: bins (scheme uniform, count, min, max) and weak_classifiers, each
+//             { kind: lut, feature, responses: [count values] } or
+//             { kind: stump, feature, threshold, left, right } or (format 2)
+//             { kind: tree, feature (the root's), nodes: [ {feature, responses}, ... ] } (breadth first)
+//   calibration: (format 2) method platt|none, a, b, positives, negatives, source:
+//             P(person) = 1 / (1 + exp(-(a H + b))); format 1 files read as method none (a = 2, b = 0)
+//   opencv_model: (OpenCV backend only) the cv::ml::Boost exactly as it wrote itself
+//
+// Reading has one branch per known format version and refuses any other; it accepts every feature spec
+// this build knows (features/feature_spec_record.hpp) and refuses unknown ones, and, when the caller names
+// the spec it computes, a model whose spec differs; each message names the file and what differs.
+#include <string>
+
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/features/feature_spec.hpp"
+
+namespace rdsf {
+
+inline constexpr const char* kModelFormat = "rdsf-model";
+inline constexpr int kModelFormatVersion = 2;  ///< the version written
+
+/// The file text of `model` (its name, version and created time included as they are set).
+std::string model_file_text(const BoostedModel& model);
+
+/// Reads a model file (any known format version, any known feature spec).
+BoostedModel read_model_file(const std::string& path);
+/// The same, refusing a model whose feature spec is not `expected` (the one the caller computes).
+BoostedModel read_model_file(const std::string& path, const FeatureSpec& expected);
+
+}  // namespace rdsf

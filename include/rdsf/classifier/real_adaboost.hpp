@@ -1,0 +1,90 @@
+#pragma once
+// Native Real AdaBoost with look-up-table weak classifiers (Schapire and Singer's domain partitioning).
+// Each round, for every feature in parallel, the weights of the positive and negative samples are summed
+// per bin (W+_j, W-_j); the feature with the smallest Z = 2 sum_j sqrt(W+_j W-_j) is chosen, its bin
+// responses are h_j = 0.5 ln((W+_j + eps) / (W-_j + eps)), and the weights become w_i exp(-y_i h(x_i)),
+// normalised to sum 1 (y = +1 person, -1 not). Deterministic: no randomness, ties go to the lower feature
+// index, and every feature's sums are taken in sample order whatever the thread count.
+//
+// Deeper weak learners (depth d >= 2): a tree grown level by level (domain-partitioning trees). An inner
+// node is the best two-way split of one feature's bins, bins <= t left and the others right, by the same
+// criterion: the smallest Z = 2 (sqrt(W+_L W-_L) + sqrt(W+_R W-_R)) over the samples that reach it (stored as
+// a table of -1 / +1: > 0 routes right). A leaf is the best look-up table over the samples that reach it.
+// Every level reads each sample once, so a level costs about one depth-1 round. The tree's response is its
+// leaf's; Z of the tree is the sum of its leaves' Z.
+//
+// Shrinkage: every response is multiplied by the learning rate nu (0 < nu <= 1) before it is added and
+// before the reweighting (nu = 1: plain Real AdaBoost).
+#include <cstddef>
+#include <vector>
+
+#include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/weak_classifier.hpp"
+
+namespace rdsf {
+
+struct RealAdaBoostParams {
+  /// eps in the responses; 0 means 1 / (number of training samples).
+  double smoothing = 0.0;
+  /// Weight trimming: each round the lightest samples holding this fraction of the total weight are left
+  /// out of the histograms (they are still reweighted and can come back). 0 = off; 0.05 is OpenCV's
+  /// weight_trim_rate 0.95.
+  double weight_trim = 0.0;
+  /// Threads for the per-feature histograms; 0 = all cores.
+  int threads = 0;
+  /// Levels of look-up tables per weak classifier: 1 = one table (the thesis's kind of weak learner),
+  /// 2-4 = trees of tables.
+  int depth = 1;
+  /// Shrinkage nu in (0, 1]: responses are multiplied by it.
+  double learning_rate = 1.0;
+};
+
+struct RealAdaBoostRound {
+  int round = 0;              ///< 1-based
+  int feature = 0;            ///< chosen feature
+  double z = 0.0;             ///< its normalisation factor Z (smaller is better; 1 = useless)
+  double train_error = 0.0;   ///< training error of the sign of the sum so far
+  std::size_t samples_used = 0;  ///< samples in the histograms (fewer than all when trimming)
+};
+
+/// `indices` (all of 0..labels.size()-1 when empty) reordered positives first, each class in its given
+/// order: the sample order with which RealAdaBoost takes its faster path (build the BinnedMatrix with it).
+std::vector<std::size_t> positives_first_order(const std::vector<int>& labels,
+                                               const std::vector<std::size_t>& indices = {});
+
+class RealAdaBoost {
+ public:
+  /// `labels` (1 person, 0 not) in the sample order of `data`, which must outlive this object.
+  RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, RealAdaBoostParams params = {});
+
+  /// Adds one weak classifier and returns what was chosen.
+  RealAdaBoostRound next_round();
+
+  const std::vector<WeakClassifier>& weak_classifiers() const { return weak_; }
+  /// Current strong-classifier score of every training sample.
+  const std::vector<double>& train_scores() const { return scores_; }
+
+ private:
+  std::vector<std::size_t> trimmed_samples() const;
+  struct TableFit {
+    std::size_t feature = 0;
+    double z = 0.0;
+    std::vector<double> responses;
+  };
+  /// The table with the smallest Z over `subset` (all samples when null), responses unshrunk; with
+  /// `split`, the best two-way split instead, as a routing table of -1 (left) / +1 (right).
+  TableFit best_table(const std::vector<std::size_t>* subset, const std::vector<std::uint8_t>& y, bool split) const;
+
+  const BinnedMatrix& data_;
+  std::vector<int> labels_;
+  RealAdaBoostParams params_;
+  double eps_ = 0.0;
+  bool positives_first_ = false;  ///< labels are 1...1 0...0: the faster four-feature histograms apply
+  std::size_t positives_ = 0;
+  int threads_ = 1;
+  std::vector<double> weights_;
+  std::vector<double> scores_;
+  std::vector<WeakClassifier> weak_;
+};
+
+}  // namespace rdsf

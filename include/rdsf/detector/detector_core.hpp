@@ -1,0 +1,65 @@
+#pragma once
+// The detector core shared by every program, as a pipeline:
+//   depth frame -> segmentation (depth layers) -> candidates (boxes, 64x128 crops) -> RDSF features
+// Classification and tracking build on its output.
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "rdsf/candidates/candidate.hpp"
+#include "rdsf/candidates/candidate_params.hpp"
+#include "rdsf/features/feature_spec.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
+#include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/segmentation/depth_layers.hpp"
+#include "rdsf/segmentation/segmentation_params.hpp"
+
+namespace rdsf {
+
+struct DetectorParams {
+  SegmentationParams segmentation;
+  CandidateParams candidates;
+  FeatureSpec features;
+  /// The box detections, CSVs, pictures, tracking and the evaluation report (the crop always comes from
+  /// the strict box's window). The thesis reports the strict box.
+  BoxKind reported_box = BoxKind::fitted;
+};
+
+/// `params` with every departure from the thesis turned off (docs/detector-core.md, "Departures from the thesis"): no
+/// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no
+/// splitting. Everything else (the thesis's own parameters) is kept.
+DetectorParams thesis_params(DetectorParams params = {});
+
+/// Wall-clock time of each stage for one frame, in milliseconds.
+struct StageTimes {
+  double segmentation_ms = 0;
+  double candidates_ms = 0;
+  double features_ms = 0;
+};
+
+struct FrameAnalysis {
+  Segmentation segmentation;
+  std::vector<Candidate> candidates;
+  cv::Mat1f features;  ///< one row of RDSF values per candidate (empty when not asked for)
+  StageTimes times;
+};
+
+class DetectorCore {
+ public:
+  explicit DetectorCore(DetectorParams params = {});
+
+  const DetectorParams& params() const { return params_; }
+  const RdsfExtractor& extractor() const { return extractor_; }
+
+  /// Segments the frame and shapes its candidates; with `with_features`, also computes their RDSF.
+  FrameAnalysis analyse(const DepthFrame& frame, bool with_features = true) const;
+
+  /// RDSF rows for the given candidates (candidates.size() x dimension()).
+  cv::Mat1f features(const std::vector<Candidate>& candidates) const;
+
+ private:
+  DetectorParams params_;
+  RdsfExtractor extractor_;
+};
+
+}  // namespace rdsf

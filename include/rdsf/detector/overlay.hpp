@@ -1,0 +1,28 @@
+#pragma once
+// Pictures of what the core did, for people: the depth layers in distinct colours with the candidates'
+// boxes drawn on top. Pure drawing (imgproc); showing or saving is the programs' business.
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "rdsf/candidates/candidate.hpp"
+#include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/segmentation/depth_layers.hpp"
+
+namespace rdsf {
+
+/// A colour per layer (nearest warm, farthest cool), black for no reading, blended with the colour image
+/// when the frame has one.
+cv::Mat3b render_layers(const DepthFrame& frame, const Segmentation& segmentation);
+
+/// Depth as a colour map (near = warm), black where there is no reading.
+cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm = 8000);
+
+/// render_layers() with each candidate's reported box (`box`: solid), its window (thin), and a label with
+/// its index, layer depth and, when `scores` is given, its score.
+cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segmentation,
+                            const std::vector<Candidate>& candidates, const std::vector<double>* scores = nullptr,
+                            BoxKind box = BoxKind::fitted);
+
+}  // namespace rdsf

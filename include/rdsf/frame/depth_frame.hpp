@@ -1,0 +1,27 @@
+#pragma once
+// One frame of a depth camera, with its units stated: depth in millimetres as uint16 (0 = no reading),
+// an optional 8-bit BGR colour image registered to the depth (same size, pixel for pixel), where it came
+// from and when, and the camera model that produced it.
+#include <cstdint>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "rdsf/frame/camera_model.hpp"
+
+namespace rdsf {
+
+struct DepthFrame {
+  cv::Mat1w depth_mm;             ///< CV_16UC1, millimetres, 0 = no reading
+  cv::Mat3b bgr;                  ///< CV_8UC3 registered colour, empty when the source has none
+  std::int64_t index = 0;         ///< 0-based position of the frame in its source
+  std::string name;               ///< file stem (without .depth.png) for folders, the index for recordings
+  std::int64_t timestamp_us = 0;  ///< microseconds; from the recording, or index * 33333 for image folders
+  CameraModel camera;             ///< intrinsics of the depth image as delivered
+
+  bool has_colour() const { return !bgr.empty(); }
+  int width_px() const { return depth_mm.cols; }
+  int height_px() const { return depth_mm.rows; }
+};
+
+}  // namespace rdsf

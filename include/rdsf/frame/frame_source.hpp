@@ -1,0 +1,40 @@
+#pragma once
+// Where frames come from. Every source delivers each frame exactly once, in order, and throws
+// rdsf::Error (one line naming the file or device) on bad input: no frame is ever skipped silently.
+//
+// open_frame_source() chooses the source from one --source argument:
+//   - "openni" (the first attached device) or a device URI (contains "://"): a live OpenNI2 device;
+//   - a path ending in ".oni": an OpenNI2 recording, read frame by frame;
+//   - a folder: every NAME.depth.png in it (sorted by name), with NAME.rgb.png as colour when present;
+//   - a single NAME.depth.png file: that one frame;
+//   - any other file: a list file, one depth PNG path a line (relative to the list's folder; # comments).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "rdsf/frame/camera_model.hpp"
+#include "rdsf/frame/depth_frame.hpp"
+
+namespace rdsf {
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  /// Fills `frame` with the next frame and returns true; returns false at the end of the source.
+  virtual bool next(DepthFrame& frame) = 0;
+  /// What this source reads, for messages ("folder ../shared/realdata/people (32 frames)").
+  virtual std::string description() const = 0;
+  /// Number of frames when known in advance (files), nothing for live devices.
+  virtual std::optional<std::int64_t> frame_count() const = 0;
+};
+
+/// Opens the source named by `spec`. `camera` is the model frames carry unless the source knows better;
+/// it is rescaled to the frame size when the frames are not 640x480.
+std::unique_ptr<FrameSource> open_frame_source(const std::string& spec,
+                                               const CameraModel& camera = CameraModel::kinect_v1());
+
+/// True when `spec` names an OpenNI2 recording or device rather than image files.
+bool is_openni_spec(const std::string& spec);
+
+}  // namespace rdsf

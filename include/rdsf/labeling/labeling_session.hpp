@@ -1,0 +1,126 @@
+#pragma once
+// The labeler's logic, without any window: frames are read and analysed one ahead (in a background thread,
+// while the person decides), each candidate not answered before is presented in turn, and every answer is
+// stored before the next candidate is presented:
+//   y  a positive sample (label 1, origin labeler) is appended to the set
+//   n  nothing is stored, unless keep_rejected: then a negative (label 0, origin labeler)
+//   s  skipped: nothing is stored, the candidate is not presented again
+//   u  undoes the last answer given in this session (across frames too): its sample is retracted from the
+//      set and the candidate is presented again
+// Every answer also goes to the set's answer journal (labeler-answers.tsv), so a rerun on the same sources
+// and set resumes at the first unanswered candidate and never presents an answered one again.
+// With ground truth (assisted mode), candidates overlapping a person with IoU >= 0.5 are answered y and
+// those below 0.3 n without asking; only the uncertain band in between is presented.
+#include <cstdint>
+#include <deque>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/dataset/sample_set_writer.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
+
+namespace rdsf {
+
+struct LabelingConfig {
+  std::vector<std::string> sources;
+  bool keep_rejected = false;
+  bool order_by_score = false;  ///< present a frame's candidates highest score first (needs a model)
+  /// Assisted mode: IoU of the box detections report (detector.reported_box: fitted by default, as the
+  /// evaluation matches) with a truth box; >= this is a person.
+  double certain_iou = 0.5;
+  double uncertain_iou = 0.3;   ///< assisted mode: IoU < this is not a person; in between is asked
+  /// Assisted mode: a candidate covering (IoU >= uncertain_iou) a person marked ignored in the truth
+  /// (hardly visible, see ignore_hardly_visible) and no counted one is asked, never answered, as the
+  /// evaluation counts it neither right nor wrong.
+  DetectorParams detector;
+  CameraModel camera;
+};
+
+struct LoadedFrame {
+  std::string source;              ///< the source as recorded in samples (absolute path when a file)
+  DepthFrame frame;
+  FrameAnalysis analysis;
+  std::vector<double> scores;      ///< per candidate; empty without a model
+  std::vector<double> truth_iou;   ///< per candidate, best IoU with a counted ground-truth person; empty without truth
+  std::vector<double> ignored_iou; ///< per candidate, best IoU with a don't-care (hardly visible) person
+  std::int64_t ordinal = 0;        ///< 1-based over all sources
+};
+
+struct PresentedCandidate {
+  std::shared_ptr<const LoadedFrame> frame;
+  std::size_t index = 0;  ///< candidate index in the frame
+  const Candidate& candidate() const { return frame->analysis.candidates[index]; }
+  CandidateKey key() const;
+};
+
+struct LabelingStats {
+  long positives = 0, negatives = 0, rejected = 0, skipped = 0, undone = 0;  ///< human answers this session
+  long auto_positives = 0, auto_negatives = 0;                               ///< assisted mode
+  long already_answered = 0;                                                 ///< skipped on resume
+  long unanswered = 0;      ///< presented but left without an answer (answers ran out)
+  std::int64_t frames_loaded = 0;
+  long answers() const { return positives + negatives + skipped; }
+};
+
+class LabelingSession {
+ public:
+  /// `model` and `truth` may be null. The writer, model and truth must outlive the session.
+  LabelingSession(LabelingConfig config, SampleSetWriter& writer, const BoostedModel* model,
+                  const GroundTruth* truth);
+  ~LabelingSession();
+  LabelingSession(const LabelingSession&) = delete;
+  LabelingSession& operator=(const LabelingSession&) = delete;
+
+  /// The candidate to present, or nullptr when every candidate of every source is answered.
+  const PresentedCandidate* current();
+  /// Applies a key: 'y', 'n', 's' or 'u'. Returns false when it did nothing (an undo with nothing to
+  /// undo in this session, or no current candidate).
+  bool answer(char key);
+  /// Leaves the current candidate unanswered and moves on (answers ran out in headless mode).
+  void leave_unanswered();
+
+  const LabelingStats& stats() const { return stats_; }
+  /// Frames over all sources when every source knows its length.
+  std::optional<std::int64_t> total_frames() const { return total_frames_; }
+  /// Candidates of the current frame still to be presented, the current one included.
+  std::size_t pending_in_frame() const { return queue_.size(); }
+  const AnswerJournal& journal() const { return journal_; }
+
+ private:
+  struct Given {
+    PresentedCandidate presented;
+    JournalEntry entry;
+  };
+  std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread
+  void start_prefetch();
+  void take_frame(std::shared_ptr<const LoadedFrame> frame);
+  std::int64_t store(const PresentedCandidate& p, int label);
+
+  LabelingConfig config_;
+  SampleSetWriter& writer_;
+  const BoostedModel* model_;
+  std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
+  const GroundTruth* truth_;
+  DetectorCore core_;
+  AnswerJournal journal_;
+  std::size_t source_index_ = 0;
+  std::unique_ptr<FrameSource> source_;
+  std::string source_name_;
+  std::int64_t ordinal_ = 0;
+  std::optional<std::int64_t> total_frames_;
+  std::future<std::shared_ptr<LoadedFrame>> prefetch_;
+  bool sources_done_ = false;
+  std::deque<PresentedCandidate> queue_;
+  std::vector<Given> history_;
+  LabelingStats stats_;
+};
+
+}  // namespace rdsf

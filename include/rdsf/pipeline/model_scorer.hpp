@@ -1,0 +1,39 @@
+#pragma once
+// Scores candidates with a model by computing only the features it reads (features_read, FeatureSubset):
+// the histograms of the regions those pairs name, then the pairs, then H(x). The score is bit for bit the
+// model's score of the full feature vector: same values, same weak classifiers in the same order (the
+// model is kept with its weak classifiers renumbered to positions in the subset).
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "rdsf/candidates/candidate.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/features/feature_subset.hpp"
+
+namespace rdsf {
+
+class ModelScorer {
+ public:
+  /// Scores with `model` (copied) in its own feature spec.
+  explicit ModelScorer(const BoostedModel& model);
+
+  const FeatureSpec& feature_spec() const { return subset_.spec(); }
+  /// The features computed per candidate.
+  const FeatureSubset& features() const { return subset_; }
+
+  /// H(x) of one window-sized masked depth crop (throws Error on another size). Thread-safe.
+  double score(const cv::Mat1w& crop_depth_mm) const;
+  /// P(person) of one crop: the model's calibration of score(crop).
+  double probability(const cv::Mat1w& crop_depth_mm) const { return compact_.probability(score(crop_depth_mm)); }
+  /// H(x) from the features() values of one crop (features().size() values).
+  double score_features(const float* values) const { return compact_.score(values); }
+  /// H(x) of every candidate's depth crop.
+  std::vector<double> score(const std::vector<Candidate>& candidates) const;
+
+ private:
+  FeatureSubset subset_;
+  BoostedModel compact_;  ///< the model reading positions in subset_ instead of feature indices
+};
+
+}  // namespace rdsf

@@ -1,0 +1,76 @@
+#pragma once
+// The whole system for one frame, as the thesis ran it:
+//   frame -> segmentation -> candidates -> RDSF -> classifier score H(x) and P(person)
+//         -> person when P(person) >= probability_threshold (or H(x) >= score_threshold, the thesis's way)
+//   (RDSF: only the features the model reads, see model_scorer.hpp)
+//         -> tracking (colour histogram + centroid, lkh matching)
+// with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/tracking/tracker.hpp"
+
+namespace rdsf {
+
+struct PipelineParams {
+  DetectorParams detector;
+  TrackingParams tracking;
+  /// A candidate is a person when P(person) >= this (the model's calibrated probability).
+  double probability_threshold = 0.5;
+  /// When set, a candidate is a person when H(x) >= this instead: the thesis's threshold_classifier.
+  std::optional<double> score_threshold;
+  /// The score threshold these mean for `model`.
+  double score_threshold_for(const BoostedModel& model) const {
+    return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold);
+  }
+  /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
+  /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
+  bool full_feature_vector = false;
+};
+
+/// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
+struct PipelineTimes {
+  double segmentation_ms = 0;
+  double candidates_ms = 0;     ///< candidate initialisation and filtering (column scan, boxes, crops)
+  double features_ms = 0;       ///< RDSF of every candidate
+  double classifier_ms = 0;
+  double tracking_ms = 0;       ///< colour histograms and matching
+  double total_ms() const { return segmentation_ms + candidates_ms + features_ms + classifier_ms + tracking_ms; }
+  PipelineTimes& operator+=(const PipelineTimes& o);
+};
+
+struct PipelineFrame {
+  FrameAnalysis analysis;                 ///< layers, candidates (features only with full_feature_vector)
+  cv::Mat1f model_features;               ///< per candidate the features the model reads (ModelScorer order)
+  std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
+  std::vector<double> probabilities;      ///< P(person) per candidate (empty without a model)
+  std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
+  std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
+  PipelineTimes times;
+};
+
+class PeoplePipeline {
+ public:
+  /// `model` may be null (candidates only); it must outlive the pipeline. Throws Error when the model's
+  /// feature spec differs from the detector's (naming both).
+  PeoplePipeline(PipelineParams params, const BoostedModel* model);
+
+  PipelineFrame process(const DepthFrame& frame);
+
+  const Tracker& tracker() const { return tracker_; }
+  const PipelineParams& params() const { return params_; }
+
+ private:
+  PipelineParams params_;
+  const BoostedModel* model_;
+  std::optional<ModelScorer> scorer_;
+  DetectorCore core_;
+  Tracker tracker_;
+};
+
+}  // namespace rdsf

@@ -1,0 +1,48 @@
+#pragma once
+// Everything that decides a synthetic recording, with the defaults of rdsf-synth. The same parameters
+// (and seed) always give the same frames, byte for byte.
+#include <cstdint>
+#include <string>
+
+#include "rdsf/frame/camera_model.hpp"
+#include "rdsf/synth/kinect_sensor.hpp"
+#include "rdsf/synth/people_planner.hpp"
+#include "rdsf/synth/room_generator.hpp"
+
+namespace rdsf::synth {
+
+struct SynthParams {
+  int frames = 300;    ///< frames to render (at most 999999: names are 6 digits)
+  int people_min = 0;  ///< people in the room of each clip: uniform in people_min..people_max
+  int people_max = 3;
+  std::uint64_t seed = 1;
+  bool empty = false;  ///< the same rooms without people
+  int width_px = 640;  ///< image size; both multiples of 8, 64x48 .. 1920x1440
+  int height_px = 480;
+  bool rgb = false;       ///< also render the registered colour image
+  int clip_frames = 100;  ///< frames per clip; every clip is a new room, camera pose and people
+  RoomParams room;
+  PeopleParams people;
+  KinectSensorParams sensor;
+
+  /// Kinect v1 intrinsics scaled to the image size.
+  CameraModel camera() const { return CameraModel::kinect_v1().scaled_to(width_px, height_px); }
+  /// Throws Error (one line naming the option) for impossible values.
+  void validate() const;
+  /// Turns off everything issue 13 added (the generator of before: camera 0.7-1.2 m without roll, turn or
+  /// motion, 16-bit Kinect captures only, box rooms with their furniture, adults in plain clothes, basic
+  /// poses, no pairs or sitting), for comparisons.
+  void set_classic();
+};
+
+/// "0.5..1.6" -> (0.5, 1.6); "2" -> (2, 2). Throws Error naming `option` for anything else or MIN > MAX.
+void parse_real_range(const std::string& option, const std::string& text, double& low, double& high);
+/// "on" -> true, "off" -> false. Throws Error naming `option` for anything else.
+bool parse_on_off(const std::string& option, const std::string& text);
+
+/// "1..3" -> (1, 3); "2" -> (2, 2). Throws Error naming --people for anything else or MIN > MAX.
+void parse_people_range(const std::string& text, int& people_min, int& people_max);
+/// "640x480" -> (640, 480). Throws Error naming --size for a bad form or a size not a multiple of 8.
+void parse_image_size(const std::string& text, int& width_px, int& height_px);
+
+}  // namespace rdsf::synth

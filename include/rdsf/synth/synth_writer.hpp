@@ -1,0 +1,40 @@
+#pragma once
+// Writes a synthetic recording in the frame-source layout (readable by open_frame_source):
+//   DIR/NNNNNN.depth.png  16-bit depth in millimetres (0 = no reading)
+//   DIR/NNNNNN.rgb.png    registered colour (with rgb)
+//   DIR/boxes.csv         frame,person,x,y,w,h,visible_fraction,track - one row per visible person
+//   DIR/synth.yml         how the set was made: seed, options, camera, sensor model
+// Every file is written under a temporary name and renamed into place; boxes.csv and synth.yml appear
+// only when the whole set is written. A folder that already holds frames is refused unless `force`.
+#include <memory>
+#include <string>
+
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
+
+namespace rdsf::synth {
+
+/// Checks that `dir` can take a new set: creates it when missing; throws Error when it already holds
+/// frames, boxes.csv or synth.yml and `force` is false. With `force`, removes the files of an earlier set
+/// (NNNNNN.depth.png, NNNNNN.rgb.png, boxes.csv, synth.yml) and throws when other depth images remain.
+void prepare_output_folder(const std::string& dir, bool force);
+
+class SynthWriter {
+ public:
+  /// Call prepare_output_folder first.
+  SynthWriter(std::string dir, const SynthParams& params, bool force);
+  void write(const SynthFrame& frame);
+  /// Writes synth.yml and puts boxes.csv in place.
+  void commit(const std::string& command_line);
+
+  /// The text of synth.yml for `params`.
+  static std::string describe(const SynthParams& params, const std::string& command_line);
+
+ private:
+  std::string dir_;
+  SynthParams params_;
+  bool force_;
+  std::unique_ptr<AtomicTextFile> boxes_;
+};
+
+}  // namespace rdsf::synth
