@@ -16,7 +16,7 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
 
@@ -76,7 +76,7 @@ BENCHMARK(BM_CandidateShaping)->Unit(benchmark::kMillisecond);
 const std::vector<cv::Mat1w>& crops() {
   static const std::vector<cv::Mat1w> all = [] {
     std::vector<cv::Mat1w> out;
-    const rdsf::DetectorCore core;
+    const rdsf::FrameAnalyser core;
     for (const auto& frame : frames()) {
       for (const auto& c : core.analyse(frame, false).candidates) out.push_back(c.depth_crop);
     }
@@ -152,7 +152,7 @@ void BM_ScoreModelFeaturesOnly(benchmark::State& state) {
 BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 void BM_WholeCoreFrame(benchmark::State& state) {
-  const rdsf::DetectorCore core;
+  const rdsf::FrameAnalyser core;
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(core.analyse(frames()[i++ % frames().size()], true));
 }

@@ -7,7 +7,7 @@
 
 #include <boost/program_options.hpp>
 
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "rdsf/frame/camera_model.hpp"
 

@@ -2,7 +2,7 @@
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/column_heights.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "support/depth_scenes.hpp"
 
 using namespace rdsf;
@@ -10,7 +10,7 @@ using namespace rdsf;
 namespace {
 
 FrameAnalysis analyse(const DepthFrame& frame, DetectorParams params = {}) {
-  return DetectorCore(params).analyse(frame, false);
+  return FrameAnalyser(params).analyse(frame, false);
 }
 
 const Candidate* find_at_depth(const std::vector<Candidate>& candidates, double depth_mm, int highest_column) {

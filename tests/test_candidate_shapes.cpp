@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "rdsf/candidates/candidate_finder.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "support/depth_scenes.hpp"
 
 using namespace rdsf;
@@ -14,7 +14,7 @@ namespace {
 std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = {},
                                 double tolerance_mm = 30) {
   std::vector<Candidate> found;
-  for (const Candidate& c : DetectorCore(params).analyse(frame, false).candidates) {
+  for (const Candidate& c : FrameAnalyser(params).analyse(frame, false).candidates) {
     if (std::abs(c.layer_depth_mm - depth_mm) < tolerance_mm) found.push_back(c);
   }
   return found;

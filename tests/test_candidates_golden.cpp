@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "rdsf/core/stable_hash.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
@@ -23,7 +23,7 @@ std::string mat_hash(const cv::Mat& m) {
 }
 
 std::vector<std::string> candidate_lines(const std::string& folder, const DetectorParams& params) {
-  const DetectorCore core(params);
+  const FrameAnalyser core(params);
   auto source = open_frame_source((test::realdata_dir() / folder).string());
   std::vector<std::string> lines;
   DepthFrame f;

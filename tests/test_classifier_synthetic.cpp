@@ -8,7 +8,7 @@
 
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
 namespace rdsf {
@@ -33,7 +33,7 @@ Labelled candidates_of(std::uint64_t seed, int frames) {
   params.people_min = 1;
   params.people_max = 3;
   synth::SynthSequence sequence(params);
-  const DetectorCore core;
+  const FrameAnalyser core;
   Labelled out;
   for (int i = 0; i < frames; ++i) {
     const synth::SynthFrame f = sequence.frame(i);

@@ -15,7 +15,7 @@
 #include "rdsf/dataset/negative_miner.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
@@ -75,7 +75,7 @@ TEST(Miner, EmptyFramesGiveNegativesWhoseCropsAndFeaturesAreTrue) {
   EXPECT_NE(result.err.find("kept " + std::to_string(set.records().size())), std::string::npos) << result.err;
 
   // Recompute every frame's candidates and features with the detector core.
-  const rdsf::DetectorCore core;
+  const rdsf::FrameAnalyser core;
   std::map<std::tuple<std::string, int, int, int, int>, std::vector<float>> expected;
   auto source = rdsf::open_frame_source(empty_frames());
   rdsf::DepthFrame frame;

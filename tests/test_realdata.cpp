@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "rdsf/candidates/candidate_finder.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
@@ -42,7 +42,7 @@ TEST(RealData, CandidatesCoverAtLeast47OfThe49People) {
   RDSF_REQUIRE_REALDATA();
   const auto truth = read_boxes(test::realdata_dir() / "people" / "boxes.csv");
   ASSERT_FALSE(truth.empty());
-  const DetectorCore core;
+  const FrameAnalyser core;
   auto source = open_frame_source((test::realdata_dir() / "people").string());
   std::map<std::string, std::pair<int, int>> per_group;  // group -> (found, people)
   int found = 0, found_strict = 0, people = 0;
@@ -80,7 +80,7 @@ TEST(RealData, CandidatesCoverAtLeast47OfThe49People) {
 
 TEST(RealData, CandidatesPerFrameInEmptyRooms) {
   RDSF_REQUIRE_REALDATA();
-  const DetectorCore core;
+  const FrameAnalyser core;
   auto source = open_frame_source((test::realdata_dir() / "empty").string());
   DepthFrame frame;
   int frames = 0;

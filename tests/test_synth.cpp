@@ -11,7 +11,7 @@
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/core/stable_hash.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/synth/people_planner.hpp"
 #include "rdsf/synth/person_model.hpp"
 #include "rdsf/synth/random.hpp"
@@ -323,7 +323,7 @@ struct Recall {
 };
 
 Recall detector_recall(bool classic) {
-  const rdsf::DetectorCore core;
+  const rdsf::FrameAnalyser core;
   Recall r;
   for (const std::uint64_t seed : {2024, 11, 12, 13}) {
     SynthParams p;
@@ -366,7 +366,7 @@ Recall detector_recall(bool classic) {
 }
 
 // The generator without the variety of issue 13 (--classic): the figures of before it.
-TEST(SynthDetector, DetectorCoreFindsRenderedPeopleClassic) {
+TEST(SynthDetector, FrameAnalyserFindsRenderedPeopleClassic) {
   const Recall r = detector_recall(/*classic=*/true);
   // Measured before the variety, and with --classic now (the same frames): 508 of 559 (0.909); without
   // side-on people 502 of 509 (0.986).
@@ -377,7 +377,7 @@ TEST(SynthDetector, DetectorCoreFindsRenderedPeopleClassic) {
 
 // With the default variety (sitting, bending, arms out, coats, bags and boxes, pairs side by side, clutter
 // beside people, 8-bit captures) the detector core misses more: these are the hard cases of real labs.
-TEST(SynthDetector, DetectorCoreFindsRenderedPeople) {
+TEST(SynthDetector, FrameAnalyserFindsRenderedPeople) {
   const Recall r = detector_recall(/*classic=*/false);
   // Measured: 353 of 445 (0.793); without side-on people 352 of 420 (0.838).
   EXPECT_GE(r.eligible, 350);

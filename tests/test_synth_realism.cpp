@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/depth_png.hpp"
 #include "support/test_support.hpp"
 #include "rdsf/synth/depth_statistics.hpp"
@@ -145,7 +145,7 @@ double quantile(std::vector<double> values, double q) {
 }
 
 CandidateSummary summarise_candidates(const std::vector<cv::Mat1w>& depths) {
-  const rdsf::DetectorCore core;
+  const rdsf::FrameAnalyser core;
   std::vector<double> counts, heights_px, heights_cm, depths_mm;
   for (std::size_t i = 0; i < depths.size(); ++i) {
     rdsf::DepthFrame frame;

@@ -128,7 +128,7 @@ struct Analysed {
 double run_frames_in_parallel(int count, int threads, const std::function<DepthFrame(int)>& load,
                               const PipelineParams& params, const BoostedModel& model,
                               std::vector<std::vector<int>>& person) {
-  const DetectorCore core(params.detector);
+  const FrameAnalyser core(params.detector);
   const ModelScorer scorer(model);  // as PeoplePipeline: only the features the model reads
   Tracker tracker(params.tracking);
   std::vector<std::unique_ptr<Analysed>> slots(static_cast<std::size_t>(count));
@@ -290,7 +290,7 @@ BoostedModel train_pipeline_model(PerfResults& r, const PerfOptions& o) {
   MemoryPhase memory(r, "train the pipeline's model (synthetic candidates)");
   const synth::SynthParams params = sequence_params(o, o.train_frames, 202, false);
   synth::SynthSequence sequence(params);
-  const DetectorCore core;
+  const FrameAnalyser core;
   cv::Mat1f rows;
   std::vector<int> labels;
   say("labelling the candidates of " + std::to_string(o.train_frames) +

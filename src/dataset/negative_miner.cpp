@@ -113,7 +113,7 @@ class FrameFeeder {
 
 namespace {
 
-FrameResult analyse_frame(const DetectorCore& core, const MineParams& params, const std::string& source,
+FrameResult analyse_frame(const FrameAnalyser& core, const MineParams& params, const std::string& source,
                           const DepthFrame& frame) {
   const bool hard = static_cast<bool>(params.scorer);
   const FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);  // the scorer computes its own
@@ -194,7 +194,7 @@ MineStats mine_negatives(const MineParams& params, SampleSetWriter& out,
 
 MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(const MineStats&)>& on_frame) {
   const MineParams& params = params_;
-  const DetectorCore core(params.detector);
+  const FrameAnalyser core(params.detector);
   if (core.params().features != out.manifest().feature_spec) {
     fail(out.dir(), feature_spec_mismatch("sample set feature spec", out.manifest().feature_spec,
                                           "the detector's", core.params().features));

@@ -22,7 +22,7 @@
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
@@ -109,7 +109,7 @@ class LabelingSession {
   const BoostedModel* model_;
   std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
   const GroundTruth* truth_;
-  DetectorCore core_;
+  FrameAnalyser core_;
   AnswerJournal journal_;
   std::size_t source_index_ = 0;
   std::unique_ptr<FrameSource> source_;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "rdsf/classifier/boosted_model.hpp"
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/depth_frame.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/tracking/tracker.hpp"
@@ -69,7 +69,7 @@ class PeoplePipeline {
   PipelineParams params_;
   const BoostedModel* model_;
   std::optional<ModelScorer> scorer_;
-  DetectorCore core_;
+  FrameAnalyser core_;
   Tracker tracker_;
 };
 

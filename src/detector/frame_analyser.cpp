@@ -1,4 +1,4 @@
-#include "rdsf/detector/detector_core.hpp"
+#include "rdsf/detector/frame_analyser.hpp"
 
 #include <chrono>
 
@@ -32,9 +32,9 @@ DetectorParams thesis_params(DetectorParams params) {
   return params;
 }
 
-DetectorCore::DetectorCore(DetectorParams params) : params_(params), extractor_(params.features) {}
+FrameAnalyser::FrameAnalyser(DetectorParams params) : params_(params), extractor_(params.features) {}
 
-FrameAnalysis DetectorCore::analyse(const DepthFrame& frame, bool with_features) const {
+FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features) const {
   if (frame.depth_mm.empty()) throw Error("frame " + frame.name + ": empty depth image");
   FrameAnalysis analysis;
   auto start = std::chrono::steady_clock::now();
@@ -54,7 +54,7 @@ FrameAnalysis DetectorCore::analyse(const DepthFrame& frame, bool with_features)
   return analysis;
 }
 
-cv::Mat1f DetectorCore::features(const std::vector<Candidate>& candidates) const {
+cv::Mat1f FrameAnalyser::features(const std::vector<Candidate>& candidates) const {
   cv::Mat1f rows(static_cast<int>(candidates.size()), extractor_.dimension());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     extractor_.compute(candidates[i].depth_crop, rows.ptr<float>(static_cast<int>(i)));

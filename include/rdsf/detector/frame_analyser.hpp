@@ -1,5 +1,6 @@
 #pragma once
-// The detector core shared by every program, as a pipeline:
+// The frame analyser shared by every program (the thesis's detector core before the classifier): it makes
+// candidates and their features, not detections (those come from PeoplePipeline):
 //   depth frame -> segmentation (depth layers) -> candidates (boxes, 64x128 crops) -> RDSF features
 // Classification and tracking build on its output.
 #include <vector>
@@ -44,9 +45,9 @@ struct FrameAnalysis {
   StageTimes times;
 };
 
-class DetectorCore {
+class FrameAnalyser {
  public:
-  explicit DetectorCore(DetectorParams params = {});
+  explicit FrameAnalyser(DetectorParams params = {});
 
   const DetectorParams& params() const { return params_; }
   const RdsfExtractor& extractor() const { return extractor_; }
