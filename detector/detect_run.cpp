@@ -91,7 +91,7 @@ void run_live(const DetectOptions& o, PeoplePipeline& pipeline, FrameSource& sou
   const auto start = std::chrono::steady_clock::now();
   DepthFrame frame;
   std::int64_t count = 0;
-  while (source.next(frame)) {
+  while ((o.max_frames == 0 || count < o.max_frames) && source.next(frame)) {
     if (!device) {
       std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * count));
     }
@@ -217,7 +217,7 @@ int run_detect(const DetectOptions& o) {
   if (o.live) {
     run_live(o, pipeline, *source, [&](const DepthFrame& f, const PipelineFrame& r) { handle(f, r); });
   } else {
-    run_in_frame_order(pipeline, *source, o.camera, {o.threads, 0},
+    run_in_frame_order(pipeline, *source, o.camera, {o.threads, 0, o.max_frames},
                        [&](const DepthFrame& f, PipelineFrame& r) { return handle(f, r); });
   }
   progress.finish(frames, "candidates " + std::to_string(candidates) +

@@ -95,6 +95,27 @@ TEST(OrderedPool, ConsumeFalseStopsAndNothingMoreIsConsumed) {
   }
 }
 
+TEST(OrderedPool, ErrorsOfItemsBeyondAStopAreNotErrors) {
+  // A device that times out after its last frame: the consumer stops at 5, claims beyond it may fail.
+  for (int threads : {1, 2, 4}) {
+    std::size_t next = 0;
+    std::vector<std::size_t> got;
+    EXPECT_NO_THROW(ordered_map<std::size_t>(
+        threads, 8,
+        [&](std::size_t& item) {
+          if (next >= 6) throw Error("device: no frame within 2000 ms");
+          item = next++;
+          return true;
+        },
+        [](std::size_t& item) { return item; },
+        [&](std::size_t item) {
+          got.push_back(item);
+          return item < 5;
+        }));
+    EXPECT_EQ(got.size(), 6u);
+  }
+}
+
 TEST(OrderedPool, FirstErrorOfClaimWorkOrConsumeIsRethrown) {
   for (int threads : {1, 3}) {
     auto run = [threads](int fail_in) {

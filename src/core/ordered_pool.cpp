@@ -16,9 +16,10 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
   std::vector<char> done(ahead, 0);  // per slot: its item's result is ready
   bool end = false;          // claim said there is nothing more
   bool stop = false;         // the consumer stopped, or something failed
+  bool consumer_done = false;  // the consumer stopped: errors of items it will never see are not errors
   std::exception_ptr failure;
   auto fail_locked = [&](std::exception_ptr e) {
-    if (!failure) failure = std::move(e);
+    if (!failure && !consumer_done) failure = std::move(e);
     stop = true;
     changed.notify_all();
   };
@@ -73,7 +74,10 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
       std::lock_guard<std::mutex> lock(mutex);
       ++consumed;
       changed.notify_all();
-      if (!go) break;
+      if (!go) {
+        consumer_done = stop = true;
+        break;
+      }
     }
   } catch (...) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -81,6 +85,7 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
   }
   {
     std::lock_guard<std::mutex> lock(mutex);
+    consumer_done = !failure;  // from here on only items nobody will consume can fail
     stop = true;
     changed.notify_all();
   }

@@ -27,9 +27,14 @@ std::int64_t run_jobs(PeoplePipeline& pipeline, const ParallelParams& params,
                       const std::function<bool(FrameJob&)>& claim, const std::function<DepthFrame(FrameJob&)>& load,
                       const PipelineCallback& on_frame) {
   const PeoplePipeline& analyser = pipeline;  // analyse() is const: safe on every worker
-  std::int64_t handed = 0;
+  std::int64_t handed = 0, claimed = 0;
   ordered_map<FrameJob>(
-      params.threads, params.frames_ahead > 0 ? params.frames_ahead : default_items_ahead(params.threads), claim,
+      params.threads, params.frames_ahead > 0 ? params.frames_ahead : default_items_ahead(params.threads),
+      [&](FrameJob& job) {
+        if (params.max_frames > 0 && claimed >= params.max_frames) return false;
+        ++claimed;
+        return claim(job);
+      },
       [&](FrameJob& job) {
         Analysed a;
         a.frame = job.read ? std::move(job.frame) : load(job);

@@ -11,7 +11,8 @@
 //     what runs, on the calling thread, no thread started);
 //   - at most `ahead` items are claimed and not yet consumed (bounded memory; at least `threads`);
 //   - the first exception thrown by claim, work or consume stops the pool (no further claim, the workers
-//     finish the item in hand, nothing more is consumed) and is rethrown on the calling thread.
+//     finish the item in hand, nothing more is consumed) and is rethrown on the calling thread; once
+//     consume returned false, exceptions of items claimed ahead (never to be consumed) are ignored.
 // The thread count is resolved by resolve_thread_count (0: one per core).
 #include <algorithm>
 #include <cstddef>

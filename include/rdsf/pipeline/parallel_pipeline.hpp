@@ -18,6 +18,7 @@ namespace rdsf {
 struct ParallelParams {
   int threads = 0;               ///< workers analysing frames (0: one per core, resolve_thread_count)
   std::size_t frames_ahead = 0;  ///< frames read ahead of tracking (0: 2 per thread + 2)
+  std::int64_t max_frames = 0;   ///< stop after this many frames, none read beyond (0: every frame)
 };
 
 /// Called on the calling thread for each frame, in frame order, after tracking; return false to stop.
