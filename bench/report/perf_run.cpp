@@ -19,6 +19,7 @@
 #include "rdsf/classifier/real_adaboost.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
 #include "cli/progress.hpp"
+#include "rdsf/core/clock.hpp"
 #include "rdsf/core/utc_time.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/negative_miner.hpp"
@@ -289,6 +290,27 @@ void whole_system_parallel(PerfResults& r, const PerfOptions& o, const std::vect
   memory.done();
 }
 
+void live_mode(PerfResults& r, const PerfOptions& o, const std::vector<DepthFrame>& frames, const BoostedModel& model) {
+  MemoryPhase memory(r, "live mode (frames in memory at 30 and 90 fps)");
+  for (const double fps : {30.0, 90.0}) {
+    const int count = std::min(static_cast<int>(frames.size()), static_cast<int>(fps * (o.quick ? 1 : 3)));
+    say("live mode: " + std::to_string(count) + " frames pushed at " + std::to_string(static_cast<int>(fps)) +
+        " fps to " + std::to_string(o.threads) + " workers");
+    PeoplePipeline pipeline(PipelineParams{}, &model);
+    const SteadyClock clock;
+    LivePipeline live(pipeline, {o.threads}, clock, {});
+    const auto period = std::chrono::duration<double>(1.0 / fps);
+    const Clock::time_point start = Clock::now();
+    for (int i = 0; i < count; ++i) {
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * i));
+      live.push(frames[static_cast<std::size_t>(i)]);
+    }
+    live.finish();
+    r.live.push_back({fps, live.stats()});
+  }
+  memory.done();
+}
+
 void png_reading(PerfResults& r, const PerfOptions& o, const fs::path& folder, const BoostedModel& model,
                  const std::vector<std::vector<int>>& reference) {
   MemoryPhase memory(r, "PNG reading and whole system from files");
@@ -489,6 +511,7 @@ PerfResults run_perf_report(const PerfOptions& options) {
   const BoostedModel model = train_pipeline_model(r, o);
   const std::vector<std::vector<int>> reference = whole_system_one_thread(r, frames, model);
   whole_system_parallel(r, o, frames, model, reference);
+  live_mode(r, o, frames, model);
   std::vector<DepthFrame>().swap(frames);  // the frames in memory are not part of the later phases
   png_reading(r, o, work.root / "people", model, reference);
   training_per_round(r, o);
