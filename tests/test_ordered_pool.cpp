@@ -40,7 +40,8 @@ TEST(OrderedPool, ResultsComeInClaimOrderWithBoundedLookAhead) {
   for (std::size_t i = 0; i < n; ++i) expected.push_back(busy(i));
   for (int threads : {1, 2, 3, 8}) {
     for (std::size_t ahead : {std::size_t{1}, std::size_t{4}, std::size_t{16}}) {
-      std::size_t next = 0, consumed = 0, most_outstanding = 0;
+      std::size_t next = 0, most_outstanding = 0;
+      std::atomic<std::size_t> consumed{0};  // read by claim (a worker), written by consume
       std::atomic<int> running{0}, most_running{0};
       std::vector<std::uint64_t> got;
       ordered_map<std::size_t>(
@@ -48,7 +49,7 @@ TEST(OrderedPool, ResultsComeInClaimOrderWithBoundedLookAhead) {
           [&](std::size_t& item) {  // called one at a time
             if (next >= n) return false;
             item = next++;
-            most_outstanding = std::max(most_outstanding, next - consumed);
+            most_outstanding = std::max(most_outstanding, next - consumed.load());
             return true;
           },
           [&](std::size_t& item) {

@@ -24,25 +24,37 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
     changed.notify_all();
   };
 
+  // One worker claims at a time (`claiming`), without holding the lock: a claim that waits for a device's
+  // next frame does not keep the consumer from taking finished results.
+  bool claiming = false;
   auto worker = [&] {
     std::unique_lock<std::mutex> lock(mutex);
     while (true) {
-      changed.wait(lock, [&] { return stop || end || claimed < consumed + ahead; });
+      changed.wait(lock, [&] { return stop || end || (!claiming && claimed < consumed + ahead); });
       if (stop || end) return;
-      const std::size_t slot = claimed % ahead;
+      const std::size_t slot = claimed % ahead;  // free: its previous item was consumed
+      claiming = true;
+      lock.unlock();
+      bool got = false;
+      std::exception_ptr error;
       try {
-        if (!claim(slot)) {
-          end = true;
-          changed.notify_all();
-          return;
-        }
+        got = claim(slot);
       } catch (...) {
-        fail_locked(std::current_exception());
+        error = std::current_exception();
+      }
+      lock.lock();
+      claiming = false;
+      changed.notify_all();
+      if (error) {
+        fail_locked(error);
+        return;
+      }
+      if (!got) {
+        end = true;
         return;
       }
       ++claimed;
       lock.unlock();
-      std::exception_ptr error;
       try {
         work(slot);
       } catch (...) {

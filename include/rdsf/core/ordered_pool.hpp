@@ -1,8 +1,9 @@
 #pragma once
 // The library's one ordered thread pool: an ordered parallel map over items handed out one by one.
-//   claim(item)     -> bool   fills the next item, false at the end. Called one call at a time (under the
-//                             pool's lock), in order: keep it cheap (take an index or a path; reading a
-//                             sequential file here is fine, it is what that file allows).
+//   claim(item)     -> bool   fills the next item, false at the end. Called one call at a time, in order
+//                             (never two at once; not under the pool's lock, so a claim that waits for a
+//                             camera does not hold up the rest): keep it cheap (take an index or a path;
+//                             reading a sequential file or a device here is fine, it is what they allow).
 //   work(item)      -> result the heavy part, on `threads` worker threads at once, any item on any worker.
 //   consume(result) -> bool   on the calling thread, results in claim order, one at a time; false stops.
 // Invariants:
