@@ -15,24 +15,28 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
   std::size_t consumed = 0;  // items consumed so far
   std::vector<char> done(ahead, 0);  // per slot: its item's result is ready
   bool end = false;          // claim said there is nothing more
-  bool stop = false;         // the consumer stopped, or something failed
-  bool consumer_done = false;  // the consumer stopped: errors of items it will never see are not errors
+  bool stop = false;         // no more claims: the consumer stopped, or an item failed
+  bool claiming = false;     // a worker is in claim(): one claim at a time, without holding the lock
+  // The failure of the earliest item that failed: the consumer meets it where the one-thread loop would
+  // (after every earlier item) and rethrows it; a failure beyond where the consumer stopped is never met.
   std::exception_ptr failure;
-  auto fail_locked = [&](std::exception_ptr e) {
-    if (!failure && !consumer_done) failure = std::move(e);
+  std::size_t failure_seq = 0;
+  auto fail_locked = [&](std::exception_ptr e, std::size_t seq) {
+    if (!failure || seq < failure_seq) {
+      failure = std::move(e);
+      failure_seq = seq;
+    }
     stop = true;
     changed.notify_all();
   };
 
-  // One worker claims at a time (`claiming`), without holding the lock: a claim that waits for a device's
-  // next frame does not keep the consumer from taking finished results.
-  bool claiming = false;
   auto worker = [&] {
     std::unique_lock<std::mutex> lock(mutex);
     while (true) {
       changed.wait(lock, [&] { return stop || end || (!claiming && claimed < consumed + ahead); });
       if (stop || end) return;
-      const std::size_t slot = claimed % ahead;  // free: its previous item was consumed
+      const std::size_t seq = claimed;
+      const std::size_t slot = seq % ahead;  // free: its previous item was consumed
       claiming = true;
       lock.unlock();
       bool got = false;
@@ -46,7 +50,7 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
       claiming = false;
       changed.notify_all();
       if (error) {
-        fail_locked(error);
+        fail_locked(error, seq);
         return;
       }
       if (!got) {
@@ -62,7 +66,7 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
       }
       lock.lock();
       if (error) {
-        fail_locked(error);
+        fail_locked(error, seq);
         return;
       }
       done[slot] = 1;
@@ -70,6 +74,7 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
     }
   };
 
+  std::exception_ptr met;  // what the consumer ran into
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(threads));
   try {
@@ -78,31 +83,30 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
       const std::size_t slot = seq % ahead;
       {
         std::unique_lock<std::mutex> lock(mutex);
-        changed.wait(lock, [&] { return failure || done[slot] || (end && seq == claimed); });
-        if (failure || !done[slot]) break;
+        // Items before a failure are all claimed and finish (their workers complete them).
+        changed.wait(lock, [&] { return done[slot] || (failure && failure_seq <= seq) || (end && seq == claimed); });
+        if (!done[slot]) {
+          if (failure && failure_seq <= seq) met = failure;
+          break;
+        }
         done[slot] = 0;
       }
       const bool go = consume(slot);
       std::lock_guard<std::mutex> lock(mutex);
       ++consumed;
       changed.notify_all();
-      if (!go) {
-        consumer_done = stop = true;
-        break;
-      }
+      if (!go) break;
     }
   } catch (...) {
-    std::lock_guard<std::mutex> lock(mutex);
-    fail_locked(std::current_exception());
+    met = std::current_exception();
   }
   {
     std::lock_guard<std::mutex> lock(mutex);
-    consumer_done = !failure;  // from here on only items nobody will consume can fail
     stop = true;
     changed.notify_all();
   }
   for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  if (met) std::rethrow_exception(met);
 }
 
 }  // namespace rdsf::detail

@@ -11,9 +11,9 @@
 //     work is deterministic the outcome does not depend on the thread count (with threads == 1 that loop is
 //     what runs, on the calling thread, no thread started);
 //   - at most `ahead` items are claimed and not yet consumed (bounded memory; at least `threads`);
-//   - the first exception thrown by claim, work or consume stops the pool (no further claim, the workers
-//     finish the item in hand, nothing more is consumed) and is rethrown on the calling thread; once
-//     consume returned false, exceptions of items claimed ahead (never to be consumed) are ignored.
+//   - errors too: an exception thrown by claim or work for item k stops further claims and is rethrown on
+//     the calling thread after items 0 .. k-1 were consumed, as the loop would; one thrown by consume is
+//     rethrown at once; an item beyond where consume returned false never throws (the loop never got there).
 // The thread count is resolved by resolve_thread_count (0: one per core).
 #include <algorithm>
 #include <cstddef>
