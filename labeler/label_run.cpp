@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -12,6 +14,7 @@
 #include <opencv2/highgui.hpp>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
 #include "gui/display.hpp"
 #include "label_keys.hpp"
 #include "label_screen.hpp"
@@ -78,6 +81,26 @@ struct Latency {
   }
 };
 
+// Why a candidate is shown: the person's time is spent here because neither truth nor model is sure.
+std::string reason_of(const LabelingSession& session, const PresentedCandidate& p) {
+  char text[160];
+  if (!p.frame->probabilities.empty()) {
+    const double pr = p.frame->probabilities[p.index];
+    const LabelingConfig& c = session.config();
+    if (c.ask == AskOrder::uncertain) {
+      std::snprintf(text, sizeof text, "asked: uncertain (|P - 0.5| = %.2f, %zu left)", std::abs(pr - 0.5),
+                    session.pending());
+    } else if (c.model_answers) {
+      std::snprintf(text, sizeof text, "asked: model unsure (%.2f < P < %.2f)", c.reject_probability,
+                    c.accept_probability);
+    } else {
+      return "";
+    }
+    return text;
+  }
+  return "";
+}
+
 ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Clock::time_point start,
                        const std::string& message) {
   const LabelingStats& st = session.stats();
@@ -91,6 +114,12 @@ ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Cl
   const double minutes = std::chrono::duration<double>(Clock::now() - start).count() / 60.0;
   s.rate_per_minute = minutes > 0 ? static_cast<double>(st.answers()) / minutes : 0.0;
   if (!p.frame->scores.empty()) s.score = p.frame->scores[p.index];
+  if (!p.frame->probabilities.empty()) s.probability = p.frame->probabilities[p.index];
+  if (session.model() != nullptr && session.config().model_answers) {
+    s.model_positives = st.model_positives;
+    s.model_negatives = st.model_negatives;
+  }
+  s.reason = reason_of(session, p);
   if (!p.frame->truth_iou.empty()) s.truth_iou = p.frame->truth_iou[p.index];
   s.message = message;
   return s;
@@ -104,7 +133,17 @@ int run_label(const LabelOptions& o) {
     gui::require_display("rdsf-label", "label on this machine with --answers FILE (or - for stdin) instead");
   }
   std::unique_ptr<BoostedModel> model;
-  if (!o.model.empty()) model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
+  if (!o.model.empty()) {
+    model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
+    // Checked before the set is opened or created, so that a wrong model changes nothing.
+    const bool exists = std::filesystem::exists(std::filesystem::path(o.out_set) / "manifest.yml");
+    const FeatureSpec set_spec = exists ? SampleSet::open_read(o.out_set).feature_spec() : o.session.detector.features;
+    if (!(model->feature_spec() == set_spec)) {
+      fail(model->path(), "the model reads feature spec " + model->feature_spec().hash() + ", the sample set " +
+                              o.out_set + (exists ? " holds " : " would hold ") + set_spec.hash() +
+                              ": give a model trained on the set's features");
+    }
+  }
   std::unique_ptr<GroundTruth> truth;
   if (!o.truth_csv.empty()) {
     truth = std::make_unique<GroundTruth>(read_ground_truth(o.truth_csv));
@@ -122,17 +161,33 @@ int run_label(const LabelOptions& o) {
   for (const std::string& repair : writer.repairs()) {  // what a crash left: torn rows, orphan or unusable crops
     std::cerr << "rdsf-label: " << writer.dir() << ": repaired " << repair << "\n";
   }
-  LabelingSession session(o.session, writer, model.get(), truth.get());
   const char* window = "rdsf-label";
   // No toolbar or status bar of Qt's: the picture is the whole window, keys go straight to the labeler.
   if (!headless) cv::namedWindow(window, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
+  std::int64_t total_frames = 0;
+  auto scoring = [&](std::int64_t frames) {  // uncertain mode: the whole session is scored first
+    if (frames % 25 != 0 && frames != total_frames) return;
+    std::fprintf(stderr, "rdsf-label: scored %lld%s frames\n", static_cast<long long>(frames),
+                 total_frames > 0 ? ("/" + std::to_string(total_frames)).c_str() : "");
+    if (!headless) {
+      cv::imshow(window, render_note("scoring every frame first: " + std::to_string(frames) + " frames"));
+      cv::waitKey(1);
+    }
+  };
+  LabelingSession session(o.session, writer, model.get(), truth.get(), scoring);
+  if (session.total_frames()) total_frames = *session.total_frames();
 
   const auto start = Clock::now();
   Latency latency;
   std::optional<Clock::time_point> key_time;
   std::string message;
-  bool quit = false, answers_ran_out = false;
+  bool quit = false, answers_ran_out = false, budget_spent = false;
+  double zoom = 1.0;
   while (!quit) {
+    if (o.budget > 0 && session.stats().answers() >= o.budget) {
+      budget_spent = true;
+      break;
+    }
     const PresentedCandidate* p = session.current();
     if (p == nullptr) break;
     if (answers_ran_out) {  // headless and out of keys: the rest stays unanswered, the run completes
@@ -147,7 +202,9 @@ int run_label(const LabelOptions& o) {
         continue;
       }
     } else {
-      cv::imshow(window, render_label_screen(*p, status_of(session, *p, start, message)));
+      ScreenStatus status = status_of(session, *p, start, message);
+      status.zoom = zoom;
+      cv::imshow(window, render_label_screen(*p, status));
       if (key_time) latency.add(*key_time);
       while (key == label_keys::kNone) {
         const int code = cv::waitKeyEx(100);
@@ -158,6 +215,11 @@ int run_label(const LabelOptions& o) {
         }
         key = label_keys::from_key_code(code);
       }
+    }
+    if (key == label_keys::kZoomIn || key == label_keys::kZoomOut) {  // the same candidate, redrawn
+      zoom = std::clamp(key == label_keys::kZoomIn ? zoom * 2 : zoom / 2, 1.0, 8.0);
+      key_time.reset();
+      continue;
     }
     key_time = Clock::now();
     message.clear();
@@ -175,11 +237,14 @@ int run_label(const LabelOptions& o) {
   const LabelingStats& st = session.stats();
   std::fprintf(stderr,
                "rdsf-label: %lld frames; answered %ld (positives %ld, not people %ld of which stored %ld, skipped %ld, "
-               "undone %ld); assisted: %ld positives, %ld negatives; %ld answered before; %ld left unanswered%s\n",
+               "undone %ld); assisted: %ld positives, %ld negatives; by model: %ld positives, %ld negatives; "
+               "%ld answered before; %ld left unanswered%s\n",
                static_cast<long long>(st.frames_loaded), st.answers(), st.positives, st.negatives, st.rejected,
-               st.skipped, st.undone, st.auto_positives, st.auto_negatives, st.already_answered,
-               st.unanswered + (quit ? static_cast<long>(session.pending_in_frame()) : 0L),
-               quit ? " (quit: run again to resume)" : "");
+               st.skipped, st.undone, st.auto_positives, st.auto_negatives, st.model_positives, st.model_negatives,
+               st.already_answered,
+               st.unanswered + (quit || budget_spent ? static_cast<long>(session.pending_in_frame()) : 0L),
+               budget_spent ? " (budget of answers spent: run again to resume)"
+                            : quit ? " (quit: run again to resume)" : "");
   std::fprintf(stderr, "rdsf-label: %s\n", latency.summary().c_str());
   std::fprintf(stderr, "rdsf-label: sample set %s now holds %zu samples\n", o.out_set.c_str(), writer.records().size());
   return 0;

@@ -13,6 +13,7 @@ struct LabelOptions {
   std::string models_dir = "models";
   std::string truth_csv;       ///< empty: no assisted mode
   std::string answers;         ///< empty: window; "-": stdin; else a file
+  long budget = 0;             ///< stop after this many human answers; 0: no limit
   double min_visible = 0.5;    ///< assisted mode: people less visible than this are don't-care
 };
 

@@ -1,0 +1,67 @@
+#include "rdsf/labeling/active_learning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
+
+namespace rdsf {
+
+std::vector<std::size_t> most_uncertain_first(const std::vector<double>& probabilities) {
+  std::vector<std::size_t> order(probabilities.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(probabilities[a] - 0.5) < std::abs(probabilities[b] - 0.5);
+  });
+  return order;
+}
+
+std::optional<BoostedModel> train_loop_model(const cv::Mat1f& rows, const std::vector<int>& labels,
+                                             const std::vector<SampleOrigin>& origins, const FeatureSpec& spec,
+                                             const LoopTrainingParams& params, const std::string& name) {
+  const auto positives = static_cast<int>(std::count(labels.begin(), labels.end(), 1));
+  const int negatives = static_cast<int>(labels.size()) - positives;
+  if (positives < params.min_per_class || negatives < params.min_per_class) return std::nullopt;
+  BoostTrainingParams p;
+  p.rounds = params.rounds;
+  p.depth = params.depth;
+  p.learning_rate = params.learning_rate;
+  p.validation_fraction = params.validation_fraction;
+  p.folds = 0;
+  p.seed = params.seed;
+  p.threads = params.threads;
+  p.feature_spec = spec;
+  TrainingRowInfo info;
+  if (!origins.empty()) info.groups = sample_groups(origins, params.group_frames).group;
+  BoostedModel model;
+  try {
+    model = train_boosted_model(rows, labels, p, {}, nullptr, nullptr, info);
+  } catch (const Error&) {
+    // Too few groups for a held-out part with both classes (early in a session): split by sample instead.
+    if (info.groups.empty()) throw;
+    model = train_boosted_model(rows, labels, p, {}, nullptr, nullptr, TrainingRowInfo{});
+  }
+  model.set_identity(name, 0, "", "");
+  return model;
+}
+
+std::optional<BoostedModel> train_loop_model(const SampleSet& set, const LoopTrainingParams& params,
+                                             const std::string& name) {
+  std::vector<int> labels;
+  std::vector<SampleOrigin> origins;
+  for (const SampleRecord& r : set.records()) {
+    labels.push_back(r.label);
+    origins.push_back({r.source, r.frame});
+  }
+  const auto positives = static_cast<int>(std::count(labels.begin(), labels.end(), 1));
+  if (positives < params.min_per_class || static_cast<int>(labels.size()) - positives < params.min_per_class) {
+    return std::nullopt;
+  }
+  const cv::Mat1f rows = set.features(RdsfExtractor(set.feature_spec()), {}, params.threads);
+  return train_loop_model(rows, labels, origins, set.feature_spec(), params, name);
+}
+
+}  // namespace rdsf
