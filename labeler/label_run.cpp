@@ -16,6 +16,7 @@
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "gui/display.hpp"
+#include "gui/scripted_keys.hpp"
 #include "label_keys.hpp"
 #include "label_screen.hpp"
 
@@ -23,46 +24,6 @@ namespace rdsf {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Scripted keys from a file or stdin, read as they are needed (so that keys typed or piped in one by one
-// are answered one by one): whitespace-separated tokens; a token of several key letters is several keys
-// ("yynsu"), and "space", "backspace" and "esc" name those keys.
-class ScriptedKeys {
- public:
-  explicit ScriptedKeys(const std::string& path) : path_(path) {
-    if (path != "-") {
-      file_.open(path);
-      if (!file_) fail(path, "answers file cannot be opened");
-    }
-  }
-  bool next(char& key) {
-    while (pending_.empty()) {
-      std::string token;
-      if (!(in() >> token)) return false;
-      const char named = label_keys::from_token(token);
-      if (named != label_keys::kNone) {
-        pending_.push_back(named);
-        continue;
-      }
-      for (char c : token) {
-        const char k = label_keys::from_key_code(static_cast<unsigned char>(c));
-        if (k == label_keys::kNone) {
-          fail(path_ == "-" ? "standard input" : path_, "unknown key '" + std::string(1, c) + "' (keys: y n s u q)");
-        }
-        pending_.push_back(k);
-      }
-    }
-    key = pending_.front();
-    pending_.erase(pending_.begin());
-    return true;
-  }
-
- private:
-  std::istream& in() { return path_ == "-" ? std::cin : file_; }
-  std::string path_;
-  std::ifstream file_;
-  std::vector<char> pending_;
-};
 
 struct Latency {
   std::vector<double> ms;
@@ -153,8 +114,12 @@ int run_label(const LabelOptions& o) {
                 << o.min_visible * 100 << "% visible: their candidates are asked, not answered\n";
     }
   }
-  std::unique_ptr<ScriptedKeys> scripted;
-  if (headless) scripted = std::make_unique<ScriptedKeys>(o.answers);
+  std::unique_ptr<gui::ScriptedKeys> scripted;
+  if (headless) {
+    scripted = std::make_unique<gui::ScriptedKeys>(
+        o.answers, label_keys::from_token,
+        [](char c) { return label_keys::from_key_code(static_cast<unsigned char>(c)); }, "y n s u q");
+  }
 
   SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.detector.features, o.session.camera,
                                                            "rdsf-label");

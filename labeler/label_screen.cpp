@@ -5,21 +5,14 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "gui/screen_text.hpp"
 #include "rdsf/detector/overlay.hpp"
 #include "label_keys.hpp"
 
 namespace rdsf {
 namespace {
 
-const cv::Scalar kBackground(38, 34, 30);
-const cv::Scalar kText(235, 235, 235);
-const cv::Scalar kDim(150, 150, 150);
-const cv::Scalar kHighlight(0, 215, 255);  // amber
-
-void put(cv::Mat3b& canvas, const std::string& text, cv::Point at, double scale, const cv::Scalar& colour,
-         int thickness = 1) {
-  cv::putText(canvas, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, thickness, cv::LINE_AA);
-}
+using namespace gui;  // the screens' colours and put()
 
 }  // namespace
 
