@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,7 +15,9 @@
 #include <opencv2/highgui.hpp>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/labeling/active_learning.hpp"
 #include "gui/display.hpp"
 #include "gui/scripted_keys.hpp"
 #include "label_keys.hpp"
@@ -89,7 +92,8 @@ ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Cl
 }  // namespace
 
 int run_label(const LabelOptions& o) {
-  const bool headless = !o.answers.empty();
+  const bool oracle = o.session.truth_is_oracle;
+  const bool headless = !o.answers.empty() || oracle;
   if (!headless) {
     gui::require_display("rdsf-label", "label on this machine with --answers FILE (or - for stdin) instead");
   }
@@ -115,7 +119,7 @@ int run_label(const LabelOptions& o) {
     }
   }
   std::unique_ptr<gui::ScriptedKeys> scripted;
-  if (headless) {
+  if (headless && !oracle) {
     scripted = std::make_unique<gui::ScriptedKeys>(
         o.answers, label_keys::from_token,
         [](char c) { return label_keys::from_key_code(static_cast<unsigned char>(c)); }, "y n s u q");
@@ -142,6 +146,34 @@ int run_label(const LabelOptions& o) {
   LabelingSession session(o.session, writer, model.get(), truth.get(), scoring);
   if (session.total_frames()) total_frames = *session.total_frames();
 
+  // The loop: every `batch` human answers, a model is trained on the set, saved and put in charge.
+  std::deque<BoostedModel> loop_models;  // every version stays alive: presented frames were scored by it
+  long answers_at_last_train = 0;
+  SampleFeatureCache features;
+  auto retrain = [&] {
+    if (!headless) {
+      cv::imshow(window, render_note("retraining on " + std::to_string(writer.records().size()) + " samples..."));
+      cv::waitKey(1);
+    }
+    const auto t0 = Clock::now();
+    std::optional<BoostedModel> trained = train_loop_model(SampleSet::open_read(o.out_set), LoopTrainingParams{}, o.loop_model, &features);
+    const LabelingStats& st = session.stats();
+    if (!trained) {
+      std::fprintf(stderr, "rdsf-label: loop: %ld answers; too few of a class to train yet\n", st.answers());
+      return;
+    }
+    save_new_model_version(*trained, o.loop_model, o.models_dir);
+    loop_models.push_back(std::move(*trained));
+    const BoostedModel& m = loop_models.back();
+    session.rescore(m, /*may_answer=*/false);  // the loop's model answers wait for its end (the best model)
+    const RocSummary& v = m.training().validation.summary;
+    std::fprintf(stderr,
+                 "rdsf-label: loop: %ld answers (%ld y, %ld n), by model %ld y %ld n; %s/v%d trained on %zu samples in "
+                 "%.1f s: held-out AUC %.3f, TAR at FAR 1%% %.3f; %zu candidates left, the model sure of %zu\n",
+                 st.answers(), st.positives, st.negatives, st.model_positives, st.model_negatives, m.name().c_str(),
+                 m.version(), writer.records().size(), std::chrono::duration<double>(Clock::now() - t0).count(), v.auc,
+                 v.tar_at_far_1, session.pending(), session.sure_count());
+  };
   const auto start = Clock::now();
   Latency latency;
   std::optional<Clock::time_point> key_time;
@@ -153,6 +185,11 @@ int run_label(const LabelOptions& o) {
       budget_spent = true;
       break;
     }
+    if (o.loop && session.stats().answers() - answers_at_last_train >= o.batch) {
+      answers_at_last_train = session.stats().answers();
+      retrain();
+      key_time.reset();  // training time is not the key's latency
+    }
     const PresentedCandidate* p = session.current();
     if (p == nullptr) break;
     if (answers_ran_out) {  // headless and out of keys: the rest stays unanswered, the run completes
@@ -160,7 +197,10 @@ int run_label(const LabelOptions& o) {
       continue;
     }
     char key = label_keys::kNone;
-    if (headless) {
+    if (oracle) {
+      if (key_time) latency.add(*key_time);
+      key = session.oracle_key();
+    } else if (headless) {
       if (key_time) latency.add(*key_time);
       if (!scripted->next(key)) {
         answers_ran_out = true;
@@ -197,6 +237,19 @@ int run_label(const LabelOptions& o) {
       message = "undone: answer again";
     }
   }
+  if (o.loop && session.model() != nullptr && session.config().model_answers) {
+    // The loop's end: the last model, trained on every answer, answers what it is sure about.
+    if (session.stats().answers() > answers_at_last_train) retrain();
+    const LabelingStats& st = session.stats();
+    if (st.positives >= o.loop_answer_after && st.negatives >= o.loop_answer_after) {
+      const std::size_t answered = session.finish_with_model();
+      std::fprintf(stderr, "rdsf-label: loop: %s/v%d answered the %zu candidates it is sure about\n",
+                   session.model()->name().c_str(), session.model()->version(), answered);
+    } else {
+      std::fprintf(stderr, "rdsf-label: loop: fewer than %ld y and %ld n answers: the model answers nothing\n",
+                   o.loop_answer_after, o.loop_answer_after);
+    }
+  }
   if (!headless) cv::destroyAllWindows();
 
   const LabelingStats& st = session.stats();
@@ -210,6 +263,12 @@ int run_label(const LabelOptions& o) {
                st.unanswered + (quit || budget_spent ? static_cast<long>(session.pending_in_frame()) : 0L),
                budget_spent ? " (budget of answers spent: run again to resume)"
                             : quit ? " (quit: run again to resume)" : "");
+  if (o.session.truth_is_oracle && session.model() != nullptr) {
+    const long by_model = st.model_positives + st.model_negatives;
+    std::fprintf(stderr, "rdsf-label: truth oracle: %ld of %ld model answers wrong (%.2f%%), %ld in the truth's uncertain band\n",
+                 st.model_wrong, by_model, by_model ? 100.0 * static_cast<double>(st.model_wrong) / static_cast<double>(by_model) : 0.0,
+                 st.model_in_band);
+  }
   std::fprintf(stderr, "rdsf-label: %s\n", latency.summary().c_str());
   std::fprintf(stderr, "rdsf-label: sample set %s now holds %zu samples\n", o.out_set.c_str(), writer.records().size());
   return 0;

@@ -113,10 +113,18 @@ LoopResult run_loop(const Pool& pool, const Pool& test, double target, const Lab
   while (r.asked.size() < n) {
     const std::size_t want = std::min(n, r.asked.size() + static_cast<std::size_t>(o.batch));
     if (active && r.model) {
+      // As rdsf-label --loop: most uncertain first, every explore-th a random one.
       const std::vector<double> p = probabilities(*r.model, pool.rows);
-      for (std::size_t i : most_uncertain_first(p)) {
-        if (r.asked.size() >= want) break;
-        if (!asked[i]) take(i);
+      const std::vector<std::size_t> order = most_uncertain_first(p);
+      std::size_t next = 0, k = 0;
+      while (r.asked.size() < want) {
+        if (o.explore > 0 && ++k % static_cast<std::size_t>(o.explore) == 0) {
+          while (asked[random_order[next_random]]) ++next_random;
+          take(random_order[next_random]);
+        } else {
+          while (asked[order[next]]) ++next;
+          take(order[next]);
+        }
       }
     } else {
       while (r.asked.size() < want) {

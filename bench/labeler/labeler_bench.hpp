@@ -11,7 +11,8 @@
 //   1. the all-labelled model: trained on the whole pool (the loop's trainer, active_learning.hpp); its
 //      held-out TAR is the target;
 //   2. active learning: a seeded random first batch, then batch after batch the pool's most uncertain
-//      candidates under the model trained on the answers so far; answers needed to reach the target;
+//      candidates under the model trained on the answers so far (every explore-th a random one, as
+//      rdsf-label --loop); answers needed to reach the target;
 //      the same with random batches (passive) for comparison;
 //   3. model answers: the share of wrong answers and of candidates answered at --accept / --reject (and a
 //      sweep), by the all-labelled model on the held-out candidates and by the active model on the pool
@@ -28,6 +29,7 @@ namespace rdsf::bench {
 struct LabelerBenchOptions {
   std::vector<std::string> train, test;  ///< synthetic recordings with boxes.csv
   int batch = 25;                        ///< answers per batch
+  int explore = 5;                       ///< active: every explore-th answer a random candidate (0: off)
   double accept = 0.99, reject = 0.01;   ///< the model answers measured
   double flip_fraction = 0.01;           ///< review: labels flipped
   std::uint64_t seed = 1;

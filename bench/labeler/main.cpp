@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
         ("train", po::value(&o.train)->required()->composing(), "labelled recordings of the pool (boxes.csv)")
         ("test", po::value(&o.test)->required()->composing(), "held-out labelled recordings")
         ("batch", po::value(&o.batch)->default_value(o.batch), "answers per batch")
+        ("explore", po::value(&o.explore)->default_value(o.explore), "active: every Nth answer a random candidate (0: off)")
         ("accept", po::value(&o.accept)->default_value(o.accept), "model answers: P >= this is y")
         ("reject", po::value(&o.reject)->default_value(o.reject), "model answers: P <= this is n")
         ("flip", po::value(&o.flip_fraction)->default_value(o.flip_fraction), "review: share of labels flipped")

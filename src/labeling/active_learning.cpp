@@ -48,19 +48,42 @@ std::optional<BoostedModel> train_loop_model(const cv::Mat1f& rows, const std::v
   return model;
 }
 
+cv::Mat1f SampleFeatureCache::rows(const SampleSet& set, const std::vector<std::size_t>& indices, int threads) {
+  std::vector<std::size_t> missing;
+  for (std::size_t i : indices) {
+    if (rows_.count(set.records()[i].id) == 0) missing.push_back(i);
+  }
+  if (!missing.empty()) {
+    const cv::Mat1f computed = set.features(RdsfExtractor(set.feature_spec()), missing, threads);
+    for (std::size_t k = 0; k < missing.size(); ++k) {
+      rows_[set.records()[missing[k]].id] = computed.row(static_cast<int>(k)).clone();
+    }
+  }
+  cv::Mat1f out(static_cast<int>(indices.size()), set.feature_spec().dimension());
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    rows_.at(set.records()[indices[k]].id).copyTo(out.row(static_cast<int>(k)));
+  }
+  return out;
+}
+
 std::optional<BoostedModel> train_loop_model(const SampleSet& set, const LoopTrainingParams& params,
-                                             const std::string& name) {
+                                             const std::string& name, SampleFeatureCache* cache) {
   std::vector<int> labels;
   std::vector<SampleOrigin> origins;
-  for (const SampleRecord& r : set.records()) {
+  std::vector<std::size_t> used;
+  for (std::size_t i = 0; i < set.records().size(); ++i) {
+    const SampleRecord& r = set.records()[i];
+    if (!params.train_on_model_answers && r.origin == "labeler-model") continue;
     labels.push_back(r.label);
     origins.push_back({r.source, r.frame});
+    used.push_back(i);
   }
   const auto positives = static_cast<int>(std::count(labels.begin(), labels.end(), 1));
   if (positives < params.min_per_class || static_cast<int>(labels.size()) - positives < params.min_per_class) {
     return std::nullopt;
   }
-  const cv::Mat1f rows = set.features(RdsfExtractor(set.feature_spec()), {}, params.threads);
+  const cv::Mat1f rows =
+      cache ? cache->rows(set, used, params.threads) : set.features(RdsfExtractor(set.feature_spec()), used, params.threads);
   return train_loop_model(rows, labels, origins, set.feature_spec(), params, name);
 }
 

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
@@ -61,7 +62,6 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
                 ", the sample set " + writer_.dir() + " holds " + writer_.manifest().feature_spec.hash() +
                 ": use a model trained on this set's features");
   }
-  if (config_.ask == AskOrder::uncertain && model_ == nullptr) throw Error("--ask uncertain needs --model");
   std::unordered_set<std::int64_t> ids;  // an undo cut short by a failed write or a power cut is finished
   for (const SampleRecord& r : writer_.records()) ids.insert(r.id);
   journal_.finish_interrupted_undos([&ids](std::int64_t id) { return ids.count(id) != 0; });
@@ -150,7 +150,7 @@ bool LabelingSession::answer_without_asking(const PresentedCandidate& p) {
   const LoadedFrame& frame = *p.frame;
   const std::size_t i = p.index;
   const CandidateKey key = p.key();
-  if (!frame.truth_iou.empty()) {
+  if (!frame.truth_iou.empty() && !config_.truth_is_oracle) {
     const double overlap = frame.truth_iou[i];
     if (overlap >= config_.certain_iou) {
       journal_.record({key, 'y', store(p, 1, "labeler"), "truth"});
@@ -166,6 +166,11 @@ bool LabelingSession::answer_without_asking(const PresentedCandidate& p) {
   if (config_.model_answers && !frame.probabilities.empty()) {
     const double pr = frame.probabilities[i];
     const std::string by = model_answerer(*model_, frame.scores[i], pr);
+    if (config_.truth_is_oracle && (pr >= config_.accept_probability || pr <= config_.reject_probability)) {
+      const char truth = oracle_key(p);
+      if (truth == 's') ++stats_.model_in_band;
+      if (truth == (pr >= config_.accept_probability ? 'n' : 'y')) ++stats_.model_wrong;
+    }
     if (pr >= config_.accept_probability) {
       journal_.record({key, 'y', store(p, 1, "labeler-model"), by});
       ++stats_.model_positives;
@@ -181,12 +186,38 @@ bool LabelingSession::answer_without_asking(const PresentedCandidate& p) {
 }
 
 void LabelingSession::order_by_uncertainty() {
+  if (model_ == nullptr) {  // no model yet (the loop's first batch): a seeded random order over the session
+    const std::vector<std::size_t> order = seeded_permutation(queue_.size(), config_.seed);
+    std::deque<PresentedCandidate> shuffled;
+    for (std::size_t i : order) shuffled.push_back(queue_[i]);
+    queue_ = std::move(shuffled);
+    return;
+  }
   auto doubt = [](const PresentedCandidate& p) { return std::abs(p.frame->probabilities[p.index] - 0.5); };
   std::stable_sort(queue_.begin(), queue_.end(),
                    [&](const PresentedCandidate& a, const PresentedCandidate& b) { return doubt(a) < doubt(b); });
+  if (config_.explore_every <= 0 || queue_.size() < 2) return;
+  const std::vector<std::size_t> random = seeded_permutation(queue_.size(), config_.seed + ++reorders_);
+  std::vector<bool> taken(queue_.size(), false);
+  std::deque<PresentedCandidate> mixed;
+  std::size_t next_sorted = 0, next_random = 0;
+  const auto every = static_cast<std::size_t>(config_.explore_every);
+  for (std::size_t k = 0; k < queue_.size(); ++k) {
+    std::size_t i = 0;
+    if ((k + 1) % every == 0) {
+      while (taken[random[next_random]]) ++next_random;
+      i = random[next_random];
+    } else {
+      while (taken[next_sorted]) ++next_sorted;
+      i = next_sorted;
+    }
+    taken[i] = true;
+    mixed.push_back(queue_[i]);
+  }
+  queue_ = std::move(mixed);
 }
 
-void LabelingSession::rescore(const BoostedModel& model) {
+void LabelingSession::rescore(const BoostedModel& model, bool may_answer) {
   if (!(model.feature_spec() == writer_.manifest().feature_spec)) {
     throw Error(model.path() + ": the model reads another feature spec than the sample set " + writer_.dir());
   }
@@ -206,9 +237,12 @@ void LabelingSession::rescore(const BoostedModel& model) {
     if (auto it = rescored.find(g.presented.frame.get()); it != rescored.end()) g.presented.frame = it->second;
   }
   std::deque<PresentedCandidate> kept;
+  const bool answers = config_.model_answers;
+  config_.model_answers = answers && may_answer;
   for (const PresentedCandidate& p : queue_) {
     if (!answer_without_asking(p)) kept.push_back(p);
   }
+  config_.model_answers = answers;
   queue_ = std::move(kept);
   if (config_.ask == AskOrder::uncertain) order_by_uncertainty();
 }
@@ -295,6 +329,37 @@ bool LabelingSession::answer(char key) {
   history_.push_back({p, entry});
   queue_.pop_front();
   return true;
+}
+
+std::size_t LabelingSession::sure_count() const {
+  std::size_t n = 0;
+  for (const PresentedCandidate& p : queue_) {
+    if (p.frame->probabilities.empty()) continue;
+    const double pr = p.frame->probabilities[p.index];
+    n += pr >= config_.accept_probability || pr <= config_.reject_probability ? 1 : 0;
+  }
+  return n;
+}
+
+std::size_t LabelingSession::finish_with_model() {
+  if (model_ == nullptr || !config_.model_answers) return 0;
+  const std::size_t before = queue_.size();
+  std::deque<PresentedCandidate> kept;
+  for (const PresentedCandidate& p : queue_) {
+    if (!answer_without_asking(p)) kept.push_back(p);
+  }
+  queue_ = std::move(kept);
+  return before - queue_.size();
+}
+
+char LabelingSession::oracle_key() const { return queue_.empty() ? '\0' : oracle_key(queue_.front()); }
+
+char LabelingSession::oracle_key(const PresentedCandidate& p) const {
+  if (p.frame->truth_iou.empty()) return '\0';
+  const double overlap = p.frame->truth_iou[p.index];
+  if (overlap >= config_.certain_iou) return 'y';
+  if (overlap < config_.uncertain_iou && p.frame->ignored_iou[p.index] < config_.uncertain_iou) return 'n';
+  return 's';
 }
 
 void LabelingSession::leave_unanswered() {

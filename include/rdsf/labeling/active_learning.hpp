@@ -11,6 +11,8 @@
 //                at labelling sizes.
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -34,6 +36,9 @@ struct LoopTrainingParams {
   double validation_fraction = 0.2;  ///< held out (by group) for the Platt calibration
   int group_frames = 15;             ///< frames per validation group (a synthetic clip's length)
   int min_per_class = 5;             ///< fewer positives or negatives: no model yet
+  /// Train on samples the model answered too (origin "labeler-model"); off: a model's answers never teach
+  /// its successor (self-training made the loop's later models answer persons n: docs/labeler.md).
+  bool train_on_model_answers = false;
   std::uint64_t seed = 1;
   int threads = 0;                   ///< 0: one per core (the result does not depend on it)
 };
@@ -45,8 +50,19 @@ std::optional<BoostedModel> train_loop_model(const cv::Mat1f& rows, const std::v
                                              const std::vector<SampleOrigin>& origins, const FeatureSpec& spec,
                                              const LoopTrainingParams& params, const std::string& name = "loop");
 
-/// The same on every sample in force of `set`, features computed from its crops.
+/// Feature rows of a growing set's samples by id, so that each retrain computes only the new samples'.
+class SampleFeatureCache {
+ public:
+  /// Rows of the samples `indices` of `set` (records() positions), computing those not seen before.
+  cv::Mat1f rows(const SampleSet& set, const std::vector<std::size_t>& indices, int threads = 0);
+
+ private:
+  std::unordered_map<std::int64_t, cv::Mat1f> rows_;
+};
+
+/// The same on the samples in force of `set` (without the model's answers unless train_on_model_answers),
+/// features computed from its crops (only the new ones when a cache is given).
 std::optional<BoostedModel> train_loop_model(const SampleSet& set, const LoopTrainingParams& params,
-                                             const std::string& name = "loop");
+                                             const std::string& name = "loop", SampleFeatureCache* cache = nullptr);
 
 }  // namespace rdsf

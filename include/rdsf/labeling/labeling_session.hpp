@@ -16,7 +16,8 @@
 // they are journalled with by = "model NAME/vN H=... P=..." and their samples have origin "labeler-model".
 // Ask order: in_order presents frame after frame (the thesis's way); uncertain scores every frame of every
 // source first (on the read-ahead thread) and presents the whole session's candidates closest to P = 0.5
-// first, ties in frame order. rescore() replaces the model mid-session (the active-learning loop).
+// first, ties in frame order (without a model yet: in a seeded random order). rescore() replaces the model
+// mid-session (the active-learning loop).
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -52,7 +53,12 @@ struct LabelingConfig {
   bool model_answers = true;
   double accept_probability = kDefaultAcceptProbability;
   double reject_probability = kDefaultRejectProbability;
-  AskOrder ask = AskOrder::in_order;
+  AskOrder ask = AskOrder::in_order;  ///< uncertain without a model: a seeded random order (the loop's start)
+  std::uint64_t seed = 1;
+  /// Uncertain order with exploration: every explore_every-th candidate presented is a seeded random one
+  /// instead of the next most uncertain, so that kinds of candidates the model has never seen (and is
+  /// wrongly sure about) are found too. 0 = off (plain uncertainty order); the loop uses 5.
+  int explore_every = 0;
   bool keep_rejected = false;
   bool order_by_score = false;  ///< present a frame's candidates highest score first (needs a model)
   /// Assisted mode: IoU of the box detections report (detector.reported_box: fitted by default, as the
@@ -62,6 +68,9 @@ struct LabelingConfig {
   /// Assisted mode: a candidate covering (IoU >= uncertain_iou) a person marked ignored in the truth
   /// (hardly visible, see ignore_hardly_visible) and no counted one is asked, never answered, as the
   /// evaluation counts it neither right nor wrong.
+  /// The truth is the person (benchmarks): it answers only the candidates presented (as a human answer,
+  /// see oracle_key()) instead of the sure ones silently.
+  bool truth_is_oracle = false;
   DetectorParams detector;
   CameraModel camera;
 };
@@ -88,6 +97,9 @@ struct LabelingStats {
   long positives = 0, negatives = 0, rejected = 0, skipped = 0, undone = 0;  ///< human answers this session
   long auto_positives = 0, auto_negatives = 0;                               ///< assisted mode
   long model_positives = 0, model_negatives = 0;                             ///< answered by the model
+  /// truth_is_oracle: model answers the truth contradicts (y for a sure not-person or n for a sure person),
+  /// and those in the truth's uncertain band (neither right nor wrong)
+  long model_wrong = 0, model_in_band = 0;
   long already_answered = 0;                                                 ///< skipped on resume
   long unanswered = 0;      ///< presented but left without an answer (answers ran out)
   std::int64_t frames_loaded = 0;
@@ -112,6 +124,10 @@ class LabelingSession {
   /// Applies a key: 'y', 'n', 's' or 'u'. Returns false when it did nothing (an undo with nothing to
   /// undo in this session, or no current candidate).
   bool answer(char key);
+  /// With truth_is_oracle: the key the truth gives the current candidate ('y' IoU >= certain_iou, 'n' below
+  /// uncertain_iou with everyone, else 's'); '\0' without truth or candidate.
+  char oracle_key() const;
+  char oracle_key(const PresentedCandidate& p) const;
   /// Leaves the current candidate unanswered and moves on (answers ran out in headless mode).
   void leave_unanswered();
 
@@ -127,8 +143,14 @@ class LabelingSession {
   std::size_t pending() const { return queue_.size(); }
 
   /// Replaces the model (which must outlive the session) and re-scores every pending candidate; in
-  /// uncertain mode reorders them, and with model answers lets the new model answer those it is sure of.
-  void rescore(const BoostedModel& model);
+  /// uncertain mode reorders them, and with model answers (and `may_answer`) lets the new model answer
+  /// those it is sure of.
+  void rescore(const BoostedModel& model, bool may_answer = true);
+  /// Pending candidates the current model is sure about (it would answer them).
+  std::size_t sure_count() const;
+  /// Lets the current model answer every pending candidate it is sure about (the loop's end); returns how
+  /// many it answered.
+  std::size_t finish_with_model();
 
  private:
   struct Given {
@@ -160,6 +182,7 @@ class LabelingSession {
   std::future<std::shared_ptr<LoadedFrame>> prefetch_;
   bool sources_done_ = false;
   std::deque<PresentedCandidate> queue_;
+  std::uint64_t reorders_ = 0;  ///< exploration draws a new random order each time
   std::vector<Given> history_;
   LabelingStats stats_;
 };
