@@ -54,10 +54,13 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   }
   cv::rectangle(view, candidate.window, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
   cv::rectangle(view, candidate.strict_box, kHighlight, 3, cv::LINE_AA);
-  if (s.zoom > 1.0) view = zoom_around(view, candidate.strict_box, s.zoom);
+  // Zoomed no further than keeps the candidate's window whole.
+  const double zoom = std::max(1.0, std::min({s.zoom, static_cast<double>(view.cols) / candidate.window.width,
+                                              static_cast<double>(view.rows) / candidate.window.height}));
+  if (zoom > 1.0) view = zoom_around(view, candidate.window, zoom);
   view.copyTo(canvas(cv::Rect(kMargin, kMargin, view.cols, view.rows)));
-  if (s.zoom > 1.0) {
-    std::snprintf(text_zoom, sizeof text_zoom, "zoom %.0fx", s.zoom);
+  if (zoom > 1.0) {
+    std::snprintf(text_zoom, sizeof text_zoom, "zoom %.1fx", zoom);
     put(canvas, text_zoom, {kMargin + 8, kMargin + 22}, 0.6, kHighlight, 2);
   }
 

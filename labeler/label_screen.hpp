@@ -18,7 +18,7 @@ struct ScreenStatus {
   std::optional<long> model_positives, model_negatives;  ///< answered by the model (with a model)
   std::optional<double> probability;                     ///< P(person)
   std::string reason;  ///< why this candidate is asked, e.g. "uncertain: P = 0.48"
-  double zoom = 1.0;   ///< frame zoom around the candidate (+ / -)
+  double zoom = 1.0;   ///< frame zoom around the candidate (+ / -), at most what keeps its window whole
   double rate_per_minute = 0;
   std::optional<double> score;
   std::optional<double> truth_iou;

@@ -18,7 +18,8 @@ int run_review(const ReviewOptions& o) {
   std::unique_ptr<BoostedModel> model;
   if (!o.model.empty()) model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
   ReviewConfig config;
-  config.order = parse_review_order(o.sort.empty() ? (model ? "suspicion" : "origin") : o.sort);
+  config.order = parse_review_order(o.sort.empty() ? (model || o.folds >= 2 ? "suspicion" : "origin") : o.sort);
+  config.folds = o.folds;
   config.columns = o.columns;
   config.rows = o.rows;
   std::unique_ptr<gui::ScriptedKeys> scripted;
@@ -33,6 +34,13 @@ int run_review(const ReviewOptions& o) {
     std::fprintf(stderr, "rdsf-review: %s: finished %ld flip(s) a killed review left half done\n", o.set.c_str(),
                  session.stats().finished_flips);
   }
+  for (std::size_t i = 0; i < session.items().size() && static_cast<long>(i) < o.list; ++i) {
+    const ReviewItem& item = session.items()[i];
+    std::printf("%zu\tsample %lld\tlabel %d\tP %s\t%s\n", i + 1, static_cast<long long>(item.record.id),
+                item.record.label, item.probability ? std::to_string(*item.probability).c_str() : "-",
+                item.record.origin.c_str());
+  }
+  std::fflush(stdout);
   const char* window = "rdsf-review";
   if (!headless) cv::namedWindow(window, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
   std::string message;

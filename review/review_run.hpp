@@ -12,6 +12,8 @@ struct ReviewOptions {
   std::string models_dir = "models";
   std::string sort;                ///< empty: suspicion with a model, else origin
   int columns = 6, rows = 2;
+  int folds = 0;                   ///< without a model: out-of-fold P from this many in-process models
+  long list = 0;                   ///< print the first N samples of the order (id, label, P, origin) first
   std::string keys;                ///< empty: window; "-": stdin; else a file
 };
 

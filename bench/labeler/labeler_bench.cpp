@@ -249,20 +249,7 @@ int run_labeler_bench(const LabelerBenchOptions& o) {
   for (std::size_t i = 0; i < n; ++i) all_rows[i] = i;
   const Pool flipped_pool = subset(pool, all_rows, &flipped);
   const std::optional<BoostedModel> in_sample = train_loop_model(flipped_pool.rows, flipped, flipped_pool.origins, FeatureSpec{}, params);
-  // Out of fold: 5 folds of whole groups.
-  const SampleGroups groups = sample_groups(pool.origins, params.group_frames);
-  std::vector<double> oof(n, 0.5);
-  constexpr int kFolds = 5;
-  for (int f = 0; f < kFolds; ++f) {
-    std::vector<std::size_t> train_rows, held;
-    for (std::size_t i = 0; i < n; ++i) (static_cast<int>(groups.group[i] % kFolds) == f ? held : train_rows).push_back(i);
-    const Pool part = subset(pool, train_rows, &flipped);
-    const std::optional<BoostedModel> m = train_loop_model(part.rows, part.labels, part.origins, FeatureSpec{}, params);
-    if (!m) continue;
-    const Pool h = subset(pool, held);
-    const std::vector<double> p = probabilities(*m, h.rows);
-    for (std::size_t k = 0; k < held.size(); ++k) oof[held[k]] = p[k];
-  }
+  const std::vector<double> oof = out_of_fold_probabilities(pool.rows, flipped, pool.origins, FeatureSpec{}, params, 5);
   if (in_sample) {
     const std::size_t found = found_in_first(probabilities(*in_sample, pool.rows), 0.05);
     std::printf("| review, model trained on the set itself: planted flips in the first 5%% shown | %zu of %zu (%s) |\n",

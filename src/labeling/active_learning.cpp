@@ -87,4 +87,31 @@ std::optional<BoostedModel> train_loop_model(const SampleSet& set, const LoopTra
   return train_loop_model(rows, labels, origins, set.feature_spec(), params, name);
 }
 
+std::vector<double> out_of_fold_probabilities(const cv::Mat1f& rows, const std::vector<int>& labels,
+                                              const std::vector<SampleOrigin>& origins, const FeatureSpec& spec,
+                                              const LoopTrainingParams& params, int folds) {
+  if (folds < 2) throw Error("out-of-fold scores need at least 2 folds");
+  const std::vector<std::size_t> group = sample_groups(origins, params.group_frames).group;
+  std::vector<double> p(labels.size(), 0.5);
+  for (int f = 0; f < folds; ++f) {
+    std::vector<int> train_rows, held;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      (static_cast<int>(group[i] % static_cast<std::size_t>(folds)) == f ? held : train_rows).push_back(static_cast<int>(i));
+    }
+    if (held.empty()) continue;
+    cv::Mat1f part(static_cast<int>(train_rows.size()), rows.cols);
+    std::vector<int> part_labels;
+    std::vector<SampleOrigin> part_origins;
+    for (std::size_t k = 0; k < train_rows.size(); ++k) {
+      rows.row(train_rows[k]).copyTo(part.row(static_cast<int>(k)));
+      part_labels.push_back(labels[static_cast<std::size_t>(train_rows[k])]);
+      part_origins.push_back(origins[static_cast<std::size_t>(train_rows[k])]);
+    }
+    const std::optional<BoostedModel> model = train_loop_model(part, part_labels, part_origins, spec, params);
+    if (!model) continue;
+    for (int i : held) p[static_cast<std::size_t>(i)] = model->probability(model->score(rows[i]));
+  }
+  return p;
+}
+
 }  // namespace rdsf

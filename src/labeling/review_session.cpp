@@ -9,6 +9,7 @@
 #include "rdsf/core/append_only_log.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/utc_time.hpp"
+#include "rdsf/features/rdsf_extractor.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/active_learning.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
@@ -41,22 +42,38 @@ ReviewSession::ReviewSession(const std::string& dir, const BoostedModel* model, 
     throw Error(model_->path() + ": the model reads feature spec " + model_->feature_spec().hash() +
                 ", the sample set " + dir + " holds " + writer_.manifest().feature_spec.hash());
   }
-  if (config_.order == ReviewOrder::suspicion && model_ == nullptr) {
-    throw Error("most suspicious first needs a model (--model), or sort by origin or source");
+  if (config_.order == ReviewOrder::suspicion && model_ == nullptr && config_.folds < 2) {
+    throw Error("most suspicious first needs a model (--model) or --folds, or sort by origin or source");
   }
   finish_interrupted_flips();
   if (stats_.finished_flips > 0) reader_ = SampleSet::open_read(dir);  // the finished retractions
   if (model_ != nullptr) scorer_.emplace(*model_);
   const std::vector<SampleRecord>& records = reader_.records();
+  std::vector<double> out_of_fold;  // per reader record, when folds are asked for without a model
+  if (model_ == nullptr && config_.folds >= 2) {
+    std::vector<std::size_t> with_crop;
+    std::vector<int> labels;
+    std::vector<SampleOrigin> origins;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      if (!records[i].has_crop) continue;
+      with_crop.push_back(i);
+      labels.push_back(records[i].label);
+      origins.push_back({records[i].source, records[i].frame});
+    }
+    const cv::Mat1f rows = reader_.features(RdsfExtractor(reader_.feature_spec()), with_crop);
+    const std::vector<double> p =
+        out_of_fold_probabilities(rows, labels, origins, reader_.feature_spec(), LoopTrainingParams{}, config_.folds);
+    out_of_fold.assign(records.size(), 0.5);
+    for (std::size_t k = 0; k < with_crop.size(); ++k) out_of_fold[with_crop[k]] = p[k];
+  }
   for (std::size_t i = 0; i < records.size(); ++i) {
     if (!records[i].has_crop) continue;  // imported vectors: nothing to look at
     ReviewItem item;
     item.record = records[i];
     item.depth_crop = reader_.depth_crop(i);
-    if (scorer_) {
-      item.probability = model_->probability(scorer_->score(item.depth_crop));
-      item.suspicion = suspicion(item.record.label, *item.probability);
-    }
+    if (scorer_) item.probability = model_->probability(scorer_->score(item.depth_crop));
+    if (!out_of_fold.empty()) item.probability = out_of_fold[i];
+    if (item.probability) item.suspicion = suspicion(item.record.label, *item.probability);
     items_.push_back(std::move(item));
     reader_index_.push_back(i);
   }

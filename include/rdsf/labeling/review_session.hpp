@@ -12,7 +12,7 @@
 // with the other label, is retracted then). The set's lock (SampleSetWriter) is held for the session's
 // lifetime: a set another program writes is refused.
 //
-// Suspicion (with a model) of a sample: 1 - P(person) for a person, P(person) for a not-person
+// Suspicion (with a model, or out of fold) of a sample: 1 - P(person) for a person, P(person) for a not-person
 // (active_learning.hpp); ties in id order. Origin order: origin, then id; source order: source, frame, id.
 #include <cstdint>
 #include <optional>
@@ -37,6 +37,9 @@ ReviewOrder parse_review_order(const std::string& text);
 struct ReviewConfig {
   ReviewOrder order = ReviewOrder::suspicion;  ///< suspicion needs a model
   int columns = 6, rows = 2;                   ///< samples per page = columns x rows
+  /// Without a model: P(person) of each sample out of fold (active_learning.hpp): `folds` models trained
+  /// in-process on the set's other groups; 0 = off. Suspicion order needs a model or folds.
+  int folds = 0;
 };
 
 struct ReviewItem {
