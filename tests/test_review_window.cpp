@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "rdsf/dataset/sample_set.hpp"
 #include "support/test_support.hpp"
@@ -52,7 +53,12 @@ class WindowProgram {
     const cv::Mat3b shot = test::read_xwd(dump);
     const std::filesystem::path artefacts = std::filesystem::path(RDSF_BINARY_DIR) / "test-artefacts";
     std::filesystem::create_directories(artefacts);
-    if (!shot.empty()) cv::imwrite((artefacts / artefact).string(), shot);
+    if (shot.empty()) return shot;
+    // The window only: the bounding box of what is drawn on the black screen.
+    cv::Mat1b drawn;
+    cv::cvtColor(shot, drawn, cv::COLOR_BGR2GRAY);
+    const cv::Rect window = cv::boundingRect(drawn > 0);
+    cv::imwrite((artefacts / artefact).string(), shot(window));
     return shot;
   }
   int wait_exit() {
