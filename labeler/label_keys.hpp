@@ -9,11 +9,13 @@ constexpr char kNotPerson = 'n';
 constexpr char kSkip = 's';
 constexpr char kUndo = 'u';
 constexpr char kQuit = 'q';
+constexpr char kZoomIn = '+';   ///< the frame, around the candidate (window only; ignored in --answers)
+constexpr char kZoomOut = '-';
 constexpr char kNone = '\0';
 
 /// The legend shown on screen.
 inline const char* legend() {
-  return "[y] person   [n] not a person   [s/space] skip   [u/backspace] undo   [q/Esc] save and quit";
+  return "[y] person   [n] not a person   [s/space] skip   [u/backspace] undo   [+/-] zoom   [q/Esc] save and quit";
 }
 
 /// Maps a highgui key code (cv::waitKeyEx) to a key above; kNone for anything else.
@@ -25,6 +27,8 @@ inline char from_key_code(int code) {
     case 's': case 'S': case ' ': return kSkip;
     case 'u': case 'U': case 8: case 127: case 0xff08: case 0x10000 + 8: return kUndo;  // backspace variants
     case 'q': case 'Q': case 27: return kQuit;
+    case '+': case '=': case 0xffab: return kZoomIn;   // = is + without shift; 0xffab keypad +
+    case '-': case 0xffad: return kZoomOut;
     default: return kNone;
   }
 }

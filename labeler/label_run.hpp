@@ -13,6 +13,12 @@ struct LabelOptions {
   std::string models_dir = "models";
   std::string truth_csv;       ///< empty: no assisted mode
   std::string answers;         ///< empty: window; "-": stdin; else a file
+ bool loop = false;           ///< active learning: batch, retrain, re-score, next batch
+  int batch = 25;              ///< --loop: human answers per batch
+  std::string loop_model = "loop";
+  /// --loop: at its end the last model answers what it is sure of, if the person gave this many y and n
+  long loop_answer_after = 30;  ///< --loop: models saved as models_dir/loop_model/vN.yml
+  long budget = 0;             ///< stop after this many human answers; 0: no limit
   double min_visible = 0.5;    ///< assisted mode: people less visible than this are don't-care
 };
 

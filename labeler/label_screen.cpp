@@ -1,26 +1,36 @@
 #include "label_screen.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <opencv2/imgproc.hpp>
 
+#include "gui/screen_text.hpp"
 #include "rdsf/detector/overlay.hpp"
 #include "label_keys.hpp"
 
 namespace rdsf {
 namespace {
 
-const cv::Scalar kBackground(38, 34, 30);
-const cv::Scalar kText(235, 235, 235);
-const cv::Scalar kDim(150, 150, 150);
-const cv::Scalar kHighlight(0, 215, 255);  // amber
-
-void put(cv::Mat3b& canvas, const std::string& text, cv::Point at, double scale, const cv::Scalar& colour,
-         int thickness = 1) {
-  cv::putText(canvas, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, thickness, cv::LINE_AA);
-}
+using namespace gui;  // the screens' colours and put()
 
 }  // namespace
+
+cv::Mat3b render_note(const std::string& text) {
+  cv::Mat3b note(120, 640, cv::Vec3b(38, 34, 30));
+  put(note, text, {16, 64}, 0.6, kText);
+  return note;
+}
+
+cv::Mat3b zoom_around(const cv::Mat3b& view, const cv::Rect& box, double zoom) {
+  // The part of the frame 1/zoom its size, centred on the box as far as the frame allows, enlarged back.
+  const int w = std::max(1, static_cast<int>(view.cols / zoom)), h = std::max(1, static_cast<int>(view.rows / zoom));
+  const cv::Point centre(box.x + box.width / 2, box.y + box.height / 2);
+  const int x = std::clamp(centre.x - w / 2, 0, view.cols - w), y = std::clamp(centre.y - h / 2, 0, view.rows - h);
+  cv::Mat3b out;
+  cv::resize(view(cv::Rect(x, y, w, h)), out, view.size(), 0, 0, cv::INTER_NEAREST);
+  return out;
+}
 
 cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s) {
   // Fits a 1280-pixel-wide screen: 640 frame + two crops at 2.5x (160x320) + margins = 1056 pixels.
@@ -32,6 +42,7 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   const int crop_w = static_cast<int>(candidate.depth_crop.cols * kCropScale);
   const int crop_h = static_cast<int>(candidate.depth_crop.rows * kCropScale);
   const int panel_w = crop_w * 2 + kMargin;
+  char text_zoom[32];
   cv::Mat3b canvas(std::max(frame.height_px(), crop_h + 30) + kMargin * 2 + kStatusHeight,
                    frame.width_px() + panel_w + kMargin * 3, cv::Vec3b(38, 34, 30));
   canvas.setTo(kBackground);
@@ -43,7 +54,15 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   }
   cv::rectangle(view, candidate.window, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
   cv::rectangle(view, candidate.strict_box, kHighlight, 3, cv::LINE_AA);
+  // Zoomed no further than keeps the candidate's window whole.
+  const double zoom = std::max(1.0, std::min({s.zoom, static_cast<double>(view.cols) / candidate.window.width,
+                                              static_cast<double>(view.rows) / candidate.window.height}));
+  if (zoom > 1.0) view = zoom_around(view, candidate.window, zoom);
   view.copyTo(canvas(cv::Rect(kMargin, kMargin, view.cols, view.rows)));
+  if (zoom > 1.0) {
+    std::snprintf(text_zoom, sizeof text_zoom, "zoom %.1fx", zoom);
+    put(canvas, text_zoom, {kMargin + 8, kMargin + 22}, 0.6, kHighlight, 2);
+  }
 
   // The crops, enlarged: depth as the classifier sees it (colourised, black = no reading / other layer).
   const int panel_x = frame.width_px() + kMargin * 2;
@@ -69,10 +88,19 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   std::snprintf(text, sizeof text, "frame %s (%s)   candidate %zu/%zu   positives %ld   negatives %ld   %.0f/min",
                 frames.c_str(), frame.name.c_str(), s.candidate, s.candidates, s.positives, s.negatives,
                 s.rate_per_minute);
-  put(canvas, text, {kMargin, status_y + 28}, 0.5, kText);
-  std::string extra;
+  std::string first = text;
+  if (s.model_positives) {
+    std::snprintf(text, sizeof text, "   by model: %ld y, %ld n", *s.model_positives, *s.model_negatives);
+    first += text;
+  }
+  put(canvas, first, {kMargin, status_y + 28}, 0.5, kText);
+  std::string extra = s.reason;
   if (s.score) {
-    std::snprintf(text, sizeof text, "model score H(x) = %.2f", *s.score);
+    if (s.probability) {
+      std::snprintf(text, sizeof text, "%sH(x) = %.2f, P(person) = %.2f", extra.empty() ? "" : "   ", *s.score, *s.probability);
+    } else {
+      std::snprintf(text, sizeof text, "%smodel score H(x) = %.2f", extra.empty() ? "" : "   ", *s.score);
+    }
     extra += text;
   }
   if (s.truth_iou) {

@@ -15,11 +15,21 @@ struct ScreenStatus {
   std::optional<std::int64_t> total_frames;
   std::size_t candidate = 0, candidates = 0;  ///< j/M in the frame (1-based j)
   long positives = 0, negatives = 0;
+  std::optional<long> model_positives, model_negatives;  ///< answered by the model (with a model)
+  std::optional<double> probability;                     ///< P(person)
+  std::string reason;  ///< why this candidate is asked, e.g. "uncertain: P = 0.48"
+  double zoom = 1.0;   ///< frame zoom around the candidate (+ / -), at most what keeps its window whole
   double rate_per_minute = 0;
   std::optional<double> score;
   std::optional<double> truth_iou;
   std::string message;  ///< e.g. "undone: 000012 #2"
 };
+
+/// A line of text on a small dark picture (shown while the session is scored).
+cv::Mat3b render_note(const std::string& text);
+
+/// The frame enlarged `zoom` times around `box` (kept inside the frame), at the frame's size.
+cv::Mat3b zoom_around(const cv::Mat3b& view, const cv::Rect& box, double zoom);
 
 cv::Mat3b render_label_screen(const PresentedCandidate& presented, const ScreenStatus& status);
 

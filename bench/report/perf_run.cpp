@@ -432,6 +432,7 @@ void labelling(PerfResults& r, const PerfOptions& o, const fs::path& work, const
   LabelingConfig config;
   config.sources = {(work / "people").string()};
   config.camera = CameraModel::kinect_v1();
+  config.model_answers = false;  // every candidate is asked (the labeller measured before model answers)
   SampleSetWriter out =
       SampleSetWriter::open_or_create((work / "labelled").string(), FeatureSpec{}, config.camera, "rdsf-perf-report");
   LabelingSession session(config, out, &model, nullptr);

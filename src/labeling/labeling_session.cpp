@@ -1,11 +1,15 @@
 #include "rdsf/labeling/labeling_session.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
 #include <filesystem>
 #include <numeric>
 #include <unordered_set>
 
 #include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/classifier/seeded_sampling.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
@@ -21,19 +25,43 @@ std::string canonical_source(const std::string& spec) {
   return ec ? spec : path.string();
 }
 
+// "model tree2/v3 H=0.532 P=0.981": who answered, journalled with the answer.
+std::string model_answerer(const BoostedModel& model, double score, double probability) {
+  char text[96];
+  std::snprintf(text, sizeof text, " H=%.4f P=%.4f", score, probability);
+  return "model " + model.name() + "/v" + std::to_string(model.version()) + text;
+}
+
 }  // namespace
+
+AskOrder parse_ask_order(const std::string& text) {
+  if (text == "order") return AskOrder::in_order;
+  if (text == "uncertain") return AskOrder::uncertain;
+  throw Error("unknown ask order '" + text + "' (known: order, uncertain)");
+}
 
 CandidateKey PresentedCandidate::key() const { return {frame->source, frame->frame.name, candidate().strict_box}; }
 
 LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer, const BoostedModel* model,
-                                 const GroundTruth* truth)
+                                 const GroundTruth* truth, ScoringProgress progress)
     : config_(std::move(config)),
       writer_(writer),
       model_(model),
+      progress_(std::move(progress)),
       truth_(truth),
       core_(config_.detector),
       journal_((std::filesystem::path(writer.dir()) / "labeler-answers.tsv").string()) {
   if (config_.sources.empty()) throw Error("no --source given");
+  if (!(config_.reject_probability >= 0 && config_.reject_probability <= config_.accept_probability &&
+        config_.accept_probability <= 1)) {
+    throw Error("--accept " + std::to_string(config_.accept_probability) + " must be at least --reject " +
+                std::to_string(config_.reject_probability) + ", both in [0, 1]");
+  }
+  if (model_ != nullptr && !(model_->feature_spec() == writer_.manifest().feature_spec)) {
+    throw Error(model_->path() + ": the model reads feature spec " + model_->feature_spec().hash() +
+                ", the sample set " + writer_.dir() + " holds " + writer_.manifest().feature_spec.hash() +
+                ": use a model trained on this set's features");
+  }
   std::unordered_set<std::int64_t> ids;  // an undo cut short by a failed write or a power cut is finished
   for (const SampleRecord& r : writer_.records()) ids.insert(r.id);
   journal_.finish_interrupted_undos([&ids](std::int64_t id) { return ids.count(id) != 0; });
@@ -73,7 +101,7 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
     loaded->source = source_name_;
     loaded->ordinal = ++ordinal_;
     loaded->analysis = core_.analyse(loaded->frame, /*with_features=*/false);
-    if (scorer_) loaded->scores = scorer_->score(loaded->analysis.candidates);
+    score(*loaded);
     if (truth_ != nullptr) {
       for (const Candidate& c : loaded->analysis.candidates) {
         double best = 0, ignored = 0;
@@ -87,6 +115,13 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
     }
     return loaded;
   }
+}
+
+void LabelingSession::score(LoadedFrame& frame) const {
+  if (!scorer_) return;
+  frame.scores = scorer_->score(frame.analysis.candidates);
+  frame.probabilities.resize(frame.scores.size());
+  for (std::size_t i = 0; i < frame.scores.size(); ++i) frame.probabilities[i] = model_->probability(frame.scores[i]);
 }
 
 void LabelingSession::start_prefetch() {
@@ -103,29 +138,126 @@ void LabelingSession::take_frame(std::shared_ptr<const LoadedFrame> frame) {
   }
   for (std::size_t i : order) {
     const PresentedCandidate p{frame, i};
-    const CandidateKey key = p.key();
-    if (journal_.answered(key)) {
+    if (journal_.answered(p.key())) {
       ++stats_.already_answered;
       continue;
     }
-    if (!frame->truth_iou.empty()) {
-      const double overlap = frame->truth_iou[i];
-      if (overlap >= config_.certain_iou) {
-        journal_.record({key, 'y', store(p, 1), "truth"});
-        ++stats_.auto_positives;
-        continue;
-      }
-      if (overlap < config_.uncertain_iou && frame->ignored_iou[i] < config_.uncertain_iou) {
-        journal_.record({key, 'n', config_.keep_rejected ? store(p, 0) : -1, "truth"});
-        ++stats_.auto_negatives;
-        continue;
-      }
-    }
-    queue_.push_back(p);
+    if (!answer_without_asking(p)) queue_.push_back(p);
   }
 }
 
+bool LabelingSession::answer_without_asking(const PresentedCandidate& p) {
+  const LoadedFrame& frame = *p.frame;
+  const std::size_t i = p.index;
+  const CandidateKey key = p.key();
+  if (!frame.truth_iou.empty() && !config_.truth_is_oracle) {
+    const double overlap = frame.truth_iou[i];
+    if (overlap >= config_.certain_iou) {
+      journal_.record({key, 'y', store(p, 1, "labeler"), "truth"});
+      ++stats_.auto_positives;
+      return true;
+    }
+    if (overlap < config_.uncertain_iou && frame.ignored_iou[i] < config_.uncertain_iou) {
+      journal_.record({key, 'n', config_.keep_rejected ? store(p, 0, "labeler") : -1, "truth"});
+      ++stats_.auto_negatives;
+      return true;
+    }
+  }
+  if (config_.model_answers && !frame.probabilities.empty()) {
+    const double pr = frame.probabilities[i];
+    const std::string by = model_answerer(*model_, frame.scores[i], pr);
+    if (config_.truth_is_oracle && (pr >= config_.accept_probability || pr <= config_.reject_probability)) {
+      const char truth = oracle_key(p);
+      if (truth == 's') ++stats_.model_in_band;
+      if (truth == (pr >= config_.accept_probability ? 'n' : 'y')) ++stats_.model_wrong;
+    }
+    if (pr >= config_.accept_probability) {
+      journal_.record({key, 'y', store(p, 1, "labeler-model"), by});
+      ++stats_.model_positives;
+      return true;
+    }
+    if (pr <= config_.reject_probability) {
+      journal_.record({key, 'n', config_.keep_rejected ? store(p, 0, "labeler-model") : -1, by});
+      ++stats_.model_negatives;
+      return true;
+    }
+  }
+  return false;
+}
+
+void LabelingSession::order_by_uncertainty() {
+  if (model_ == nullptr) {  // no model yet (the loop's first batch): a seeded random order over the session
+    const std::vector<std::size_t> order = seeded_permutation(queue_.size(), config_.seed);
+    std::deque<PresentedCandidate> shuffled;
+    for (std::size_t i : order) shuffled.push_back(queue_[i]);
+    queue_ = std::move(shuffled);
+    return;
+  }
+  auto doubt = [](const PresentedCandidate& p) { return std::abs(p.frame->probabilities[p.index] - 0.5); };
+  std::stable_sort(queue_.begin(), queue_.end(),
+                   [&](const PresentedCandidate& a, const PresentedCandidate& b) { return doubt(a) < doubt(b); });
+  if (config_.explore_every <= 0 || queue_.size() < 2) return;
+  const std::vector<std::size_t> random = seeded_permutation(queue_.size(), config_.seed + ++reorders_);
+  std::vector<bool> taken(queue_.size(), false);
+  std::deque<PresentedCandidate> mixed;
+  std::size_t next_sorted = 0, next_random = 0;
+  const auto every = static_cast<std::size_t>(config_.explore_every);
+  for (std::size_t k = 0; k < queue_.size(); ++k) {
+    std::size_t i = 0;
+    if ((k + 1) % every == 0) {
+      while (taken[random[next_random]]) ++next_random;
+      i = random[next_random];
+    } else {
+      while (taken[next_sorted]) ++next_sorted;
+      i = next_sorted;
+    }
+    taken[i] = true;
+    mixed.push_back(queue_[i]);
+  }
+  queue_ = std::move(mixed);
+}
+
+void LabelingSession::rescore(const BoostedModel& model, bool may_answer) {
+  if (!(model.feature_spec() == writer_.manifest().feature_spec)) {
+    throw Error(model.path() + ": the model reads another feature spec than the sample set " + writer_.dir());
+  }
+  model_ = &model;
+  scorer_.emplace(model);
+  // Every pending candidate's frame is scored again once (frames are shared by their candidates).
+  std::map<const LoadedFrame*, std::shared_ptr<LoadedFrame>> rescored;
+  for (PresentedCandidate& p : queue_) {
+    auto& copy = rescored[p.frame.get()];
+    if (!copy) {
+      copy = std::make_shared<LoadedFrame>(*p.frame);
+      score(*copy);
+    }
+    p.frame = copy;
+  }
+  for (Given& g : history_) {
+    if (auto it = rescored.find(g.presented.frame.get()); it != rescored.end()) g.presented.frame = it->second;
+  }
+  std::deque<PresentedCandidate> kept;
+  const bool answers = config_.model_answers;
+  config_.model_answers = answers && may_answer;
+  for (const PresentedCandidate& p : queue_) {
+    if (!answer_without_asking(p)) kept.push_back(p);
+  }
+  config_.model_answers = answers;
+  queue_ = std::move(kept);
+  if (config_.ask == AskOrder::uncertain) order_by_uncertainty();
+}
+
 const PresentedCandidate* LabelingSession::current() {
+  if (config_.ask == AskOrder::uncertain && !sources_done_) {
+    // The whole session first: every frame is read and scored on the read-ahead thread.
+    while (std::shared_ptr<LoadedFrame> next = prefetch_.get()) {
+      start_prefetch();
+      take_frame(next);
+      if (progress_) progress_(stats_.frames_loaded);
+    }
+    sources_done_ = true;
+    order_by_uncertainty();
+  }
   while (queue_.empty()) {
     if (sources_done_) return nullptr;
     std::shared_ptr<LoadedFrame> next = prefetch_.get();  // rethrows a source's error here
@@ -139,17 +271,17 @@ const PresentedCandidate* LabelingSession::current() {
   return &queue_.front();
 }
 
-std::int64_t LabelingSession::store(const PresentedCandidate& p, int label) {
+std::int64_t LabelingSession::store(const PresentedCandidate& p, int label, const std::string& origin) {
   const Candidate& c = p.candidate();
   SampleRecord record;
   record.label = label;
-  record.origin = "labeler";
+  record.origin = origin;
   record.source = p.frame->source;
   record.frame = p.frame->frame.name;
   record.strict_box = c.strict_box;
   record.window = c.window;
   record.layer_depth_mm = c.layer_depth_mm;
-  if (model_ != nullptr) {
+  if (model_ != nullptr && !p.frame->scores.empty()) {
     record.model = model_->name() + "/v" + std::to_string(model_->version());
     record.score = p.frame->scores[p.index];
   }
@@ -179,12 +311,12 @@ bool LabelingSession::answer(char key) {
   std::int64_t id = -1;
   switch (key) {
     case 'y':
-      id = store(p, 1);
+      id = store(p, 1, "labeler");
       ++stats_.positives;
       break;
     case 'n':
       if (config_.keep_rejected) {
-        id = store(p, 0);
+        id = store(p, 0, "labeler");
         ++stats_.rejected;
       }
       ++stats_.negatives;
@@ -197,6 +329,37 @@ bool LabelingSession::answer(char key) {
   history_.push_back({p, entry});
   queue_.pop_front();
   return true;
+}
+
+std::size_t LabelingSession::sure_count() const {
+  std::size_t n = 0;
+  for (const PresentedCandidate& p : queue_) {
+    if (p.frame->probabilities.empty()) continue;
+    const double pr = p.frame->probabilities[p.index];
+    n += pr >= config_.accept_probability || pr <= config_.reject_probability ? 1 : 0;
+  }
+  return n;
+}
+
+std::size_t LabelingSession::finish_with_model() {
+  if (model_ == nullptr || !config_.model_answers) return 0;
+  const std::size_t before = queue_.size();
+  std::deque<PresentedCandidate> kept;
+  for (const PresentedCandidate& p : queue_) {
+    if (!answer_without_asking(p)) kept.push_back(p);
+  }
+  queue_ = std::move(kept);
+  return before - queue_.size();
+}
+
+char LabelingSession::oracle_key() const { return queue_.empty() ? '\0' : oracle_key(queue_.front()); }
+
+char LabelingSession::oracle_key(const PresentedCandidate& p) const {
+  if (p.frame->truth_iou.empty()) return '\0';
+  const double overlap = p.frame->truth_iou[p.index];
+  if (overlap >= config_.certain_iou) return 'y';
+  if (overlap < config_.uncertain_iou && p.frame->ignored_iou[p.index] < config_.uncertain_iou) return 'n';
+  return 's';
 }
 
 void LabelingSession::leave_unanswered() {

@@ -3,7 +3,8 @@
 // candidate again: an append-only TSV (flushed and synced per answer) in the sample set's folder,
 //   labeler-answers.tsv: time, source, frame, x, y, w, h, answer, sample_id, by
 // answer: y (person), n (not a person), s (skipped), u (undoes the latest answer in force for that candidate);
-// sample_id: the sample the answer stored (-1: none); by: "human" or "truth" (assisted mode).
+// sample_id: the sample the answer stored (-1: none); by: "human", "truth" (assisted mode) or the model
+// that answered, "model NAME/vN H=<score> P=<probability>" (model answers).
 // A torn last line (killed mid-write) is ignored when the journal is read.
 #include <cstdint>
 #include <fstream>

@@ -11,8 +11,16 @@
 // and set resumes at the first unanswered candidate and never presents an answered one again.
 // With ground truth (assisted mode), candidates overlapping a person with IoU >= 0.5 are answered y and
 // those below 0.3 n without asking; only the uncertain band in between is presented.
+// With a model (model answers, on unless model_answers is false), candidates the model is sure about are
+// answered by it and never presented: P(person) >= accept_probability is y, P <= reject_probability is n;
+// they are journalled with by = "model NAME/vN H=... P=..." and their samples have origin "labeler-model".
+// Ask order: in_order presents frame after frame (the thesis's way); uncertain scores every frame of every
+// source first (on the read-ahead thread) and presents the whole session's candidates closest to P = 0.5
+// first, ties in frame order (without a model yet: in a seeded random order). rescore() replaces the model
+// mid-session (the active-learning loop).
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -29,8 +37,28 @@
 
 namespace rdsf {
 
+/// Defaults of the model answers: measured on synthetic recordings (docs/labeler.md, bench/bench_labeler):
+/// at these thresholds fewer than 1% of the model's answers were wrong.
+inline constexpr double kDefaultAcceptProbability = 0.99;
+inline constexpr double kDefaultRejectProbability = 0.01;
+
+enum class AskOrder { in_order, uncertain };
+
+/// "order" or "uncertain"; throws Error naming the known ones otherwise.
+AskOrder parse_ask_order(const std::string& text);
+
 struct LabelingConfig {
   std::vector<std::string> sources;
+  /// With a model: answer the candidates it is sure about (P >= accept_probability: y, <= reject: n).
+  bool model_answers = true;
+  double accept_probability = kDefaultAcceptProbability;
+  double reject_probability = kDefaultRejectProbability;
+  AskOrder ask = AskOrder::in_order;  ///< uncertain without a model: a seeded random order (the loop's start)
+  std::uint64_t seed = 1;
+  /// Uncertain order with exploration: every explore_every-th candidate presented is a seeded random one
+  /// instead of the next most uncertain, so that kinds of candidates the model has never seen (and is
+  /// wrongly sure about) are found too. 0 = off (plain uncertainty order); the loop uses 5.
+  int explore_every = 0;
   bool keep_rejected = false;
   bool order_by_score = false;  ///< present a frame's candidates highest score first (needs a model)
   /// Assisted mode: IoU of the box detections report (detector.reported_box: fitted by default, as the
@@ -40,6 +68,9 @@ struct LabelingConfig {
   /// Assisted mode: a candidate covering (IoU >= uncertain_iou) a person marked ignored in the truth
   /// (hardly visible, see ignore_hardly_visible) and no counted one is asked, never answered, as the
   /// evaluation counts it neither right nor wrong.
+  /// The truth is the person (benchmarks): it answers only the candidates presented (as a human answer,
+  /// see oracle_key()) instead of the sure ones silently.
+  bool truth_is_oracle = false;
   DetectorParams detector;
   CameraModel camera;
 };
@@ -48,7 +79,8 @@ struct LoadedFrame {
   std::string source;              ///< the source as recorded in samples (absolute path when a file)
   DepthFrame frame;
   FrameAnalysis analysis;
-  std::vector<double> scores;      ///< per candidate; empty without a model
+  std::vector<double> scores;      ///< per candidate H(x); empty without a model
+  std::vector<double> probabilities;  ///< per candidate P(person) = model calibration of scores
   std::vector<double> truth_iou;   ///< per candidate, best IoU with a counted ground-truth person; empty without truth
   std::vector<double> ignored_iou; ///< per candidate, best IoU with a don't-care (hardly visible) person
   std::int64_t ordinal = 0;        ///< 1-based over all sources
@@ -64,6 +96,10 @@ struct PresentedCandidate {
 struct LabelingStats {
   long positives = 0, negatives = 0, rejected = 0, skipped = 0, undone = 0;  ///< human answers this session
   long auto_positives = 0, auto_negatives = 0;                               ///< assisted mode
+  long model_positives = 0, model_negatives = 0;                             ///< answered by the model
+  /// truth_is_oracle: model answers the truth contradicts (y for a sure not-person or n for a sure person),
+  /// and those in the truth's uncertain band (neither right nor wrong)
+  long model_wrong = 0, model_in_band = 0;
   long already_answered = 0;                                                 ///< skipped on resume
   long unanswered = 0;      ///< presented but left without an answer (answers ran out)
   std::int64_t frames_loaded = 0;
@@ -72,9 +108,13 @@ struct LabelingStats {
 
 class LabelingSession {
  public:
-  /// `model` and `truth` may be null. The writer, model and truth must outlive the session.
+  /// Called after each frame is scored in uncertain mode, before the first candidate: frames done.
+  using ScoringProgress = std::function<void(std::int64_t frames)>;
+
+  /// `model` and `truth` may be null. The writer, model and truth must outlive the session. Throws Error
+  /// when the model's feature spec is not the set's, or accept_probability < reject_probability.
   LabelingSession(LabelingConfig config, SampleSetWriter& writer, const BoostedModel* model,
-                  const GroundTruth* truth);
+                  const GroundTruth* truth, ScoringProgress progress = {});
   ~LabelingSession();
   LabelingSession(const LabelingSession&) = delete;
   LabelingSession& operator=(const LabelingSession&) = delete;
@@ -84,6 +124,10 @@ class LabelingSession {
   /// Applies a key: 'y', 'n', 's' or 'u'. Returns false when it did nothing (an undo with nothing to
   /// undo in this session, or no current candidate).
   bool answer(char key);
+  /// With truth_is_oracle: the key the truth gives the current candidate ('y' IoU >= certain_iou, 'n' below
+  /// uncertain_iou with everyone, else 's'); '\0' without truth or candidate.
+  char oracle_key() const;
+  char oracle_key(const PresentedCandidate& p) const;
   /// Leaves the current candidate unanswered and moves on (answers ran out in headless mode).
   void leave_unanswered();
 
@@ -93,6 +137,20 @@ class LabelingSession {
   /// Candidates of the current frame still to be presented, the current one included.
   std::size_t pending_in_frame() const { return queue_.size(); }
   const AnswerJournal& journal() const { return journal_; }
+  const LabelingConfig& config() const { return config_; }
+  const BoostedModel* model() const { return model_; }
+  /// Candidates still to be presented (uncertain mode: of the whole session), the current one included.
+  std::size_t pending() const { return queue_.size(); }
+
+  /// Replaces the model (which must outlive the session) and re-scores every pending candidate; in
+  /// uncertain mode reorders them, and with model answers (and `may_answer`) lets the new model answer
+  /// those it is sure of.
+  void rescore(const BoostedModel& model, bool may_answer = true);
+  /// Pending candidates the current model is sure about (it would answer them).
+  std::size_t sure_count() const;
+  /// Lets the current model answer every pending candidate it is sure about (the loop's end); returns how
+  /// many it answered.
+  std::size_t finish_with_model();
 
  private:
   struct Given {
@@ -102,11 +160,16 @@ class LabelingSession {
   std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread
   void start_prefetch();
   void take_frame(std::shared_ptr<const LoadedFrame> frame);
-  std::int64_t store(const PresentedCandidate& p, int label);
+  std::int64_t store(const PresentedCandidate& p, int label, const std::string& origin);
+  void score(LoadedFrame& frame) const;
+  /// Answers the candidate from truth or the model when they are sure; false when it must be asked.
+  bool answer_without_asking(const PresentedCandidate& p);
+  void order_by_uncertainty();
 
   LabelingConfig config_;
   SampleSetWriter& writer_;
   const BoostedModel* model_;
+  ScoringProgress progress_;
   std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
   const GroundTruth* truth_;
   FrameAnalyser core_;
@@ -119,6 +182,7 @@ class LabelingSession {
   std::future<std::shared_ptr<LoadedFrame>> prefetch_;
   bool sources_done_ = false;
   std::deque<PresentedCandidate> queue_;
+  std::uint64_t reorders_ = 0;  ///< exploration draws a new random order each time
   std::vector<Given> history_;
   LabelingStats stats_;
 };
