@@ -98,6 +98,9 @@ Bytes build_png(const cv::Mat& image, int shift, std::size_t idat_size, const By
   header.insert(header.end(), {0, 0, 0});
   put_chunk(png, "IHDR", header);
   put_chunk(png, "tEXt", Bytes{'K', 0, 'v'});
+  // Chunks the decoders read without changing the pixels (the real frames carry these).
+  put_chunk(png, "gAMA", Bytes{0, 0, 0xb1, 0x8f});
+  put_chunk(png, "bKGD", channels == 1 ? Bytes{0, 7} : Bytes{0, 1, 0, 2, 0, 3});
   const Bytes stream = zlib(rows ? *rows : filtered_rows(image, shift));
   for (std::size_t at = 0; at < stream.size(); at += idat_size) {
     put_chunk(png, "IDAT", Bytes(stream.begin() + at, stream.begin() + std::min(stream.size(), at + idat_size)));
@@ -181,8 +184,8 @@ TEST(PngDecoder, DamagedStreamsRefusedAsImdecodeRefusesThem) {
   std::mt19937 rng(7);
   const cv::Mat image = random_image(24, 32, CV_16UC1, true);
   const Bytes good = build_png(image, 0, 1U << 20);
-  // The one IDAT chunk: its data starts after signature, IHDR (25 bytes), tEXt (15 bytes) and 8 bytes.
-  const std::size_t idat = 8 + 25 + 15;
+  // The one IDAT chunk: after the signature, IHDR (25 bytes), tEXt (15), gAMA (16) and bKGD (14 for grey).
+  const std::size_t idat = 8 + 25 + 15 + 16 + 14;
   const std::size_t length = (std::size_t{good[idat]} << 24) | (good[idat + 1] << 16) | (good[idat + 2] << 8) | good[idat + 3];
   ASSERT_EQ(std::string(good.begin() + idat + 4, good.begin() + idat + 8), "IDAT");
   const auto fix_crc = [&](Bytes& png, std::size_t chunk_length) {

@@ -78,8 +78,12 @@ PngLayout walk_chunks(const std::string& path, const unsigned char* bytes, std::
       layout.idat.emplace_back(at + 8, length);
     } else {
       if (!layout.idat.empty()) idat_closed = true;
-      const bool harmless = chunk_is(type, "IEND") || chunk_is(type, "tEXt") || chunk_is(type, "zTXt") ||
-                            chunk_is(type, "iTXt") || chunk_is(type, "tIME") || chunk_is(type, "pHYs");
+      // Chunks libpng reads without changing the pixels it returns unless asked (cv::imdecode never asks
+      // for gamma, background or colour-space transforms).
+      bool harmless = false;
+      for (const char* name : {"IEND", "tEXt", "zTXt", "iTXt", "tIME", "pHYs", "gAMA", "cHRM", "sRGB", "bKGD", "sBIT"}) {
+        harmless = harmless || chunk_is(type, name);
+      }
       if (!harmless) layout.direct = false;
     }
     at += length + 12;

@@ -8,7 +8,8 @@
 // samples converted to what cv::imdecode(IMREAD_UNCHANGED) returns (16-bit samples byte-swapped to host
 // order, RGB to BGR, RGBA to BGRA). The direct path takes only files it decodes exactly as libpng would:
 // bit depth 8 or 16; colour type grey, RGB or RGBA; not interlaced; no chunks other than IHDR, IDAT, IEND
-// and the text, time and pixel-size chunks (tEXt, zTXt, iTXt, tIME, pHYs); IDAT chunks consecutive; the
+// and those libpng reads without changing the pixels cv::imdecode gets (tEXt, zTXt, iTXt, tIME, pHYs,
+// gAMA, cHRM, sRGB, bKGD, sBIT: no transform is asked for); IDAT chunks consecutive; the
 // zlib stream ending exactly at the end of the IDAT data and giving exactly rows x (1 + row bytes) bytes;
 // every row's filter type 0..4. Any other file (palette, low bit depth, interlace, gamma or colour-profile
 // chunks, or any fault the direct path meets) goes to cv::imdecode, as every file did before, so the files
