@@ -46,34 +46,39 @@ void feature_histogram(const std::uint8_t* bins, const std::uint8_t* y, const do
   for (std::size_t j = 0; j < width; ++j) sums[j] = (part[0][j] + part[1][j]) + (part[2][j] + part[3][j]);
 }
 
-// Per-bin weight sums of F features at once when the samples are ordered positives first
-// ([0, positives) have y = 1): the weight of a sample is loaded once for the F features, and two partial
-// tables per feature (even and odd samples, each added in sample order) break the chains of consecutive
-// samples in the same bin (RDSF values crowd at 0 and 1). Each feature's sums are the same bits whatever F
-// is: F only sets how many independent chains are in flight (8 hide the latency of the adds; issue 17).
-template <int F>
-void feature_block_histograms(const std::uint8_t* const* bins, const double* w, std::size_t positives,
-                              std::size_t n, int bin_count, double* const* sums) {
-  double part[2][F][2 * kMaxBins];
+// Per-bin weight sums of four features at once when the samples are ordered positives first
+// ([0, positives) have y = 1): the weight of a sample is loaded once for the four features, and two partial
+// tables per feature break the chains of consecutive samples in the same bin (RDSF values crowd at 0 and 1).
+void four_feature_histograms(const std::uint8_t* const bins[4], const double* w, std::size_t positives,
+                             std::size_t n, int bin_count, double* const sums[4]) {
+  double part[2][4][2 * kMaxBins];
   const std::size_t width = static_cast<std::size_t>(2 * bin_count);
   for (auto& a : part) {
     for (auto& b : a) std::fill(b, b + width, 0.0);
   }
-  const std::uint8_t* b[F];
-  for (int f = 0; f < F; ++f) b[f] = bins[f];
+  const std::uint8_t *b0 = bins[0], *b1 = bins[1], *b2 = bins[2], *b3 = bins[3];
   for (int y = 1; y >= 0; --y) {
     const std::size_t begin = y == 1 ? 0 : positives, end = y == 1 ? positives : n;
     std::size_t i = begin;
     for (; i + 2 <= end; i += 2) {
       const double wa = w[i], wb = w[i + 1];
-      for (int f = 0; f < F; ++f) part[0][f][(b[f][i] << 1) | y] += wa;
-      for (int f = 0; f < F; ++f) part[1][f][(b[f][i + 1] << 1) | y] += wb;
+      part[0][0][(b0[i] << 1) | y] += wa;
+      part[0][1][(b1[i] << 1) | y] += wa;
+      part[0][2][(b2[i] << 1) | y] += wa;
+      part[0][3][(b3[i] << 1) | y] += wa;
+      part[1][0][(b0[i + 1] << 1) | y] += wb;
+      part[1][1][(b1[i + 1] << 1) | y] += wb;
+      part[1][2][(b2[i + 1] << 1) | y] += wb;
+      part[1][3][(b3[i + 1] << 1) | y] += wb;
     }
     for (; i < end; ++i) {
-      for (int f = 0; f < F; ++f) part[0][f][(b[f][i] << 1) | y] += w[i];
+      part[0][0][(b0[i] << 1) | y] += w[i];
+      part[0][1][(b1[i] << 1) | y] += w[i];
+      part[0][2][(b2[i] << 1) | y] += w[i];
+      part[0][3][(b3[i] << 1) | y] += w[i];
     }
   }
-  for (int f = 0; f < F; ++f) {
+  for (int f = 0; f < 4; ++f) {
     for (std::size_t j = 0; j < width; ++j) sums[f][j] = part[0][f][j] + part[1][f][j];
   }
 }
@@ -174,7 +179,7 @@ RealAdaBoost::TableFit RealAdaBoost::best_table(const std::vector<std::size_t>* 
   parallel_chunks(blocks, chunks, [&](std::size_t block0, std::size_t block1) {
     const std::size_t chunk = block0 / step;
     const std::size_t f0 = block0 * 4, f1 = std::min(features, block1 * 4);
-    double sums[8][2 * kMaxBins];
+    double sums[4][2 * kMaxBins];
     double best_z = std::numeric_limits<double>::infinity();
     std::size_t best_f = f0;
     auto consider = [&](std::size_t f, const double* s) {
@@ -192,16 +197,11 @@ RealAdaBoost::TableFit RealAdaBoost::best_table(const std::vector<std::size_t>* 
     };
     std::size_t f = f0;
     if (subset == nullptr && positives_first_) {
-      const std::uint8_t* block_bins[8];
-      double* const block_sums[8] = {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6], sums[7]};
-      for (; f + 8 <= f1; f += 8) {
-        for (std::size_t k = 0; k < 8; ++k) block_bins[k] = data_.feature(f + k);
-        feature_block_histograms<8>(block_bins, weights_.data(), positives_, n, bin_count, block_sums);
-        for (std::size_t k = 0; k < 8; ++k) consider(f + k, sums[k]);
-      }
       for (; f + 4 <= f1; f += 4) {
-        for (std::size_t k = 0; k < 4; ++k) block_bins[k] = data_.feature(f + k);
-        feature_block_histograms<4>(block_bins, weights_.data(), positives_, n, bin_count, block_sums);
+        const std::uint8_t* const bins4[4] = {data_.feature(f), data_.feature(f + 1), data_.feature(f + 2),
+                                              data_.feature(f + 3)};
+        double* const sums4[4] = {sums[0], sums[1], sums[2], sums[3]};
+        four_feature_histograms(bins4, weights_.data(), positives_, n, bin_count, sums4);
         for (std::size_t k = 0; k < 4; ++k) consider(f + k, sums[k]);
       }
     }
