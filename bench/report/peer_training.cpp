@@ -78,11 +78,16 @@ PeerCurve xgboost_curve(const std::filesystem::path& dir, int depth, const PeerO
     c.note = "cannot start " + python;
     return c;
   }
-  int round = 0;
-  double t = 0, auc = 0;
-  while (std::fscanf(pipe, "%d %lf %lf", &round, &t, &auc) == 3) {
-    c.time_s.push_back(t);
-    c.auc.push_back(auc);
+  char line[256];
+  while (std::fgets(line, sizeof line, pipe) != nullptr) {
+    int round = 0;
+    double t = 0, auc = 0;
+    if (std::sscanf(line, "setup %lf", &t) == 1) {
+      c.setup_s = t;
+    } else if (std::sscanf(line, "%d %lf %lf", &round, &t, &auc) == 3) {
+      c.time_s.push_back(t);
+      c.auc.push_back(auc);
+    }
   }
   const int status = ::pclose(pipe);
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -90,9 +95,9 @@ PeerCurve xgboost_curve(const std::filesystem::path& dir, int depth, const PeerO
     c.note = "not installed (" + python + " with python3-xgboost and python3-numpy): skipped";
   } else if (code != 0 || c.time_s.empty()) {
     std::ifstream err(dir / "xgboost.err");
-    std::string last, line;
-    while (std::getline(err, line)) {
-      if (!line.empty()) last = line;
+    std::string last, text;
+    while (std::getline(err, text)) {
+      if (!text.empty()) last = text;
     }
     c.note = "failed (exit " + std::to_string(code) + "): " + last;
   }
@@ -191,7 +196,7 @@ std::string peers_markdown(const PeerResults& r) {
     << "same generator and seeds as the training comparison above) and " << r.held_out_rows
     << " held-out rows; every trainer sees the same 64-bin quantisation (" << clock::fixed(r.bins_mb, 0)
     << " MB of 8-bit bins, binned in " << clock::fixed(r.binning_s, 2) << " s, not counted below; XGBoost reads the bins "
-    << "as values with max_bin 64, and its first round includes its own quantile sketch). " << r.threads
+    << "as values into its QuantileDMatrix with max_bin 64, built before its rounds and not counted either). " << r.threads
     << " threads each, up to " << clock::fixed(r.options.budget_s, 1) << " s of training or " << r.options.max_rounds
     << " rounds; held-out scoring after every round is not counted. Load average " << r.load_start << " at the start, "
     << r.load_end << " at the end.\n\n"
@@ -205,6 +210,7 @@ std::string peers_markdown(const PeerResults& r) {
     const double to = time_to(c, target);
     m << "| " << c.name << " | " << c.auc.size() << " | " << clock::fixed(per_round(c), 3) << " s";
     if (c.cpu_s_per_round > 0) m << " (processor " << clock::fixed(c.cpu_s_per_round, 3) << " s)";
+    if (c.setup_s > 0) m << " (after " << clock::fixed(c.setup_s, 1) << " s building its quantised matrix)";
     m << " | " << clock::fixed(c.auc.back(), 4) << " | " << (to < 0 ? std::string("not reached") : clock::fixed(to, 2) + " s") << " | "
       << (auc_at(c, equal_time) < 0 ? std::string("no round yet") : clock::fixed(auc_at(c, equal_time), 4)) << " |\n";
   }

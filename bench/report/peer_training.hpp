@@ -31,6 +31,7 @@ struct PeerCurve {
   std::vector<double> time_s;  ///< training time after each round (held-out scoring not counted)
   std::vector<double> auc;     ///< held-out AUC after each round
   double cpu_s_per_round = 0;  ///< native only: processor time per round
+  double setup_s = 0;          ///< XGBoost only: building its quantised matrix (before the rounds)
 };
 
 struct PeerResults {
