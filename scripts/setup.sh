@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   g++ cmake make pkg-config
   libopencv-dev libeigen3-dev libopenni2-dev libboost-program-options-dev
-  libgtest-dev libbenchmark-dev
+  libgtest-dev libbenchmark-dev libdeflate-dev
   xvfb xauth xdotool x11-apps
 )
 missing=()

@@ -110,6 +110,30 @@ TEST_F(PerfReportQuick, WritesEveryRowWithNumbersAndPrintsTheRatios) {
   EXPECT_NE(result_->err.find("rdsf-perf-report:"), std::string::npos);
 }
 
+// Issue 17: the machine's limits beside the figures, and the trainers side by side (XGBoost measured, or
+// said to be absent).
+TEST_F(PerfReportQuick, StatesTheMachinesLimitsAndThePeers) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const std::string md = read_text(*dir_ / "report.md");
+  EXPECT_NE(md.find("## Speed against the machine's limits"), std::string::npos);
+  EXPECT_NE(md.find("## Trainers side by side"), std::string::npos);
+  const std::regex number("[0-9]+\\.[0-9]+");
+  for (const char* label : {"Memory bandwidth, streaming reads", "One pass over a 640x480 frame",
+                            "Both PNGs of a frame", "Full 8128 RDSF vector per candidate",
+                            "native Real AdaBoost, depth 1", "native Real AdaBoost, depth 3"}) {
+    const std::string line = row(md, label);
+    ASSERT_FALSE(line.empty()) << "no row '" << label << "' in\n" << md;
+    EXPECT_TRUE(std::regex_search(line.substr(line.find('|', 2)), number)) << line;
+  }
+  for (const char* label : {"XGBoost hist, depth 1", "XGBoost hist, depth 3"}) {
+    const std::string line = row(md, label);
+    ASSERT_FALSE(line.empty()) << "no row '" << label << "' in\n" << md;
+    const bool measured = std::regex_search(line.substr(line.find('|', 2)), number);
+    EXPECT_TRUE(measured || line.find("not installed") != std::string::npos) << line;
+  }
+  EXPECT_NE(md.find("Native round against the machine"), std::string::npos);
+}
+
 // These fail before measuring anything, so they do not need the quick run.
 TEST(PerfReport, RefusesToReplaceAReportWithoutForce) {
   if (!std::filesystem::exists(perf_program())) GTEST_SKIP() << perf_program() << " is not built";

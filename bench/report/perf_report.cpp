@@ -7,12 +7,15 @@
 #include "cli/cli.hpp"
 #include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/error.hpp"
+#include "peer_training.hpp"
 #include "perf_run.hpp"
+#include "speed_limits.hpp"
 
 int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-perf-report", [&] {
     namespace po = rdsf::cli::po;
     rdsf::perf::PerfOptions o;
+    double peer_budget_s = -1;
     po::options_description options("rdsf-perf-report");
     options.add_options()
         ("out", po::value(&o.out)->default_value(o.out), "Markdown report to write")
@@ -28,7 +31,8 @@ int main(int argc, char** argv) {
         ("positives", po::value(&o.positives), "training comparison: positive rows (5628 = hugeTree, quick 200)")
         ("negatives", po::value(&o.negatives), "training comparison: negative rows (22454 = hugeTree, quick 800)")
         ("native-rounds", po::value(&o.native_rounds), "native rounds timed (20, quick 5)")
-        ("opencv-rounds", po::value(&o.opencv_rounds), "OpenCV timed at A and B rounds: A,B (1,3, quick 1,2; 0,0 skips)");
+        ("opencv-rounds", po::value(&o.opencv_rounds), "OpenCV timed at A and B rounds: A,B (1,3, quick 1,2; 0,0 skips)")
+        ("peer-budget", po::value(&peer_budget_s), "seconds of training per trainer side by side (20, quick 1; 0 skips)");
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-perf-report", "[--out FILE.md] [--force] [--quick]",
@@ -42,10 +46,26 @@ int main(int argc, char** argv) {
       throw rdsf::Error(o.out + ": already exists (use --force to replace it)");
     }
     const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
+    // Issue 17: the machine's limits beside the figures, and the trainers side by side.
+    const rdsf::perf::SpeedLimits limits = rdsf::perf::measure_speed_limits({o.quick, o.threads});
+    rdsf::perf::PeerOptions peer;
+    peer.quick = o.quick;
+    peer.threads = o.threads;
+    peer.positives = o.positives;
+    peer.negatives = o.negatives;
+    peer.budget_s = peer_budget_s >= 0 ? peer_budget_s : (o.quick ? 1.0 : 20.0);
+    peer.opencv_ran = results.opencv_ran;
+    peer.opencv_rounds = results.opencv_b;
+    peer.opencv_s_per_round = results.opencv_s_per_round;
+    peer.opencv_auc = results.opencv_auc_at_b;
+    const bool peers_ran = peer.budget_s > 0;
+    const rdsf::perf::PeerResults peers = peers_ran ? rdsf::perf::measure_peers(peer) : rdsf::perf::PeerResults{};
     rdsf::AtomicTextFile out(o.out, o.force);
-    out.stream() << rdsf::perf::perf_markdown(results);
+    out.stream() << rdsf::perf::perf_markdown(results) << rdsf::perf::speed_limits_markdown(limits)
+                 << (peers_ran ? rdsf::perf::peers_markdown(peers) : std::string());
     out.commit();
-    std::cout << rdsf::perf::perf_summary(results) << "report: " << o.out << "\n";
+    std::cout << rdsf::perf::perf_summary(results) << rdsf::perf::speed_limits_summary(limits)
+              << (peers_ran ? rdsf::perf::peers_summary(peers) : std::string()) << "report: " << o.out << "\n";
     return 0;
   });
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rdsf/candidates/column_heights.hpp"
+#include "rdsf/candidates/floor_trim.hpp"
 #include "rdsf/candidates/layer_objects.hpp"
 
 namespace rdsf {
@@ -13,39 +14,6 @@ double iou(const cv::Rect& a, const cv::Rect& b) {
   const double uni = static_cast<double>(a.area()) + b.area() - inter;
   return uni > 0 ? inter / uni : 0.0;
 }
-
-namespace {
-
-// The lowest row of the object that is not floor in front of it: scanning up from the bottom, a row whose
-// farthest layer pixel (in the object's passing columns) is nearer than the object's median depth by more
-// than `tolerance_mm` holds only floor that lies before the object.
-template <typename Passes>
-int trim_floor(const cv::Mat1w& depth_mm, const cv::Mat1b& labels, int layer, int first, int last, int top,
-               int bottom, double tolerance_mm, const Passes& passes) {
-  std::vector<std::uint16_t> depths;
-  for (int r = top; r <= bottom; r += 2) {
-    const std::uint8_t* label = labels.ptr<std::uint8_t>(r);
-    const std::uint16_t* depth = depth_mm.ptr<std::uint16_t>(r);
-    for (int c = first; c <= last; ++c) {
-      if (label[c] == layer && passes(c)) depths.push_back(depth[c]);
-    }
-  }
-  if (depths.empty()) return bottom;
-  std::nth_element(depths.begin(), depths.begin() + static_cast<std::ptrdiff_t>(depths.size() / 2), depths.end());
-  const double floor_below = depths[depths.size() / 2] - tolerance_mm;
-  for (int r = bottom; r > top; --r) {
-    const std::uint8_t* label = labels.ptr<std::uint8_t>(r);
-    const std::uint16_t* depth = depth_mm.ptr<std::uint16_t>(r);
-    int farthest = 0;
-    for (int c = first; c <= last; ++c) {
-      if (label[c] == layer && passes(c)) farthest = std::max(farthest, static_cast<int>(depth[c]));
-    }
-    if (farthest >= floor_below) return r;
-  }
-  return bottom;
-}
-
-}  // namespace
 
 void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
                cv::Size crop_size, Candidate& candidate) {
@@ -99,13 +67,13 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
     const LayerView view{&column,  &segmentation.labels, &frame.depth_mm, layer.label,
                          depth_mm, static_cast<double>(layer.max_depth_mm), &frame.camera};
     const LayerObjects found = layer_objects(view, params);
-    auto passes = [&](int c) { return found.passing[static_cast<std::size_t>(c)] != 0; };
     for (const LayerObject& object : found.objects) {
       int bottom = object.bottom;
       const int top = object.top;
       if (params.floor_tolerance_mm > 0) {
-        bottom = trim_floor(frame.depth_mm, segmentation.labels, layer.label, object.first, object.last, top,
-                            bottom, params.floor_tolerance_mm, passes);
+        bottom = floor_trimmed_bottom(frame.depth_mm, segmentation.labels, layer.label, object.first, object.last,
+                                      top, bottom, params.floor_tolerance_mm, found.passing, layer.min_depth_mm,
+                                      layer.max_depth_mm);
       }
       Candidate candidate;
       const int box_height = bottom - top + 1;

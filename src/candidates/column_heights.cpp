@@ -1,11 +1,36 @@
 #include "rdsf/candidates/column_heights.hpp"
 
+#include <cstdint>
+#include <cstring>
+
 namespace rdsf {
 namespace {
 
 struct Segment {
   int label, first, last;  // rows first..last of one label
 };
+
+// The last row of the run of equal labels that starts at `r`: eight labels compared at a time (the
+// first differing byte of the XOR with the run's label repeated), then byte by byte at the end.
+int run_end(const std::uint8_t* column, int r, int height) {
+  const std::uint64_t repeated = 0x0101010101010101ULL * column[r];
+  int next = r + 1;
+  while (next + 8 <= height) {
+    std::uint64_t word;
+    std::memcpy(&word, column + next, 8);
+    const std::uint64_t differ = word ^ repeated;
+    if (differ != 0) {
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+      return next + __builtin_ctzll(differ) / 8 - 1;  // the first byte in memory is the lowest
+#else
+      return next + __builtin_clzll(differ) / 8 - 1;
+#endif
+    }
+    next += 8;
+  }
+  while (next < height && column[next] == column[r]) ++next;
+  return next - 1;
+}
 
 }  // namespace
 
@@ -25,8 +50,7 @@ std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int lay
     std::fill(present.begin(), present.end(), 0);
     for (int r = 0; r < height;) {
       const int label = column[r];
-      int end = r;
-      while (end + 1 < height && column[end + 1] == label) ++end;
+      const int end = run_end(column, r, height);
       segments.push_back({label, r, end});
       if (label > 0 && label <= layer_count) present[static_cast<std::size_t>(label)] = 1;
       r = end + 1;

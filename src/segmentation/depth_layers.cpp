@@ -1,21 +1,59 @@
 #include "rdsf/segmentation/depth_layers.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "rdsf/segmentation/depth_candidates.hpp"
 
 namespace rdsf {
 namespace {
 
-// Assigns every depth value 1..max to the nearest centre (ties go to the nearer, i.e. lower, centre, as
-// argmin does). `centres` is ascending. Returns the index of the centre per depth value (0 unused).
-void assign_nearest(const std::vector<double>& centres, std::vector<int>& assignment) {
-  std::size_t k = 0;
-  for (std::size_t d = 1; d < assignment.size(); ++d) {
+// Over one dimension with ascending centres c_0 < c_1 < ..., the reference's assignment (every depth
+// value d = 1, 2, ... moves on from centre k to k+1 while d - c_k > c_{k+1} - d) makes each cluster an
+// interval of depth values. Each interval is kept as its end: cluster k holds the values
+// ends[k-1] <= d < ends[k] (ends[-1] = 1, the last end = levels), so an iteration costs O(clusters)
+// with prefix sums of the histogram instead of O(depth values).
+std::int64_t first_beyond(double lower, double upper) {
+  // The smallest d >= 1 with d - lower > upper - d, evaluated in doubles exactly as the reference does;
+  // the predicate is monotone in d.
+  const auto beyond = [&](std::int64_t d) {
     const double depth = static_cast<double>(d);
-    while (k + 1 < centres.size() && depth - centres[k] > centres[k + 1] - depth) ++k;
-    assignment[d] = static_cast<int>(k);
+    return depth - lower > upper - depth;
+  };
+  std::int64_t d = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor((lower + upper) / 2)));
+  while (d > 1 && beyond(d - 1)) --d;
+  while (!beyond(d)) ++d;
+  return d;
+}
+
+void interval_ends(const std::vector<double>& centres, std::int64_t levels, std::vector<std::int64_t>& ends) {
+  ends.resize(centres.size());
+  std::int64_t previous = 1;
+  for (std::size_t k = 0; k + 1 < centres.size(); ++k) {
+    // The reference reaches centre k at d = previous and leaves it at the first d beyond from there.
+    previous = std::min(levels, std::max(previous, first_beyond(centres[k], centres[k + 1])));
+    ends[k] = previous;
   }
+  ends.back() = levels;
+}
+
+// True when some depth value that occurs (a pixel) lies in clusters of different index under `a` and `b`.
+bool partition_differs(const std::vector<std::int64_t>& a, const std::vector<std::int64_t>& b,
+                       const std::vector<std::uint64_t>& count_before) {
+  std::size_t i = 0, j = 0;
+  std::int64_t at = 1;
+  const std::int64_t levels = a.back();
+  while (at < levels) {
+    while (a[i] <= at) ++i;
+    while (b[j] <= at) ++j;
+    const std::int64_t next = std::min(a[i], b[j]);
+    if (i != j && count_before[static_cast<std::size_t>(next)] != count_before[static_cast<std::size_t>(at)]) {
+      return true;
+    }
+    at = next;
+  }
+  return false;
 }
 
 }  // namespace
@@ -29,7 +67,6 @@ cv::Mat1b Segmentation::mask(int label) const {
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
                            int max_iterations) {
   Segmentation result;
-  result.labels = cv::Mat1b::zeros(depth_mm.size());
 
   std::vector<double> centres;
   for (double c : centres_mm) {
@@ -39,46 +76,80 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>&
   centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
   if (centres.size() > 254) centres.resize(254);  // labels are 8-bit; 0 is "no reading"
   result.seeds_mm = centres;
-  if (centres.empty()) return result;
+  if (centres.empty()) {
+    result.labels = cv::Mat1b::zeros(depth_mm.size());
+    return result;
+  }
 
-  // Histogram of valid depth values.
-  double max_value = 0;
-  cv::minMaxLoc(depth_mm, nullptr, &max_value);
-  const std::size_t levels = static_cast<std::size_t>(max_value) + 1;
-  std::vector<std::uint32_t> histogram(levels, 0);
+  // Histogram of valid depth values, over four interleaved partial histograms so that runs of equal
+  // depths (the common case) do not wait on one counter.
+  std::uint16_t max_value = 0;
   for (int r = 0; r < depth_mm.rows; ++r) {
     const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
-    for (int c = 0; c < depth_mm.cols; ++c) ++histogram[d[c]];
+    std::uint16_t row_max = 0;
+    for (int c = 0; c < depth_mm.cols; ++c) row_max = d[c] > row_max ? d[c] : row_max;
+    max_value = std::max(max_value, row_max);
   }
-  histogram[0] = 0;
+  const std::size_t levels = std::size_t{max_value} + 1;
+  thread_local std::vector<std::uint32_t> parts;
+  parts.assign(4 * levels, 0);
+  std::uint32_t* h0 = parts.data();
+  std::uint32_t* h1 = h0 + levels;
+  std::uint32_t* h2 = h1 + levels;
+  std::uint32_t* h3 = h2 + levels;
+  const int rows = depth_mm.rows, cols = depth_mm.cols;
+  for (int r = 0; r < rows; ++r) {
+    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
+    int c = 0;
+    for (; c + 4 <= cols; c += 4) {
+      ++h0[d[c]];
+      ++h1[d[c + 1]];
+      ++h2[d[c + 2]];
+      ++h3[d[c + 3]];
+    }
+    for (; c < cols; ++c) ++h0[d[c]];
+  }
+  // Prefix sums: count_before[x] = pixels with 1 <= d < x, depth_before[x] = the sum of their depths (exact
+  // integers; the reference's double sums of d * histogram[d] are exact too, below 2^53).
+  std::vector<std::uint64_t> count_before(levels + 1, 0), depth_before(levels + 1, 0);
+  for (std::size_t d = 1; d < levels; ++d) {
+    const std::uint64_t n = std::uint64_t{h0[d]} + h1[d] + h2[d] + h3[d];
+    count_before[d + 1] = count_before[d] + n;
+    depth_before[d + 1] = depth_before[d] + n * d;
+  }
+  const auto cluster_sums = [&](const std::vector<std::int64_t>& ends, std::vector<double>& sums,
+                                std::vector<std::uint64_t>& counts) {
+    sums.assign(ends.size(), 0.0);
+    counts.assign(ends.size(), 0);
+    std::size_t start = 1;
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+      const auto end = static_cast<std::size_t>(ends[k]);
+      counts[k] = count_before[end] - count_before[start];
+      sums[k] = static_cast<double>(depth_before[end] - depth_before[start]);
+      start = end;
+    }
+  };
 
   // Lloyd's algorithm on the histogram: initial labels = nearest seed, then centres <- means, labels <-
   // nearest centre, until no depth value changes cluster.
-  std::vector<int> assignment(levels, 0);
-  assign_nearest(centres, assignment);
+  const auto level_count = static_cast<std::int64_t>(levels);
+  std::vector<std::int64_t> assignment, next;
+  interval_ends(centres, level_count, assignment);
   std::vector<double> sums;
   std::vector<std::uint64_t> counts;
   for (int iteration = 0;; ++iteration) {
-    sums.assign(centres.size(), 0.0);
-    counts.assign(centres.size(), 0);
-    for (std::size_t d = 1; d < levels; ++d) {
-      if (histogram[d] == 0) continue;
-      sums[assignment[d]] += static_cast<double>(d) * histogram[d];
-      counts[assignment[d]] += histogram[d];
-    }
+    cluster_sums(assignment, sums, counts);
     std::vector<double> updated;
     for (std::size_t k = 0; k < centres.size(); ++k) {
       if (counts[k] > 0) updated.push_back(sums[k] / static_cast<double>(counts[k]));
     }
     centres = updated;
-    if (centres.empty()) return result;
-    std::vector<int> next(levels, 0);
-    assign_nearest(centres, next);
-    // Compare only depth values that occur: the others do not change any pixel.
-    bool changed = false;
-    for (std::size_t d = 1; d < levels && !changed; ++d) {
-      changed = histogram[d] != 0 && next[d] != assignment[d];
+    if (centres.empty()) {
+      result.labels = cv::Mat1b::zeros(depth_mm.size());
+      return result;
     }
+    interval_ends(centres, level_count, next);
+    const bool changed = partition_differs(assignment, next, count_before);
     // Cluster indices shift when a cluster was dropped; the pixel partition is what must be stable.
     if (!changed && updated.size() == sums.size()) {
       result.iterations = iteration + 1;
@@ -87,41 +158,47 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>&
     assignment.swap(next);
     if (iteration + 1 >= max_iterations) {
       result.iterations = iteration + 1;
-      // Final centres are the means of the final assignment.
-      sums.assign(centres.size(), 0.0);
-      counts.assign(centres.size(), 0);
-      for (std::size_t d = 1; d < levels; ++d) {
-        sums[assignment[d]] += static_cast<double>(d) * histogram[d];
-        counts[assignment[d]] += histogram[d];
-      }
+      cluster_sums(assignment, sums, counts);  // final centres are the means of the final assignment
       break;
     }
   }
 
-  // Layers: clusters with pixels, nearest first, labelled 1..K.
-  std::vector<int> label_of_cluster(centres.size(), 0);
-  for (std::size_t k = 0; k < centres.size(); ++k) {
-    if (counts[k] == 0) continue;
-    DepthLayer layer;
-    layer.label = static_cast<int>(result.layers.size()) + 1;
-    layer.mean_depth_mm = sums[k] / static_cast<double>(counts[k]);
-    layer.pixel_count = static_cast<std::int64_t>(counts[k]);
-    label_of_cluster[k] = layer.label;
-    result.layers.push_back(layer);
-  }
+  // Layers: clusters with pixels, nearest first, labelled 1..K; each one's nearest and farthest depth.
   std::vector<std::uint8_t> lut(levels, 0);
-  for (std::size_t d = 1; d < levels; ++d) {
-    const int label = label_of_cluster[assignment[d]];
-    lut[d] = static_cast<std::uint8_t>(label);
-    if (histogram[d] == 0 || label == 0) continue;
-    DepthLayer& layer = result.layers[label - 1];
-    if (layer.min_depth_mm == 0) layer.min_depth_mm = static_cast<std::uint16_t>(d);
-    layer.max_depth_mm = static_cast<std::uint16_t>(d);
+  std::size_t start = 1;
+  for (std::size_t k = 0; k < assignment.size(); ++k) {
+    const auto end = static_cast<std::size_t>(assignment[k]);
+    if (counts[k] > 0) {
+      DepthLayer layer;
+      layer.label = static_cast<int>(result.layers.size()) + 1;
+      layer.mean_depth_mm = sums[k] / static_cast<double>(counts[k]);
+      layer.pixel_count = static_cast<std::int64_t>(counts[k]);
+      std::size_t lo = start, hi = end - 1;
+      while (count_before[lo + 1] == count_before[lo]) ++lo;
+      while (count_before[hi + 1] == count_before[hi]) --hi;
+      layer.min_depth_mm = static_cast<std::uint16_t>(lo);
+      layer.max_depth_mm = static_cast<std::uint16_t>(hi);
+      std::fill(lut.begin() + static_cast<std::ptrdiff_t>(start), lut.begin() + static_cast<std::ptrdiff_t>(end),
+                static_cast<std::uint8_t>(layer.label));
+      result.layers.push_back(layer);
+    }
+    start = end;
   }
-  for (int r = 0; r < depth_mm.rows; ++r) {
+  result.labels.create(depth_mm.size());
+  // rows, cols as locals: the byte stores below may alias anything.
+  const std::uint8_t* const table = lut.data();
+  for (int r = 0; r < rows; ++r) {
     const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
     std::uint8_t* out = result.labels.ptr<std::uint8_t>(r);
-    for (int c = 0; c < depth_mm.cols; ++c) out[c] = lut[d[c]];
+    int c = 0;
+    for (; c + 4 <= cols; c += 4) {
+      const std::uint8_t l0 = table[d[c]], l1 = table[d[c + 1]], l2 = table[d[c + 2]], l3 = table[d[c + 3]];
+      out[c] = l0;
+      out[c + 1] = l1;
+      out[c + 2] = l2;
+      out[c + 3] = l3;
+    }
+    for (; c < cols; ++c) out[c] = table[d[c]];
   }
   return result;
 }

@@ -1,0 +1,268 @@
+#include "rdsf/frame/png_decoder.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include <libdeflate.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/yaml_guard.hpp"
+
+namespace rdsf {
+namespace {
+
+const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+std::uint32_t big_endian(const unsigned char* p) {
+  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | p[3];
+}
+
+bool chunk_is(const unsigned char* type, const char* name) { return std::memcmp(type, name, 4) == 0; }
+
+// What the chunk walk learns for the direct path.
+struct PngLayout {
+  std::uint32_t width = 0, height = 0;
+  int bit_depth = 0, colour_type = -1;
+  bool direct = true;  // false as soon as something outside the direct path's subset is seen
+  std::vector<std::pair<std::size_t, std::size_t>> idat;  // offset and length of each IDAT's data
+};
+
+// Walks the PNG chunks and checks every CRC (the same messages as before the direct path existed), and
+// records the header and the IDAT chunks.
+PngLayout walk_chunks(const std::string& path, const unsigned char* bytes, std::size_t size) {
+  if (size < 8 || !std::equal(kPngSignature, kPngSignature + 8, bytes)) fail(path, "not a PNG file");
+  PngLayout layout;
+  std::size_t at = 8;
+  bool idat_closed = false;
+  for (int index = 0;; ++index) {
+    if (at + 12 > size) {
+      fail(path, "truncated PNG (file ends at byte " + std::to_string(size) + " before the IEND chunk)");
+    }
+    const std::size_t length = big_endian(&bytes[at]);
+    if (length > size - at - 12) {
+      fail(path, "truncated PNG (chunk at byte " + std::to_string(at) + " runs past the end of the file)");
+    }
+    const unsigned char* type = &bytes[at + 4];
+    const std::uint32_t crc = static_cast<std::uint32_t>(libdeflate_crc32(0, type, length + 4));
+    if (crc != big_endian(&bytes[at + 8 + length])) {
+      fail(path, "corrupt PNG (CRC error in " + one_line(std::string(reinterpret_cast<const char*>(type), 4)) +
+                     " chunk at byte " + std::to_string(at) + ")");
+    }
+    const unsigned char* data = &bytes[at + 8];
+    if (index == 0) {
+      if (!chunk_is(type, "IHDR") || length != 13) {
+        layout.direct = false;
+      } else {
+        layout.width = big_endian(data);
+        layout.height = big_endian(data + 4);
+        layout.bit_depth = data[8];
+        layout.colour_type = data[9];
+        const bool plain = data[10] == 0 && data[11] == 0 && data[12] == 0;  // deflate, filter 0, no interlace
+        layout.direct = plain && (layout.bit_depth == 8 || layout.bit_depth == 16) &&
+                        (layout.colour_type == 0 || layout.colour_type == 2 || layout.colour_type == 6) &&
+                        layout.width >= 1 && layout.width <= 65535 && layout.height >= 1 &&
+                        layout.height <= 65535 && std::uint64_t{layout.width} * layout.height <= (1U << 26);
+      }
+    } else if (chunk_is(type, "IDAT")) {
+      if (idat_closed) layout.direct = false;
+      layout.idat.emplace_back(at + 8, length);
+    } else {
+      if (!layout.idat.empty()) idat_closed = true;
+      // Chunks libpng reads without changing the pixels it returns unless asked (cv::imdecode never asks
+      // for gamma, background or colour-space transforms).
+      bool harmless = false;
+      for (const char* name : {"IEND", "tEXt", "zTXt", "iTXt", "tIME", "pHYs", "gAMA", "cHRM", "sRGB", "bKGD", "sBIT"}) {
+        harmless = harmless || chunk_is(type, name);
+      }
+      if (!harmless) layout.direct = false;
+    }
+    at += length + 12;
+    if (chunk_is(type, "IEND")) return layout;
+  }
+}
+
+struct DecompressorDeleter {
+  void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
+};
+
+libdeflate_decompressor* thread_decompressor() {
+  thread_local std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> d(libdeflate_alloc_decompressor());
+  return d.get();
+}
+
+// Undoes one row's filter in place. `prior` is the unfiltered row above (zeros for the first row).
+// Filters (PNG specification, section 9): 1 Sub x += a, 2 Up x += b, 3 Average x += (a + b) / 2,
+// 4 Paeth x += the one of a, b, c nearest to a + b - c (ties a, then b), where a is the byte bpp to the
+// left, b the byte above, c the byte above-left (0 outside the row).
+template <int Bpp>
+void unfilter_row(int filter, unsigned char* row, const unsigned char* prior, std::size_t n) {
+  switch (filter) {
+    case 0: break;
+    case 1:
+      for (std::size_t i = Bpp; i < n; ++i) row[i] = static_cast<unsigned char>(row[i] + row[i - Bpp]);
+      break;
+    case 2:
+      for (std::size_t i = 0; i < n; ++i) row[i] = static_cast<unsigned char>(row[i] + prior[i]);
+      break;
+    case 3:
+      for (std::size_t i = 0; i < Bpp; ++i) row[i] = static_cast<unsigned char>(row[i] + (prior[i] >> 1));
+      for (std::size_t i = Bpp; i < n; ++i) {
+        row[i] = static_cast<unsigned char>(row[i] + ((unsigned{row[i - Bpp]} + prior[i]) >> 1));
+      }
+      break;
+    case 4:
+      for (std::size_t i = 0; i < Bpp; ++i) row[i] = static_cast<unsigned char>(row[i] + prior[i]);
+      for (std::size_t i = Bpp; i < n; ++i) {
+        const int a = row[i - Bpp], b = prior[i], c = prior[i - Bpp];
+        const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+        const int predictor = (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
+        row[i] = static_cast<unsigned char>(row[i] + predictor);
+      }
+      break;
+  }
+}
+
+void unfilter(int bpp, int filter, unsigned char* row, const unsigned char* prior, std::size_t n) {
+  switch (bpp) {
+    case 1: unfilter_row<1>(filter, row, prior, n); break;
+    case 2: unfilter_row<2>(filter, row, prior, n); break;
+    case 3: unfilter_row<3>(filter, row, prior, n); break;
+    case 4: unfilter_row<4>(filter, row, prior, n); break;
+    case 6: unfilter_row<6>(filter, row, prior, n); break;
+    default: unfilter_row<8>(filter, row, prior, n); break;
+  }
+}
+
+// One unfiltered PNG row to the cv::imdecode layout: 16-bit samples to host order, RGB(A) to BGR(A).
+void convert_row(const unsigned char* in, unsigned char* out, std::size_t pixels, int channels, int bit_depth) {
+  if (bit_depth == 8) {
+    if (channels == 1) {
+      std::memcpy(out, in, pixels);
+      return;
+    }
+    for (std::size_t p = 0; p < pixels; ++p, in += channels, out += channels) {
+      out[0] = in[2];
+      out[1] = in[1];
+      out[2] = in[0];
+      if (channels == 4) out[3] = in[3];
+    }
+    return;
+  }
+  auto* o = reinterpret_cast<std::uint16_t*>(out);
+  const auto sample = [](const unsigned char* s) { return static_cast<std::uint16_t>((s[0] << 8) | s[1]); };
+  if (channels == 1) {
+    for (std::size_t p = 0; p < pixels; ++p) o[p] = sample(in + 2 * p);
+    return;
+  }
+  for (std::size_t p = 0; p < pixels; ++p, in += 2 * channels, o += channels) {
+    o[0] = sample(in + 4);
+    o[1] = sample(in + 2);
+    o[2] = sample(in);
+    if (channels == 4) o[3] = sample(in + 6);
+  }
+}
+
+// The direct path; an empty result means "not decoded here" (cv::imdecode then decides).
+cv::Mat decode_direct(const unsigned char* bytes, const PngLayout& layout) {
+  const int channels = layout.colour_type == 0 ? 1 : (layout.colour_type == 2 ? 3 : 4);
+  const int bpp = channels * layout.bit_depth / 8;
+  const std::size_t row_bytes = std::size_t{layout.width} * bpp;
+  const std::size_t raw_size = std::size_t{layout.height} * (row_bytes + 1);
+
+  thread_local std::vector<unsigned char> joined, raw;
+  const unsigned char* stream = nullptr;
+  std::size_t stream_size = 0;
+  if (layout.idat.size() == 1) {
+    stream = bytes + layout.idat[0].first;
+    stream_size = layout.idat[0].second;
+  } else {
+    std::size_t total = 0;
+    for (const auto& chunk : layout.idat) total += chunk.second;
+    joined.resize(total);
+    std::size_t at = 0;
+    for (const auto& chunk : layout.idat) {
+      std::memcpy(joined.data() + at, bytes + chunk.first, chunk.second);
+      at += chunk.second;
+    }
+    stream = joined.data();
+    stream_size = total;
+  }
+  if (stream_size == 0) return {};
+  raw.resize(raw_size);
+  std::size_t consumed = 0;
+  const libdeflate_result result = libdeflate_zlib_decompress_ex(thread_decompressor(), stream, stream_size,
+                                                                 raw.data(), raw_size, &consumed, nullptr);
+  if (result != LIBDEFLATE_SUCCESS || consumed != stream_size) return {};
+
+  const int type = layout.bit_depth == 8 ? CV_MAKETYPE(CV_8U, channels) : CV_MAKETYPE(CV_16U, channels);
+  cv::Mat image(static_cast<int>(layout.height), static_cast<int>(layout.width), type);
+  thread_local std::vector<unsigned char> zeros;
+  zeros.assign(row_bytes, 0);
+  const unsigned char* prior = zeros.data();
+  for (std::uint32_t y = 0; y < layout.height; ++y) {
+    unsigned char* line = raw.data() + std::size_t{y} * (row_bytes + 1);
+    const int filter = line[0];
+    if (filter > 4) return {};
+    unfilter(bpp, filter, line + 1, prior, row_bytes);
+    convert_row(line + 1, image.ptr(static_cast<int>(y)), layout.width, channels, layout.bit_depth);
+    prior = line + 1;
+  }
+  return image;
+}
+
+}  // namespace
+
+cv::Mat decode_png(const std::string& path, const unsigned char* data, std::size_t size,
+                   const PngDecodeOptions& options) {
+  const PngLayout layout = walk_chunks(path, data, size);
+  if (options.direct_path && layout.direct) {
+    cv::Mat image = decode_direct(data, layout);
+    if (!image.empty()) return image;
+  }
+  cv::Mat image;
+  try {
+    image = cv::imdecode(cv::Mat(1, static_cast<int>(size), CV_8U, const_cast<unsigned char*>(data)),
+                         cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception&) {
+    image.release();
+  }
+  if (image.empty()) fail(path, "corrupt PNG (cannot be decoded)");
+  return image;
+}
+
+cv::Mat read_png_file(const std::string& path, const PngDecodeOptions& options) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    if (errno == ENOENT || errno == ENOTDIR) fail(path, "no such file");
+    fail(path, "cannot be opened for reading");
+  }
+  struct FdCloser {
+    int fd;
+    ~FdCloser() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) fail(path, "cannot be read");
+  if (S_ISDIR(st.st_mode)) fail(path, "is a folder, expected a PNG file");
+  thread_local std::vector<unsigned char> bytes;
+  bytes.resize(static_cast<std::size_t>(std::max<off_t>(0, st.st_size)));
+  std::size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail(path, "cannot be read");
+    got += static_cast<std::size_t>(n);
+  }
+  return decode_png(path, bytes.data(), bytes.size(), options);
+}
+
+}  // namespace rdsf
