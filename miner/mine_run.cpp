@@ -12,7 +12,7 @@
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_merge.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/features/feature_spec_record.hpp"
+#include "rdsf/pipeline/model_fit.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 
 namespace rdsf {
@@ -63,10 +63,7 @@ int run_mine(MineOptions& o) {
   std::optional<BoostedModel> model;
   if (!o.model.empty()) {
     model = BoostedModel::load(o.model, o.models_dir);
-    if (model->feature_spec() != p.detector.features) {
-      fail(model->path(), feature_spec_mismatch("model feature spec", model->feature_spec(),
-                                                "the detector's (--feature-spec)", p.detector.features));
-    }
+    check_model_fits(*model, p.detector);
     const BoostedModel& m = *model;
     const ModelScorer scorer(m);  // only the features the model reads
     p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
@@ -77,7 +74,8 @@ int run_mine(MineOptions& o) {
   }
 
   NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
-  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.detector.features, p.camera, "rdsf-mine");
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.detector.features, p.camera, "rdsf-mine",
+                                                           crop_provenance(p.detector.candidates));
   report_open(writer, "rdsf-mine");
   std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
             << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";
@@ -121,7 +119,8 @@ int run_merge(const MineOptions& o) {
   if (o.out.empty()) throw cli::UsageError("--merge needs --out SET");
   const SampleSet first = SampleSet::open_read(o.merge.front());
   SampleSetWriter writer =
-      SampleSetWriter::open_or_create(o.out, first.feature_spec(), first.manifest().camera, "rdsf-mine --merge");
+      SampleSetWriter::open_or_create(o.out, first.feature_spec(), first.manifest().camera, "rdsf-mine --merge",
+                                      first.manifest().crops);
   report_open(writer, "rdsf-mine");
   const MergeResult result = merge_sample_sets(o.merge, writer);
   std::cerr << "rdsf-mine: merged " << result.inputs << " sets into " << o.out << ": added " << result.added

@@ -122,7 +122,8 @@ int run_train(const TrainOptions& o) {
     v.seed = recipe.params.seed;
     v.asked_by = "validation";
     v.role_prefix = "validation-";
-    v.spec = train.spec;          // the same spec ...
+    v.spec = train.spec;          // the same spec, crops cut the same way ...
+    v.crops = train.crops;
     v.columns = train.columns;    // ... and the same features as training
     v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
     v.group_frames = o.group_frames;
@@ -167,6 +168,7 @@ int run_train(const TrainOptions& o) {
   record.recipe = o.recipe.empty() ? "ad hoc" : recipe.name + " (" + recipe.path + ")";
   record.sample_sets = train.sets;
   record.sample_sets.insert(record.sample_sets.end(), validation.sets.begin(), validation.sets.end());
+  record.crops = known_of(train.crops, validation.crops);
   record.parameters.insert(record.parameters.begin(), {"positives_wanted", std::to_string(recipe.positives)});
   record.parameters.insert(record.parameters.begin() + 1, {"negatives_wanted", std::to_string(recipe.negatives)});
   record.parameters.emplace_back("feature_spec", train.spec.option_text());

@@ -31,7 +31,7 @@ struct ClassPick {
 
 ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size_t wanted, std::uint64_t seed,
                      const std::string& role, const std::string& asked_by, std::optional<FeatureSpec>& spec,
-                     std::ostream& log) {
+                     CropProvenance& crops, std::ostream& log) {
   const char* what = label == 1 ? "positives" : "negatives";
   ClassPick pick;
   std::vector<PoolEntry> pool;
@@ -41,6 +41,10 @@ ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size
     if (set.feature_spec() != *spec) {
       fail(path, feature_spec_mismatch("sample set feature spec", set.feature_spec(), "the training's", *spec));
     }
+    const std::string crops_differ =
+        crop_provenance_mismatch(set.manifest().crops, "its crops", crops, "the training's crops so far");
+    if (!crops_differ.empty()) fail(path, "crops cut differently: " + crops_differ);
+    crops = known_of(crops, set.manifest().crops);
     SampleSetUse use;
     use.role = role;
     use.path = path;
@@ -108,12 +112,14 @@ void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, 
 
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads) {
   std::optional<FeatureSpec> spec = choice.spec;
+  CropProvenance crops = choice.crops;
   const ClassPick pos = pick_class(choice.pos_sets, 1, choice.positives, choice.seed, choice.role_prefix + "pos",
-                                   choice.asked_by, spec, log);
+                                   choice.asked_by, spec, crops, log);
   const ClassPick neg = pick_class(choice.neg_sets, 0, choice.negatives, choice.seed, choice.role_prefix + "neg",
-                                   choice.asked_by, spec, log);
+                                   choice.asked_by, spec, crops, log);
   ChosenSamples out;
   out.spec = *spec;
+  out.crops = crops;
   const std::size_t samples = pos.chosen.size() + neg.chosen.size();
   const auto dimension = static_cast<std::size_t>(out.spec.dimension());
   std::size_t pool = choice.feature_pool;

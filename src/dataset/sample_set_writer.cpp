@@ -80,7 +80,8 @@ SampleSetWriter& SampleSetWriter::operator=(SampleSetWriter&&) noexcept = defaul
 SampleSetWriter::~SampleSetWriter() = default;
 
 SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const FeatureSpec& spec,
-                                                const CameraModel& camera, const std::string& created_by) {
+                                                const CameraModel& camera, const std::string& created_by,
+                                                const CropProvenance& crops) {
   std::error_code ec;
   create_folders_durably(dir);
   SampleSetLock lock(dir);
@@ -104,6 +105,7 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
     SampleSetManifest manifest;
     manifest.feature_spec = spec;
     manifest.camera = camera;
+    manifest.crops = crops;
     manifest.created = utc_now_iso8601();
     manifest.created_by = created_by;
     manifest.write((root / "manifest.yml").string());  // last: a set exists once its manifest does
@@ -114,6 +116,9 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
     fail(dir, "sample set has feature spec " + have.hash() + " (" + have.canonical() + "), not the requested " +
                   spec.hash() + " (" + spec.canonical() + "); use another set");
   }
+  const std::string crops_differ =
+      crop_provenance_mismatch(writer.manifest().crops, "the set's crops", crops, "the new crops");
+  if (!crops_differ.empty()) fail(dir, "sample set's crops were cut differently: " + crops_differ + "; use another set");
   return writer;
 }
 
