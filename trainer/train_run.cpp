@@ -110,7 +110,7 @@ int run_train(const TrainOptions& o) {
   if (name.empty()) throw Error("ad hoc training needs a model name: give --name NAME");
   validate_model_name(name);
   std::cerr << "rdsf-train: model " << name << " (next version v" << latest_model_version(o.models_dir, name) + 1
-            << " under " << o.models_dir << "), " << recipe.params.backend << " backend, " << recipe.params.rounds
+            << " under " << o.models_dir << "), " << recipe.params.backend.name() << " backend, " << recipe.params.rounds
             << " rounds\n";
 
   const ChosenSamples train = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
@@ -134,7 +134,7 @@ int run_train(const TrainOptions& o) {
   const std::size_t positives = static_cast<std::size_t>(std::count(train.labels.begin(), train.labels.end(), 1));
   std::cerr << "rdsf-train: " << positives << " positives, " << train.labels.size() - positives
             << " negatives x " << train.rows.cols << " features\n";
-  if (recipe.params.backend == "opencv") {
+  if (recipe.params.backend == BoostBackend::opencv) {
     std::cerr << "rdsf-train: OpenCV trains all rounds in one call: no progress until it is done (about 16-33 s "
                  "per round at 28,000 samples)\n";
   }
