@@ -1,13 +1,9 @@
 #include "rdsf/dataset/sample_set_writer.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <unordered_map>
 #include <utility>
-
-#include <fcntl.h>
 
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
@@ -129,20 +125,7 @@ SampleSetWriter SampleSetWriter::open_existing(const std::string& dir) {
 }
 
 void SampleSetWriter::write_crop_unsynced(const std::string& path, const std::vector<unsigned char>& bytes) {
-  const std::string temporary = path + ".tmp";
-  const int fd = io::open(temporary, O_WRONLY | O_CREAT | O_TRUNC);
-  if (fd < 0) fail(temporary, "cannot be created: " + errno_text(errno));
-  try {
-    write_all(fd, bytes.data(), bytes.size(), temporary, "write failed");
-  } catch (...) {
-    io::close(fd);
-    io::unlink(temporary);
-    throw;
-  }
-  if (io::close(fd) != 0) fail(temporary, "write failed on close: " + errno_text(errno));
-  if (io::rename(temporary, path) != 0) {
-    fail(path, "cannot rename " + temporary + " into place: " + errno_text(errno));
-  }
+  write_file_unsynced(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   state_->unsynced_crops.push_back(path);
 }
 
