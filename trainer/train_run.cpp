@@ -12,6 +12,7 @@
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
 #include "trainer/recipe.hpp"
+#include "rdsf/dataset/thesis_text.hpp"
 #include "trainer/training_samples.hpp"
 
 namespace rdsf {
@@ -205,7 +206,7 @@ int run_export_text(const TrainOptions& o) {
   choice.augmentation = CropAugmentation{};  // the samples as they are, not training-time copies
   choice.feature_pool = std::numeric_limits<std::size_t>::max();  // the text format holds whole vectors
   const ChosenSamples samples = choose_samples(choice, std::cerr, o.threads);
-  const std::size_t lines = write_thesis_text(samples, o.export_text, o.force);
+  const std::int64_t lines = write_thesis_text(samples.rows, samples.labels, o.export_text, o.force);
   std::cerr << "rdsf-train: wrote " << lines << " samples to " << o.export_text << "\n";
   return 0;
 }

@@ -1,12 +1,10 @@
 #include "trainer/training_samples.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <ostream>
 
 #include "rdsf/classifier/seeded_sampling.hpp"
 #include "cli/progress.hpp"
-#include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/stable_hash.hpp"
 #include "rdsf/dataset/sample_groups.hpp"
@@ -189,26 +187,6 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   out.sets = pos.uses;
   out.sets.insert(out.sets.end(), neg.uses.begin(), neg.uses.end());
   return out;
-}
-
-std::size_t write_thesis_text(const ChosenSamples& samples, const std::string& path, bool overwrite) {
-  AtomicTextFile file(path, overwrite);
-  std::ostream& out = file.stream();
-  std::string line;
-  char number[32];
-  for (int r = 0; r < samples.rows.rows; ++r) {
-    line.assign(samples.labels[static_cast<std::size_t>(r)] == 1 ? "1" : "0");
-    const float* values = samples.rows[r];
-    for (int c = 0; c < samples.rows.cols; ++c) {
-      const auto written = std::to_chars(number, number + sizeof number, values[c]);
-      line.push_back(' ');
-      line.append(number, written.ptr);
-    }
-    line.push_back('\n');
-    out << line;
-  }
-  file.commit();
-  return static_cast<std::size_t>(samples.rows.rows);
 }
 
 }  // namespace rdsf

@@ -59,8 +59,5 @@ struct ChosenSamples {
 /// or a class ends up empty.
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads = 0);
 
-/// Writes `samples` in the thesis's text format ("label f1 ... f8128", shortest round-trip floats) through
-/// a temporary file; refuses an existing file unless `overwrite`. Returns the number of lines.
-std::size_t write_thesis_text(const ChosenSamples& samples, const std::string& path, bool overwrite);
 
 }  // namespace rdsf

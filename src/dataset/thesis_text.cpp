@@ -119,29 +119,44 @@ ThesisImportResult import_thesis_text(const std::string& path, SampleSetWriter& 
   return result;
 }
 
+void write_thesis_lines(std::ostream& out, const cv::Mat1f& rows, const std::vector<int>& labels) {
+  if (rows.rows != static_cast<int>(labels.size())) throw Error("thesis text: rows and labels differ in number");
+  std::string line;
+  char text[32];
+  for (int r = 0; r < rows.rows; ++r) {
+    line.assign(labels[static_cast<std::size_t>(r)] == 1 ? "1" : "0");
+    const float* row = rows.ptr<float>(r);
+    for (int c = 0; c < rows.cols; ++c) {
+      const auto written = std::to_chars(text, text + sizeof text, row[c]);
+      line.push_back(' ');
+      line.append(text, written.ptr);
+    }
+    line.push_back('\n');
+    out << line;
+  }
+}
+
+std::int64_t write_thesis_text(const cv::Mat1f& rows, const std::vector<int>& labels, const std::string& path,
+                               bool overwrite) {
+  AtomicTextFile file(path, overwrite);
+  write_thesis_lines(file.stream(), rows, labels);
+  file.commit();
+  return rows.rows;
+}
+
 std::int64_t export_thesis_text(const SampleSet& set, const RdsfExtractor& extractor, const std::string& path,
                                 bool overwrite) {
   AtomicTextFile file(path, overwrite);
-  std::ostream& out = file.stream();
   const std::size_t total = set.records().size();
   constexpr std::size_t kChunk = 2048;
-  std::string line;
   for (std::size_t begin = 0; begin < total; begin += kChunk) {
     std::vector<std::size_t> indices;
-    for (std::size_t i = begin; i < std::min(total, begin + kChunk); ++i) indices.push_back(i);
-    const cv::Mat1f rows = set.features(extractor, indices);
-    for (int r = 0; r < rows.rows; ++r) {
-      line = set.records()[indices[static_cast<std::size_t>(r)]].label == 1 ? "1" : "0";
-      const float* row = rows.ptr<float>(r);
-      char text[32];
-      for (int c = 0; c < rows.cols; ++c) {
-        const auto written = std::to_chars(text, text + sizeof text, row[c]);
-        line += ' ';
-        line.append(text, written.ptr);
-      }
-      line += '\n';
-      out << line;
+    std::vector<int> labels;
+    for (std::size_t i = begin; i < std::min(total, begin + kChunk); ++i) {
+      indices.push_back(i);
+      labels.push_back(set.records()[i].label);
     }
+    write_thesis_lines(file.stream(), set.features(extractor, indices), labels);
     file.flush();
   }
   file.commit();
