@@ -95,7 +95,7 @@ DepthFrame to_depth_frame(const synth::SynthFrame& f, const CameraModel& camera)
   frame.bgr = f.bgr;
   frame.index = f.index;
   frame.name = f.name;
-  frame.timestamp_us = f.index * 33333;
+  frame.timestamp_us = f.index * kFrameIntervalUs;
   frame.camera = camera;
   return frame;
 }
@@ -388,7 +388,7 @@ void png_reading(PerfResults& r, const PerfOptions& o, const fs::path& folder, c
         DepthFrame f;
         f.name = synth::SynthSequence::frame_name(i);
         f.index = i;
-        f.timestamp_us = i * 33333LL;
+        f.timestamp_us = i * kFrameIntervalUs;
         f.depth_mm = read_depth_png((folder / (f.name + ".depth.png")).string());
         f.bgr = read_colour_png((folder / (f.name + ".rgb.png")).string(), f.depth_mm.size());
         f.camera = camera;

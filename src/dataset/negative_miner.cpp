@@ -86,7 +86,7 @@ class FrameFeeder {
         if (!single->next(frame)) fail(job.second, "delivered no frame");
       }
       frame.index = job.first;
-      frame.timestamp_us = job.first * 33333;  // as PngFolderSource: image folders carry no clock
+      frame.timestamp_us = job.first * kFrameIntervalUs;  // as PngFolderSource: image folders carry no clock
       return true;
     }
     std::lock_guard<std::mutex> lock(mutex_);
