@@ -10,6 +10,7 @@
 #include <opencv2/highgui.hpp>
 
 #include "cli/progress.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/detector/detection_csv.hpp"
 #include "rdsf/detector/overlay.hpp"
@@ -68,10 +69,6 @@ class CandidateCoverage {
  private:
   std::int64_t people_ = 0, found_ = 0, found_other_ = 0;
 };
-
-std::string model_label(const BoostedModel& model) {
-  return model.name().empty() ? model.path() : model.name() + " v" + std::to_string(model.version());
-}
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "cli/cli.hpp"
 #include "cli/progress.hpp"
 #include "rdsf/core/error.hpp"
@@ -68,7 +69,7 @@ int run_mine(MineOptions& o) {
     const ModelScorer scorer(m);  // only the features the model reads
     p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
     p.min_score = o.min_score;
-    p.model = m.name().empty() ? m.path() : m.name() + "/v" + std::to_string(m.version());
+    p.model = model_reference(m);
     std::cerr << "rdsf-mine: hard-negative mode: keeping candidates that " << p.model << " (" << m.path()
               << ") scores >= " << p.min_score << "\n";
   }

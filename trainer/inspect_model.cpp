@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/classifier/model_file.hpp"
 #include "trainer/train_run.hpp"
 
@@ -37,7 +38,7 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
   const TrainingRecord& t = model.training();
   const FeatureSpec& spec = model.feature_spec();
   char line[512];
-  out << "model        " << model.name() << " v" << model.version() << "  (" << model.path() << ")\n";
+  out << "model        " << model_label(model) << "  (" << model.path() << ")\n";
   out << "format       " << kModelFormat << " version " << model.format_version() << ", created " << model.created()
       << "\n";
   out << "features     " << spec.canonical() << "  (hash " << spec.hash() << ")\n";
