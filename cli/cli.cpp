@@ -309,6 +309,9 @@ int run(const std::string& program_name, const std::function<int()>& body) {
   } catch (const UsageError& e) {
     std::cerr << program_name << ": usage error: " << e.what() << "\n";
     return 2;
+  } catch (const AlreadyExists& e) {
+    std::cerr << program_name << ": error: " << e.what() << " (pass --force to replace it)\n";
+    return 1;
   } catch (const Error& e) {
     std::cerr << program_name << ": error: " << e.what() << "\n";
     return 1;

@@ -61,7 +61,7 @@ po::options_description camera_options(CameraModel& camera, EmpiricalCalibration
 void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration);
 
 /// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
-/// (0 success, 1 error, 2 usage error).
+/// (0 success, 1 error, 2 usage error). An AlreadyExists error gets "(pass --force to replace it)".
 int run(const std::string& program_name, const std::function<int()>& body);
 
 }  // namespace rdsf::cli

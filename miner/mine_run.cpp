@@ -55,9 +55,11 @@ void parse_shard(const std::string& text, MineParams& params) {
 int run_mine(MineOptions& o) {
   MineParams& p = o.mine;
   parse_shard(o.shard, p);
-  if (p.stride < 1) throw cli::UsageError("--stride must be at least 1");
-  if (p.max_frames < 0 || p.max_negatives < 0) throw cli::UsageError("--max and --max-frames must not be negative");
-  if (p.sources.empty()) throw cli::UsageError("give at least one --source");
+  try {  // the limits are checked in one place, the library's; on the command line they are usage errors
+    check_mine_params(p);
+  } catch (const Error& e) {
+    throw cli::UsageError(e.what());
+  }
   if (o.model.empty() && o.min_score_given) {
     throw cli::UsageError("--min-score needs --model (hard-negative mode)");
   }

@@ -54,10 +54,10 @@ Recipe effective_recipe(const TrainOptions& o) {
   p.threads = o.threads;
   validate_training_params(p);
   if (r.pos_sets.empty() || r.neg_sets.empty()) {
-    throw Error("give a --recipe, or sample sets with --pos SET and --neg SET");
+    throw cli::UsageError("give a --recipe, or sample sets with --pos SET and --neg SET");
   }
   if (r.validation_pos_sets.empty() != r.validation_neg_sets.empty()) {
-    throw Error("a separate validation set needs both --validation-pos and --validation-neg");
+    throw cli::UsageError("a separate validation set needs both --validation-pos and --validation-neg");
   }
   return r;
 }
