@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_source.hpp"
 #include "rdsf/features/feature_spec_record.hpp"
 #include "rdsf/dataset/sample_crop.hpp"
 #include "rdsf/frame/depth_png.hpp"
@@ -160,13 +161,6 @@ void check_mine_params(const MineParams& p) {
   if (p.max_frames < 0 || p.max_negatives < 0) throw Error("mining: limits must not be negative");
 }
 
-std::string source_name(const std::string& spec) {
-  if (is_openni_spec(spec) && !std::filesystem::exists(spec)) return spec;
-  std::string name = std::filesystem::path(spec).lexically_normal().string();
-  while (name.size() > 1 && name.back() == '/') name.pop_back();
-  return name;
-}
-
 NegativeMiner::NegativeMiner(MineParams params) : params_(std::move(params)) {
   check_mine_params(params_);
   // Open every source first: a wrong spec fails before anything is mined; the total is known for progress.
@@ -215,7 +209,7 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
   if (on_frame) on_frame(stats);  // frames 0: the start, with the total known
 
   for (std::size_t s = 0; s < params.sources.size() && frames_left > 0 && !stats.reached_max; ++s) {
-    const std::string name = source_name(params.sources[s]);
+    const std::string name = sample_source(params.sources[s]);  // the one rule (sample_source.hpp)
     FrameFeeder& feeder = *feeders_[s];
     feeder.set_limit(frames_left);
 
