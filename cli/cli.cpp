@@ -1,6 +1,8 @@
 #include "cli/cli.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <iostream>
@@ -12,6 +14,11 @@
 namespace rdsf::cli {
 
 namespace {
+
+// Printed at the end of every --help (docs/options.md states the convention).
+const char* const kNamingNote =
+    "Option names are kebab-case with British spelling. The thesis's snake_case names are aliases (--row_step\n"
+    "is --row-step, also in --config files), and so is --color for --colour.";
 
 // --thesis: every departure option not given explicitly takes the thesis's value (thesis_params()).
 // Applied to the parsed values before po::notify stores them, so explicit options still win.
@@ -25,23 +32,74 @@ void apply_thesis_preset(po::variables_map& values) {
     // In place: the entry keeps its link to the bound variable, which po::notify then stores.
     if (option != values.end() && option->second.defaulted()) option->second.value() = value;
   };
-  set("left_border_jump", thesis.segmentation.left_border_jump);
-  set("occlusion_gap", c.occlusion_gap_cm);
-  set("floor_tolerance", c.floor_tolerance_mm);
-  set("height_at_column_depth", c.height_at_column_depth);
-  set("fit_reach", c.fit_reach_cm);
-  set("fit_depth_step", c.fit_depth_step_mm);
-  set("join_pieces", c.join_pieces);
-  set("max_object_width", c.max_object_width_cm);
-  set("min_fitted_width", c.min_fitted_width_cm);
-  set("split_depth_jump", c.split_depth_jump_mm);
-  set("split_valley", c.split_valley_cm);
-  set("split_step", c.split_step_cm);
-  set("split_keep_whole", c.split_keep_whole);
+  set("left-border-jump", thesis.segmentation.left_border_jump);
+  set("occlusion-gap", c.occlusion_gap_cm);
+  set("floor-tolerance", c.floor_tolerance_mm);
+  set("height-at-column-depth", c.height_at_column_depth);
+  set("fit-reach", c.fit_reach_cm);
+  set("fit-depth-step", c.fit_depth_step_mm);
+  set("join-pieces", c.join_pieces);
+  set("max-object-width", c.max_object_width_cm);
+  set("min-fitted-width", c.min_fitted_width_cm);
+  set("split-depth-jump", c.split_depth_jump_mm);
+  set("split-valley", c.split_valley_cm);
+  set("split-step", c.split_step_cm);
+  set("split-keep-whole", c.split_keep_whole);
   set("box", std::string("strict"));
 }
 
+// Spellings accepted besides the canonical ones (which are kebab-case and British).
+const std::pair<const char*, const char*> kSpellingAliases[] = {{"color", "colour"}};
+
+// Rewrites every "--name" / "--name=value" token to its canonical name; stops at a bare "--".
+std::vector<std::string> canonical_arguments(int argc, char** argv) {
+  std::vector<std::string> arguments;
+  bool options_end = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string token = argv[i];
+    if (token == "--") options_end = true;
+    if (!options_end && token.size() > 2 && token.compare(0, 2, "--") == 0) {
+      const std::size_t end = std::min(token.find('='), token.size());
+      token = "--" + canonical_option_name(token.substr(2, end - 2)) + token.substr(end);
+    }
+    arguments.push_back(std::move(token));
+  }
+  return arguments;
+}
+
+// The text of an INI file with every "name = value" key rewritten to its canonical name.
+std::string canonical_config(std::istream& in) {
+  std::string text;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    const std::size_t equals = line.find('=');
+    if (start != std::string::npos && equals != std::string::npos && line[start] != '#' && line[start] != ';' &&
+        line[start] != '[') {
+      std::size_t end = equals;
+      while (end > start && (line[end - 1] == ' ' || line[end - 1] == '\t')) --end;
+      line = line.substr(0, start) + canonical_option_name(line.substr(start, end - start)) + line.substr(end);
+    }
+    text += line + "\n";
+  }
+  return text;
+}
+
 }  // namespace
+
+std::string shortest_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+std::string canonical_option_name(const std::string& name) {
+  std::string canonical = name;
+  std::replace(canonical.begin(), canonical.end(), '_', '-');
+  for (const auto& [alias, target] : kSpellingAliases) {
+    if (canonical == alias) return target;
+  }
+  return canonical;
+}
 
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional) {
@@ -51,20 +109,22 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
   po::options_description all;
   all.add(general).add(options);
   try {
-    po::command_line_parser parser(argc, argv);
+    po::command_line_parser parser(canonical_arguments(argc, argv));
     parser.options(all);
     if (positional != nullptr) parser.positional(*positional);
     po::store(parser.run(), values);
     if (values.count("help")) {
-      std::cout << "Usage: " << info.name << " " << info.usage << "\n\n" << info.summary << "\n\n" << all << "\n";
+      std::cout << "Usage: " << info.name << " " << info.usage << "\n\n" << info.summary << "\n\n" << all << "\n"
+                << kNamingNote << "\n";
       return false;
     }
     if (values.count("config")) {
       const std::string path = values["config"].as<std::string>();
       std::ifstream in(path);
       if (!in) throw UsageError(path + ": config file cannot be opened");
+      std::istringstream canonical(canonical_config(in));
       try {
-        po::store(po::parse_config_file(in, options), values);
+        po::store(po::parse_config_file(canonical, options), values);
       } catch (const po::error& e) {
         throw UsageError(path + ": " + e.what());
       }
@@ -81,17 +141,17 @@ po::options_description detector_options(DetectorParams& p) {
   po::options_description segmentation("Segmentation (depth layers)");
   auto& s = p.segmentation;
   segmentation.add_options()
-      ("row_step", po::value(&s.row_step)->default_value(s.row_step), "scan every row_step-th row for depth jumps")
-      ("depth_threshold", po::value(&s.depth_threshold_mm)->default_value(s.depth_threshold_mm),
+      ("row-step", po::value(&s.row_step)->default_value(s.row_step), "scan every N-th row for depth jumps")
+      ("depth-threshold", po::value(&s.depth_threshold_mm)->default_value(s.depth_threshold_mm),
        "a depth jump larger than this (mm) starts a depth candidate")
-      ("n", po::value(&s.n)->default_value(s.n), "pixels after the jump that must stay within range_threshold")
-      ("range_threshold", po::value(&s.range_threshold_mm)->default_value(s.range_threshold_mm),
+      ("n", po::value(&s.n)->default_value(s.n), "pixels after the jump that must stay within --range-threshold")
+      ("range-threshold", po::value(&s.range_threshold_mm)->default_value(s.range_threshold_mm),
        "tolerance (mm) of the n pixels after a jump")
-      ("candidate_threshold", po::value(&s.candidate_threshold_mm)->default_value(s.candidate_threshold_mm),
+      ("candidate-threshold", po::value(&s.candidate_threshold_mm)->default_value(s.candidate_threshold_mm),
        "sorted depth candidates are averaged in runs spanning at most this (mm)")
-      ("kmeans_iterations", po::value(&s.max_iterations)->default_value(s.max_iterations),
+      ("kmeans-iterations", po::value(&s.max_iterations)->default_value(s.max_iterations),
        "upper bound of k-means iterations")
-      ("left_border_jump", po::value(&s.left_border_jump)->default_value(s.left_border_jump),
+      ("left-border-jump", po::value(&s.left_border_jump)->default_value(s.left_border_jump),
        "the left image border counts as a depth jump; 0 = thesis");
   po::options_description candidates("Candidates (shape)");
   auto& c = p.candidates;
@@ -99,21 +159,21 @@ po::options_description detector_options(DetectorParams& p) {
       ("k", po::value(&c.k)->default_value(c.k), "gap tolerance (pixels) inside a column's run")
       ("relaxed", po::bool_switch()->notifier([&c](bool on) { if (on) c.mode = HeightMode::relaxed; }),
        "relaxed threshold_height: near_height everywhere (default strict)")
-      ("near_height", po::value(&c.near_height_cm)->default_value(c.near_height_cm),
+      ("near-height", po::value(&c.near_height_cm)->default_value(c.near_height_cm),
        "threshold_height (cm) for near layers and in relaxed mode")
-      ("far_height", po::value(&c.far_height_cm)->default_value(c.far_height_cm),
+      ("far-height", po::value(&c.far_height_cm)->default_value(c.far_height_cm),
        "threshold_height (cm) for far layers in strict mode")
-      ("near_far_boundary", po::value(&c.near_far_boundary_mm)->default_value(c.near_far_boundary_mm),
+      ("near-far-boundary", po::value(&c.near_far_boundary_mm)->default_value(c.near_far_boundary_mm),
        "layers nearer than this (mm) are near")
-      ("column_gap", po::value(&c.column_gap)->default_value(c.column_gap),
+      ("column-gap", po::value(&c.column_gap)->default_value(c.column_gap),
        "gap tolerance (columns) when joining columns into an object")
-      ("min_width", po::value(&c.min_width_cm)->default_value(c.min_width_cm),
+      ("min-width", po::value(&c.min_width_cm)->default_value(c.min_width_cm),
        "minimum real width (cm) of a candidate")
-      ("occlusion_gap", po::value(&c.occlusion_gap_cm)->default_value(c.occlusion_gap_cm),
+      ("occlusion-gap", po::value(&c.occlusion_gap_cm)->default_value(c.occlusion_gap_cm),
        "a column's run goes on across nearer things up to this height (cm); 0 = thesis")
-      ("floor_tolerance", po::value(&c.floor_tolerance_mm)->default_value(c.floor_tolerance_mm),
+      ("floor-tolerance", po::value(&c.floor_tolerance_mm)->default_value(c.floor_tolerance_mm),
        "cut bottom rows nearer than the object's median depth by more than this (mm): floor; 0 = thesis")
-      ("window_scale", po::value(&c.window_scale)->default_value(c.window_scale),
+      ("window-scale", po::value(&c.window_scale)->default_value(c.window_scale),
        "window = strict box enlarged by this factor")
       ("box", po::value<std::string>()->default_value(p.reported_box == BoxKind::strict ? "strict" : "fitted")
                   ->notifier([&p](const std::string& box) {
@@ -122,33 +182,33 @@ po::options_description detector_options(DetectorParams& p) {
                   }),
        "the box detections report and assisted labelling matches (CSV, pictures, tracking, evaluation): fitted "
        "(the object's extent) or strict (the thesis's height x height/2)")
-      ("height_at_column_depth", po::value(&c.height_at_column_depth)->default_value(c.height_at_column_depth),
+      ("height-at-column-depth", po::value(&c.height_at_column_depth)->default_value(c.height_at_column_depth),
        "a column failing threshold_height at the layer's mean depth is measured at its own; 0 = thesis")
-      ("column_depth_layers_below", po::value(&c.column_depth_layers_below_mm)->default_value(c.column_depth_layers_below_mm),
+      ("column-depth-layers-below", po::value(&c.column_depth_layers_below_mm)->default_value(c.column_depth_layers_below_mm),
        "... in layers nearer than this (mm) only")
-      ("fit_reach", po::value(&c.fit_reach_cm)->default_value(c.fit_reach_cm),
+      ("fit-reach", po::value(&c.fit_reach_cm)->default_value(c.fit_reach_cm),
        "fitted box: reach (cm) over attached pieces (arms) each side; 0 = passing columns only")
-      ("fit_depth_step", po::value(&c.fit_depth_step_mm)->default_value(c.fit_depth_step_mm),
+      ("fit-depth-step", po::value(&c.fit_depth_step_mm)->default_value(c.fit_depth_step_mm),
        "fitted box: a piece's mean depth within this (mm) of its neighbour's; 0 = any")
-      ("join_pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
-       "objects whose fitted extents touch are one when no wider than max_person_width; 0 = thesis")
-      ("join_narrow_layers_below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
-       "pieces each narrower than min_width join only in layers nearer than this (mm)")
-      ("min_fitted_width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
+      ("join-pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
+       "objects whose fitted extents touch are one when no wider than --max-person-width; 0 = thesis")
+      ("join-narrow-layers-below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
+       "pieces each narrower than --min-width join only in layers nearer than this (mm)")
+      ("min-fitted-width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
        "objects whose fitted box is narrower than this (cm) are not candidates (border objects exempt); 0 = thesis")
-      ("max_object_width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),
+      ("max-object-width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),
        "objects wider than this (cm) are walls, not candidates; 0 = thesis (no limit)")
-      ("max_person_width", po::value(&c.max_person_width_cm)->default_value(c.max_person_width_cm),
+      ("max-person-width", po::value(&c.max_person_width_cm)->default_value(c.max_person_width_cm),
        "the widest person (cm): wider objects are tried for splitting")
-      ("split_depth_jump", po::value(&c.split_depth_jump_mm)->default_value(c.split_depth_jump_mm),
+      ("split-depth-jump", po::value(&c.split_depth_jump_mm)->default_value(c.split_depth_jump_mm),
        "split a wide object where its column depth jumps by more than this (mm); 0 = off")
-      ("split_valley", po::value(&c.split_valley_cm)->default_value(c.split_valley_cm),
+      ("split-valley", po::value(&c.split_valley_cm)->default_value(c.split_valley_cm),
        "... or at a valley of its height profile this deep (cm); 0 = off")
-      ("split_step", po::value(&c.split_step_cm)->default_value(c.split_step_cm),
+      ("split-step", po::value(&c.split_step_cm)->default_value(c.split_step_cm),
        "... or at a step of its height profile this high (cm); 0 = off")
-      ("min_part_width", po::value(&c.min_part_width_cm)->default_value(c.min_part_width_cm),
+      ("min-part-width", po::value(&c.min_part_width_cm)->default_value(c.min_part_width_cm),
        "the narrowest piece a split leaves (cm)")
-      ("split_keep_whole", po::value(&c.split_keep_whole)->default_value(c.split_keep_whole),
+      ("split-keep-whole", po::value(&c.split_keep_whole)->default_value(c.split_keep_whole),
        "a split object stays a candidate besides its pieces")
       ("thesis", po::bool_switch(),
        "the thesis's exact behaviour: every departure off (options given explicitly still win)");
@@ -177,11 +237,11 @@ po::options_description feature_spec_options(FeatureSpec& spec) {
 po::options_description tracking_options(TrackingParams& t) {
   po::options_description o("Tracking");
   o.add_options()
-      ("threshold_lkh", po::value(&t.threshold_lkh)->default_value(t.threshold_lkh),
+      ("threshold-lkh", po::value(&t.threshold_lkh)->default_value(t.threshold_lkh, shortest_text(t.threshold_lkh)),
        "a detection matches a person when lkh = Bhattacharyya distance + d_cm/98 - 1/49 <= this")
-      ("max_missed_frames", po::value(&t.max_missed_frames)->default_value(t.max_missed_frames),
+      ("max-missed-frames", po::value(&t.max_missed_frames)->default_value(t.max_missed_frames),
        "a person unmatched for more frames is not matched again (0: never forgotten)")
-      ("histogram_bins", po::value(&t.histogram_bins)->default_value(t.histogram_bins),
+      ("histogram-bins", po::value(&t.histogram_bins)->default_value(t.histogram_bins),
        "colour histogram bins per channel");
   return o;
 }
@@ -225,10 +285,10 @@ po::options_description camera_options(CameraModel& camera, EmpiricalCalibration
       ("fy", po::value(&camera.fy_px)->default_value(camera.fy_px), "focal length y (px) at 640x480")
       ("cx", po::value(&camera.cx_px)->default_value(camera.cx_px), "principal point x (px)")
       ("cy", po::value(&camera.cy_px)->default_value(camera.cy_px), "principal point y (px)")
-      ("calibration_width", po::value(&calibration.surface_width_cm),
+      ("calibration-width", po::value(&calibration.surface_width_cm),
        "thesis calibration: width (cm) of a surface that fills the image ...")
-      ("calibration_height", po::value(&calibration.surface_height_cm), "... its height (cm) ...")
-      ("calibration_distance", po::value(&calibration.distance_mm), "... at this distance (mm); overrides fx/fy");
+      ("calibration-height", po::value(&calibration.surface_height_cm), "... its height (cm) ...")
+      ("calibration-distance", po::value(&calibration.distance_mm), "... at this distance (mm); overrides fx/fy");
   return o;
 }
 
@@ -249,6 +309,9 @@ int run(const std::string& program_name, const std::function<int()>& body) {
   } catch (const UsageError& e) {
     std::cerr << program_name << ": usage error: " << e.what() << "\n";
     return 2;
+  } catch (const AlreadyExists& e) {
+    std::cerr << program_name << ": error: " << e.what() << " (pass --force to replace it)\n";
+    return 1;
   } catch (const Error& e) {
     std::cerr << program_name << ": error: " << e.what() << "\n";
     return 1;

@@ -4,6 +4,7 @@
 // error handling that turns any failure into one line and a non-zero exit.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <boost/program_options.hpp>
 
@@ -27,8 +28,17 @@ struct ProgramInfo {
   std::string summary;  ///< one paragraph shown by --help
 };
 
-/// Parses argv against `options` (plus --help and --config). Returns false when --help was printed (the
-/// program then exits 0). Throws UsageError on unknown options, bad values or a bad config file.
+/// The command-line convention (docs/options.md): option names are kebab-case with British spelling; the
+/// thesis's snake_case names are aliases. Maps an option name as typed (without "--") to its canonical
+/// name: '_' becomes '-', and the spelling aliases ("color") their British names. Used for argv and for
+/// the keys of --config files.
+std::string canonical_option_name(const std::string& name);
+
+/// A default as --help shows it: "%g" (0.6, not 0.59999999999999998).
+std::string shortest_text(double value);
+
+/// Parses argv against `options` (plus --help and --config), names made canonical first. Returns false
+/// when --help was printed (the program then exits 0). Throws UsageError on unknown options, bad values or a bad config file.
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional = nullptr);
 
@@ -51,7 +61,7 @@ po::options_description camera_options(CameraModel& camera, EmpiricalCalibration
 void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration);
 
 /// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
-/// (0 success, 1 error, 2 usage error).
+/// (0 success, 1 error, 2 usage error). An AlreadyExists error gets "(pass --force to replace it)".
 int run(const std::string& program_name, const std::function<int()>& body);
 
 }  // namespace rdsf::cli

@@ -11,8 +11,10 @@
 
 #include <opencv2/highgui.hpp>
 
+#include "cli/cli.hpp"
 #include "cli/progress.hpp"
 #include "rdsf/core/clock.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/thread_count.hpp"
 #include "rdsf/detector/detection_csv.hpp"
@@ -110,22 +112,19 @@ void run_live(const DetectOptions& o, PeoplePipeline& pipeline, FrameSource& sou
                static_cast<long long>(s.dropped), s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms);
 }
 
-std::string model_label(const BoostedModel& model) {
-  return model.name().empty() ? model.path() : model.name() + " v" + std::to_string(model.version());
-}
 
 }  // namespace
 
 int run_detect(const DetectOptions& o) {
   const bool evaluate = !o.truth_csv.empty();
   if (evaluate && !o.models.empty() && o.report_dir.empty()) {
-    throw Error("--truth with a --model needs --report-dir DIR for the evaluation report");
+    throw cli::UsageError("--truth with a --model needs --report-dir DIR for the evaluation report");
   }
-  if (!o.report_dir.empty() && !evaluate) throw Error("--report-dir needs --truth boxes.csv");
+  if (!o.report_dir.empty() && !evaluate) throw cli::UsageError("--report-dir needs --truth boxes.csv");
   const BoxKind box = o.pipeline.detector.reported_box;
-  if (!o.report_dir.empty() && o.models.empty()) throw Error("--report-dir needs at least one --model to evaluate");
+  if (!o.report_dir.empty() && o.models.empty()) throw cli::UsageError("--report-dir needs at least one --model to evaluate");
   if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate && !o.live) {
-    throw Error("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
+    throw cli::UsageError("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
   }
   if (!o.report_dir.empty() && !o.force && std::filesystem::exists(std::filesystem::path(o.report_dir) / "metrics.csv")) {
     throw Error(o.report_dir + ": already holds a report (pass --force to replace it)");

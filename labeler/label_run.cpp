@@ -17,6 +17,7 @@
 #include "rdsf/core/error.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/pipeline/model_fit.hpp"
 #include "rdsf/labeling/active_learning.hpp"
 #include "gui/display.hpp"
 #include "gui/scripted_keys.hpp"
@@ -109,6 +110,8 @@ int run_label(const LabelOptions& o) {
                               o.out_set + (exists ? " holds " : " would hold ") + set_spec.hash() +
                               ": give a model trained on the set's features");
     }
+    const std::string misfit = model_fit_problem(*model, o.session.detector);  // crops cut the same way
+    if (!misfit.empty()) fail(model->path(), misfit);
   }
   std::unique_ptr<GroundTruth> truth;
   if (!o.truth_csv.empty()) {
@@ -127,7 +130,7 @@ int run_label(const LabelOptions& o) {
   }
 
   SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.detector.features, o.session.camera,
-                                                           "rdsf-label");
+                                                           "rdsf-label", crop_provenance(o.session.detector.candidates));
   for (const std::string& repair : writer.repairs()) {  // what a crash left: torn rows, orphan or unusable crops
     std::cerr << "rdsf-label: " << writer.dir() << ": repaired " << repair << "\n";
   }

@@ -6,13 +6,14 @@
 #include <optional>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "cli/cli.hpp"
 #include "cli/progress.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_merge.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/features/feature_spec_record.hpp"
+#include "rdsf/pipeline/model_fit.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 
 namespace rdsf {
@@ -54,30 +55,30 @@ void parse_shard(const std::string& text, MineParams& params) {
 int run_mine(MineOptions& o) {
   MineParams& p = o.mine;
   parse_shard(o.shard, p);
-  if (p.stride < 1) throw cli::UsageError("--stride must be at least 1");
-  if (p.max_frames < 0 || p.max_negatives < 0) throw cli::UsageError("--max and --max-frames must not be negative");
-  if (p.sources.empty()) throw cli::UsageError("give at least one --source");
+  try {  // the limits are checked in one place, the library's; on the command line they are usage errors
+    check_mine_params(p);
+  } catch (const Error& e) {
+    throw cli::UsageError(e.what());
+  }
   if (o.model.empty() && o.min_score_given) {
     throw cli::UsageError("--min-score needs --model (hard-negative mode)");
   }
   std::optional<BoostedModel> model;
   if (!o.model.empty()) {
     model = BoostedModel::load(o.model, o.models_dir);
-    if (model->feature_spec() != p.detector.features) {
-      fail(model->path(), feature_spec_mismatch("model feature spec", model->feature_spec(),
-                                                "the detector's (--feature-spec)", p.detector.features));
-    }
+    check_model_fits(*model, p.detector);
     const BoostedModel& m = *model;
     const ModelScorer scorer(m);  // only the features the model reads
     p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
     p.min_score = o.min_score;
-    p.model = m.name().empty() ? m.path() : m.name() + "/v" + std::to_string(m.version());
+    p.model = model_reference(m);
     std::cerr << "rdsf-mine: hard-negative mode: keeping candidates that " << p.model << " (" << m.path()
               << ") scores >= " << p.min_score << "\n";
   }
 
   NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
-  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.detector.features, p.camera, "rdsf-mine");
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.detector.features, p.camera, "rdsf-mine",
+                                                           crop_provenance(p.detector.candidates));
   report_open(writer, "rdsf-mine");
   std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
             << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";
@@ -121,7 +122,8 @@ int run_merge(const MineOptions& o) {
   if (o.out.empty()) throw cli::UsageError("--merge needs --out SET");
   const SampleSet first = SampleSet::open_read(o.merge.front());
   SampleSetWriter writer =
-      SampleSetWriter::open_or_create(o.out, first.feature_spec(), first.manifest().camera, "rdsf-mine --merge");
+      SampleSetWriter::open_or_create(o.out, first.feature_spec(), first.manifest().camera, "rdsf-mine --merge",
+                                      first.manifest().crops);
   report_open(writer, "rdsf-mine");
   const MergeResult result = merge_sample_sets(o.merge, writer);
   std::cerr << "rdsf-mine: merged " << result.inputs << " sets into " << o.out << ": added " << result.added

@@ -14,14 +14,14 @@ int main(int argc, char** argv) {
          "'openni' for the first attached device, a device URI, or rdsf-png://FOLDER (virtual sensor)")
         ("frames", po::value(&o.frames)->default_value(o.frames),
          "stop after N frames of every stream; 0 records until Ctrl-C")
-        ("color", po::bool_switch(&o.colour), "record the colour stream too, registered to depth")
-        ("no-depth", po::bool_switch(&no_depth), "leave depth out (with --color: colour-only test files)")
+        ("colour", po::bool_switch(&o.colour), "record the colour stream too, registered to depth")
+        ("no-depth", po::bool_switch(&no_depth), "leave depth out (with --colour: colour-only test files)")
         ("timeout-ms", po::value(&o.timeout_ms)->default_value(o.timeout_ms),
          "longest wait for a frame before the device counts as stopped")
         ("force", po::bool_switch(&o.force), "replace an existing --out file");
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
-        "rdsf-record", "--out FILE.oni [--device URI] [--frames N] [--color] [options]",
+        "rdsf-record", "--out FILE.oni [--device URI] [--frames N] [--colour] [options]",
         "Records a live OpenNI2 device (a Kinect, or the virtual sensor rdsf-png://FOLDER) with OpenNI2's own\n"
         "recorder, lossless. Ctrl-C stops and keeps a playable file. Read it back with --source FILE.oni."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;

@@ -9,6 +9,7 @@
 
 #include <OpenNI.h>
 
+#include "cli/cli.hpp"
 #include "cli/progress.hpp"
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
@@ -73,7 +74,7 @@ int run_record(const RecordOptions& o) {
   if (o.out.size() <= 4 || o.out.compare(o.out.size() - 4, 4, ".oni") != 0) {
     throw Error(o.out + ": the recording's name must end in .oni (the workbench knows recordings by it)");
   }
-  if (!o.depth && !o.colour) throw Error("nothing to record: --no-depth needs --color");
+  if (!o.depth && !o.colour) throw cli::UsageError("nothing to record: --no-depth needs --colour");
   std::error_code ec;
   if (fs::exists(o.out, ec) && !o.force) throw Error(o.out + ": already exists (pass --force to replace it)");
   const fs::path parent = fs::path(o.out).parent_path();
@@ -103,7 +104,7 @@ int run_record(const RecordOptions& o) {
     names.push_back("depth");
   }
   if (o.colour) {
-    if (!s.device.hasSensor(openni::SENSOR_COLOR)) throw Error(where + ": has no colour stream (drop --color)");
+    if (!s.device.hasSensor(openni::SENSOR_COLOR)) throw Error(where + ": has no colour stream (drop --colour)");
     if (s.colour.create(s.device, openni::SENSOR_COLOR) != openni::STATUS_OK) {
       throw Error(where + ": cannot create the colour stream: " + openni_error());
     }

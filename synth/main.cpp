@@ -1,5 +1,4 @@
 // rdsf-synth: renders a synthetic Kinect v1 recording (depth, optional colour, person boxes).
-#include <cstdio>
 #include <string>
 
 #include "cli/cli.hpp"
@@ -28,11 +27,7 @@ int main(int argc, char** argv) {
         ("force", po::bool_switch(&o.force), "replace the frames of an earlier set in --out");
     po::options_description variety("variety of rooms, people and captures (all on by default)");
     synth::SynthParams& p = o.params;
-    const auto g = [](double value) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%g", value);
-      return std::string(text);
-    };
+    const auto g = rdsf::cli::shortest_text;
     variety.add_options()
         ("camera-height", po::value(&o.camera_height)->default_value(o.camera_height),
          "camera height above the floor, MIN..MAX metres, per clip (0.2..2.5)")

@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_file.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
@@ -141,7 +142,7 @@ TEST_F(TrainerProgram, InspectShowsHeaderFiguresAndCellPairs) {
   const test::RunResult r = train("--inspect toy --top 3");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("model        toy v1"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("format       rdsf-model version 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("format       rdsf-model version " + std::to_string(kModelFormatVersion)), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("AUC"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("calibration  platt: P(person) = 1 / (1 + exp(-("), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("by P(person)  P>=0.1: TAR"), std::string::npos) << r.out;
@@ -297,7 +298,7 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   EXPECT_NE(r.err.find("augmentation (mirror, seed 1): 60 more positives"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("calibration platt"), std::string::npos) << r.err;
   const BoostedModel model = BoostedModel::load("levers", models);
-  EXPECT_EQ(model.format_version(), 2);
+  EXPECT_EQ(model.format_version(), kModelFormatVersion);
   EXPECT_EQ(model.weak_classifiers().front().kind, WeakClassifier::Kind::Tree);
   // The default 5 folds, one per group here (3 groups of 30 frames): every original validated once, by a
   // model that never saw its group; augmented copies are trained on, never validated.

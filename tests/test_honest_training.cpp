@@ -369,7 +369,7 @@ TEST(HonestTraining, GroupValidationCalibratesAndSavesFormatTwo) {
   const test::TempDir dir("rdsf-format2");
   const std::string path = save_new_model_version(model, "and", dir.path().string());
   const BoostedModel back = BoostedModel::load(path);
-  EXPECT_EQ(back.format_version(), 2);
+  EXPECT_EQ(back.format_version(), kModelFormatVersion);
   EXPECT_EQ(back.calibration().method, "platt");
   EXPECT_DOUBLE_EQ(back.calibration().a, model.calibration().a);
   ASSERT_EQ(back.weak_classifiers().size(), model.weak_classifiers().size());

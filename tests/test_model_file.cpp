@@ -152,7 +152,7 @@ TEST(ModelFile, UnknownFormatVersionIsRefused) {
   BoostedModel model = small_model(2);
   const std::string path = save_new_model_version(model, "toy", dir.path().string());
   const std::string bad = dir / "future.yml";
-  write_text(bad, replace_once(read_text(path), "format_version: 2", "format_version: 7"));
+  write_text(bad, replace_once(read_text(path), "format_version: " + std::to_string(kModelFormatVersion), "format_version: 7"));
   const std::string message = message_of([&] { BoostedModel::load(bad); });
   EXPECT_NE(message.find(bad + ": model format version 7 is not known"), std::string::npos) << message;
   const std::string other = dir / "other.yml";

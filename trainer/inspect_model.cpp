@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/classifier/model_file.hpp"
 #include "trainer/train_run.hpp"
 
@@ -37,10 +38,19 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
   const TrainingRecord& t = model.training();
   const FeatureSpec& spec = model.feature_spec();
   char line[512];
-  out << "model        " << model.name() << " v" << model.version() << "  (" << model.path() << ")\n";
+  out << "model        " << model_label(model) << "  (" << model.path() << ")\n";
   out << "format       " << kModelFormat << " version " << model.format_version() << ", created " << model.created()
       << "\n";
   out << "features     " << spec.canonical() << "  (hash " << spec.hash() << ")\n";
+  if (t.crops.known()) {
+    std::snprintf(line, sizeof line, "crops        window = %s box x %g\n", t.crops.window_box.c_str(),
+                  t.crops.window_scale);
+    out << line;
+  } else {
+    out << "crops        not recorded (" << (model.format_version() < 3 ? "format " + std::to_string(model.format_version())
+                                                                     : std::string("by the training sets"))
+        << "): not checked\n";
+  }
   const WeakClassifier::Kind kind =
       model.weak_classifiers().empty() ? WeakClassifier::Kind::Lut : model.weak_classifiers().front().kind;
   const std::string tables = "look-up tables of " + std::to_string(model.bins().count) + " bins";

@@ -12,6 +12,7 @@
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
 #include "trainer/recipe.hpp"
+#include "rdsf/dataset/thesis_text.hpp"
 #include "trainer/training_samples.hpp"
 
 namespace rdsf {
@@ -53,10 +54,10 @@ Recipe effective_recipe(const TrainOptions& o) {
   p.threads = o.threads;
   validate_training_params(p);
   if (r.pos_sets.empty() || r.neg_sets.empty()) {
-    throw Error("give a --recipe, or sample sets with --pos SET and --neg SET");
+    throw cli::UsageError("give a --recipe, or sample sets with --pos SET and --neg SET");
   }
   if (r.validation_pos_sets.empty() != r.validation_neg_sets.empty()) {
-    throw Error("a separate validation set needs both --validation-pos and --validation-neg");
+    throw cli::UsageError("a separate validation set needs both --validation-pos and --validation-neg");
   }
   return r;
 }
@@ -110,7 +111,7 @@ int run_train(const TrainOptions& o) {
   if (name.empty()) throw Error("ad hoc training needs a model name: give --name NAME");
   validate_model_name(name);
   std::cerr << "rdsf-train: model " << name << " (next version v" << latest_model_version(o.models_dir, name) + 1
-            << " under " << o.models_dir << "), " << recipe.params.backend << " backend, " << recipe.params.rounds
+            << " under " << o.models_dir << "), " << recipe.params.backend.name() << " backend, " << recipe.params.rounds
             << " rounds\n";
 
   const ChosenSamples train = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
@@ -122,7 +123,8 @@ int run_train(const TrainOptions& o) {
     v.seed = recipe.params.seed;
     v.asked_by = "validation";
     v.role_prefix = "validation-";
-    v.spec = train.spec;          // the same spec ...
+    v.spec = train.spec;          // the same spec, crops cut the same way ...
+    v.crops = train.crops;
     v.columns = train.columns;    // ... and the same features as training
     v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
     v.group_frames = o.group_frames;
@@ -133,7 +135,7 @@ int run_train(const TrainOptions& o) {
   const std::size_t positives = static_cast<std::size_t>(std::count(train.labels.begin(), train.labels.end(), 1));
   std::cerr << "rdsf-train: " << positives << " positives, " << train.labels.size() - positives
             << " negatives x " << train.rows.cols << " features\n";
-  if (recipe.params.backend == "opencv") {
+  if (recipe.params.backend == BoostBackend::opencv) {
     std::cerr << "rdsf-train: OpenCV trains all rounds in one call: no progress until it is done (about 16-33 s "
                  "per round at 28,000 samples)\n";
   }
@@ -167,6 +169,7 @@ int run_train(const TrainOptions& o) {
   record.recipe = o.recipe.empty() ? "ad hoc" : recipe.name + " (" + recipe.path + ")";
   record.sample_sets = train.sets;
   record.sample_sets.insert(record.sample_sets.end(), validation.sets.begin(), validation.sets.end());
+  record.crops = known_of(train.crops, validation.crops);
   record.parameters.insert(record.parameters.begin(), {"positives_wanted", std::to_string(recipe.positives)});
   record.parameters.insert(record.parameters.begin() + 1, {"negatives_wanted", std::to_string(recipe.negatives)});
   record.parameters.emplace_back("feature_spec", train.spec.option_text());
@@ -203,7 +206,7 @@ int run_export_text(const TrainOptions& o) {
   choice.augmentation = CropAugmentation{};  // the samples as they are, not training-time copies
   choice.feature_pool = std::numeric_limits<std::size_t>::max();  // the text format holds whole vectors
   const ChosenSamples samples = choose_samples(choice, std::cerr, o.threads);
-  const std::size_t lines = write_thesis_text(samples, o.export_text, o.force);
+  const std::int64_t lines = write_thesis_text(samples.rows, samples.labels, o.export_text, o.force);
   std::cerr << "rdsf-train: wrote " << lines << " samples to " << o.export_text << "\n";
   return 0;
 }

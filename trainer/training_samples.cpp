@@ -1,12 +1,10 @@
 #include "trainer/training_samples.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <ostream>
 
 #include "rdsf/classifier/seeded_sampling.hpp"
 #include "cli/progress.hpp"
-#include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/stable_hash.hpp"
 #include "rdsf/dataset/sample_groups.hpp"
@@ -31,7 +29,7 @@ struct ClassPick {
 
 ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size_t wanted, std::uint64_t seed,
                      const std::string& role, const std::string& asked_by, std::optional<FeatureSpec>& spec,
-                     std::ostream& log) {
+                     CropProvenance& crops, std::ostream& log) {
   const char* what = label == 1 ? "positives" : "negatives";
   ClassPick pick;
   std::vector<PoolEntry> pool;
@@ -41,6 +39,10 @@ ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size
     if (set.feature_spec() != *spec) {
       fail(path, feature_spec_mismatch("sample set feature spec", set.feature_spec(), "the training's", *spec));
     }
+    const std::string crops_differ =
+        crop_provenance_mismatch(set.manifest().crops, "its crops", crops, "the training's crops so far");
+    if (!crops_differ.empty()) fail(path, "crops cut differently: " + crops_differ);
+    crops = known_of(crops, set.manifest().crops);
     SampleSetUse use;
     use.role = role;
     use.path = path;
@@ -108,12 +110,14 @@ void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, 
 
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads) {
   std::optional<FeatureSpec> spec = choice.spec;
+  CropProvenance crops = choice.crops;
   const ClassPick pos = pick_class(choice.pos_sets, 1, choice.positives, choice.seed, choice.role_prefix + "pos",
-                                   choice.asked_by, spec, log);
+                                   choice.asked_by, spec, crops, log);
   const ClassPick neg = pick_class(choice.neg_sets, 0, choice.negatives, choice.seed, choice.role_prefix + "neg",
-                                   choice.asked_by, spec, log);
+                                   choice.asked_by, spec, crops, log);
   ChosenSamples out;
   out.spec = *spec;
+  out.crops = crops;
   const std::size_t samples = pos.chosen.size() + neg.chosen.size();
   const auto dimension = static_cast<std::size_t>(out.spec.dimension());
   std::size_t pool = choice.feature_pool;
@@ -183,26 +187,6 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   out.sets = pos.uses;
   out.sets.insert(out.sets.end(), neg.uses.begin(), neg.uses.end());
   return out;
-}
-
-std::size_t write_thesis_text(const ChosenSamples& samples, const std::string& path, bool overwrite) {
-  AtomicTextFile file(path, overwrite);
-  std::ostream& out = file.stream();
-  std::string line;
-  char number[32];
-  for (int r = 0; r < samples.rows.rows; ++r) {
-    line.assign(samples.labels[static_cast<std::size_t>(r)] == 1 ? "1" : "0");
-    const float* values = samples.rows[r];
-    for (int c = 0; c < samples.rows.cols; ++c) {
-      const auto written = std::to_chars(number, number + sizeof number, values[c]);
-      line.push_back(' ');
-      line.append(number, written.ptr);
-    }
-    line.push_back('\n');
-    out << line;
-  }
-  file.commit();
-  return static_cast<std::size_t>(samples.rows.rows);
 }
 
 }  // namespace rdsf

@@ -25,6 +25,9 @@ struct SampleChoice {
   std::string role_prefix;  ///< "" for training, "validation-" for a separate validation set
   /// The feature spec the sets must have; empty: the first set's (all must agree).
   std::optional<FeatureSpec> spec;
+  /// How the sets' crops must have been cut; unknown: as the first set that records it (all that record
+  /// it must agree; sets that do not agree with any).
+  CropProvenance crops;
   /// Features to compute (a pool, ascending); empty: feature_pool decides.
   std::vector<int> columns;
   /// 0: every feature when the rows fit in memory_budget_mb, else a seeded pool of as many as fit;
@@ -40,6 +43,7 @@ struct SampleChoice {
 
 struct ChosenSamples {
   FeatureSpec spec;         ///< of the sets
+  CropProvenance crops;     ///< how the sets' crops were cut (unknown when none records it)
   std::vector<int> columns; ///< feature of each column when the rows hold a pool; empty: all features
   cv::Mat1f rows;           ///< one feature row per sample, positives first
   std::vector<int> labels;  ///< 1 / 0
@@ -51,11 +55,9 @@ struct ChosenSamples {
 
 
 /// Reads the sets, picks the samples and computes (or reads) their features. Warnings go to `log`.
-/// Throws Error when a set cannot be read, has another feature spec (naming both), or a class ends up empty.
+/// Throws Error when a set cannot be read, has another feature spec or crops cut differently (naming both),
+/// or a class ends up empty.
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads = 0);
 
-/// Writes `samples` in the thesis's text format ("label f1 ... f8128", shortest round-trip floats) through
-/// a temporary file; refuses an existing file unless `overwrite`. Returns the number of lines.
-std::size_t write_thesis_text(const ChosenSamples& samples, const std::string& path, bool overwrite);
 
 }  // namespace rdsf

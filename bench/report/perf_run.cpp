@@ -91,7 +91,7 @@ DepthFrame to_depth_frame(const synth::SynthFrame& f, const CameraModel& camera)
   frame.bgr = f.bgr;
   frame.index = f.index;
   frame.name = f.name;
-  frame.timestamp_us = f.index * 33333;
+  frame.timestamp_us = f.index * kFrameIntervalUs;
   frame.camera = camera;
   return frame;
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/dense_groups.hpp"
 #include "rdsf/classifier/features_read.hpp"
 #include "rdsf/classifier/opencv_boost.hpp"
 #include "rdsf/classifier/platt_calibration.hpp"
@@ -35,13 +36,16 @@ struct ValidationView {
   std::vector<std::size_t> index;
   std::vector<int> labels;
   bool empty() const { return labels.empty(); }
+  bool has_both_classes() const {
+    return std::count(labels.begin(), labels.end(), 1) > 0 && std::count(labels.begin(), labels.end(), 0) > 0;
+  }
 };
 
 std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTrainingParams& p) {
   std::vector<std::pair<std::string, std::string>> out;
-  out.emplace_back("backend", p.backend);
+  out.emplace_back("backend", p.backend.name());
   out.emplace_back("rounds", std::to_string(p.rounds));
-  if (p.backend == "native") {
+  if (p.backend == BoostBackend::native) {
     out.emplace_back("bins", std::to_string(p.bins.count));
     out.emplace_back("bin_min", number_text(p.bins.min_value));
     out.emplace_back("bin_max", number_text(p.bins.max_value));
@@ -57,6 +61,303 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
   out.emplace_back("report_every", std::to_string(p.report_every));
   out.emplace_back("early_stopping", std::to_string(p.early_stopping));
   return out;
+}
+
+
+// Column c of the rows -> feature of the spec (the pool's feature, or c itself).
+struct ColumnFeatures {
+  const std::vector<int>* columns = nullptr;
+  int operator()(int column) const { return columns->empty() ? column : (*columns)[static_cast<std::size_t>(column)]; }
+};
+
+// Step 1: the rows, labels and row information agree with each other and with the feature spec.
+void check_rows(const cv::Mat1f& rows, const std::vector<int>& labels, const BoostTrainingParams& params,
+                const TrainingRowInfo& info) {
+  if (rows.rows != static_cast<int>(labels.size())) {
+    throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
+  }
+  const std::vector<int>& columns = params.feature_columns;
+  const int column_count = columns.empty() ? params.feature_spec.dimension() : static_cast<int>(columns.size());
+  if (rows.cols != column_count) {
+    throw Error("training: rows of " + std::to_string(rows.cols) + " features, the feature spec has " +
+                std::to_string(column_count) + (columns.empty() ? "" : " in the pool"));
+  }
+  if ((!info.groups.empty() && info.groups.size() != labels.size()) ||
+      (!info.augmented.empty() && info.augmented.size() != labels.size())) {
+    throw Error("training: groups or augmentation marks do not match the rows");
+  }
+}
+
+// Step 2: which rows train and which validate, and the text saying so.
+struct TrainValidationSplit {
+  std::vector<std::size_t> train_index;
+  ValidationView validation;
+  std::string source = "none";
+};
+
+TrainValidationSplit split_rows(const cv::Mat1f& rows, const std::vector<int>& labels, const BoostTrainingParams& params,
+                                const cv::Mat1f* validation_rows, const std::vector<int>* validation_labels,
+                                const TrainingRowInfo& info) {
+  TrainValidationSplit out;
+  ValidationView& validation = out.validation;
+  if (validation_rows != nullptr && validation_labels != nullptr && !validation_labels->empty()) {
+    if (validation_rows->rows != static_cast<int>(validation_labels->size()) || validation_rows->cols != rows.cols) {
+      throw Error("training: validation rows and labels do not match");
+    }
+    for (std::size_t i = 0; i < labels.size(); ++i) out.train_index.push_back(i);
+    validation.rows = validation_rows;
+    validation.labels = *validation_labels;
+    for (std::size_t i = 0; i < validation.labels.size(); ++i) validation.index.push_back(i);
+    out.source = "separate sets";
+  } else if (!info.groups.empty() && params.validation_fraction > 0.0) {
+    auto is_augmented = [&](std::size_t i) { return !info.augmented.empty() && info.augmented[i]; };
+    std::vector<bool> counts;
+    if (!info.augmented.empty()) {
+      for (bool a : info.augmented) counts.push_back(!a);
+    }
+    const HoldOutSplit split = group_split(labels, info.groups, params.validation_fraction, params.seed, counts);
+    out.train_index = split.train;
+    validation.rows = &rows;
+    std::vector<std::size_t> held_groups;
+    for (std::size_t i : split.validation) {
+      held_groups.push_back(info.groups[i]);
+      if (is_augmented(i)) continue;  // copies of held-out samples are neither trained on nor validated
+      validation.index.push_back(i);
+      validation.labels.push_back(labels[i]);
+    }
+    out.source = "held-out groups: " + std::to_string(dense_groups(held_groups).count) + " of " +
+                 std::to_string(dense_groups(info.groups).count) + " (recording and frame range), about " +
+                 number_text(params.validation_fraction * 100.0) + "% per class (seed " + std::to_string(params.seed) +
+                 ")";
+  } else {
+    const HoldOutSplit split = stratified_split(labels, params.validation_fraction, params.seed);
+    out.train_index = split.train;
+    validation.rows = &rows;
+    validation.index = split.validation;
+    for (std::size_t i : split.validation) validation.labels.push_back(labels[i]);
+    if (!validation.index.empty()) {
+      out.source = "held-out " + number_text(params.validation_fraction * 100.0) + "% per class (seed " +
+                   std::to_string(params.seed) + "; samples, not groups)";
+    }
+  }
+  return out;
+}
+
+// Step 3: the training rows in the native trainer's faster layout (positives first) and their labels.
+struct TrainingSide {
+  std::vector<std::size_t> index;
+  std::vector<int> labels;
+  std::size_t positives = 0;
+};
+
+TrainingSide training_side(const std::vector<int>& labels, const std::vector<std::size_t>& train_index) {
+  TrainingSide side;
+  side.index = positives_first_order(labels, train_index);
+  side.labels.reserve(side.index.size());
+  for (std::size_t i : side.index) side.labels.push_back(labels[i]);
+  side.positives = static_cast<std::size_t>(std::count(side.labels.begin(), side.labels.end(), 1));
+  if (side.positives == 0 || side.positives == side.labels.size()) {
+    throw Error("training: both positive and negative training samples are needed (" + std::to_string(side.positives) +
+                " positives, " + std::to_string(side.labels.size() - side.positives) + " negatives)");
+  }
+  return side;
+}
+
+// Why boosting ended.
+enum class Stop {
+  all_rounds,      ///< every round of params.rounds
+  early_stopping,  ///< params.early_stopping rounds without a better validation AUC
+};
+
+// Step 4: after each weak classifier, the validation figures, the progress report and the early-stopping
+// decision.
+class RoundObserver {
+ public:
+  RoundObserver(const BoostTrainingParams& params, const ValidationView& validation, bool validating,
+                ColumnFeatures feature_of, const TrainingProgressFn& progress, Clock::time_point start)
+      : params_(params), validation_(validation), validating_(validating), feature_of_(feature_of),
+        progress_(progress), start_(start), scores_(validation.labels.size(), 0.0) {}
+
+  /// Returns false to stop (early stopping).
+  bool after_round(int round, const WeakClassifier& weak, double train_error, double round_s, double mean_round_s) {
+    RoundFigures figures;
+    figures.round = round;
+    figures.feature = feature_of_(weak.feature);
+    figures.train_error = train_error;
+    TrainingProgress report;
+    report.round = round;
+    report.rounds = params_.rounds;
+    report.feature = feature_of_(weak.feature);
+    report.train_error = train_error;
+    if (validating_) {
+      for (std::size_t k = 0; k < validation_.index.size(); ++k) {
+        scores_[k] += weak.respond_row((*validation_.rows)[static_cast<int>(validation_.index[k])], params_.bins);
+      }
+      const RocSummary s = summarise_roc(scores_, validation_.labels);
+      figures.roc = roc_at_far_levels(roc_curve(scores_, validation_.labels));
+      figures.validation_error = s.error_rate;
+      figures.auc = s.auc;
+      figures.tar_at_far_1 = s.tar_at_far_1;
+      figures.tar_at_far_5 = s.tar_at_far_5;
+      report.validation_error = s.error_rate;
+      report.validation_auc = s.auc;
+      if (s.auc > best_auc_ + 1e-9) {
+        best_auc_ = s.auc;
+        best_round_ = round;
+      }
+    }
+    rounds_.push_back(figures);
+    report.round_s = round_s;
+    report.elapsed_s = seconds_since(start_);
+    report.left_s = mean_round_s * (params_.rounds - round);
+    if (progress_) progress_(report);
+    if (validating_ && params_.early_stopping > 0 && round - best_round_ >= params_.early_stopping) {
+      stop_ = Stop::early_stopping;
+      stop_round_ = round;
+      return false;
+    }
+    return true;
+  }
+
+  Stop stop() const { return stop_; }
+  int best_round() const { return best_round_; }
+  const std::vector<RoundFigures>& rounds() const { return rounds_; }
+  /// The model file's training.stopped.
+  std::string stopped_text() const {
+    if (stop_ == Stop::all_rounds) return "all " + std::to_string(params_.rounds) + " rounds";
+    return "early stopping at round " + std::to_string(stop_round_) + ": no better validation AUC for " +
+           std::to_string(params_.early_stopping) + " rounds; kept the best, round " + std::to_string(best_round_);
+  }
+
+ private:
+  const BoostTrainingParams& params_;
+  const ValidationView& validation_;
+  bool validating_;
+  ColumnFeatures feature_of_;
+  const TrainingProgressFn& progress_;
+  Clock::time_point start_;
+  std::vector<double> scores_;  // validation scores so far
+  std::vector<RoundFigures> rounds_;
+  double best_auc_ = -1.0;
+  int best_round_ = 0;
+  Stop stop_ = Stop::all_rounds;
+  int stop_round_ = 0;
+};
+
+// Step 5: the backend's rounds.
+struct Boosted {
+  std::vector<WeakClassifier> weak;
+  std::string opencv_yaml;       // OpenCV's own model, empty for native
+  std::size_t opencv_trees = 0;  // trees in it
+};
+
+Boosted boost_native(const cv::Mat1f& rows, const TrainingSide& side, const BoostTrainingParams& params,
+                     RoundObserver& observer) {
+  const BinnedMatrix binned(rows, params.bins, side.index, params.threads);
+  RealAdaBoostParams rp;
+  rp.smoothing = params.smoothing;
+  rp.weight_trim = params.weight_trim;
+  rp.threads = params.threads;
+  rp.depth = params.depth;
+  rp.learning_rate = params.learning_rate;
+  RealAdaBoost booster(binned, side.labels, rp);
+  const Clock::time_point boost_start = Clock::now();
+  for (int round = 1; round <= params.rounds; ++round) {
+    const Clock::time_point round_start = Clock::now();
+    const RealAdaBoostRound r = booster.next_round();
+    const double round_s = seconds_since(round_start);
+    if (!observer.after_round(round, booster.weak_classifiers().back(), r.train_error, round_s,
+                              seconds_since(boost_start) / round)) {
+      break;
+    }
+  }
+  Boosted out;
+  out.weak = booster.weak_classifiers();
+  return out;
+}
+
+Boosted boost_opencv(const cv::Mat1f& rows, const TrainingSide& side, const BoostTrainingParams& params,
+                     RoundObserver& observer) {
+  cv::Mat1f train_rows(static_cast<int>(side.index.size()), rows.cols);
+  for (std::size_t k = 0; k < side.index.size(); ++k) {
+    rows.row(static_cast<int>(side.index[k])).copyTo(train_rows.row(static_cast<int>(k)));
+  }
+  OpenCvBoostParams op;
+  op.rounds = params.rounds;
+  op.weight_trim = params.weight_trim;
+  const Clock::time_point boost_start = Clock::now();
+  OpenCvBoostResult result = train_opencv_boost(train_rows, side.labels, op);
+  const double mean_round_s = seconds_since(boost_start) / std::max<std::size_t>(1, result.stumps.size());
+  Boosted out;
+  out.opencv_yaml = std::move(result.yaml);
+  out.opencv_trees = result.stumps.size();
+  // Per-round figures after the fact: OpenCV trains all rounds in one call.
+  std::vector<double> train_scores(side.labels.size(), 0.0);
+  int round = 0;
+  for (const WeakClassifier& w : result.stumps) {
+    ++round;
+    std::size_t wrong = 0;
+    for (std::size_t k = 0; k < train_scores.size(); ++k) {
+      train_scores[k] += w.respond(train_rows(static_cast<int>(k), w.feature), params.bins);
+      wrong += ((train_scores[k] > 0.0) != (side.labels[k] == 1)) ? 1 : 0;
+    }
+    out.weak.push_back(w);
+    if (!observer.after_round(round, w, static_cast<double>(wrong) / static_cast<double>(train_scores.size()),
+                              mean_round_s, 0.0)) {
+      break;
+    }
+  }
+  return out;
+}
+
+// Step 6: the model: the kept rounds, its training record, validation figures and calibration, the
+// spec's feature numbers.
+BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const BoostTrainingParams& params,
+                          const TrainValidationSplit& split, const TrainingSide& side, ColumnFeatures feature_of) {
+  std::vector<WeakClassifier>& weak = boosted.weak;
+  if (observer.stop() == Stop::early_stopping && static_cast<std::size_t>(observer.best_round()) < weak.size()) {
+    weak.resize(static_cast<std::size_t>(observer.best_round()));
+  }
+  if (!boosted.opencv_yaml.empty() && weak.size() != boosted.opencv_trees) {
+    boosted.opencv_yaml.clear();  // the embedded model would no longer match the kept stumps
+  }
+  const ValidationView& validation = split.validation;
+  TrainingRecord record;
+  record.backend = params.backend.name();
+  record.parameters = parameter_record(params);
+  record.train_positives = side.positives;
+  record.train_negatives = side.labels.size() - side.positives;
+  record.validation.source = split.source;
+  record.validation.positives =
+      static_cast<std::size_t>(std::count(validation.labels.begin(), validation.labels.end(), 1));
+  record.validation.negatives = validation.labels.size() - record.validation.positives;
+  record.stopped = observer.stopped_text();
+  // Figures kept in the file: every report_every rounds and the last kept round.
+  for (const RoundFigures& f : observer.rounds()) {
+    if (f.round > static_cast<int>(weak.size())) break;
+    if (f.round % params.report_every == 0 || f.round == static_cast<int>(weak.size())) {
+      record.validation.rounds.push_back(f);
+    }
+  }
+
+  BoostedModel model(params.feature_spec, params.bins, std::move(weak));
+  if (validation.has_both_classes()) {
+    std::vector<double> final_scores(validation.labels.size(), 0.0);
+    for (std::size_t k = 0; k < validation.index.size(); ++k) {
+      final_scores[k] = model.score((*validation.rows)[static_cast<int>(validation.index[k])]);
+    }
+    record_validation(model, record.validation, final_scores, validation.labels, params.calibration, split.source);
+  }
+  if (!params.feature_columns.empty()) {  // columns of the pool -> features of the spec
+    std::vector<WeakClassifier> renumbered = model.weak_classifiers();
+    renumber_features(renumbered, feature_of);
+    const ScoreCalibration calibration = model.calibration();
+    model = BoostedModel(params.feature_spec, params.bins, std::move(renumbered));
+    model.set_calibration(calibration);
+  }
+  model.training() = record;
+  model.set_opencv_model_yaml(std::move(boosted.opencv_yaml));
+  return model;
 }
 
 }  // namespace
@@ -85,8 +386,8 @@ void record_validation(BoostedModel& model, ValidationFigures& figures, const st
 }
 
 void validate_training_params(const BoostTrainingParams& p) {
-  if (p.backend != "native" && p.backend != "opencv") {
-    throw Error("backend '" + p.backend + "' is not known (native or opencv)");
+  if (p.backend == BoostBackend::unknown) {
+    throw Error("backend '" + p.backend.name() + "' is not known (native or opencv)");
   }
   if (p.rounds < 1) throw Error("rounds must be at least 1 (" + std::to_string(p.rounds) + " given)");
   p.bins.validate();
@@ -104,7 +405,7 @@ void validate_training_params(const BoostTrainingParams& p) {
   }
   p.feature_spec.validate();
   if (!p.feature_columns.empty()) {
-    if (p.backend != "native") throw Error("a feature pool needs the native backend");
+    if (p.backend != BoostBackend::native) throw Error("a feature pool needs the native backend");
     std::vector<int> sorted = p.feature_columns;
     std::sort(sorted.begin(), sorted.end());
     if (sorted.front() < 0 || sorted.back() >= p.feature_spec.dimension() ||
@@ -130,235 +431,18 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
     return train_with_group_folds(rows, labels, params, progress, info);
   }
   const Clock::time_point start = Clock::now();
-  if (rows.rows != static_cast<int>(labels.size())) {
-    throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
-  }
-  const FeatureSpec& spec = params.feature_spec;
-  const std::vector<int>& columns = params.feature_columns;
-  const int column_count = columns.empty() ? spec.dimension() : static_cast<int>(columns.size());
-  if (rows.cols != column_count) {
-    throw Error("training: rows of " + std::to_string(rows.cols) + " features, the feature spec has " +
-                std::to_string(column_count) + (columns.empty() ? "" : " in the pool"));
-  }
-  auto feature_of = [&columns](int column) { return columns.empty() ? column : columns[static_cast<std::size_t>(column)]; };
-
-  if ((!info.groups.empty() && info.groups.size() != labels.size()) ||
-      (!info.augmented.empty() && info.augmented.size() != labels.size())) {
-    throw Error("training: groups or augmentation marks do not match the rows");
-  }
-  auto is_augmented = [&](std::size_t i) { return !info.augmented.empty() && info.augmented[i]; };
-
-  // Training and validation samples.
-  std::vector<std::size_t> train_index;
-  ValidationView validation;
-  std::string validation_source = "none";
-  if (validation_rows != nullptr && validation_labels != nullptr && !validation_labels->empty()) {
-    if (validation_rows->rows != static_cast<int>(validation_labels->size()) || validation_rows->cols != rows.cols) {
-      throw Error("training: validation rows and labels do not match");
-    }
-    for (std::size_t i = 0; i < labels.size(); ++i) train_index.push_back(i);
-    validation.rows = validation_rows;
-    validation.labels = *validation_labels;
-    for (std::size_t i = 0; i < validation.labels.size(); ++i) validation.index.push_back(i);
-    validation_source = "separate sets";
-  } else if (!info.groups.empty() && params.validation_fraction > 0.0) {
-    std::vector<bool> counts;
-    if (!info.augmented.empty()) {
-      for (bool a : info.augmented) counts.push_back(!a);
-    }
-    const HoldOutSplit split = group_split(labels, info.groups, params.validation_fraction, params.seed, counts);
-    train_index = split.train;
-    validation.rows = &rows;
-    for (std::size_t i : split.validation) {
-      if (is_augmented(i)) continue;  // copies of held-out samples are neither trained on nor validated
-      validation.index.push_back(i);
-      validation.labels.push_back(labels[i]);
-    }
-    std::vector<std::size_t> held_groups;
-    for (std::size_t i : split.validation) held_groups.push_back(info.groups[i]);
-    std::sort(held_groups.begin(), held_groups.end());
-    held_groups.erase(std::unique(held_groups.begin(), held_groups.end()), held_groups.end());
-    std::vector<std::size_t> all_groups = info.groups;
-    std::sort(all_groups.begin(), all_groups.end());
-    all_groups.erase(std::unique(all_groups.begin(), all_groups.end()), all_groups.end());
-    validation_source = "held-out groups: " + std::to_string(held_groups.size()) + " of " +
-                        std::to_string(all_groups.size()) + " (recording and frame range), about " +
-                        number_text(params.validation_fraction * 100.0) + "% per class (seed " +
-                        std::to_string(params.seed) + ")";
-  } else {
-    const HoldOutSplit split = stratified_split(labels, params.validation_fraction, params.seed);
-    train_index = split.train;
-    validation.rows = &rows;
-    validation.index = split.validation;
-    for (std::size_t i : split.validation) validation.labels.push_back(labels[i]);
-    if (!validation.index.empty()) {
-      validation_source = "held-out " + number_text(params.validation_fraction * 100.0) + "% per class (seed " +
-                          std::to_string(params.seed) + "; samples, not groups)";
-    }
-  }
-  const bool validating = std::count(validation.labels.begin(), validation.labels.end(), 1) > 0 &&
-                          std::count(validation.labels.begin(), validation.labels.end(), 0) > 0;
+  check_rows(rows, labels, params, info);
+  const TrainValidationSplit split = split_rows(rows, labels, params, validation_rows, validation_labels, info);
+  const bool validating = split.validation.has_both_classes();
   if (params.early_stopping > 0 && !validating) {
     throw Error("early stopping needs validation samples of both classes (a validation fraction or set)");
   }
-  train_index = positives_first_order(labels, train_index);  // the native trainer's faster layout
-  std::vector<int> train_labels;
-  train_labels.reserve(train_index.size());
-  for (std::size_t i : train_index) train_labels.push_back(labels[i]);
-  const auto train_pos = static_cast<std::size_t>(std::count(train_labels.begin(), train_labels.end(), 1));
-  if (train_pos == 0 || train_pos == train_labels.size()) {
-    throw Error("training: both positive and negative training samples are needed (" + std::to_string(train_pos) +
-                " positives, " + std::to_string(train_labels.size() - train_pos) + " negatives)");
-  }
-
-  TrainingRecord record;
-  record.backend = params.backend;
-  record.parameters = parameter_record(params);
-  record.train_positives = train_pos;
-  record.train_negatives = train_labels.size() - train_pos;
-  record.validation.source = validation_source;
-  record.validation.positives =
-      static_cast<std::size_t>(std::count(validation.labels.begin(), validation.labels.end(), 1));
-  record.validation.negatives = validation.labels.size() - record.validation.positives;
-
-  std::vector<double> validation_scores(validation.labels.size(), 0.0);
-  std::vector<RoundFigures> all_rounds;
-  double best_auc = -1.0;
-  int best_round = 0;
-  std::string stopped = "all " + std::to_string(params.rounds) + " rounds";
-  BinScheme bins = params.bins;
-
-  // Called after each weak classifier; returns false to stop early.
-  auto after_round = [&](int round, const WeakClassifier& weak, double train_error, double round_s,
-                         double mean_round_s) {
-    RoundFigures figures;
-    figures.round = round;
-    figures.feature = feature_of(weak.feature);
-    figures.train_error = train_error;
-    TrainingProgress report;
-    report.round = round;
-    report.rounds = params.rounds;
-    report.feature = feature_of(weak.feature);
-    report.train_error = train_error;
-    if (validating) {
-      for (std::size_t k = 0; k < validation.index.size(); ++k) {
-        validation_scores[k] += weak.respond_row((*validation.rows)[static_cast<int>(validation.index[k])], bins);
-      }
-      const RocSummary s = summarise_roc(validation_scores, validation.labels);
-      figures.roc = roc_at_far_levels(roc_curve(validation_scores, validation.labels));
-      figures.validation_error = s.error_rate;
-      figures.auc = s.auc;
-      figures.tar_at_far_1 = s.tar_at_far_1;
-      figures.tar_at_far_5 = s.tar_at_far_5;
-      report.validation_error = s.error_rate;
-      report.validation_auc = s.auc;
-      if (s.auc > best_auc + 1e-9) {
-        best_auc = s.auc;
-        best_round = round;
-      }
-    }
-    all_rounds.push_back(figures);
-    report.round_s = round_s;
-    report.elapsed_s = seconds_since(start);
-    report.left_s = mean_round_s * (params.rounds - round);
-    if (progress) progress(report);
-    if (validating && params.early_stopping > 0 && round - best_round >= params.early_stopping) {
-      stopped = "early stopping at round " + std::to_string(round) + ": no better validation AUC for " +
-                std::to_string(params.early_stopping) + " rounds; kept the best, round " + std::to_string(best_round);
-      return false;
-    }
-    return true;
-  };
-
-  std::vector<WeakClassifier> weak;
-  std::string opencv_yaml;
-  std::size_t opencv_trees = 0;
-  if (params.backend == "native") {
-    const BinnedMatrix binned(rows, bins, train_index, params.threads);
-    RealAdaBoostParams rp;
-    rp.smoothing = params.smoothing;
-    rp.weight_trim = params.weight_trim;
-    rp.threads = params.threads;
-    rp.depth = params.depth;
-    rp.learning_rate = params.learning_rate;
-    RealAdaBoost booster(binned, train_labels, rp);
-    const Clock::time_point boost_start = Clock::now();
-    for (int round = 1; round <= params.rounds; ++round) {
-      const Clock::time_point round_start = Clock::now();
-      const RealAdaBoostRound r = booster.next_round();
-      const double round_s = seconds_since(round_start);
-      if (!after_round(round, booster.weak_classifiers().back(), r.train_error, round_s,
-                       seconds_since(boost_start) / round)) {
-        break;
-      }
-    }
-    weak = booster.weak_classifiers();
-  } else {
-    cv::Mat1f train_rows(static_cast<int>(train_index.size()), rows.cols);
-    for (std::size_t k = 0; k < train_index.size(); ++k) {
-      rows.row(static_cast<int>(train_index[k])).copyTo(train_rows.row(static_cast<int>(k)));
-    }
-    OpenCvBoostParams op;
-    op.rounds = params.rounds;
-    op.weight_trim = params.weight_trim;
-    const Clock::time_point boost_start = Clock::now();
-    OpenCvBoostResult result = train_opencv_boost(train_rows, train_labels, op);
-    const double mean_round_s = seconds_since(boost_start) / std::max<std::size_t>(1, result.stumps.size());
-    opencv_yaml = std::move(result.yaml);
-    opencv_trees = result.stumps.size();
-    // Per-round figures after the fact: OpenCV trains all rounds in one call.
-    std::vector<double> train_scores(train_labels.size(), 0.0);
-    int round = 0;
-    for (const WeakClassifier& w : result.stumps) {
-      ++round;
-      std::size_t wrong = 0;
-      for (std::size_t k = 0; k < train_scores.size(); ++k) {
-        train_scores[k] += w.respond(train_rows(static_cast<int>(k), w.feature), bins);
-        wrong += ((train_scores[k] > 0.0) != (train_labels[k] == 1)) ? 1 : 0;
-      }
-      weak.push_back(w);
-      if (!after_round(round, w, static_cast<double>(wrong) / static_cast<double>(train_scores.size()), mean_round_s,
-                       0.0)) {
-        break;
-      }
-    }
-  }
-
-  if (params.early_stopping > 0 && validating && stopped.rfind("early", 0) == 0 &&
-      static_cast<std::size_t>(best_round) < weak.size()) {
-    weak.resize(static_cast<std::size_t>(best_round));
-  }
-  if (!opencv_yaml.empty() && weak.size() != opencv_trees) {
-    opencv_yaml.clear();  // the embedded model would no longer match the kept stumps
-  }
-  record.stopped = stopped;
-
-  // Figures kept in the file: every report_every rounds and the last kept round.
-  for (const RoundFigures& f : all_rounds) {
-    if (f.round > static_cast<int>(weak.size())) break;
-    if (f.round % params.report_every == 0 || f.round == static_cast<int>(weak.size())) {
-      record.validation.rounds.push_back(f);
-    }
-  }
-
-  BoostedModel model(spec, bins, std::move(weak));
-  if (validating) {
-    std::vector<double> final_scores(validation.labels.size(), 0.0);
-    for (std::size_t k = 0; k < validation.index.size(); ++k) {
-      final_scores[k] = model.score((*validation.rows)[static_cast<int>(validation.index[k])]);
-    }
-    record_validation(model, record.validation, final_scores, validation.labels, params.calibration, validation_source);
-  }
-  if (!columns.empty()) {  // columns of the pool -> features of the spec
-    std::vector<WeakClassifier> renumbered = model.weak_classifiers();
-    renumber_features(renumbered, feature_of);
-    const ScoreCalibration calibration = model.calibration();
-    model = BoostedModel(spec, bins, std::move(renumbered));
-    model.set_calibration(calibration);
-  }
-  model.training() = record;
-  model.set_opencv_model_yaml(std::move(opencv_yaml));
-  return model;
+  const TrainingSide side = training_side(labels, split.train_index);
+  const ColumnFeatures feature_of{&params.feature_columns};
+  RoundObserver observer(params, split.validation, validating, feature_of, progress, start);
+  Boosted boosted = params.backend == BoostBackend::native ? boost_native(rows, side, params, observer)
+                                                           : boost_opencv(rows, side, params, observer);
+  return finish_model(std::move(boosted), observer, params, split, side, feature_of);
 }
 
 BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int>& labels,
@@ -367,18 +451,14 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
   validate_training_params(params);
   if (info.groups.size() != labels.size()) throw Error("group folds need the rows' groups");
   // Groups dealt to folds in a seeded order: every group in exactly one fold.
-  std::vector<std::size_t> ids = info.groups;
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  const DenseGroups groups = dense_groups(info.groups);
   // Fewer groups than folds: one fold per group.
-  const auto folds = std::min(static_cast<std::size_t>(params.folds), ids.size());
-  if (folds < 2) throw Error("group folds need at least 2 groups (" + std::to_string(ids.size()) + " given)");
-  const std::vector<std::size_t> shuffled = seeded_permutation(ids.size(), params.seed);
-  std::vector<std::size_t> fold_of_group(ids.size());
+  const auto folds = std::min(static_cast<std::size_t>(params.folds), groups.count);
+  if (folds < 2) throw Error("group folds need at least 2 groups (" + std::to_string(groups.count) + " given)");
+  const std::vector<std::size_t> shuffled = seeded_permutation(groups.count, params.seed);
+  std::vector<std::size_t> fold_of_group(groups.count);
   for (std::size_t k = 0; k < shuffled.size(); ++k) fold_of_group[shuffled[k]] = k % folds;
-  auto fold_of = [&](std::size_t row) {
-    return fold_of_group[static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), info.groups[row]) - ids.begin())];
-  };
+  auto fold_of = [&](std::size_t row) { return fold_of_group[groups.of_row[row]]; };
   auto augmented = [&](std::size_t row) { return !info.augmented.empty() && info.augmented[row]; };
 
   BoostTrainingParams inner = params;
@@ -454,7 +534,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
   BoostedModel model = train_boosted_model(rows, labels, inner, final_progress, nullptr, nullptr, {});
   TrainingRecord& record = model.training();
   record.parameters = parameter_record(params);
-  const std::string source = std::to_string(folds) + " folds of whole groups (" + std::to_string(ids.size()) +
+  const std::string source = std::to_string(folds) + " folds of whole groups (" + std::to_string(groups.count) +
                              " groups, seed " + std::to_string(params.seed) +
                              "): figures of the folds' models on their held-out groups, pooled";
   record.validation = ValidationFigures{};

@@ -70,6 +70,12 @@ void write_training(FileStorage& fs, const TrainingRecord& t) {
     fs.endWriteStruct();
   }
   fs.endWriteStruct();
+  if (t.crops.known()) {
+    fs.startWriteStruct("crops", FileNode::MAP);
+    cv::write(fs, "window_box", t.crops.window_box);
+    cv::write(fs, "window_scale", t.crops.window_scale);
+    fs.endWriteStruct();
+  }
   cv::write(fs, "train_positives", static_cast<int>(t.train_positives));
   cv::write(fs, "train_negatives", static_cast<int>(t.train_negatives));
   cv::write(fs, "stopped", t.stopped);
@@ -353,13 +359,27 @@ ScoreCalibration read_calibration(const Reader& r, const FileNode& root) {
   return out;
 }
 
-// Format 1 and 2 share their layout; 2 adds `calibration`, trees and validation.by_probability.
-BoostedModel read_v1_or_v2(const Reader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
+// training.crops (format 3, optional): how the training crops were cut.
+CropProvenance read_crops_v3(const Reader& r, const FileNode& training) {
+  CropProvenance crops;
+  const FileNode node = Reader::child(training, "crops");
+  if (node.empty()) return crops;
+  crops.window_box = r.text(node, "window_box", "training.crops.");
+  crops.window_scale = r.real(node, "window_scale", "training.crops.");
+  if (!(crops.window_scale > 0.0) || !std::isfinite(crops.window_scale)) {
+    r.bad("'training.crops.window_scale' must be a positive number");
+  }
+  return crops;
+}
+
+// Formats 1, 2 and 3 share their layout; 2 adds `calibration`, trees and validation.by_probability; 3
+// adds training.crops.
+BoostedModel read_v1_to_v3(const Reader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
   const FeatureSpec spec = read_feature_spec_v1(r, root, expected);
   const FileNode classifier = r.need(root, "classifier", "");
   const FileNode bins_node = r.need(classifier, "bins", "classifier.");
   const std::string scheme = r.text(bins_node, "scheme", "classifier.bins.");
-  if (scheme != "uniform") r.bad("bin scheme '" + scheme + "' is not known (formats 1 and 2 have 'uniform')");
+  if (scheme != "uniform") r.bad("bin scheme '" + scheme + "' is not known (formats 1 to 3 have 'uniform')");
   BinScheme bins;
   bins.count = r.integer(bins_node, "count", "classifier.bins.");
   bins.min_value = r.single(bins_node, "min", "classifier.bins.");
@@ -408,6 +428,7 @@ BoostedModel read_v1_or_v2(const Reader& r, const FileNode& root, const FeatureS
   }
   model.set_identity(r.text(root, "name", ""), r.integer(root, "version", ""), r.path, r.text(root, "created", ""));
   model.training() = read_training_v1(root["training"]);
+  if (format_version >= 3) model.training().crops = read_crops_v3(r, root["training"]);
   model.set_format_version(format_version);
   if (format_version >= 2) model.set_calibration(read_calibration(r, root));
   const FileNode opencv = root["opencv_model"];
@@ -432,10 +453,11 @@ BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpe
   switch (format_version) {
     case 1:
     case 2:
-      return read_v1_or_v2(r, root, expected, format_version);
+    case 3:
+      return read_v1_to_v3(r, root, expected, format_version);
     default:
       r.bad("model format version " + std::to_string(format_version) + " is not known (this build reads " +
-            "versions 1 and 2; a newer rdsf wrote it?)");
+            "versions 1 to 3; a newer rdsf wrote it?)");
   }
 }
 

@@ -113,4 +113,12 @@ std::string save_new_model_version(BoostedModel& model, const std::string& name,
   fail(folder.string(), "could not find a free version number");
 }
 
+std::string model_reference(const BoostedModel& model) {
+  return model.name().empty() ? model.path() : model.name() + "/v" + std::to_string(model.version());
+}
+
+std::string model_label(const BoostedModel& model) {
+  return model.name().empty() ? model.path() : model.name() + " v" + std::to_string(model.version());
+}
+
 }  // namespace rdsf

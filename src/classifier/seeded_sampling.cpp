@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "rdsf/classifier/dense_groups.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
@@ -70,23 +71,20 @@ HoldOutSplit group_split(const std::vector<int>& labels, const std::vector<std::
   if (group.size() != labels.size() || (!counts.empty() && counts.size() != labels.size())) {
     throw Error("group split: labels, groups and counts differ in number");
   }
-  // Dense group numbers in order of first appearance, with their counted positives and negatives.
-  std::vector<std::size_t> ids = group;
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  std::vector<std::size_t> dense(labels.size());
-  std::vector<std::size_t> pos(ids.size(), 0), neg(ids.size(), 0);
+  // Dense group numbers (ascending ids), with their counted positives and negatives.
+  const DenseGroups groups = dense_groups(group);
+  const std::vector<std::size_t>& dense = groups.of_row;
+  std::vector<std::size_t> pos(groups.count, 0), neg(groups.count, 0);
   std::size_t total_pos = 0, total_neg = 0;
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    dense[i] = static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), group[i]) - ids.begin());
     if (!counts.empty() && !counts[i]) continue;
     (labels[i] == 1 ? pos : neg)[dense[i]] += 1;
     (labels[i] == 1 ? total_pos : total_neg) += 1;
   }
   const double want_pos = std::round(fraction * static_cast<double>(total_pos));
   const double want_neg = std::round(fraction * static_cast<double>(total_neg));
-  const std::vector<std::size_t> order = seeded_permutation(ids.size(), seed);
-  std::vector<bool> held(ids.size(), false);
+  const std::vector<std::size_t> order = seeded_permutation(groups.count, seed);
+  std::vector<bool> held(groups.count, false);
   double got_pos = 0, got_neg = 0;
   for (std::size_t g : order) {
     if (got_pos >= want_pos && got_neg >= want_neg) break;
@@ -122,7 +120,7 @@ HoldOutSplit group_split(const std::vector<int>& labels, const std::vector<std::
   }
   const std::size_t train_pos = total_pos - val_pos, train_neg = total_neg - val_neg;
   if (val_pos == 0 || val_neg == 0 || train_pos == 0 || train_neg == 0) {
-    throw Error("the group split leaves a class empty (" + std::to_string(ids.size()) + " groups; validation " +
+    throw Error("the group split leaves a class empty (" + std::to_string(groups.count) + " groups; validation " +
                 std::to_string(val_pos) + " positives / " + std::to_string(val_neg) + " negatives, training " +
                 std::to_string(train_pos) + " / " + std::to_string(train_neg) +
                 "): give more recordings or clips, a larger validation fraction, or separate validation sets");

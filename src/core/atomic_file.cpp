@@ -77,7 +77,7 @@ AtomicTextFile::AtomicTextFile(std::string path, bool overwrite)
     : path_(std::move(path)), partial_(path_ + ".partial") {
   std::error_code ec;
   if (!overwrite && std::filesystem::exists(path_, ec)) {
-    fail(path_, "already exists (pass --force to replace it)");
+    throw AlreadyExists(path_ + ": already exists");
   }
   const int fd = io::open(partial_, O_WRONLY | O_CREAT | O_TRUNC);
   if (fd < 0) fail(partial_, "cannot be created: " + errno_text(errno));

@@ -352,12 +352,12 @@ void abandon(int fd, const std::string& temporary) {
 
 }  // namespace
 
-void write_synced(const std::string& path, std::string_view bytes) {
+void write_synced(const std::string& path, std::string_view bytes, Sync sync) {
   const int fd = io::open(path, O_WRONLY | O_CREAT | O_TRUNC);
   if (fd < 0) fail(path, "cannot be created: " + errno_text(errno));
   try {
     write_all(fd, bytes.data(), bytes.size(), path, "write failed");
-    sync_data(fd, path);
+    if (sync == Sync::now) sync_data(fd, path);
   } catch (...) {
     abandon(fd, path);
     throw;
@@ -366,6 +366,16 @@ void write_synced(const std::string& path, std::string_view bytes) {
     const int error = errno;
     io::unlink(path);
     fail(path, "write failed on close: " + errno_text(error));
+  }
+}
+
+void write_file_unsynced(const std::string& path, std::string_view bytes) {
+  const std::string temporary = path + ".tmp";
+  write_synced(temporary, bytes, Sync::later);
+  if (io::rename(temporary, path) != 0) {
+    const int error = errno;
+    io::unlink(temporary);
+    fail(path, "cannot rename " + temporary + " into place: " + errno_text(error));
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/ordered_pool.hpp"
+#include "rdsf/dataset/sample_source.hpp"
 #include "rdsf/features/feature_spec_record.hpp"
 #include "rdsf/dataset/sample_crop.hpp"
 #include "rdsf/frame/depth_png.hpp"
@@ -105,7 +106,7 @@ class FrameFeeder {
       if (!single->next(frame)) fail(job.path, "delivered no frame");
     }
     frame.index = job.index;
-    frame.timestamp_us = job.index * 33333;  // as PngFolderSource: image folders carry no clock
+    frame.timestamp_us = job.index * kFrameIntervalUs;  // as PngFolderSource: image folders carry no clock
     job.read = true;
     return frame;
   }
@@ -168,13 +169,6 @@ void check_mine_params(const MineParams& p) {
   if (p.max_frames < 0 || p.max_negatives < 0) throw Error("mining: limits must not be negative");
 }
 
-std::string source_name(const std::string& spec) {
-  if (is_openni_spec(spec) && !std::filesystem::exists(spec)) return spec;
-  std::string name = std::filesystem::path(spec).lexically_normal().string();
-  while (name.size() > 1 && name.back() == '/') name.pop_back();
-  return name;
-}
-
 NegativeMiner::NegativeMiner(MineParams params) : params_(std::move(params)) {
   check_mine_params(params_);
   // Open every source first: a wrong spec fails before anything is mined; the total is known for progress.
@@ -222,7 +216,7 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
   if (on_frame) on_frame(stats);  // frames 0: the start, with the total known
 
   for (std::size_t s = 0; s < params.sources.size() && frames_left > 0 && !stats.reached_max; ++s) {
-    const std::string name = source_name(params.sources[s]);
+    const std::string name = sample_source(params.sources[s]);  // the one rule (sample_source.hpp)
     FrameFeeder& feeder = *feeders_[s];
     feeder.set_limit(frames_left);
 

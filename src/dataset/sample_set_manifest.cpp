@@ -31,6 +31,12 @@ std::string SampleSetManifest::to_text() const {
   fs << "cx_px" << camera.cx_px;
   fs << "cy_px" << camera.cy_px;
   fs << "}";
+  if (crops.known()) {
+    fs << "crops" << "{";
+    cv::write(fs, "window_box", crops.window_box);
+    fs << "window_scale" << crops.window_scale;
+    fs << "}";
+  }
   // Text through cv::write: `fs << text` would take a text starting with [ { ] } for a bracket.
   cv::write(fs, "created", created);
   cv::write(fs, "created_by", created_by);
@@ -129,6 +135,11 @@ SampleSetManifest parse_opened(const cv::FileStorage& fs, const std::string& pat
   m.camera.fy_px = need_real(camera, "fy_px");
   m.camera.cx_px = need_real(camera, "cx_px");
   m.camera.cy_px = need_real(camera, "cy_px");
+  if (const cv::FileNode crops = root["crops"]; !crops.empty()) {
+    m.crops.window_box = need_string(crops, "window_box");
+    m.crops.window_scale = need_real(crops, "window_scale");
+    if (!(m.crops.window_scale > 0.0)) fail(path, "entry 'window_scale' must be positive");
+  }
   m.created = need_string(root, "created");
   const cv::FileNode by = root["created_by"];
   if (by.isString()) m.created_by = static_cast<std::string>(by);

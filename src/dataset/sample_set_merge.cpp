@@ -28,6 +28,9 @@ MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, Sample
       fail(dir, "feature spec " + set.feature_spec().hash() + " (" + set.feature_spec().canonical() +
                     ") differs from the output's " + spec.hash() + " (" + spec.canonical() + "); not merged");
     }
+    const std::string crops_differ =
+        crop_provenance_mismatch(set.manifest().crops, "its crops", out.manifest().crops, "the output's");
+    if (!crops_differ.empty()) fail(dir, "crops were cut differently: " + crops_differ + "; not merged");
     inputs.push_back(std::move(set));
   }
   MergeResult result;

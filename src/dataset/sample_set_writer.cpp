@@ -1,13 +1,9 @@
 #include "rdsf/dataset/sample_set_writer.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <unordered_map>
 #include <utility>
-
-#include <fcntl.h>
 
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
@@ -80,7 +76,8 @@ SampleSetWriter& SampleSetWriter::operator=(SampleSetWriter&&) noexcept = defaul
 SampleSetWriter::~SampleSetWriter() = default;
 
 SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const FeatureSpec& spec,
-                                                const CameraModel& camera, const std::string& created_by) {
+                                                const CameraModel& camera, const std::string& created_by,
+                                                const CropProvenance& crops) {
   std::error_code ec;
   create_folders_durably(dir);
   SampleSetLock lock(dir);
@@ -104,6 +101,7 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
     SampleSetManifest manifest;
     manifest.feature_spec = spec;
     manifest.camera = camera;
+    manifest.crops = crops;
     manifest.created = utc_now_iso8601();
     manifest.created_by = created_by;
     manifest.write((root / "manifest.yml").string());  // last: a set exists once its manifest does
@@ -114,6 +112,9 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
     fail(dir, "sample set has feature spec " + have.hash() + " (" + have.canonical() + "), not the requested " +
                   spec.hash() + " (" + spec.canonical() + "); use another set");
   }
+  const std::string crops_differ =
+      crop_provenance_mismatch(writer.manifest().crops, "the set's crops", crops, "the new crops");
+  if (!crops_differ.empty()) fail(dir, "sample set's crops were cut differently: " + crops_differ + "; use another set");
   return writer;
 }
 
@@ -124,20 +125,7 @@ SampleSetWriter SampleSetWriter::open_existing(const std::string& dir) {
 }
 
 void SampleSetWriter::write_crop_unsynced(const std::string& path, const std::vector<unsigned char>& bytes) {
-  const std::string temporary = path + ".tmp";
-  const int fd = io::open(temporary, O_WRONLY | O_CREAT | O_TRUNC);
-  if (fd < 0) fail(temporary, "cannot be created: " + errno_text(errno));
-  try {
-    write_all(fd, bytes.data(), bytes.size(), temporary, "write failed");
-  } catch (...) {
-    io::close(fd);
-    io::unlink(temporary);
-    throw;
-  }
-  if (io::close(fd) != 0) fail(temporary, "write failed on close: " + errno_text(errno));
-  if (io::rename(temporary, path) != 0) {
-    fail(path, "cannot rename " + temporary + " into place: " + errno_text(errno));
-  }
+  write_file_unsynced(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   state_->unsynced_crops.push_back(path);
 }
 

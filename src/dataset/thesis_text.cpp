@@ -64,43 +64,38 @@ bool parse_line(const std::string& line, int dimension, const std::string& where
   return true;
 }
 
-}  // namespace
-
-std::int64_t check_thesis_text(const std::string& path, int dimension) {
+// Calls fn(line number, label, values) for every sample line of `path`, checked as parse_line() does.
+template <typename Fn>
+void for_each_sample_line(const std::string& path, int dimension, Fn&& fn) {
   std::vector<float> values;
   values.reserve(static_cast<std::size_t>(dimension));
   int label = 0;
-  std::int64_t lines = 0;
   std::ifstream in(path);
   if (!in) fail(path, "cannot be opened");
   std::string line;
   std::int64_t number = 0;
   while (std::getline(in, line)) {
     ++number;
-    if (parse_line(line, dimension, path + ":" + std::to_string(number), label, values)) ++lines;
+    if (parse_line(line, dimension, path + ":" + std::to_string(number), label, values)) fn(number, label, values);
   }
   if (in.bad()) fail(path, "read failed");
+}
+
+}  // namespace
+
+std::int64_t check_thesis_text(const std::string& path, int dimension) {
+  std::int64_t lines = 0;
+  for_each_sample_line(path, dimension, [&](std::int64_t, int, const std::vector<float>&) { ++lines; });
   if (lines == 0) fail(path, "holds no samples");
   return lines;
 }
 
 ThesisImportResult import_thesis_text(const std::string& path, SampleSetWriter& writer, bool already_checked) {
-  const int dimension = writer.dimension();
   ThesisImportResult result;
-  std::vector<float> values;
-  values.reserve(static_cast<std::size_t>(dimension));
-  int label = 0;
   // Pass 1: check every line, import nothing when one is bad.
-  if (!already_checked) check_thesis_text(path, dimension);
+  if (!already_checked) check_thesis_text(path, writer.dimension());
   // Pass 2: append.
-  std::ifstream in(path);
-  if (!in) fail(path, "cannot be opened");
-  std::string line;
-  std::int64_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::string where = path + ":" + std::to_string(number);
-    if (!parse_line(line, dimension, where, label, values)) continue;
+  for_each_sample_line(path, writer.dimension(), [&](std::int64_t number, int label, const std::vector<float>& values) {
     ++result.lines;
     SampleRecord record;
     record.label = label;
@@ -110,38 +105,52 @@ ThesisImportResult import_thesis_text(const std::string& path, SampleSetWriter& 
     record.has_crop = false;
     if (writer.is_duplicate(record)) {
       ++result.duplicates;
-      continue;
+      return;
     }
     writer.append_vector(record, values.data());
     ++result.imported;
-  }
-  if (in.bad()) fail(path, "read failed");
+  });
   return result;
+}
+
+void write_thesis_lines(std::ostream& out, const cv::Mat1f& rows, const std::vector<int>& labels) {
+  if (rows.rows != static_cast<int>(labels.size())) throw Error("thesis text: rows and labels differ in number");
+  std::string line;
+  char text[32];
+  for (int r = 0; r < rows.rows; ++r) {
+    line.assign(labels[static_cast<std::size_t>(r)] == 1 ? "1" : "0");
+    const float* row = rows.ptr<float>(r);
+    for (int c = 0; c < rows.cols; ++c) {
+      const auto written = std::to_chars(text, text + sizeof text, row[c]);
+      line.push_back(' ');
+      line.append(text, written.ptr);
+    }
+    line.push_back('\n');
+    out << line;
+  }
+}
+
+std::int64_t write_thesis_text(const cv::Mat1f& rows, const std::vector<int>& labels, const std::string& path,
+                               bool overwrite) {
+  AtomicTextFile file(path, overwrite);
+  write_thesis_lines(file.stream(), rows, labels);
+  file.commit();
+  return rows.rows;
 }
 
 std::int64_t export_thesis_text(const SampleSet& set, const RdsfExtractor& extractor, const std::string& path,
                                 bool overwrite) {
   AtomicTextFile file(path, overwrite);
-  std::ostream& out = file.stream();
   const std::size_t total = set.records().size();
   constexpr std::size_t kChunk = 2048;
-  std::string line;
   for (std::size_t begin = 0; begin < total; begin += kChunk) {
     std::vector<std::size_t> indices;
-    for (std::size_t i = begin; i < std::min(total, begin + kChunk); ++i) indices.push_back(i);
-    const cv::Mat1f rows = set.features(extractor, indices);
-    for (int r = 0; r < rows.rows; ++r) {
-      line = set.records()[indices[static_cast<std::size_t>(r)]].label == 1 ? "1" : "0";
-      const float* row = rows.ptr<float>(r);
-      char text[32];
-      for (int c = 0; c < rows.cols; ++c) {
-        const auto written = std::to_chars(text, text + sizeof text, row[c]);
-        line += ' ';
-        line.append(text, written.ptr);
-      }
-      line += '\n';
-      out << line;
+    std::vector<int> labels;
+    for (std::size_t i = begin; i < std::min(total, begin + kChunk); ++i) {
+      indices.push_back(i);
+      labels.push_back(set.records()[i].label);
     }
+    write_thesis_lines(file.stream(), set.features(extractor, indices), labels);
     file.flush();
   }
   file.commit();

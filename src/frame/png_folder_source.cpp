@@ -97,7 +97,7 @@ bool PngFolderSource::next(DepthFrame& frame) {
   }
   frame.index = static_cast<std::int64_t>(next_);
   frame.name = frame_name(depth_path);
-  frame.timestamp_us = frame.index * 33333;  // image folders carry no clock: 30 frames per second
+  frame.timestamp_us = frame.index * kFrameIntervalUs;  // image folders carry no clock: 30 frames per second
   frame.camera = (frame.depth_mm.cols == camera_.width_px && frame.depth_mm.rows == camera_.height_px)
                      ? camera_
                      : camera_.scaled_to(frame.depth_mm.cols, frame.depth_mm.rows);

@@ -9,27 +9,20 @@
 #include <unordered_set>
 
 #include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/classifier/seeded_sampling.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_source.hpp"
+#include "rdsf/pipeline/model_fit.hpp"
 
 namespace rdsf {
 namespace {
-
-// Samples and answers name their source so that a rerun from another folder still matches: files and
-// folders by their absolute path, devices as given.
-std::string canonical_source(const std::string& spec) {
-  if (is_openni_spec(spec) && spec.find("://") != std::string::npos) return spec;
-  if (spec == "openni") return spec;
-  std::error_code ec;
-  const auto path = std::filesystem::weakly_canonical(spec, ec);
-  return ec ? spec : path.string();
-}
 
 // "model tree2/v3 H=0.532 P=0.981": who answered, journalled with the answer.
 std::string model_answerer(const BoostedModel& model, double score, double probability) {
   char text[96];
   std::snprintf(text, sizeof text, " H=%.4f P=%.4f", score, probability);
-  return "model " + model.name() + "/v" + std::to_string(model.version()) + text;
+  return "model " + model_reference(model) + text;
 }
 
 }  // namespace
@@ -65,7 +58,10 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
   std::unordered_set<std::int64_t> ids;  // an undo cut short by a failed write or a power cut is finished
   for (const SampleRecord& r : writer_.records()) ids.insert(r.id);
   journal_.finish_interrupted_undos([&ids](std::int64_t id) { return ids.count(id) != 0; });
-  if (model_ != nullptr) scorer_.emplace(*model_);
+  if (model_ != nullptr) {
+    check_model_fits(*model_, config_.detector);  // the same crops as the detector cuts (model_fit.hpp)
+    scorer_.emplace(*model_);
+  }
   // Open every source now, so that a bad one is reported before the first question.
   std::int64_t total = 0;
   bool known = true;
@@ -89,7 +85,7 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
   while (true) {
     if (!source_) {
       if (source_index_ >= config_.sources.size()) return nullptr;
-      source_name_ = canonical_source(config_.sources[source_index_]);
+      source_name_ = sample_source(config_.sources[source_index_]);  // the one rule (sample_source.hpp)
       source_ = open_frame_source(config_.sources[source_index_], config_.camera);
     }
     auto loaded = std::make_shared<LoadedFrame>();
@@ -282,7 +278,7 @@ std::int64_t LabelingSession::store(const PresentedCandidate& p, int label, cons
   record.window = c.window;
   record.layer_depth_mm = c.layer_depth_mm;
   if (model_ != nullptr && !p.frame->scores.empty()) {
-    record.model = model_->name() + "/v" + std::to_string(model_->version());
+    record.model = model_reference(*model_);
     record.score = p.frame->scores[p.index];
   }
   // Saved before but its journal line was lost (disk full, power cut between the two): not stored twice.

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/append_only_log.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/utc_time.hpp"
@@ -20,7 +21,6 @@ namespace {
 const char* kJournalHeader = "time\tchange\tsample_id\tnew_id\tmodel";
 const char* kReviewOrigin = "review";
 
-std::string model_label(const BoostedModel& model) { return model.name() + "/v" + std::to_string(model.version()); }
 
 }  // namespace
 
@@ -147,7 +147,7 @@ void ReviewSession::finish_interrupted_flips() {
 
 void ReviewSession::journal(const std::string& change, std::int64_t id, std::int64_t new_id) {
   append_line_synced(journal_path_, utc_now_iso8601() + "\t" + change + "\t" + std::to_string(id) + "\t" +
-                                        std::to_string(new_id) + "\t" + (model_ ? model_label(*model_) : ""));
+                                        std::to_string(new_id) + "\t" + (model_ ? model_reference(*model_) : ""));
 }
 
 void ReviewSession::move(long delta) {
@@ -180,7 +180,7 @@ bool ReviewSession::flip() {
   corrected.model.clear();
   corrected.score.reset();
   if (scorer_) {
-    corrected.model = model_label(*model_);
+    corrected.model = model_reference(*model_);
     corrected.score = scorer_->score(item.depth_crop);
   }
   const cv::Mat3b colour = colour_crop(selected_);

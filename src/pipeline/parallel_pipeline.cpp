@@ -85,7 +85,7 @@ std::int64_t run_in_frame_order(PeoplePipeline& pipeline, FrameSource& source, c
     DepthFrame frame;
     if (!PngFolderSource(path, camera).next(frame)) fail(path, "delivered no frame");
     frame.index = i;
-    frame.timestamp_us = i * 33333;  // as PngFolderSource: image folders carry no clock
+    frame.timestamp_us = i * kFrameIntervalUs;  // as PngFolderSource: image folders carry no clock
     return frame;
   };
   return run_in_frame_order(pipeline, static_cast<std::int64_t>(paths.size()), load, params, on_frame);

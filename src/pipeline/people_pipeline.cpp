@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "rdsf/core/error.hpp"
-#include "rdsf/features/feature_spec_record.hpp"
+#include "rdsf/pipeline/model_fit.hpp"
 
 namespace rdsf {
 namespace {
@@ -26,10 +26,7 @@ PipelineTimes& PipelineTimes::operator+=(const PipelineTimes& o) {
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
     : params_(params), model_(model), core_(params.detector), tracker_(params.tracking) {
   if (model_ == nullptr) return;
-  if (model_->feature_spec() != params_.detector.features) {
-    fail(model_->path(), feature_spec_mismatch("model feature spec", model_->feature_spec(), "the detector's",
-                                               params_.detector.features));
-  }
+  check_model_fits(*model_, params_.detector);
   scorer_.emplace(*model_);
 }
 

@@ -48,14 +48,14 @@ void prepare_output_folder(const std::string& dir, bool force) {
   }
   if (ec) fail(dir, "cannot list folder: " + ec.message());
   if (!force && (!our_files.empty() || foreign_frames > 0)) {
-    fail(dir, "already holds frames or boxes.csv (" + std::to_string(our_files.size() + foreign_frames) +
-                  " files); give --force to replace them, or choose another folder");
+    throw AlreadyExists(dir + ": already holds frames or boxes.csv (" +
+                        std::to_string(our_files.size() + foreign_frames) + " files); choose another folder");
   }
   if (foreign_frames > 0) {
     fail(dir,
          "holds " + std::to_string(foreign_frames) +
-             " depth/colour images not named like rdsf-synth output; --force only replaces NNNNNN.depth.png, "
-             "NNNNNN.rgb.png, boxes.csv and synth.yml: empty the folder yourself");
+             " depth/colour images not named like rdsf-synth output; only NNNNNN.depth.png, NNNNNN.rgb.png, "
+             "boxes.csv and synth.yml are ever replaced: empty the folder yourself");
   }
   for (const fs::path& path : our_files) {
     fs::remove(path, ec);

@@ -3,7 +3,10 @@
 // the rows' groups are given: recording and frame range, so near-identical crops of consecutive frames never
 // sit on both sides), the chosen backend round by round, validation figures (AUC, TAR at FAR 1 % and 5 %)
 // after every round, optional early stopping, Platt calibration of the scores on the validation samples,
-// and a progress report per round. Takes feature matrices, not sample sets.
+// and a progress report per round. Takes feature matrices, not sample sets. train_boosted_model's steps
+// (boost_training.cpp): check the rows, split them (separate sets, groups, or a stratified fraction), order
+// the training side, boost with the backend while a RoundObserver keeps the figures and decides early
+// stopping (an enum, not a message), then finish the model (kept rounds, record, calibration).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -13,13 +16,14 @@
 #include <opencv2/core.hpp>
 
 #include "rdsf/classifier/bin_scheme.hpp"
+#include "rdsf/classifier/boost_backend.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf {
 
 struct BoostTrainingParams {
-  std::string backend = "native";   ///< "native" (Real AdaBoost, LUT) or "opencv" (cv::ml::Boost REAL stumps)
+  BoostBackend backend = BoostBackend::native;  ///< native (Real AdaBoost, LUT) or opencv (cv::ml::Boost REAL stumps)
   int rounds = 100;                 ///< boosting rounds (weak classifiers)
   BinScheme bins;                   ///< native: 64 equal bins over [0, 1]
   double smoothing = 0.0;           ///< native: eps of the responses; 0 = 1 / training samples

@@ -1,10 +1,12 @@
 #pragma once
 // The model file: YAML written with cv::FileStorage, self-describing and versioned.
 //
-//   format: "rdsf-model"            format_version: 2 (1: no calibration, no trees; still read)
+//   format: "rdsf-model"            format_version: 3 (1: no calibration, no trees; 2: no training.crops;
+//                                   both still read)
 //   name, version (N of vN), created (ISO 8601 UTC)
 //   feature_spec: canonical text, hash, name, and the numbers (window, cells or squares, bins)
 //   training: recipe, backend, parameters, sample_sets (role, path, manifest_hash, available, used),
+//             crops (format 3, when the sets record it: window_box, window_scale; candidates/crop_provenance.hpp),
 //             train_positives/negatives, stopped, validation (source, counts, auc, tar_at_far_1/5,
 //             error_rate, roc points, per-round figures each with its roc points)
 //   classifier: bins (scheme uniform, count, min, max) and weak_classifiers, each
@@ -26,7 +28,7 @@
 namespace rdsf {
 
 inline constexpr const char* kModelFormat = "rdsf-model";
-inline constexpr int kModelFormatVersion = 2;  ///< the version written
+inline constexpr int kModelFormatVersion = 3;  ///< the version written
 
 /// The file text of `model` (its name, version and created time included as they are set).
 std::string model_file_text(const BoostedModel& model);

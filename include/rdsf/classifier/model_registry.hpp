@@ -29,6 +29,13 @@ inline constexpr const char* kDefaultModelName = "people";
 /// The folder of the shipped models (compiled in; empty when the build has none).
 std::string shipped_models_dir();
 
+/// How a model is named, in two forms kept here so that every program writes them the same way; both are
+/// the model file's path for a model without a name (not read from models/NAME/vN.yml):
+///   model_reference: "NAME/vN", what --model accepts (the samples.tsv `model` column)
+///   model_label:     "NAME vN", for people (progress lines, reports, --inspect)
+std::string model_reference(const BoostedModel& model);
+std::string model_label(const BoostedModel& model);
+
 /// Saves `model` as models_dir/NAME/vN.yml with the next free N, setting its name, version, path and
 /// creation time. Returns the path.
 std::string save_new_model_version(BoostedModel& model, const std::string& name,

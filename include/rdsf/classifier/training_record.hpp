@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "rdsf/candidates/crop_provenance.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
 
 namespace rdsf {
@@ -55,6 +56,8 @@ struct TrainingRecord {
   /// Every parameter as text, in a fixed order (rounds, bins, seed, ...).
   std::vector<std::pair<std::string, std::string>> parameters;
   std::vector<SampleSetUse> sample_sets;
+  /// How the training crops were cut (format 3; unknown in older files and for sets that do not record it).
+  CropProvenance crops;
   std::size_t train_positives = 0, train_negatives = 0;
   std::string stopped;   ///< why training ended: "rounds", "early stopping at round N (best AUC)"
   ValidationFigures validation;

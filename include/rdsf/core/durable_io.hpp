@@ -81,9 +81,14 @@ std::string parent_folder(const std::string& path);
 /// Creates `dir` and any missing parents, each fsync'ed in its parent; nothing when it exists.
 void create_folders_durably(const std::string& dir);
 
-/// Creates (or truncates) `path`, writes `bytes`, fdatasyncs and closes it; removes it on failure. The name
-/// itself is not made durable (a temporary file: see write_file_durably).
-void write_synced(const std::string& path, std::string_view bytes);
+/// Whether a write is flushed to disk before it returns, or by the caller later (one syncfs for a batch).
+enum class Sync { now, later };
+/// Creates (or truncates) `path`, writes `bytes`, fdatasyncs (Sync::now) and closes it; removes it on
+/// failure. The name itself is not made durable (a temporary file: see write_file_durably).
+void write_synced(const std::string& path, std::string_view bytes, Sync sync = Sync::now);
+/// Writes "<path>.tmp" and renames it to `path`, syncing neither: the caller makes the file and its name
+/// durable later (sync_file or sync_file_system, then sync_folder). A reader never sees a partial file.
+void write_file_unsynced(const std::string& path, std::string_view bytes);
 
 enum class Replace { allowed, never };
 /// Writes `bytes` to `path` durably (temporary "<path>.tmp", fdatasync, rename or link, folder fsync).

@@ -13,6 +13,14 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A file or folder the caller asked to write already holds something that is only replaced when the
+/// caller says so (the programs' --force). Library messages name no command-line option: the programs
+/// add how to replace it (cli::run).
+class AlreadyExists : public Error {
+ public:
+  using Error::Error;
+};
+
 /// Throws Error("<where>: <what>").
 [[noreturn]] void fail(const std::string& where, const std::string& what);
 

@@ -81,8 +81,4 @@ class NegativeMiner {
 MineStats mine_negatives(const MineParams& params, SampleSetWriter& out,
                          const std::function<void(const MineStats&)>& on_frame = {});
 
-/// How a source spec is recorded in the samples' source column: the spec, lexically normalised, without a
-/// trailing slash ("./data/empty/" -> "data/empty").
-std::string source_name(const std::string& spec);
-
 }  // namespace rdsf

@@ -1,9 +1,12 @@
 #pragma once
 // manifest.yml of a sample set (cv::FileStorage YAML): the format name and version, the feature spec
-// (canonical text, hash and parameters), the camera model of the frames the crops were cut from, and when
-// and by what the set was created. Written once, atomically, when the set is created; never changed.
+// (canonical text, hash and parameters), the camera model of the frames the crops were cut from, how the
+// crops were cut (crops: window_box, window_scale; optional, absent in sets written before it was recorded
+// and in thesis text imports), and when and by what the set was created. Written once, atomically, when
+// the set is created; never changed.
 #include <string>
 
+#include "rdsf/candidates/crop_provenance.hpp"
 #include "rdsf/features/feature_spec.hpp"
 #include "rdsf/frame/camera_model.hpp"
 
@@ -15,6 +18,7 @@ struct SampleSetManifest {
 
   FeatureSpec feature_spec;
   CameraModel camera;
+  CropProvenance crops;    ///< unknown (not written) unless the writer knew it
   std::string created;     ///< ISO 8601 UTC
   std::string created_by;  ///< program that created the set ("rdsf-mine")
 

@@ -4,7 +4,11 @@
 // label 1 (person) or 0 (not), then the N = 8128 feature values (each in [0, 1]) separated by spaces or
 // tabs. Blank lines are ignored.
 #include <cstdint>
+#include <iosfwd>
 #include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
 
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
@@ -29,9 +33,17 @@ ThesisImportResult import_thesis_text(const std::string& path, SampleSetWriter& 
 /// samples. Throws Error "<path>:<line>: <problem>".
 std::int64_t check_thesis_text(const std::string& path, int dimension);
 
-/// Writes every record of `set` (features from `extractor`) to `path` in the thesis's text format, through
-/// a temporary file; refuses to replace an existing file unless `overwrite`. Values are written with the
-/// shortest text that reads back as the same float. Returns the number of lines.
+/// The one writer of the format: appends one line per row of `rows` (label from `labels`, then the row's
+/// values with the shortest text that reads back as the same float) to `out`.
+void write_thesis_lines(std::ostream& out, const cv::Mat1f& rows, const std::vector<int>& labels);
+
+/// Writes `rows` and their `labels` to `path` through a temporary file; refuses to replace an existing
+/// file unless `overwrite`. Returns the number of lines. (rdsf-train --export-text: a recipe's samples.)
+std::int64_t write_thesis_text(const cv::Mat1f& rows, const std::vector<int>& labels, const std::string& path,
+                               bool overwrite);
+
+/// Writes every record of `set` (features from `extractor`) to `path` as write_thesis_text() does, in
+/// chunks (rdsf-samples --export: a whole set). Returns the number of lines.
 std::int64_t export_thesis_text(const SampleSet& set, const RdsfExtractor& extractor, const std::string& path,
                                 bool overwrite);
 

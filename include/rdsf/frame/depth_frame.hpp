@@ -11,12 +11,16 @@
 
 namespace rdsf {
 
+/// The time between frames of a source without a clock (image folders): the Kinect's 30 frames per second,
+/// in whole microseconds. Frame i of such a source has timestamp_us = i * kFrameIntervalUs.
+inline constexpr std::int64_t kFrameIntervalUs = 33333;
+
 struct DepthFrame {
   cv::Mat1w depth_mm;             ///< CV_16UC1, millimetres, 0 = no reading
   cv::Mat3b bgr;                  ///< CV_8UC3 registered colour, empty when the source has none
   std::int64_t index = 0;         ///< 0-based position of the frame in its source
   std::string name;               ///< file stem (without .depth.png) for folders, the index for recordings
-  std::int64_t timestamp_us = 0;  ///< microseconds; from the recording, or index * 33333 for image folders
+  std::int64_t timestamp_us = 0;  ///< microseconds; from the recording, or index * kFrameIntervalUs for image folders
   CameraModel camera;             ///< intrinsics of the depth image as delivered
 
   bool has_colour() const { return !bgr.empty(); }
