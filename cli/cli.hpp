@@ -27,8 +27,9 @@ struct ProgramInfo {
   std::string summary;  ///< one paragraph shown by --help
 };
 
-/// Parses argv against `options` (plus --help and --config). Returns false when --help was printed (the
-/// program then exits 0). Throws UsageError on unknown options, bad values or a bad config file.
+/// Parses argv against `options` (plus --help, --version and --config). Returns false when --help or
+/// --version was printed (the program then exits 0). Throws UsageError on unknown options, bad values or a
+/// bad config file.
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional = nullptr);
 
