@@ -28,7 +28,8 @@ if ((deb)); then
   sudo=""
   if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
   dpkg-query -W rdsf >/dev/null 2>&1 && fail "a package rdsf is installed already: remove it first (dpkg -r rdsf)"
-  (cd "$work" && cpack -G DEB --config "$build_dir/CPackConfig.cmake" >/dev/null) || fail "cpack -G DEB failed"
+  (cd "$work" && cpack -G DEB --config "$build_dir/CPackConfig.cmake" >"$work/cpack.log" 2>&1) ||
+    { tail -20 "$work/cpack.log" >&2; fail "cpack -G DEB failed"; }
   package=$(ls "$work"/rdsf_*.deb) || fail "cpack made no rdsf_*.deb"
   echo "check-install: built $(basename "$package") ($(du -k "$package" | cut -f1) kB)"
   $sudo dpkg -i "$package" >/dev/null || fail "dpkg -i $package failed"

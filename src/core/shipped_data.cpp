@@ -36,9 +36,9 @@ std::string shipped_data_models_dir() {
   if (!binary.empty()) {
     const fs::path installed = (binary.parent_path() / RDSF_MODELS_FROM_BINARY).lexically_normal();
     if (fs::is_directory(installed, ec)) return installed.string();
-    if (is_inside(binary, fs::weakly_canonical(RDSF_BUILD_TREE, ec)) && fs::is_directory(RDSF_SOURCE_MODELS_DIR, ec)) {
-      return RDSF_SOURCE_MODELS_DIR;
-    }
+    const bool build_tree = is_inside(binary, fs::weakly_canonical(RDSF_BUILD_TREE, ec)) ||
+                            is_inside(binary, fs::weakly_canonical(RDSF_PROJECT_BUILD_TREE, ec));
+    if (build_tree && fs::is_directory(RDSF_SOURCE_MODELS_DIR, ec)) return RDSF_SOURCE_MODELS_DIR;
   }
   if (fs::is_directory(RDSF_INSTALLED_MODELS_DIR, ec)) return RDSF_INSTALLED_MODELS_DIR;
   return "";

@@ -4,8 +4,8 @@
 //   1. installed: <folder of the binary holding librdsf>/<path from LIBDIR to DATADIR/rdsf/models>, when
 //      that folder exists (the shared library in LIBDIR; with a static librdsf the program in BINDIR), so
 //      an installed tree may be moved to another prefix (a .deb installs under /usr);
-//   2. a program of the build tree that built the library (under its top build folder, a parent project's
-//      too when included with add_subdirectory): the source tree's models/;
+//   2. a binary of the build tree that built the library (under its build folder or the top project's, when
+//      included with add_subdirectory): the source tree's models/;
 //   3. otherwise (a static librdsf inside a downstream program): DATADIR/rdsf/models of the configured
 //      install prefix, when it exists.
 // The paths are compiled in (src/CMakeLists.txt); nothing depends on the working folder or environment.
