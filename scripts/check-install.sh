@@ -4,7 +4,8 @@
 #   2. the installed programs find the installed default model and recipes from any working folder;
 #   3. configures and builds examples/detect-people against the prefix (find_package(rdsf)), runs it on a
 #      few frames rendered by the installed rdsf-synth and checks that it prints detections;
-#   4. compiles a one-file program with pkg-config's flags for rdsf.pc and checks rdsf::version().
+#   4. compiles a one-file program with pkg-config's flags for rdsf.pc and checks rdsf::version();
+#   5. configures a parent project that includes the tree with add_subdirectory (nothing may leak into it).
 # With --deb (as root, or through sudo): instead builds the .deb with cpack, installs it with dpkg, runs 2-4
 # against /usr, removes it and checks that nothing of it is left.
 # Prints one line per step; exits non-zero at the first failure.
@@ -76,6 +77,30 @@ g++ -std=c++17 "$work/version.cpp" -o "$work/version" $(PKG_CONFIG_PATH=$(dirnam
   -Wl,-rpath,"$libdir" || fail "a program does not compile and link with pkg-config's flags for rdsf"
 [ "$("$work/version")" = "$version $version" ] || fail "rdsf::version() says '$("$work/version")', expected $version"
 echo "check-install: pkg-config rdsf: compiled and linked, rdsf::version() = $version"
+
+# 5. As a subproject: configure a parent project that add_subdirectory()s the tree (programs off; building
+#    the library again would take minutes) and check that nothing leaks into the parent; the tree uses
+#    PROJECT_*/CMAKE_CURRENT_* paths (the top build folder only where shipped_data.cpp needs it).
+leaks=$(grep -rn --include=CMakeLists.txt --include='*.cmake' -E 'CMAKE_(SOURCE|BINARY)_DIR' \
+  CMakeLists.txt cmake src cli gui detector synth miner labeler trainer recorder openni_driver tests bench fuzz |
+  grep -v 'RDSF_BUILD_TREE=' || true)
+[ -z "$leaks" ] || fail "CMAKE_SOURCE_DIR/CMAKE_BINARY_DIR break add_subdirectory; use PROJECT_*: $leaks"
+mkdir -p "$work/parent"
+cat >"$work/parent/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.25)
+project(parent LANGUAGES CXX)
+add_subdirectory("$source_dir" rdsf)
+add_executable(parent main.cpp)
+target_link_libraries(parent PRIVATE rdsf::rdsf)
+get_directory_property(parent_options COMPILE_OPTIONS)
+file(WRITE \${CMAKE_BINARY_DIR}/leaks.txt "options=\${parent_options};flags=\${CMAKE_CXX_FLAGS};type=\${CMAKE_BUILD_TYPE};tests=\${RDSF_BUILD_TESTS};bench=\${RDSF_BUILD_BENCH}")
+CMAKE
+echo 'int main() {}' >"$work/parent/main.cpp"
+cmake -S "$work/parent" -B "$work/parent/build" -DRDSF_BUILD_PROGRAMS=OFF >"$work/parent.log" 2>&1 ||
+  { tail -20 "$work/parent.log" >&2; fail "a parent project cannot add_subdirectory() the tree"; }
+[ "$(cat "$work/parent/build/leaks.txt")" = "options=;flags=;type=;tests=OFF;bench=OFF" ] ||
+  fail "add_subdirectory() changed the parent project: $(cat "$work/parent/build/leaks.txt")"
+echo "check-install: as a subproject: configures, no flags or build type forced on the parent, no tests or benchmarks"
 
 if ((deb)); then
   $sudo dpkg -r rdsf >/dev/null || fail "dpkg -r rdsf failed"
