@@ -7,7 +7,7 @@
 #   4. compiles a one-file program with pkg-config's flags for rdsf.pc and checks rdsf::version();
 #   5. configures a parent project that includes the tree with add_subdirectory (nothing may leak into it).
 # With --deb (as root, or through sudo): instead builds the .deb with cpack, installs it with dpkg, runs 2-4
-# against /usr, removes it and checks that nothing of it is left.
+# against /usr, removes it (dpkg -r), checks that nothing of it is left, and purges it from dpkg's list.
 # Prints one line per step; exits non-zero at the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +28,9 @@ version=$(sed -n 's/^project(rdsf VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
 if ((deb)); then
   sudo=""
   if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-  dpkg-query -W rdsf >/dev/null 2>&1 && fail "a package rdsf is installed already: remove it first (dpkg -r rdsf)"
+  if dpkg-query -W -f='${Status}' rdsf 2>/dev/null | grep -q "ok installed"; then
+    fail "a package rdsf is installed already: remove it first (dpkg -r rdsf)"
+  fi
   (cd "$work" && cpack -G DEB --config "$build_dir/CPackConfig.cmake" >"$work/cpack.log" 2>&1) ||
     { tail -20 "$work/cpack.log" >&2; fail "cpack -G DEB failed"; }
   package=$(ls "$work"/rdsf_*.deb) || fail "cpack made no rdsf_*.deb"
@@ -109,4 +111,8 @@ if ((deb)); then
   dirs=$(while read -r f; do if [ -d "$f" ] && [[ "$f" == */rdsf* ]]; then echo "$f"; fi; done <"$work/files.txt")
   [ -z "$dirs" ] || fail "folders left after dpkg -r rdsf: $dirs"
   echo "check-install: dpkg -r rdsf removed all $(wc -l <"$work/files.txt") paths of the package"
+  # dpkg keeps a removed package that has a maintainer script (ldconfig in postrm) as "rc" until purged.
+  $sudo dpkg -P rdsf >/dev/null || fail "dpkg -P rdsf failed"
+  if dpkg-query -W rdsf >/dev/null 2>&1; then fail "dpkg still lists rdsf after dpkg -P"; fi
+  echo "check-install: dpkg -P rdsf: dpkg no longer knows the package"
 fi
