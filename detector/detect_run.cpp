@@ -5,12 +5,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <functional>
 #include <memory>
+#include <thread>
 
 #include <opencv2/highgui.hpp>
 
 #include "cli/progress.hpp"
+#include "rdsf/core/clock.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/thread_count.hpp"
 #include "rdsf/detector/detection_csv.hpp"
 #include "rdsf/detector/overlay.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
@@ -19,6 +23,8 @@
 #include "rdsf/frame/depth_png.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "gui/display.hpp"
+#include "rdsf/pipeline/live_pipeline.hpp"
+#include "rdsf/pipeline/parallel_pipeline.hpp"
 #include "rdsf/pipeline/people_overlay.hpp"
 
 namespace rdsf {
@@ -69,6 +75,41 @@ class CandidateCoverage {
   std::int64_t people_ = 0, found_ = 0, found_other_ = 0;
 };
 
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// Live mode: frames are pushed as they arrive (a device at its own rate, any other source paced at
+/// --fps), analysed by LivePipeline's workers; prints arrivals, drops and the latency percentiles.
+void run_live(const DetectOptions& o, PeoplePipeline& pipeline, FrameSource& source,
+              const std::function<void(const DepthFrame&, const PipelineFrame&)>& handle) {
+  const bool device = is_openni_spec(o.source) && !ends_with(o.source, ".oni");
+  const SteadyClock clock;
+  LivePipeline live(pipeline, {resolve_thread_count(o.threads)}, clock,
+                    [&](const DepthFrame& f, PipelineFrame& r, std::int64_t) { handle(f, r); });
+  const auto period = std::chrono::duration<double>(1.0 / o.fps);
+  const auto start = std::chrono::steady_clock::now();
+  DepthFrame frame;
+  std::int64_t count = 0;
+  while ((o.max_frames == 0 || count < o.max_frames) && source.next(frame)) {
+    if (!device) {
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * count));
+    }
+    live.push(std::move(frame));
+    frame = DepthFrame();
+    ++count;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  live.finish();
+  const LiveStats s = live.stats();
+  std::fprintf(stderr,
+               "rdsf-detect: live: %lld frames arrived in %.2f s (%.1f frames/s%s), %lld processed, %lld dropped; "
+               "latency arrival to detections p50 %.2f ms, p95 %.2f ms, p99 %.2f ms, max %.2f ms\n",
+               static_cast<long long>(s.arrived), seconds, seconds > 0 ? static_cast<double>(s.arrived) / seconds : 0.0,
+               device ? ", the device's rate" : ", paced by --fps", static_cast<long long>(s.processed),
+               static_cast<long long>(s.dropped), s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms);
+}
+
 std::string model_label(const BoostedModel& model) {
   return model.name().empty() ? model.path() : model.name() + " v" + std::to_string(model.version());
 }
@@ -83,7 +124,7 @@ int run_detect(const DetectOptions& o) {
   if (!o.report_dir.empty() && !evaluate) throw Error("--report-dir needs --truth boxes.csv");
   const BoxKind box = o.pipeline.detector.reported_box;
   if (!o.report_dir.empty() && o.models.empty()) throw Error("--report-dir needs at least one --model to evaluate");
-  if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate) {
+  if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate && !o.live) {
     throw Error("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
   }
   if (!o.report_dir.empty() && !o.force && std::filesystem::exists(std::filesystem::path(o.report_dir) / "metrics.csv")) {
@@ -117,18 +158,17 @@ int run_detect(const DetectOptions& o) {
     std::filesystem::create_directories(o.save_dir, ec);
     if (ec) fail(o.save_dir, "cannot create folder: " + ec.message());
   }
-  std::cerr << "rdsf-detect: " << source->description();
+  std::cerr << "rdsf-detect: " << source->description() << "; " << resolve_thread_count(o.threads)
+            << (o.live ? " live worker(s)" : " thread(s)");
   for (const BoostedModel& m : models) std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
   std::cerr << "\n";
 
   std::vector<std::vector<EvaluatedFrame>> evaluated(models.size());
   cli::Progress progress(std::cerr, "frames", source->frame_count());
-  DepthFrame frame;
   std::int64_t frames = 0, candidates = 0, detections = 0;
   PipelineTimes total;
-  const auto start = std::chrono::steady_clock::now();
-  while (source->next(frame)) {
-    const PipelineFrame processed = pipeline.process(frame);
+  // Each frame after tracking, in frame order, one at a time (on this thread, or a live worker).
+  auto handle = [&](const DepthFrame& frame, const PipelineFrame& processed) {
     total += processed.times;
     const auto& found = processed.analysis.candidates;
     std::vector<CandidateOutcome> outcomes;
@@ -153,6 +193,7 @@ int run_detect(const DetectOptions& o) {
         evaluated[m].push_back(std::move(e));
       }
     }
+    bool go_on = true;
     if (!o.save_dir.empty() || o.show) {
       const cv::Mat3b picture = models.empty()
                                     ? render_candidates(frame, processed.analysis.segmentation, found, nullptr, box)
@@ -163,13 +204,21 @@ int run_detect(const DetectOptions& o) {
       if (o.show) {
         cv::imshow("rdsf-detect", picture);
         const int key = cv::waitKey(1);
-        if (key == 'q' || key == 27) break;
+        go_on = !(key == 'q' || key == 27);
       }
     }
     ++frames;
     candidates += static_cast<std::int64_t>(found.size());
     progress.update(frames, "candidates " + std::to_string(candidates) +
                                 (models.empty() ? "" : ", detections " + std::to_string(detections)));
+    return go_on;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  if (o.live) {
+    run_live(o, pipeline, *source, [&](const DepthFrame& f, const PipelineFrame& r) { handle(f, r); });
+  } else {
+    run_in_frame_order(pipeline, *source, o.camera, {o.threads, 0, o.max_frames},
+                       [&](const DepthFrame& f, PipelineFrame& r) { return handle(f, r); });
   }
   progress.finish(frames, "candidates " + std::to_string(candidates) +
                               (models.empty() ? "" : ", detections " + std::to_string(detections)));

@@ -27,6 +27,14 @@ struct DetectOptions {
   PipelineParams pipeline;
   /// --feature-spec was given: the first model must have that spec (else the detector takes the model's).
   bool feature_spec_given = false;
+  /// Threads analysing frames (0: one per core); the results do not depend on it.
+  int threads = 0;
+  /// Stop after this many frames, reading none beyond (0: every frame; a device never ends by itself).
+  std::int64_t max_frames = 0;
+  /// Live mode: frames pushed as they arrive to LivePipeline (at most one waiting per worker, the oldest
+  /// dropped); prints drops and latency percentiles. Sources that are not devices are paced at `fps`.
+  bool live = false;
+  double fps = 30;
 };
 
 /// Returns the process exit code.

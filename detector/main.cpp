@@ -37,7 +37,16 @@ int main(int argc, char** argv) {
          "0.1 ... 0.95 0.98 0.99); the ROC and DET curves are exact (every distinct score)")
         ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible),
          "evaluation: people with visible_fraction below this are don't-care (no miss, no false positive)")
-        ("force", po::bool_switch(&o.force), "replace an existing --out file or report");
+        ("force", po::bool_switch(&o.force), "replace an existing --out file or report")
+        ("threads", po::value(&o.threads)->default_value(o.threads),
+         "threads analysing frames (0: one per core); tracking stays in frame order, results do not depend on it")
+        ("frames", po::value(&o.max_frames)->default_value(o.max_frames),
+         "stop after this many frames (0: every frame; a live device sends frames until stopped)")
+        ("live", po::bool_switch(&o.live),
+         "live mode: frames are analysed as they arrive, at most one waiting per thread (a late frame is dropped, "
+         "the newest kept); prints drops and latency percentiles. Not with --show or --truth")
+        ("fps", po::value(&o.fps)->default_value(o.fps),
+         "--live with a source that is not a device (folder, .oni): deliver its frames at this rate");
     options.add(rdsf::cli::camera_options(o.camera, calibration));
     options.add(rdsf::cli::detector_options(o.pipeline.detector));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
@@ -63,6 +72,10 @@ int main(int argc, char** argv) {
     if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
       throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
     }
+    if (o.threads < 0) throw rdsf::cli::UsageError("--threads must be 0 (one per core) or more, got " + std::to_string(o.threads));
+    if (o.max_frames < 0) throw rdsf::cli::UsageError("--frames must be 0 (every frame) or more");
+    if (o.live && (o.show || !o.truth_csv.empty())) throw rdsf::cli::UsageError("--live works with --out and --save-dir, not with --show or --truth");
+    if (!(o.fps > 0.0 && o.fps <= 1000.0)) throw rdsf::cli::UsageError("--fps must be in (0, 1000], got " + std::to_string(o.fps));
     return rdsf::run_detect(o);
   });
 }

@@ -2,7 +2,8 @@
 # The quality report: how well the detectors this workbench trains find people in recordings they have
 # never seen, and whether the figures the trainer prints predict it.
 #   1. renders (or reuses) the main job's synthetic recordings: training (seed 11), the same rooms empty,
-#      other empty rooms (seed 21) and the held-out test sequence (seed 31: other rooms, other people)
+#      other empty rooms (seed 21) and the held-out test sequence (seed 31: other rooms, other people;
+#      --test-frames, default 960 = 16 rooms of 60 frames; its first 240 frames are the main job's sequence)
 #   2. mines negatives and labels positives from the training recordings (as the main job)
 #   3. the lever table: one recipe (tree2 at the main job's scale) trained with each training lever added
 #      in turn (thesis baseline, group validation + calibration, regularisation, trees, augmentation,
@@ -17,8 +18,12 @@ cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
-Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes]
+Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes] [--test-frames N] [--docs]
   --out DIR      output folder (default out/quality); recordings and sample sets there are reused
+  --test-frames N  frames of the held-out synthetic sequence (default 960: 16 rooms of 60 frames; 4 rooms,
+                 the main job's 240 frames, make single figures noisy); its first 240 frames are also
+                 reported on their own when N > 240
+  --docs         also write the report to docs/quality-report.md (the checked-in results; a whole run only)
   --real DIR     real frames with boxes.csv (default ../shared/realdata/people)
   --no-real      skip the real frames
   --only WHAT    run only the lever table or only the recipes table
@@ -27,17 +32,23 @@ USAGE
 out=out/quality
 real=../shared/realdata/people
 only=""
+test_frames=960
+docs=0
 while (($#)); do
   case "$1" in
     --out) out="$2"; shift 2 ;;
     --real) real="$2"; shift 2 ;;
     --no-real) real=""; shift ;;
     --only) only="$2"; shift 2 ;;
+    --test-frames) test_frames="$2"; shift 2 ;;
+    --docs) docs=1; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "quality-report: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
 case "$only" in ""|levers|recipes) ;; *) echo "quality-report: --only takes levers or recipes" >&2; exit 2 ;; esac
+if ((docs)) && [ -n "$only" ]; then echo "quality-report: --docs needs the whole report (no --only)" >&2; exit 2; fi
+case "$test_frames" in ''|*[!0-9]*|0) echo "quality-report: --test-frames takes a positive number of frames" >&2; exit 2 ;; esac
 
 started=$(date +%s)
 step() { printf '\n== %s (%ds)\n' "$1" "$(( $(date +%s) - started ))" >&2; }
@@ -52,15 +63,39 @@ have_real=0
 if [ -n "$real" ] && [ -f "$real/boxes.csv" ]; then have_real=1; fi
 
 step "render the synthetic recordings (reused when present)"
+# A recording is reused only when the generator that made it is the one built now (synth.yml's
+# "generator:" line); the recordings render side by side (one process each).
+generator=$("$synth" --out "$out/.generator-probe" --force --frames 1 --empty >/dev/null 2>&1 &&
+            grep '^generator:' "$out/.generator-probe/synth.yml"; rm -rf "$out/.generator-probe")
+render_pids=() render_names=()
 render() {
   local name=$1; shift
-  if [ -f "$data/$name/synth.yml" ]; then echo "$data/$name: already rendered" >&2; return; fi
-  "$synth" --out "$data/$name" --force "$@" >&2
+  if [ -f "$data/$name/synth.yml" ] && grep -qxF "$generator" "$data/$name/synth.yml"; then
+    echo "$data/$name: already rendered" >&2; return
+  fi
+  [ -f "$data/$name/synth.yml" ] && echo "$data/$name: made by another generator, rendering again" >&2
+  "$synth" --out "$data/$name" --force "$@" >"$logs/render-$name.log" 2>&1 &
+  render_pids+=($!) render_names+=("$name")
 }
+test=test-$test_frames
 render train --frames 900 --people 1..4 --seed 11 --rgb --clip-frames 15
 render empty --frames 500 --people 1..4 --seed 11 --empty --rgb --clip-frames 15
 render empty-hard --frames 500 --people 0..0 --seed 21 --empty --rgb --clip-frames 15
-render test --frames 240 --people 1..4 --seed 31 --rgb --clip-frames 60
+render "$test" --frames "$test_frames" --people 1..4 --seed 31 --rgb --clip-frames 60
+for i in "${!render_pids[@]}"; do
+  wait "${render_pids[$i]}" || { tail -3 "$logs/render-${render_names[$i]}.log" >&2; exit 1; }
+  echo "$data/${render_names[$i]}: $(tail -1 "$logs/render-${render_names[$i]}.log")" >&2
+done
+# Sample sets are made from the recordings: new recordings, new sets.
+if ((${#render_pids[@]})); then rm -rf "$sets"; mkdir -p "$sets"; fi
+# The main job's held-out sequence is the same generator's first 240 frames: a list file and their boxes.
+main_test=""
+if ((test_frames > 240)); then
+  main_test=$data/$test-first240
+  mkdir -p "$main_test"
+  (cd "$data/$test" && ls ./*.depth.png | sort | awk "NR <= 240" | sed "s|^\./|../$test/|") > "$main_test/frames.txt"
+  awk -F, 'NR == 1 || $1 + 0 < 240' "$data/$test/boxes.csv" > "$main_test/boxes.csv"
+fi
 
 step "mine negatives and label positives"
 "$mine" --source "$data/empty" --out "$sets/negatives" 2>"$logs/mine.log" || { cat "$logs/mine.log" >&2; exit 1; }
@@ -73,12 +108,20 @@ evaluate() {  # report folder, models...
   local dir=$1; shift
   local args=()
   for m in "$@"; do args+=(--model "$m"); done
-  "$detect" --source "$data/test" --truth "$data/test/boxes.csv" --report-dir "$dir/synthetic" --models-dir "$models" \
-    "${args[@]}" --force >/dev/null 2>"$logs/detect.log" || { cat "$logs/detect.log" >&2; exit 1; }
-  if ((have_real)); then
-    "$detect" --source "$real" --truth "$real/boxes.csv" --report-dir "$dir/real" --models-dir "$models" \
-      "${args[@]}" --force >/dev/null 2>"$logs/detect.log" || { cat "$logs/detect.log" >&2; exit 1; }
-  fi
+  # The evaluation sets run side by side (rdsf-detect is one process per set).
+  local pids=() names=()
+  one() {  # name, source, truth
+    "$detect" --source "$2" --truth "$3" --report-dir "$dir/$1" --models-dir "$models" \
+      "${args[@]}" --force >/dev/null 2>"$logs/detect-$1.log" &
+    pids+=($!) names+=("$1")
+  }
+  one synthetic "$data/$test" "$data/$test/boxes.csv"
+  [ -n "$main_test" ] && one synthetic-240 "$main_test/frames.txt" "$main_test/boxes.csv"
+  ((have_real)) && one real "$real" "$real/boxes.csv"
+  local i
+  for i in "${!pids[@]}"; do
+    wait "${pids[$i]}" || { cat "$logs/detect-${names[$i]}.log" >&2; exit 1; }
+  done
 }
 train_model() {  # name, extra rdsf-train options...
   local name=$1; shift
@@ -97,9 +140,15 @@ hard_negatives() {  # model, set: mines the model's false positives on the other
 table_of() {  # report folder, title
   echo "### $2"
   echo
-  echo "Held-out synthetic sequence (240 frames, seed 31):"
+  echo "Held-out synthetic sequence ($test_frames frames, seed 31, $(( (test_frames + 59) / 60 )) rooms):"
   echo
   cat "$1/synthetic/summary.md"
+  if [ -n "$main_test" ]; then
+    echo
+    echo "... its first 240 frames (4 rooms: the main job's held-out sequence):"
+    echo
+    cat "$1/synthetic-240/summary.md"
+  fi
   if ((have_real)); then
     echo
     echo "Real frames ($real):"
@@ -183,4 +232,12 @@ if [ "$only" != "levers" ]; then
 fi
 
 cat "$report"
+if ((docs)); then
+  { echo "<!-- Generated by scripts/quality-report.sh --docs: do not edit by hand (docs/quality.md explains it). -->"
+    echo
+    cat "$report"
+  } > docs/quality-report.md.tmp
+  sync docs/quality-report.md.tmp && mv docs/quality-report.md.tmp docs/quality-report.md
+  echo "quality-report: wrote docs/quality-report.md" >&2
+fi
 echo "quality-report: done in $(( $(date +%s) - started )) s. Report: $report" >&2

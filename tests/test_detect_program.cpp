@@ -227,3 +227,46 @@ TEST(DetectProgram, ShowWithoutDisplayExplainsInsteadOfCrashing) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
 }
+
+// --threads N: frames analysed on N threads, tracked in order: the same CSV byte for byte.
+TEST(DetectProgram, ThreadCountDoesNotChangeTheCsv) {
+  test::TempDir dir;
+  test::write_two_person_frames(dir / "frames");
+  const std::string model = std::string(RDSF_SOURCE_DIR) + "/tests/reference_models/rdsf-model-v2-tree.yml";
+  const std::string base = test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "frames") +
+                           " --model " + test::quote(model) + " --score-threshold -1000";
+  std::string first;
+  for (const char* threads : {"1", "2", "3"}) {
+    const std::string out = dir / (std::string("t") + threads + ".csv");
+    const test::RunResult r = test::run(base + " --threads " + threads + " --out " + test::quote(out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find(std::string(threads) + " thread(s)"), std::string::npos) << r.err;
+    if (first.empty()) first = read_file(out);
+    EXPECT_EQ(read_file(out), first) << threads << " threads";
+  }
+  EXPECT_EQ(count_lines(first), 1 + 6);  // two frames of three candidates, all of them people
+  const test::RunResult one = test::run(base + " --threads 2 --frames 1 --out " + test::quote(dir / "one.csv"));
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(count_lines(read_file(dir / "one.csv")), 1 + 3);
+  const test::RunResult bad = test::run(base + " --threads -1 --out " + test::quote(dir / "bad.csv"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--threads must be 0 (one per core) or more"), std::string::npos) << bad.err;
+}
+
+// --live: frames pushed as they arrive (a folder paced at --fps), drops and latency percentiles printed.
+TEST(DetectProgram, LiveModePrintsDropsAndLatency) {
+  test::TempDir dir;
+  test::write_two_person_frames(dir / "frames");
+  const std::string base = detect() + " --source " + test::quote(dir / "frames");
+  const test::RunResult r = test::run(base + " --live --threads 2 --fps 100 --out " + test::quote(dir / "live.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("rdsf-detect: live: 2 frames arrived"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("paced by --fps"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2 processed, 0 dropped"), std::string::npos) << r.err;  // one waiting per worker: room for both
+  EXPECT_NE(r.err.find("p50 "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("p99 "), std::string::npos) << r.err;
+  EXPECT_EQ(count_lines(read_file(dir / "live.csv")), 1 + 6);
+  const test::RunResult show = test::run(base + " --live --show");
+  EXPECT_EQ(show.exit_code, 2);
+  EXPECT_NE(show.err.find("--live works with --out and --save-dir"), std::string::npos) << show.err;
+}

@@ -1,18 +1,13 @@
 #include "perf_run.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iostream>
-#include <memory>
-#include <mutex>
 #include <thread>
 
 #include <sys/resource.h>
@@ -24,6 +19,7 @@
 #include "rdsf/classifier/real_adaboost.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
 #include "cli/progress.hpp"
+#include "rdsf/core/clock.hpp"
 #include "rdsf/core/utc_time.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/negative_miner.hpp"
@@ -31,7 +27,7 @@
 #include "rdsf/frame/depth_png.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/labeling_session.hpp"
-#include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/pipeline/parallel_pipeline.hpp"
 #include "memory_peak.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 #include "rdsf/synth/synth_writer.hpp"
@@ -112,92 +108,17 @@ synth::SynthParams sequence_params(const PerfOptions& o, int frames, std::uint64
   return p;
 }
 
-/// One frame analysed off the tracking thread: candidates, RDSF, scores and the detections' histograms.
-struct Analysed {
-  DepthFrame frame;
-  FrameAnalysis analysis;
-  std::vector<double> scores;
-  std::vector<TrackInput> detections;
-  std::vector<std::size_t> which;  ///< candidate index of each detection
-};
-
-/// The whole system with frames analysed on `threads` threads (each its share of the frames, at most a
-/// few frames ahead) and tracking done in frame order on the calling thread: the same work and the same
-/// results as PeoplePipeline::process frame after frame. Returns the wall time; fills each frame's
-/// per-candidate person ids.
-double run_frames_in_parallel(int count, int threads, const std::function<DepthFrame(int)>& load,
-                              const PipelineParams& params, const BoostedModel& model,
-                              std::vector<std::vector<int>>& person) {
-  const FrameAnalyser core(params.detector);
-  const ModelScorer scorer(model);  // as PeoplePipeline: only the features the model reads
-  Tracker tracker(params.tracking);
-  std::vector<std::unique_ptr<Analysed>> slots(static_cast<std::size_t>(count));
-  std::mutex mutex;
-  std::condition_variable changed;
-  int next = 0, consumed = 0;
-  const int ahead = 2 * threads + 2;
-  std::exception_ptr failure;
-  person.assign(static_cast<std::size_t>(count), {});
-
+/// The whole system through the library's parallel pipeline (run_in_frame_order: frames analysed on
+/// `threads` threads, tracking in frame order): each frame's per-candidate person ids, and the wall time.
+template <typename Run>
+double run_whole_system(const BoostedModel& model, Run&& run, std::vector<std::vector<int>>& person) {
+  PeoplePipeline pipeline(PipelineParams{}, &model);
+  person.clear();
   const Clock::time_point start = Clock::now();
-  auto worker = [&] {
-    while (true) {
-      int i = 0;
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        changed.wait(lock, [&] { return next >= count || failure || next < consumed + ahead; });
-        if (next >= count || failure) return;
-        i = next++;
-      }
-      try {
-        auto a = std::make_unique<Analysed>();
-        a->frame = load(i);
-        a->analysis = core.analyse(a->frame, params.full_feature_vector);
-        a->scores = params.full_feature_vector ? model.score(a->analysis.features) : scorer.score(a->analysis.candidates);
-        for (std::size_t c = 0; c < a->scores.size(); ++c) {
-          if (a->scores[c] < params.score_threshold_for(model)) continue;
-          const Candidate& cand = a->analysis.candidates[c];
-          a->detections.push_back({cand.strict_box, cand.layer_depth_mm,
-                                   ColourHistogram::of(cand.colour_crop, cand.depth_crop, params.tracking.histogram_bins)});
-          a->which.push_back(c);
-        }
-        std::lock_guard<std::mutex> lock(mutex);
-        slots[static_cast<std::size_t>(i)] = std::move(a);
-        changed.notify_all();
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        failure = std::current_exception();
-        changed.notify_all();
-        return;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  try {
-    for (int i = 0; i < count; ++i) {
-      std::unique_ptr<Analysed> a;
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        changed.wait(lock, [&] { return failure || slots[static_cast<std::size_t>(i)] != nullptr; });
-        if (failure) break;
-        a = std::move(slots[static_cast<std::size_t>(i)]);
-      }
-      const std::vector<int> ids = tracker.update(a->detections, a->frame.camera, a->frame.index);
-      std::vector<int>& p = person[static_cast<std::size_t>(i)];
-      p.assign(a->analysis.candidates.size(), 0);
-      for (std::size_t k = 0; k < a->which.size(); ++k) p[a->which[k]] = ids[k];
-      std::lock_guard<std::mutex> lock(mutex);
-      consumed = i + 1;
-      changed.notify_all();
-    }
-  } catch (...) {  // stop the workers before passing the error on
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!failure) failure = std::current_exception();
-    changed.notify_all();
-  }
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  run(pipeline, [&](const DepthFrame&, PipelineFrame& out) {
+    person.push_back(out.person);
+    return true;
+  });
   return seconds_since(start);
 }
 
@@ -361,10 +282,32 @@ void whole_system_parallel(PerfResults& r, const PerfOptions& o, const std::vect
   MemoryPhase memory(r, "whole system, " + std::to_string(o.threads) + " threads (frames in memory)");
   say("whole system on " + std::to_string(o.threads) + " threads (frames analysed in parallel, tracking in order)");
   std::vector<std::vector<int>> person;
-  r.parallel_wall_s = run_frames_in_parallel(
-      static_cast<int>(frames.size()), o.threads, [&](int i) { return frames[static_cast<std::size_t>(i)]; },
-      PipelineParams{}, model, person);
+  r.parallel_wall_s = run_whole_system(model, [&](PeoplePipeline& pipeline, const PipelineCallback& on_frame) {
+    run_in_frame_order(pipeline, static_cast<std::int64_t>(frames.size()),
+                       [&](std::int64_t i) { return frames[static_cast<std::size_t>(i)]; }, {o.threads, 0}, on_frame);
+  }, person);
   r.parallel_identical = person == reference;
+  memory.done();
+}
+
+void live_mode(PerfResults& r, const PerfOptions& o, const std::vector<DepthFrame>& frames, const BoostedModel& model) {
+  MemoryPhase memory(r, "live mode (frames in memory at 30 and 90 fps)");
+  for (const double fps : {30.0, 90.0}) {
+    const int count = std::min(static_cast<int>(frames.size()), static_cast<int>(fps * (o.quick ? 1 : 3)));
+    say("live mode: " + std::to_string(count) + " frames pushed at " + std::to_string(static_cast<int>(fps)) +
+        " fps to " + std::to_string(o.threads) + " workers");
+    PeoplePipeline pipeline(PipelineParams{}, &model);
+    const SteadyClock clock;
+    LivePipeline live(pipeline, {o.threads}, clock, {});
+    const auto period = std::chrono::duration<double>(1.0 / fps);
+    const Clock::time_point start = Clock::now();
+    for (int i = 0; i < count; ++i) {
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * i));
+      live.push(frames[static_cast<std::size_t>(i)]);
+    }
+    live.finish();
+    r.live.push_back({fps, live.stats()});
+  }
   memory.done();
 }
 
@@ -382,19 +325,10 @@ void png_reading(PerfResults& r, const PerfOptions& o, const fs::path& folder, c
 
   say("whole system from the PNG files on " + std::to_string(o.threads) + " threads");
   std::vector<std::vector<int>> person;
-  r.files_parallel_wall_s = run_frames_in_parallel(
-      count, o.threads,
-      [&](int i) {
-        DepthFrame f;
-        f.name = synth::SynthSequence::frame_name(i);
-        f.index = i;
-        f.timestamp_us = i * 33333LL;
-        f.depth_mm = read_depth_png((folder / (f.name + ".depth.png")).string());
-        f.bgr = read_colour_png((folder / (f.name + ".rgb.png")).string(), f.depth_mm.size());
-        f.camera = camera;
-        return f;
-      },
-      PipelineParams{}, model, person);
+  r.files_parallel_wall_s = run_whole_system(model, [&](PeoplePipeline& pipeline, const PipelineCallback& on_frame) {
+    auto files = open_frame_source(folder.string(), camera);  // decoded on the workers
+    run_in_frame_order(pipeline, *files, camera, {o.threads, 0}, on_frame);
+  }, person);
   if (person != reference) say("warning: the frames read from PNG gave other results than those in memory");
   memory.done();
 }
@@ -577,6 +511,7 @@ PerfResults run_perf_report(const PerfOptions& options) {
   const BoostedModel model = train_pipeline_model(r, o);
   const std::vector<std::vector<int>> reference = whole_system_one_thread(r, frames, model);
   whole_system_parallel(r, o, frames, model, reference);
+  live_mode(r, o, frames, model);
   std::vector<DepthFrame>().swap(frames);  // the frames in memory are not part of the later phases
   png_reading(r, o, work.root / "people", model, reference);
   training_per_round(r, o);

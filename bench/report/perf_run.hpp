@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "rdsf/pipeline/live_pipeline.hpp"
 #include "rdsf/pipeline/people_pipeline.hpp"
 
 namespace rdsf::perf {
@@ -54,6 +55,12 @@ struct PerfResults {
   int threads = 2;
   double parallel_wall_s = 0;
   bool parallel_identical = false;  ///< same person ids as the one-thread run
+  // Live mode (LivePipeline, `threads` workers): frames in memory pushed at a camera's rate
+  struct LiveRun {
+    double fps = 0;
+    LiveStats stats;
+  };
+  std::vector<LiveRun> live;
   // PNG reading
   double png_read_ms_per_frame = 0;   ///< depth + colour, one thread, through open_frame_source
   double files_parallel_wall_s = 0;   ///< whole system from the PNG files on `threads` threads

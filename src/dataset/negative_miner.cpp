@@ -1,17 +1,14 @@
 #include "rdsf/dataset/negative_miner.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <condition_variable>
-#include <exception>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
-#include <mutex>
-#include <thread>
+#include <tuple>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/ordered_pool.hpp"
 #include "rdsf/features/feature_spec_record.hpp"
 #include "rdsf/dataset/sample_crop.hpp"
 #include "rdsf/frame/depth_png.hpp"
@@ -34,8 +31,8 @@ struct FrameResult {
 
 }  // namespace
 
-/// Hands out the selected frames of one source in order, each with its sequence number. Image folders are
-/// decoded by the calling worker (in parallel); other sources are read under the feeder's lock.
+/// Hands out the selected frames of one source in order (claim, one call at a time); image folders are
+/// decoded by load() on the workers (in parallel), other sources are read by claim().
 class FrameFeeder {
  public:
   FrameFeeder(const std::string& spec, const MineParams& params, std::int64_t limit)
@@ -63,42 +60,54 @@ class FrameFeeder {
     return std::min(selected, limit_);
   }
 
-  /// Fills the next selected frame; false at the end, at the limit or when stopped. Thread-safe.
-  bool next(const std::atomic<bool>& stop, std::int64_t& seq, DepthFrame& frame) {
+  /// A claimed frame: for image folders its index and path (decoded by load()), else the frame read.
+  struct Job {
+    std::int64_t index = 0;
+    std::string path;
+    DepthFrame frame;
+    bool read = false;
+  };
+
+  /// Takes the next selected frame; false at the end or at the limit. One call at a time (the ordered
+  /// pool's claim); image folders only take the path here, other sources read the frame.
+  bool claim(Job& job) {
     if (random_access_) {
-      std::pair<std::int64_t, std::string> job;
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (stop || issued_ >= limit_ || issued_ >= static_cast<std::int64_t>(selected_.size())) return false;
-        seq = issued_++;
-        job = selected_[static_cast<std::size_t>(seq)];
-      }
-      if (params_.depth_only) {  // as PngFolderSource::next, without the colour image
-        frame.depth_mm = read_depth_png(job.second);
-        frame.bgr.release();
-        frame.name = PngFolderSource::frame_name(job.second);
-        const CameraModel& camera = params_.camera;
-        frame.camera = frame.depth_mm.size() == cv::Size(camera.width_px, camera.height_px)
-                           ? camera
-                           : camera.scaled_to(frame.depth_mm.cols, frame.depth_mm.rows);
-      } else {
-        auto single = open_frame_source(job.second, params_.camera);
-        if (!single->next(frame)) fail(job.second, "delivered no frame");
-      }
-      frame.index = job.first;
-      frame.timestamp_us = job.first * 33333;  // as PngFolderSource: image folders carry no clock
+      if (issued_ >= limit_ || issued_ >= static_cast<std::int64_t>(selected_.size())) return false;
+      std::tie(job.index, job.path) = selected_[static_cast<std::size_t>(issued_++)];
       return true;
     }
-    std::lock_guard<std::mutex> lock(mutex_);
-    while (!stop && issued_ < limit_) {
-      if (!source_->next(frame)) return false;
-      if (frame_selected(frame.index, params_)) {
-        seq = issued_++;
-        if (params_.depth_only) frame.bgr.release();
+    while (issued_ < limit_) {
+      if (!source_->next(job.frame)) return false;
+      if (frame_selected(job.frame.index, params_)) {
+        ++issued_;
+        if (params_.depth_only) job.frame.bgr.release();
+        job.read = true;
         return true;
       }
     }
     return false;
+  }
+
+  /// The frame of a claimed job, decoding an image folder's files here (on any worker, concurrently).
+  const DepthFrame& load(Job& job) const {
+    if (job.read) return job.frame;
+    DepthFrame& frame = job.frame;
+    if (params_.depth_only) {  // as PngFolderSource::next, without the colour image
+      frame.depth_mm = read_depth_png(job.path);
+      frame.bgr.release();
+      frame.name = PngFolderSource::frame_name(job.path);
+      const CameraModel& camera = params_.camera;
+      frame.camera = frame.depth_mm.size() == cv::Size(camera.width_px, camera.height_px)
+                         ? camera
+                         : camera.scaled_to(frame.depth_mm.cols, frame.depth_mm.rows);
+    } else {
+      auto single = open_frame_source(job.path, params_.camera);
+      if (!single->next(frame)) fail(job.path, "delivered no frame");
+    }
+    frame.index = job.index;
+    frame.timestamp_us = job.index * 33333;  // as PngFolderSource: image folders carry no clock
+    job.read = true;
+    return frame;
   }
 
  private:
@@ -107,7 +116,6 @@ class FrameFeeder {
   std::unique_ptr<FrameSource> source_;
   bool random_access_ = false;
   std::vector<std::pair<std::int64_t, std::string>> selected_;
-  std::mutex mutex_;
   std::int64_t issued_ = 0;
 };
 
@@ -199,8 +207,7 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
     fail(out.dir(), feature_spec_mismatch("sample set feature spec", out.manifest().feature_spec,
                                           "the detector's", core.params().features));
   }
-  int workers = params.threads > 0 ? params.threads : static_cast<int>(std::thread::hardware_concurrency());
-  workers = std::max(1, workers);
+  const int workers = resolve_thread_count(params.threads);
 
   MineStats stats;
   stats.total_frames = total_frames_;
@@ -219,101 +226,35 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
     FrameFeeder& feeder = *feeders_[s];
     feeder.set_limit(frames_left);
 
-    std::mutex mutex;
-    std::condition_variable ready, space;
-    std::map<std::int64_t, FrameResult> results;
-    std::int64_t next_to_write = 0;
-    int finished_workers = 0;
-    std::atomic<bool> stop{false};
-    std::exception_ptr error;
-    const std::int64_t window = 4 * static_cast<std::int64_t>(workers);
-
-    auto work = [&] {
-      try {
-        DepthFrame frame;
-        std::int64_t seq = 0;
-        while (feeder.next(stop, seq, frame)) {
-          {
-            std::unique_lock<std::mutex> lock(mutex);
-            space.wait(lock, [&] { return stop || seq < next_to_write + window; });
-            if (stop) break;
+    // Frames analysed on the workers, written here in frame order (ordered_map).
+    ordered_map<FrameFeeder::Job>(
+        workers, 4 * static_cast<std::size_t>(workers),
+        [&](FrameFeeder::Job& job) { return feeder.claim(job); },
+        [&](FrameFeeder::Job& job) { return analyse_frame(core, params, name, feeder.load(job)); },
+        [&](FrameResult result) {
+          const std::int64_t kept_before = stats.kept;
+          for (MinedCandidate& m : result.items) {
+            ++stats.candidates;
+            if (m.below_score) {
+              ++stats.below_score;
+              continue;
+            }
+            if (stats.reached_max) continue;
+            if (out.is_duplicate(m.record)) {
+              ++stats.duplicates;
+              continue;
+            }
+            out.append_encoded(m.record, m.crop, /*sync=*/false);  // one disk flush per frame, below
+            ++stats.kept;
+            ++negatives;
+            if (params.max_negatives > 0 && negatives >= params.max_negatives) stats.reached_max = true;
           }
-          FrameResult result = analyse_frame(core, params, name, frame);
-          {
-            std::lock_guard<std::mutex> lock(mutex);
-            results.emplace(seq, std::move(result));
-          }
-          ready.notify_all();
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!error) error = std::current_exception();
-        stop = true;
-      }
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        ++finished_workers;
-      }
-      ready.notify_all();
-      space.notify_all();
-    };
-    std::vector<std::thread> pool;
-    for (int w = 0; w < workers; ++w) pool.emplace_back(work);
-
-    auto stop_workers = [&] {
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        stop = true;
-      }
-      space.notify_all();
-      for (std::thread& thread : pool) thread.join();
-    };
-    try {
-      while (true) {
-        FrameResult result;
-        {
-          std::unique_lock<std::mutex> lock(mutex);
-          ready.wait(lock, [&] { return error || results.count(next_to_write) != 0 || finished_workers == workers; });
-          if (error) break;
-          const auto found = results.find(next_to_write);
-          if (found == results.end()) break;  // every worker finished and nothing is left
-          result = std::move(found->second);
-          results.erase(found);
-        }
-        const std::int64_t kept_before = stats.kept;
-        for (MinedCandidate& m : result.items) {
-          ++stats.candidates;
-          if (m.below_score) {
-            ++stats.below_score;
-            continue;
-          }
-          if (stats.reached_max) continue;
-          if (out.is_duplicate(m.record)) {
-            ++stats.duplicates;
-            continue;
-          }
-          out.append_encoded(m.record, m.crop, /*sync=*/false);  // one disk flush per frame, below
-          ++stats.kept;
-          ++negatives;
-          if (params.max_negatives > 0 && negatives >= params.max_negatives) stats.reached_max = true;
-        }
-        if (stats.kept != kept_before) out.sync();
-        ++stats.frames;
-        --frames_left;
-        {
-          std::lock_guard<std::mutex> lock(mutex);
-          ++next_to_write;
-        }
-        space.notify_all();
-        if (on_frame) on_frame(stats);
-        if (stats.reached_max) break;
-      }
-    } catch (...) {
-      stop_workers();
-      throw;
-    }
-    stop_workers();
-    if (error) std::rethrow_exception(error);
+          if (stats.kept != kept_before) out.sync();
+          ++stats.frames;
+          --frames_left;
+          if (on_frame) on_frame(stats);
+          return !stats.reached_max;
+        });
   }
   return stats;
 }

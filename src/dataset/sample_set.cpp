@@ -1,14 +1,11 @@
 #include "rdsf/dataset/sample_set.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <filesystem>
 #include <memory>
-#include <mutex>
-#include <thread>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/ordered_pool.hpp"
 #include "rdsf/core/stable_hash.hpp"
 #include "rdsf/core/yaml_guard.hpp"
 #include "rdsf/dataset/feature_vector_file.hpp"
@@ -133,49 +130,27 @@ cv::Mat1f SampleSet::rows_of(const FeatureSpec& spec, int columns,
                                                   dimension);
   }
 
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), chosen.size()));
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto work = [&] {
-    try {
-      constexpr std::size_t kChunk = 64;
-      while (!failed) {
-        const std::size_t begin = next.fetch_add(kChunk);
-        if (begin >= chosen.size()) break;
-        const std::size_t end = std::min(chosen.size(), begin + kChunk);
-        for (std::size_t k = begin; k < end; ++k) {
-          const std::size_t index = chosen[k];
-          const SampleRecord& record = records_[index];
-          float* out = rows.ptr<float>(static_cast<int>(k));
-          if (record.has_crop) {
-            from_crop(depth_crop(index), out);
-          } else if (vectors->contains(record.id) && pick == nullptr) {
-            vectors->read(record.id, out);
-          } else if (vectors->contains(record.id)) {
-            std::vector<float> whole(static_cast<std::size_t>(dimension));
-            vectors->read(record.id, whole.data());
-            for (const int f : *pick) *out++ = whole[static_cast<std::size_t>(f)];
-          } else {
-            fail(dir_, "sample " + std::to_string(record.id) +
-                           " has no crop and no stored feature vector for feature spec " + spec.hash() +
-                           " (" + vectors->path() + "); it was imported under spec " + manifest_.feature_spec.hash());
-          }
-        }
+  // Uneven work (a crop to decode, or a stored vector to read): chunks of 64 taken as workers come free.
+  parallel_for_chunks(chosen.size(), 64, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t index = chosen[k];
+      const SampleRecord& record = records_[index];
+      float* out = rows.ptr<float>(static_cast<int>(k));
+      if (record.has_crop) {
+        from_crop(depth_crop(index), out);
+      } else if (vectors->contains(record.id) && pick == nullptr) {
+        vectors->read(record.id, out);
+      } else if (vectors->contains(record.id)) {
+        std::vector<float> whole(static_cast<std::size_t>(dimension));
+        vectors->read(record.id, whole.data());
+        for (const int f : *pick) *out++ = whole[static_cast<std::size_t>(f)];
+      } else {
+        fail(dir_, "sample " + std::to_string(record.id) +
+                       " has no crop and no stored feature vector for feature spec " + spec.hash() + " (" +
+                       vectors->path() + "); it was imported under spec " + manifest_.feature_spec.hash());
       }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(error_mutex);
-      if (!error) error = std::current_exception();
-      failed = true;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& thread : pool) thread.join();
-  if (error) std::rethrow_exception(error);
+  });
   return rows;
 }
 

@@ -34,6 +34,18 @@ PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
 }
 
 PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
+  PipelineFrame out = analyse(frame);
+  track(frame, out);
+  return out;
+}
+
+PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
+  if (frame.depth_mm.empty()) fail("frame " + frame.name, "has no depth image");
+  if (frame.depth_mm.cols != frame.camera.width_px || frame.depth_mm.rows != frame.camera.height_px) {
+    fail("frame " + frame.name, std::to_string(frame.depth_mm.cols) + "x" + std::to_string(frame.depth_mm.rows) +
+                                    " depth image, but its camera model is " + frame.camera.describe() +
+                                    " (give the camera model of this image size)");
+  }
   PipelineFrame out;
   const bool full = model_ != nullptr && params_.full_feature_vector;
   out.analysis = core_.analyse(frame, full);
@@ -59,23 +71,34 @@ PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   out.times.classifier_ms = ms_since(start);
-  const double threshold = params_.score_threshold_for(*model_);
 
   start = std::chrono::steady_clock::now();
-  std::vector<TrackInput> detections;
-  std::vector<std::size_t> which;
+  const double threshold = params_.score_threshold_for(*model_);
   out.histograms.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (out.scores[i] < threshold) continue;
     const Candidate& c = out.analysis.candidates[i];
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
+  }
+  out.times.tracking_ms = ms_since(start);
+  return out;
+}
+
+void PeoplePipeline::track(const DepthFrame& frame, PipelineFrame& out) {
+  if (model_ == nullptr) return;
+  const auto start = std::chrono::steady_clock::now();
+  const double threshold = params_.score_threshold_for(*model_);
+  std::vector<TrackInput> detections;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < out.scores.size(); ++i) {
+    if (out.scores[i] < threshold) continue;
+    const Candidate& c = out.analysis.candidates[i];
     detections.push_back({reported_box(c, params_.detector.reported_box), c.layer_depth_mm, out.histograms[i]});
     which.push_back(i);
   }
   const std::vector<int> ids = tracker_.update(detections, frame.camera, frame.index);
   for (std::size_t k = 0; k < which.size(); ++k) out.person[which[k]] = ids[k];
-  out.times.tracking_ms = ms_since(start);
-  return out;
+  out.times.tracking_ms += ms_since(start);
 }
 
 }  // namespace rdsf

@@ -7,14 +7,9 @@
 #include <thread>
 #include <vector>
 
-namespace rdsf {
+#include "rdsf/core/thread_count.hpp"  // resolve_thread_count, for the callers
 
-/// Number of threads to use: `requested` when positive, else the hardware's count (at least 1).
-inline int resolve_thread_count(int requested) {
-  if (requested > 0) return requested;
-  const unsigned hardware = std::thread::hardware_concurrency();
-  return hardware == 0 ? 1 : static_cast<int>(hardware);
-}
+namespace rdsf {
 
 template <typename Fn>
 void parallel_chunks(std::size_t n, int threads, Fn&& fn) {

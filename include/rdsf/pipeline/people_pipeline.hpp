@@ -60,7 +60,17 @@ class PeoplePipeline {
   /// feature spec differs from the detector's (naming both).
   PeoplePipeline(PipelineParams params, const BoostedModel* model);
 
+  /// analyse(frame) then track(frame, result): the whole system for the next frame.
   PipelineFrame process(const DepthFrame& frame);
+
+  /// Everything before tracking: candidates, the features the model reads, H(x), P(person) and the
+  /// detections' colour histograms (their time counts as tracking_ms). Const and thread-safe: frames may be
+  /// analysed on several threads at once (parallel_pipeline.hpp). Throws Error when the depth image is
+  /// empty or its size is not the frame's camera model's.
+  PipelineFrame analyse(const DepthFrame& frame) const;
+  /// Tracking: matches the detections of an analysed frame and fills `analysed.person`. Call with frames in
+  /// order (the tracker's state), from one thread at a time.
+  void track(const DepthFrame& frame, PipelineFrame& analysed);
 
   const Tracker& tracker() const { return tracker_; }
   const PipelineParams& params() const { return params_; }
