@@ -61,7 +61,8 @@ cmake --build "$work/example" >>"$work/example.log" 2>&1 || { tail -30 "$work/ex
 "$work/example/detect-people" "$work/frames" "$models/people/v1.yml" >"$work/detections.txt" ||
   fail "the example failed on 4 synthetic frames"
 head -1 "$work/detections.txt" | grep -qF "# rdsf $version," || fail "the example reports another version: $(head -1 "$work/detections.txt")"
-detections=$(grep -cE '^[0-9]+ [1-9][0-9]* -?[0-9]+ -?[0-9]+ [0-9]+ [0-9]+ [01]\.[0-9]{3}$' "$work/detections.txt" || true)
+n='-?[0-9]+\.[0-9]{2}'
+detections=$(grep -cE "^[0-9]+ [1-9][0-9]* -?[0-9]+ -?[0-9]+ [0-9]+ [0-9]+ [01]\.[0-9]{3} $n $n $n\$" "$work/detections.txt" || true)
 [ "$detections" -ge 1 ] || { cat "$work/detections.txt" >&2; fail "the example printed no detection lines on frames with 2 people each"; }
 echo "check-install: examples/detect-people built against the package: $detections detections in 4 frames"
 
