@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/version.hpp"
 
 namespace rdsf::cli {
 
@@ -105,6 +106,7 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
            po::variables_map& values, const po::positional_options_description* positional) {
   po::options_description general("General");
   general.add_options()("help,h", "show this help with every default and exit")(
+      "version", "show the workbench's version (and whether it reads OpenNI2) and exit")(
       "config", po::value<std::string>(), "read options from an INI file (name = value); the command line wins");
   po::options_description all;
   all.add(general).add(options);
@@ -116,6 +118,10 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
     if (values.count("help")) {
       std::cout << "Usage: " << info.name << " " << info.usage << "\n\n" << info.summary << "\n\n" << all << "\n"
                 << kNamingNote << "\n";
+      return false;
+    }
+    if (values.count("version")) {
+      std::cout << info.name << " " << version() << (has_openni() ? "" : " (built without OpenNI2)") << "\n";
       return false;
     }
     if (values.count("config")) {

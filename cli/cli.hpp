@@ -37,8 +37,9 @@ std::string canonical_option_name(const std::string& name);
 /// A default as --help shows it: "%g" (0.6, not 0.59999999999999998).
 std::string shortest_text(double value);
 
-/// Parses argv against `options` (plus --help and --config), names made canonical first. Returns false
-/// when --help was printed (the program then exits 0). Throws UsageError on unknown options, bad values or a bad config file.
+/// Parses argv against `options` (plus --help, --version and --config), names made canonical first.
+/// Returns false when --help or --version was printed (the program then exits 0). Throws UsageError on
+/// unknown options, bad values or a bad config file.
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional = nullptr);
 

@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "rdsf/frame/depth_png.hpp"
+#include "rdsf/version.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
 
@@ -148,6 +149,11 @@ TEST(DetectProgram, RefusesToOverwriteWithoutForce) {
   EXPECT_EQ(read_file(dir / "out.csv"), "precious\n");
 }
 
+// What an OpenNI2 --source is refused with: `with_openni`, or in a build without OpenNI2 one line naming it.
+std::string openni_message(const std::string& spec, const std::string& with_openni) {
+  return RDSF_WITH_OPENNI ? with_openni : spec + ": this build has no OpenNI2";
+}
+
 struct BadInput {
   std::string name;
   std::function<std::string(const test::TempDir&)> make;  // returns the --source argument
@@ -220,8 +226,9 @@ INSTANTIATE_TEST_SUITE_P(
                    std::ofstream(d / "take.oni", std::ios::binary) << std::string(5000, 'z');
                    return d / "take.oni";
                  },
-                 "take.oni: not a readable OpenNI recording"},
-        BadInput{"no_device", [](const test::TempDir&) { return std::string("openni"); }, "no device attached"}),
+                 openni_message("take.oni", "take.oni: not a readable OpenNI recording")},
+        BadInput{"no_device", [](const test::TempDir&) { return std::string("openni"); },
+                 openni_message("openni", "no device attached")}),
     [](const ::testing::TestParamInfo<BadInput>& param_info) { return param_info.param.name; });
 
 TEST(DetectProgram, UnknownOptionIsAUsageError) {

@@ -4,6 +4,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
@@ -43,6 +44,11 @@ Recipe load_recipe(const std::string& name_or_path, const std::string& models_di
   std::string path = name_or_path;
   if (!fs::is_regular_file(path, ec)) {
     path = (fs::path(models_dir) / "recipes" / (name_or_path + ".yml")).string();
+    // The recipes shipped with the workbench (models/recipes, installed under share/rdsf/models/recipes).
+    const fs::path shipped = fs::path(shipped_models_dir()) / "recipes" / (name_or_path + ".yml");
+    if (!fs::is_regular_file(path, ec) && !shipped_models_dir().empty() && fs::is_regular_file(shipped, ec)) {
+      path = shipped.string();
+    }
     if (!fs::is_regular_file(path, ec)) {
       fail(name_or_path, "no such recipe (no file of that name, and no " + path + ")");
     }

@@ -34,8 +34,8 @@ struct Recipe {
   BoostTrainingParams params;
 };
 
-/// Reads models_dir/recipes/NAME.yml, or the file `name_or_path` when it exists. Throws Error naming the
-/// file and the bad field.
+/// Reads models_dir/recipes/NAME.yml, or the file `name_or_path` when it exists, or else the shipped
+/// recipe shipped_models_dir()/recipes/NAME.yml. Throws Error naming the file and the bad field.
 Recipe load_recipe(const std::string& name_or_path, const std::string& models_dir);
 
 }  // namespace rdsf

@@ -9,6 +9,7 @@
 #include "rdsf/classifier/model_file.hpp"
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/shipped_data.hpp"
 #include "rdsf/core/utc_time.hpp"
 
 namespace rdsf {
@@ -46,13 +47,7 @@ int latest_model_version(const std::string& models_dir, const std::string& name)
   return latest_in_folder(fs::path(models_dir) / name);
 }
 
-std::string shipped_models_dir() {
-#ifdef RDSF_SHIPPED_MODELS_DIR
-  return RDSF_SHIPPED_MODELS_DIR;
-#else
-  return "";
-#endif
-}
+std::string shipped_models_dir() { return shipped_data_models_dir(); }
 
 std::string resolve_model(const std::string& path_or_name, const std::string& models_dir) {
   std::error_code ec;

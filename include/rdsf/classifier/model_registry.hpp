@@ -20,13 +20,14 @@ int latest_model_version(const std::string& models_dir, const std::string& name)
 
 /// The model file that `path_or_name` means (see above); throws Error naming what was looked for.
 /// A NAME with no versions under models_dir is looked up in the models shipped with the workbench too
-/// (shipped_models_dir(): the source tree's models/, holding the default model people/v1.yml).
+/// (shipped_models_dir(): the installed share/rdsf/models, or the source tree's models/ for a build-tree
+/// program; it holds the default model people/v1.yml).
 std::string resolve_model(const std::string& path_or_name, const std::string& models_dir = "models");
 
 /// The name of the default model shipped in models/ (trained by scripts/train-default-model.sh).
 inline constexpr const char* kDefaultModelName = "people";
 
-/// The folder of the shipped models (compiled in; empty when the build has none).
+/// The folder of the shipped models and recipes (core/shipped_data.hpp says where; empty when there is none).
 std::string shipped_models_dir();
 
 /// How a model is named, in two forms kept here so that every program writes them the same way; both are

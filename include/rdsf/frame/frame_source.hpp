@@ -5,6 +5,7 @@
 // open_frame_source() chooses the source from one --source argument:
 //   - "openni" (the first attached device) or a device URI (contains "://"): a live OpenNI2 device;
 //   - a path ending in ".oni": an OpenNI2 recording, read frame by frame;
+//     (a build without OpenNI2, RDSF_WITH_OPENNI 0 in rdsf/version.hpp, refuses both with one line);
 //   - a folder: every NAME.depth.png in it (sorted by name), with NAME.rgb.png as colour when present;
 //   - a single NAME.depth.png file: that one frame;
 //   - any other file: a list file, one depth PNG path a line (relative to the list's folder; # comments).
