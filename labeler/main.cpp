@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
          "--loop: every Nth candidate asked is a random one, not the most uncertain (finds what the model "
          "wrongly is sure of; 0 = off)")
         ("budget", po::value(&o.budget)->default_value(o.budget), "stop after this many human answers (0: no limit)")
+        ("threads", po::value(&o.session.threads)->default_value(o.session.threads),
+         "--ask uncertain / --loop: threads that analyse and score the session's frames before the first question "
+         "(0: one per core; the same session for every count)")
         ("order-by-score", po::bool_switch(&o.session.order_by_score), "present a frame's candidates best score first")
         ("truth", po::value(&o.truth_csv),
          "assisted mode: boxes.csv; IoU >= 0.5 answers y, < 0.3 answers n, only the band between is asked")

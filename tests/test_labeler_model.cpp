@@ -153,3 +153,26 @@ TEST(LabelerModel, AskUncertainNeedsAModel) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--ask uncertain needs --model"), std::string::npos) << r.err;
 }
+
+TEST(LabelerModel, AskUncertainGivesTheSameSessionOnEveryThreadCount) {
+  // The whole session is analysed and scored on --threads workers before the first question, in frame
+  // order: the questions, and so the stored samples, must not depend on the count.
+  auto stored = [](const Synth& s) {
+    std::vector<std::string> rows;
+    const SampleSet set = SampleSet::open_read(s.dir / "set");
+    for (const SampleRecord& r : set.records()) {
+      std::ostringstream row;
+      row << r.frame << ' ' << r.strict_box << ' ' << r.label << ' ' << r.origin << ' ' << r.score.value_or(NAN);
+      rows.push_back(row.str());
+    }
+    return rows;
+  };
+  Synth one, three;
+  const test::RunResult a = one.label_with(std::string(8, 'y'), "--model people --ask uncertain --budget 8 --threads 1");
+  const test::RunResult b = three.label_with(std::string(8, 'y'), "--model people --ask uncertain --budget 8 --threads 3");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const std::vector<std::string> rows = stored(one);
+  EXPECT_GE(rows.size(), 8u);  // the eight answers, plus what the model answered
+  EXPECT_EQ(rows, stored(three));
+}

@@ -12,6 +12,7 @@
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/classifier/seeded_sampling.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/ordered_pool.hpp"
 #include "rdsf/dataset/sample_source.hpp"
 #include "rdsf/pipeline/model_fit.hpp"
 
@@ -82,6 +83,12 @@ LabelingSession::~LabelingSession() {
 }
 
 std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
+  std::shared_ptr<LoadedFrame> loaded = read_next();
+  if (loaded) analyse_loaded(*loaded);
+  return loaded;
+}
+
+std::shared_ptr<LoadedFrame> LabelingSession::read_next() {
   while (true) {
     if (!source_) {
       if (source_index_ >= config_.sources.size()) return nullptr;
@@ -96,20 +103,22 @@ std::shared_ptr<LoadedFrame> LabelingSession::load_next() {
     }
     loaded->source = source_name_;
     loaded->ordinal = ++ordinal_;
-    loaded->analysis = core_.analyse(loaded->frame, /*with_features=*/false);
-    score(*loaded);
-    if (truth_ != nullptr) {
-      for (const Candidate& c : loaded->analysis.candidates) {
-        double best = 0, ignored = 0;
-        for (const TruthBox& person : truth_->in(loaded->frame.name)) {
-          double& to = person.ignored ? ignored : best;
-          to = std::max(to, iou(reported_box(c, config_.detector.reported_box), person.box));
-        }
-        loaded->truth_iou.push_back(best);
-        loaded->ignored_iou.push_back(ignored);
-      }
-    }
     return loaded;
+  }
+}
+
+void LabelingSession::analyse_loaded(LoadedFrame& loaded) const {
+  loaded.analysis = core_.analyse(loaded.frame, /*with_features=*/false);
+  score(loaded);
+  if (truth_ == nullptr) return;
+  for (const Candidate& c : loaded.analysis.candidates) {
+    double best = 0, ignored = 0;
+    for (const TruthBox& person : truth_->in(loaded.frame.name)) {
+      double& to = person.ignored ? ignored : best;
+      to = std::max(to, iou(reported_box(c, config_.detector.reported_box), person.box));
+    }
+    loaded.truth_iou.push_back(best);
+    loaded.ignored_iou.push_back(ignored);
   }
 }
 
@@ -245,11 +254,23 @@ void LabelingSession::rescore(const BoostedModel& model, bool may_answer) {
 
 const PresentedCandidate* LabelingSession::current() {
   if (config_.ask == AskOrder::uncertain && !sources_done_) {
-    // The whole session first: every frame is read and scored on the read-ahead thread.
-    while (std::shared_ptr<LoadedFrame> next = prefetch_.get()) {
-      start_prefetch();
-      take_frame(next);
+    // The whole session first: the frame the read-ahead thread holds, then every other frame read in
+    // order and analysed and scored on config_.threads workers, taken in frame order (ordered_pool.hpp).
+    if (std::shared_ptr<LoadedFrame> first = prefetch_.get()) {  // rethrows a source's error here
+      take_frame(first);
       if (progress_) progress_(stats_.frames_loaded);
+      ordered_map<std::shared_ptr<LoadedFrame>>(
+          config_.threads, default_items_ahead(config_.threads),
+          [this](std::shared_ptr<LoadedFrame>& frame) { return (frame = read_next()) != nullptr; },
+          [this](std::shared_ptr<LoadedFrame>& frame) {
+            analyse_loaded(*frame);
+            return frame;
+          },
+          [this](std::shared_ptr<LoadedFrame> frame) {
+            take_frame(std::move(frame));
+            if (progress_) progress_(stats_.frames_loaded);
+            return true;
+          });
     }
     sources_done_ = true;
     order_by_uncertainty();

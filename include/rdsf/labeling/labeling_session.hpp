@@ -54,6 +54,10 @@ struct LabelingConfig {
   double accept_probability = kDefaultAcceptProbability;
   double reject_probability = kDefaultRejectProbability;
   AskOrder ask = AskOrder::in_order;  ///< uncertain without a model: a seeded random order (the loop's start)
+  /// Uncertain order reads the whole session first: its frames are read in order and analysed and scored
+  /// on this many threads (the library's ordered pool, core/ordered_pool.hpp; 0: one per core), taken in
+  /// frame order, so the session is the same for every thread count.
+  int threads = 0;
   std::uint64_t seed = 1;
   /// Uncertain order with exploration: every explore_every-th candidate presented is a seeded random one
   /// instead of the next most uncertain, so that kinds of candidates the model has never seen (and is
@@ -157,7 +161,9 @@ class LabelingSession {
     PresentedCandidate presented;
     JournalEntry entry;
   };
-  std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread
+  std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread: read_next + analyse_loaded
+  std::shared_ptr<LoadedFrame> read_next();  // the next frame of the sources, read; null at the end (in order)
+  void analyse_loaded(LoadedFrame& frame) const;  // candidates, scores, truth (any thread)
   void start_prefetch();
   void take_frame(std::shared_ptr<const LoadedFrame> frame);
   std::int64_t store(const PresentedCandidate& p, int label, const std::string& origin);
