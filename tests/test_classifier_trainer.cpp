@@ -186,7 +186,7 @@ TEST_F(TrainerProgram, BadCommandLinesFailWithOneLine) {
   EXPECT_EQ(recipe.exit_code, 1);
   EXPECT_NE(recipe.err.find("no such recipe"), std::string::npos) << recipe.err;
   const test::RunResult name = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives));
-  EXPECT_EQ(name.exit_code, 1);
+  EXPECT_EQ(name.exit_code, 2);  // a wrong command line
   EXPECT_NE(name.err.find("--name"), std::string::npos) << name.err;
   const test::RunResult backend =
       train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name x --backend gpu");

@@ -150,7 +150,7 @@ TEST(PerfReport, RejectsBadOpenCvRounds) {
   TempDir dir("rdsf-perf-report-test");
   const rdsf::test::RunResult bad =
       run(quote(perf_program()) + " --quick --opencv-rounds 3,1 --out " + quote(dir / "other.md"));
-  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_EQ(bad.exit_code, 2);  // a wrong command line
   EXPECT_NE(bad.err.find("--opencv-rounds"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "other.md"));
 }

@@ -108,7 +108,7 @@ int run_train(const TrainOptions& o) {
   const Recipe recipe = effective_recipe(o);
   if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
   const std::string name = o.name.empty() ? recipe.name : o.name;
-  if (name.empty()) throw Error("ad hoc training needs a model name: give --name NAME");
+  if (name.empty()) throw cli::UsageError("ad hoc training needs a model name: give --name NAME");
   validate_model_name(name);
   std::cerr << "rdsf-train: model " << name << " (next version v" << latest_model_version(o.models_dir, name) + 1
             << " under " << o.models_dir << "), " << recipe.params.backend.name() << " backend, " << recipe.params.rounds

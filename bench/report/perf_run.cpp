@@ -18,6 +18,7 @@
 #include "rdsf/classifier/opencv_boost.hpp"
 #include "rdsf/classifier/real_adaboost.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
+#include "cli/cli.hpp"
 #include "cli/progress.hpp"
 #include "rdsf/core/clock.hpp"
 #include "rdsf/core/utc_time.hpp"
@@ -483,7 +484,7 @@ void PerfOptions::resolve() {
   if (frames > 999999 || train_frames > 999999 || empty_frames > 999999) throw Error("at most 999999 frames");
   int a = 0, b = 0;
   if (std::sscanf(opencv_rounds.c_str(), "%d,%d", &a, &b) != 2 || !((a == 0 && b == 0) || (a > 0 && b > a))) {
-    throw Error("--opencv-rounds must be A,B with 0 < A < B (or 0,0 to skip OpenCV), not '" + opencv_rounds + "'");
+    throw cli::UsageError("--opencv-rounds must be A,B with 0 < A < B (or 0,0 to skip OpenCV), not '" + opencv_rounds + "'");
   }
 }
 
