@@ -50,7 +50,9 @@ TEST(LabelerWindow, KeysTypedIntoTheRealWindowAreStored) {
   };
   auto type = [&](const std::string& key, std::size_t expect) {
     ASSERT_EQ(test::run(env + "xdotool key --window " + id + " " + key).exit_code, 0);
-    for (int i = 0; i < 100 && samples() < expect; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    // Waits for the count to become `expect`, up or down (an undo lowers it): on a loaded machine the key
+    // is handled a while after xdotool returns.
+    for (int i = 0; i < 100 && samples() != expect; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
     EXPECT_EQ(samples(), expect) << "after key " << key;
   };
   std::this_thread::sleep_for(std::chrono::milliseconds(500));  // let the first candidate be drawn
