@@ -136,13 +136,10 @@ PeerResults measure_peers(const PeerOptions& o) {
   r.train_rows = train.rows.rows;
   r.held_out_rows = held_out.rows.rows;
   r.features = train.rows.cols;
-  const BinScheme bins;
-  const Clock::time_point start = Clock::now();
-  const std::vector<std::size_t> order = positives_first_order(train.labels);
-  const BinnedMatrix binned(train.rows, bins, order, o.threads);
-  std::vector<int> labels;
-  for (std::size_t i : order) labels.push_back(train.labels[i]);
-  r.binning_s = seconds_since(start);
+  const BinnedRows positives_first = bin_positives_first(train, o.threads);
+  const BinnedMatrix& binned = positives_first.matrix;
+  const std::vector<int>& labels = positives_first.labels;
+  r.binning_s = positives_first.seconds;
   r.bins_mb = static_cast<double>(binned.samples()) * static_cast<double>(binned.features()) / 1e6;
   say("memory bandwidth on " + std::to_string(o.threads) + " threads");
   r.read_gbps_n = read_bandwidth_gbps(o.quick ? 256 : 1024, o.threads, 3);
@@ -156,7 +153,7 @@ PeerResults measure_peers(const PeerOptions& o) {
   std::filesystem::create_directories(dir);
   say("XGBoost: the same bins written to " + dir.string());
   write_bins(dir, "train", binned, labels);
-  const BinnedMatrix held_out_bins(held_out.rows, bins, {}, o.threads);
+  const BinnedMatrix held_out_bins(held_out.rows, binned.scheme(), {}, o.threads);
   write_bins(dir, "held_out", held_out_bins, held_out.labels);
   std::ofstream(dir / "features") << binned.features();
   for (const int depth : {1, 3}) {

@@ -30,8 +30,11 @@
 #include "rdsf/labeling/labeling_session.hpp"
 #include "rdsf/pipeline/parallel_pipeline.hpp"
 #include "memory_peak.hpp"
+#include "report_clock.hpp"
+#include "training_crops.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 #include "rdsf/synth/synth_writer.hpp"
+#include "report_clock.hpp"
 #include "training_crops.hpp"
 
 namespace fs = std::filesystem;
@@ -39,17 +42,9 @@ namespace fs = std::filesystem;
 namespace rdsf::perf {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-/// Processor time of the whole process (every thread), seconds.
-double cpu_seconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
+using clock::Clock;
+using clock::seconds_since;
+const auto cpu_seconds = clock::process_cpu_seconds;  // the whole process, every thread
 
 void say(const std::string& text) { std::cerr << "rdsf-perf-report: " << text << std::endl; }
 
@@ -349,16 +344,12 @@ void training_per_round(PerfResults& r, const PerfOptions& o) {
 
   say("native Real AdaBoost: " + std::to_string(o.native_rounds) + " rounds on " + std::to_string(o.threads) +
       " threads");
-  const BinScheme bins;
-  const Clock::time_point start = Clock::now();
-  const std::vector<std::size_t> order = positives_first_order(train.labels);
-  const BinnedMatrix binned(train.rows, bins, order, o.threads);
-  std::vector<int> labels;
-  for (std::size_t i : order) labels.push_back(train.labels[i]);
-  r.native_binning_s = seconds_since(start);
+  const BinnedRows binned = bin_positives_first(train, o.threads);
+  r.native_binning_s = binned.seconds;
+  const BinScheme& bins = binned.matrix.scheme();
   RealAdaBoostParams params;
   params.threads = o.threads;
-  RealAdaBoost booster(binned, labels, params);
+  RealAdaBoost booster(binned.matrix, binned.labels, params);
   const Clock::time_point rounds_start = Clock::now();
   const double rounds_cpu = cpu_seconds();
   for (int k = 0; k < o.native_rounds; ++k) booster.next_round();

@@ -1,11 +1,13 @@
 #include "training_crops.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <random>
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "rdsf/classifier/real_adaboost.hpp"
 #include "rdsf/features/feature_subset.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
 
@@ -127,6 +129,16 @@ TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed
       }
     }
   });
+  return out;
+}
+
+BinnedRows bin_positives_first(const TrainingRows& rows, int threads) {
+  const auto start = std::chrono::steady_clock::now();
+  BinnedRows out;
+  const std::vector<std::size_t> order = positives_first_order(rows.labels);
+  out.matrix = BinnedMatrix(rows.rows, BinScheme{}, order, threads);
+  for (std::size_t i : order) out.labels.push_back(rows.labels[i]);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/classifier/binned_matrix.hpp"
 #include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf::perf {
@@ -20,5 +21,14 @@ struct TrainingRows {
 /// or only the features `columns` (ascending) when given.
 TrainingRows make_training_rows(int positives, int negatives, std::uint64_t seed, const FeatureSpec& spec = {},
                                 const std::vector<int>& columns = {});
+
+/// `rows` binned (64 bins) positives first, RealAdaBoost's faster sample order, with their labels in that
+/// order and the wall time the binning took.
+struct BinnedRows {
+  BinnedMatrix matrix;
+  std::vector<int> labels;
+  double seconds = 0;
+};
+BinnedRows bin_positives_first(const TrainingRows& rows, int threads);
 
 }  // namespace rdsf::perf
