@@ -50,15 +50,6 @@ BoostedModel small_model(int rounds = 6, const std::string& backend = "native") 
   return model;
 }
 
-std::string message_of(const std::function<void()>& body) {
-  try {
-    body();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(ModelFile, SaveLoadGivesIdenticalScores) {
   const test::TempDir dir("rdsf-model-file");
   BoostedModel model = small_model();
@@ -141,9 +132,9 @@ TEST(ModelRegistry, NameResolvesToItsNewestVersion) {
   EXPECT_EQ(BoostedModel::load("tree2/v1", models).version(), 1);
   EXPECT_EQ(BoostedModel::load("tree2/v1.yml", models).version(), 1);
   EXPECT_EQ(BoostedModel::load((dir.path() / "tree2").string()).version(), 2);
-  EXPECT_NE(message_of([&] { BoostedModel::load("tree3", models); }).find("no model versions under"),
+  EXPECT_NE(test::error_message([&] { BoostedModel::load("tree3", models); }).find("no model versions under"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { BoostedModel::load("tree2/v9", models); }).find("no such model version"),
+  EXPECT_NE(test::error_message([&] { BoostedModel::load("tree2/v9", models); }).find("no such model version"),
             std::string::npos);
 }
 
@@ -153,13 +144,13 @@ TEST(ModelFile, UnknownFormatVersionIsRefused) {
   const std::string path = save_new_model_version(model, "toy", dir.path().string());
   const std::string bad = dir / "future.yml";
   write_text(bad, replace_once(read_text(path), "format_version: " + std::to_string(kModelFormatVersion), "format_version: 7"));
-  const std::string message = message_of([&] { BoostedModel::load(bad); });
+  const std::string message = test::error_message([&] { BoostedModel::load(bad); });
   EXPECT_NE(message.find(bad + ": model format version 7 is not known"), std::string::npos) << message;
   const std::string other = dir / "other.yml";
   write_text(other, replace_once(read_text(path), "format: rdsf-model", "format: something-else"));
-  EXPECT_NE(message_of([&] { BoostedModel::load(other); }).find("not an rdsf model file"), std::string::npos);
+  EXPECT_NE(test::error_message([&] { BoostedModel::load(other); }).find("not an rdsf model file"), std::string::npos);
   write_text(other, "]]] not yaml {{{\n");
-  EXPECT_NE(message_of([&] { BoostedModel::load(other); }).find(other + ":"), std::string::npos);
+  EXPECT_NE(test::error_message([&] { BoostedModel::load(other); }).find(other + ":"), std::string::npos);
 }
 
 TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
@@ -175,7 +166,7 @@ TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
   EXPECT_EQ(BoostedModel::load(path).feature_spec(), coarse);
   EXPECT_EQ(read_model_file(path, coarse).feature_spec(), coarse);
   // ... but a caller computing the thesis's features refuses it, naming both.
-  const std::string message = message_of([&] { read_model_file(path, FeatureSpec{}); });
+  const std::string message = test::error_message([&] { read_model_file(path, FeatureSpec{}); });
   EXPECT_NE(message.find("feature spec differs"), std::string::npos) << message;
   EXPECT_NE(message.find("cell=16"), std::string::npos) << message;
   EXPECT_NE(message.find("cell=8"), std::string::npos) << message;
@@ -183,16 +174,16 @@ TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
   // And a default model refused by a build computing something else.
   BoostedModel normal = small_model(2);
   const std::string normal_path = save_new_model_version(normal, "normal", dir.path().string());
-  EXPECT_NE(message_of([&] { read_model_file(normal_path, coarse); }).find("this build computes"),
+  EXPECT_NE(test::error_message([&] { read_model_file(normal_path, coarse); }).find("this build computes"),
             std::string::npos);
   // A damaged spec (numbers and canonical text disagree) is named as such.
   const std::string damaged = dir / "damaged.yml";
   write_text(damaged, replace_once(read_text(normal_path), "cell_px: 8", "cell_px: 4"));
-  EXPECT_NE(message_of([&] { BoostedModel::load(damaged); }).find("damaged"), std::string::npos);
+  EXPECT_NE(test::error_message([&] { BoostedModel::load(damaged); }).find("damaged"), std::string::npos);
   // A spec this build does not know is refused on one line.
   const std::string unknown = dir / "unknown.yml";
   write_text(unknown, replace_once(read_text(normal_path), "pairs=upper-row-major", "pairs=lower-column-major"));
-  const std::string unknown_message = message_of([&] { BoostedModel::load(unknown); });
+  const std::string unknown_message = test::error_message([&] { BoostedModel::load(unknown); });
   EXPECT_NE(unknown_message.find("is not one this build knows"), std::string::npos) << unknown_message;
   EXPECT_EQ(unknown_message.find('\n'), std::string::npos);
 }
@@ -210,7 +201,7 @@ TEST(ModelFile, RectFeatureSpecModelsRoundTrip) {
   const BoostedModel loaded = BoostedModel::load(path);
   EXPECT_EQ(loaded.feature_spec(), FeatureSpec::rect());
   EXPECT_EQ(loaded.weak_classifiers(), model.weak_classifiers());
-  const std::string message = message_of([&] { read_model_file(path, FeatureSpec{}); });
+  const std::string message = test::error_message([&] { read_model_file(path, FeatureSpec{}); });
   EXPECT_NE(message.find("rdsf-rect/1"), std::string::npos) << message;
   EXPECT_NE(message.find("rdsf/1"), std::string::npos) << message;
 }
@@ -221,7 +212,7 @@ TEST(ModelFile, TruncatedWeakListIsRefused) {
   const std::string path = save_new_model_version(model, "toy", dir.path().string());
   const std::string bad = dir / "cut.yml";
   write_text(bad, replace_once(read_text(path), "weak_count: 2", "weak_count: 3"));
-  EXPECT_NE(message_of([&] { BoostedModel::load(bad); }).find("truncated"), std::string::npos);
+  EXPECT_NE(test::error_message([&] { BoostedModel::load(bad); }).find("truncated"), std::string::npos);
 }
 
 // The fixed input of the reference files: value i = ((i * 37) % 101) / 100.

@@ -42,15 +42,6 @@ void make_set(const std::string& dir, int count) {
 
 std::string samples() { return test::quote(test::program("rdsf-samples")); }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 }  // namespace
 
 TEST(SampleSetCheck, TruncatedOrReplacedCropIsAOneLineErrorNamingSampleAndFile) {
@@ -63,11 +54,11 @@ TEST(SampleSetCheck, TruncatedOrReplacedCropIsAOneLineErrorNamingSampleAndFile) 
   fs::copy_file(set + "/crops/00000001.depth.png", set + "/crops/00000003.depth.png",
                 fs::copy_options::overwrite_existing);
   const SampleSet s = SampleSet::open_read(set);
-  const std::string truncated = error_of([&] { s.depth_crop(1); });
+  const std::string truncated = test::error_message([&] { s.depth_crop(1); });
   EXPECT_NE(truncated.find(crop2), std::string::npos) << truncated;
   EXPECT_NE(truncated.find("sample 2"), std::string::npos) << truncated;
   EXPECT_EQ(truncated.find('\n'), std::string::npos);
-  const std::string replaced = error_of([&] { s.depth_crop(2); });
+  const std::string replaced = test::error_message([&] { s.depth_crop(2); });
   EXPECT_NE(replaced.find("00000003.depth.png: sample 3: crop does not match its hash"), std::string::npos) << replaced;
 
   // --check lists both, exit 1; --repair retracts both after a backup; the set then checks clean.
@@ -102,7 +93,7 @@ TEST(SampleSetCheck, DuplicateIdEditedByHandIsNamedAndRepaired) {
     std::ofstream(set + "/samples.tsv", std::ios::binary) << tsv;
   }
   std::ofstream(set + "/crops/00000009.depth.png") << "x";  // a crop without a row
-  const std::string error = error_of([&] { SampleSet::open_read(set); });
+  const std::string error = test::error_message([&] { SampleSet::open_read(set); });
   EXPECT_NE(error.find("samples.tsv:5"), std::string::npos) << error;
   EXPECT_NE(error.find("id 1"), std::string::npos) << error;
   const std::vector<SetProblem> problems = check_sample_set(set);
@@ -134,7 +125,7 @@ TEST(SampleSetCheck, ManifestWhoseHashDoesNotMatchIsReportedAndNothingChanged) {
   ASSERT_NE(hash, std::string::npos);
   manifest.replace(manifest.find_first_of("0123456789abcdef", hash + 5), 4, "0000");
   std::ofstream(set + "/manifest.yml", std::ios::binary) << manifest;
-  const std::string error = error_of([&] { SampleSet::open_read(set); });
+  const std::string error = test::error_message([&] { SampleSet::open_read(set); });
   EXPECT_NE(error.find("manifest.yml: feature spec"), std::string::npos) << error;
   const test::RunResult check = test::run(samples() + " --set " + test::quote(set) + " --check");
   EXPECT_EQ(check.exit_code, 1);
