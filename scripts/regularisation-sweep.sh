@@ -58,11 +58,16 @@ for v in "${variants[@]}"; do
   names+=("$name")
   if [ -f "$models/$name/v1.yml" ]; then echo "  $name: trained already" >&2; continue; fi
   t0=$(date +%s)
-  # shellcheck disable=SC2086 # the variant's options are words
+  # The base's settings, the variant's option replacing the base's of the same name.
+  declare -A setting=([--depth]=2 [--learning-rate]=0.5 [--augment]=mirror [--folds]=5 [--rounds]=100)
+  read -r -a words <<<"$extra"
+  for ((i = 0; i + 1 < ${#words[@]}; i += 2)); do setting[${words[i]}]=${words[i + 1]}; done
+  options=()
+  for key in "${!setting[@]}"; do options+=("$key" "${setting[$key]}"); done
+  unset setting
   "$train" --models-dir "$models" --name "$name" --pos "$sets/people" --positives 1208 --negatives 2245 \
     --neg "$sets/negatives" "$sets/hard-L0" "$sets/people" --group-by block --calibration platt \
-    --depth 2 --learning-rate 0.5 --augment mirror --folds 5 --rounds 100 $extra \
-    2>"$logs/train-$name.log" || { tail -3 "$logs/train-$name.log" >&2; exit 1; }
+    "${options[@]}" 2>"$logs/train-$name.log" || { tail -3 "$logs/train-$name.log" >&2; exit 1; }
   echo $(( $(date +%s) - t0 )) > "$logs/train-$name.secs"
   echo "  trained $name in $(( $(date +%s) - t0 )) s ($(grep -oE 'validation AUC [0-9.]+' "$logs/train-$name.log" | tail -1))" >&2
 done
