@@ -150,6 +150,24 @@ RealAdaBoost::RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, Re
   scores_.assign(labels_.size(), 0.0);
 }
 
+void RealAdaBoost::start_from_scores(const std::vector<double>& scores) {
+  if (scores.size() != labels_.size()) {
+    throw Error("Real AdaBoost: " + std::to_string(scores.size()) + " starting scores for " +
+                std::to_string(labels_.size()) + " samples");
+  }
+  if (!weak_.empty()) throw Error("Real AdaBoost: starting scores are set before the first round");
+  scores_ = scores;
+  // exp(-y F) scaled by the largest exponent first, so that large scores cannot overflow.
+  double largest = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < scores.size(); ++i) largest = std::max(largest, labels_[i] == 1 ? -scores[i] : scores[i]);
+  double total = 0.0;
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    weights_[i] = std::exp((labels_[i] == 1 ? -scores[i] : scores[i]) - largest);
+    total += weights_[i];
+  }
+  for (double& w : weights_) w /= total;
+}
+
 std::vector<std::size_t> RealAdaBoost::trimmed_samples() const {
   std::vector<std::size_t> order(weights_.size());
   std::iota(order.begin(), order.end(), std::size_t{0});

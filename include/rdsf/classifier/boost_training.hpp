@@ -50,6 +50,12 @@ struct BoostTrainingParams {
   /// feature of each column, distinct. Empty: every feature, column c = feature c. The model and the
   /// figures name features, not columns. Native backend only.
   std::vector<int> feature_columns;
+  /// Continued training (`rdsf-train --init MODEL`): the weak classifiers of a model of the same spec and
+  /// bins. Every training and validation score starts at their sum F0 (so the first new round sees the
+  /// weights exp(-y F0) that model left), the new rounds follow, and the model kept is those weak
+  /// classifiers first, then the new ones; its validation figures and calibration are the whole model's.
+  /// Native backend, every feature in the rows (no pool). Empty: training from nothing.
+  std::vector<WeakClassifier> init;
 };
 
 /// What is known of the rows beyond features and labels.

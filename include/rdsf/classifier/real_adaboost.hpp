@@ -57,6 +57,12 @@ class RealAdaBoost {
   /// `labels` (1 person, 0 not) in the sample order of `data`, which must outlive this object.
   RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, RealAdaBoostParams params = {});
 
+  /// Continued training (before the first round): every sample starts at the score F0 of a model it
+  /// continues, so its weight is exp(-y F0) normalised to sum 1, the weight it would have after training
+  /// that model from uniform weights (w ~ exp(-y F) holds for every round of Real AdaBoost); train_scores()
+  /// and the training error start from F0. Throws Error when the count differs from the samples'.
+  void start_from_scores(const std::vector<double>& scores);
+
   /// Adds one weak classifier and returns what was chosen.
   RealAdaBoostRound next_round();
 
