@@ -126,3 +126,13 @@ TEST(MinerOutput, AGroupNeverHoldsMoreRowsThanOpeningChecks) {
   writer.sync();
   EXPECT_EQ(writer.unsynced_rows(), 0u);
 }
+
+TEST(MinerOutput, SyncEveryBelowOneIsAUsageError) {
+  rdsf::test::TempDir dir{"rdsf-miner-sync-every"};
+  const rdsf::test::RunResult r = rdsf::test::run(rdsf::test::quote(rdsf::test::program("rdsf-mine")) +
+                                                  " --source " + rdsf::test::quote(dir / "none") + " --out " +
+                                                  rdsf::test::quote(dir / "set") + " --sync-every 0");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("must be at least 1"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "set"));
+}

@@ -168,7 +168,7 @@ void check_mine_params(const MineParams& p) {
   }
   if (p.max_frames < 0 || p.max_negatives < 0) throw Error("mining: limits must not be negative");
   if (p.sync_every_frames < 1) {
-    throw Error("mining: sync_every_frames " + std::to_string(p.sync_every_frames) + " must be at least 1");
+    throw Error("mining: sync every " + std::to_string(p.sync_every_frames) + " frames: must be at least 1");
   }
 }
 
