@@ -223,7 +223,8 @@ class ObjectShaper {
   // Median depth of the layer's pixels in column c's run (every row_step-th row); 0 when none.
   double column_depth_mm(int c, int row_step = 2) const {
     const ColumnRun& r = run(c);
-    std::vector<std::uint16_t> depths;
+    std::vector<std::uint16_t>& depths = depths_;  // reused: called for many columns of a layer
+    depths.clear();
     for (int y = r.top; y >= 0 && y <= r.bottom; y += row_step) {
       if ((*layer_.labels)(y, c) == layer_.label) depths.push_back((*layer_.depth_mm)(y, c));
     }
@@ -335,6 +336,7 @@ class ObjectShaper {
   };
   static constexpr int kChunk = 16;  // columns gathered at a time
   mutable std::vector<BandColumn> band_;
+  mutable std::vector<std::uint16_t> depths_;  // column_depth_mm()'s depths
 };
 
 }  // namespace
