@@ -4,6 +4,7 @@
 // classifier). Issue 17: a 100-round model scored from only the features it reads < 5 us per candidate
 // (BM_ScoreModelFeaturesOnly/rdsf), the full 8128 vector < 20 us (BM_RdsfPerCandidate); issue 13: the
 // rdsf-rect spec scored at most at the old full-vector cost, about 64 us (BM_ScoreModelFeaturesOnly/rect).
+// BM_CandidateShapingSynthetic and BM_SegmentationSynthetic run on the performance report's 48 synthetic frames.
 // Run: build/bench/bench_core
 #include <benchmark/benchmark.h>
 

@@ -32,12 +32,14 @@ inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, 
     mask |= static_cast<Word>(~same & 0xFFFFu) << j;
   }
 #endif
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__  // the first byte in memory is the word's lowest
   for (; j + 8 <= n; j += 8) {
     Word x, y;
     std::memcpy(&x, above + j, 8);
     std::memcpy(&y, row + j, 8);
     mask |= static_cast<Word>(nonzero_bytes(x ^ y)) << j;
   }
+#endif
   for (; j < n; ++j) mask |= static_cast<Word>(above[j] != row[j]) << j;
   return mask;
 }
