@@ -134,7 +134,8 @@ class ObjectShaper {
         const BandColumn& b = band_[static_cast<std::size_t>(step)];
         return b.count > 0 ? static_cast<double>(b.depth_sum) / b.count : 0.0;
       };
-      gather(1 + kChunk);
+      // First the columns a walk that takes none needs (most objects have nothing attached), then kChunk more.
+      gather(1 + std::min(kChunk, std::max(1, params_.column_gap + 1)));
       // A piece continues the object: its mean depth is within fit_depth_step_mm of the last column taken.
       double previous_depth = mean_depth(0);
       int edge = start, gap = 0, top = o.fit_top;
