@@ -53,9 +53,10 @@ inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, 
 //   nearer bit L   some segment of a label in 1..L-1 since then (L's something_nearer is true)
 // A segment of label s sets farther bits 1..s-1 and, when s > 0, nearer bits s+1..layer_count; for
 // 1 <= s <= layer_count it then goes on with or restarts label s's run as the reference does and clears
-// s's bits. Labels 0 and above layer_count only mark the flags: their runs go to slot 0, which is never
-// reported. Each segment is visited once instead of once per layer present in its column, without
-// branches on the data. Words: 64-bit words of a bit set (labels 0..layer_count).
+// s's bits. Segments of label 0 (no reading) change nothing and are skipped; labels above layer_count
+// only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
+// instead of once per layer present in its column, with no other branch on the data. Words: 64-bit words
+// of a bit set (labels 0..layer_count).
 template <int Words>
 class RunScanner {
  public:
@@ -118,6 +119,7 @@ class RunScanner {
 
   void segment(int c, Column& column, int last) {
     const int s = column.label;
+    if (s == 0) return;  // no reading: sets no bit (below_[0], above_[0] are empty), and slot 0 is not reported
     const int first = column.first;
     for (int w = 0; w < Words; ++w) {
       column.farther[w] |= below_[s][w];
