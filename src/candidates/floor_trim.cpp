@@ -69,7 +69,7 @@ int floor_trimmed_bottom(const cv::Mat1w& depth_mm, const cv::Mat1b& labels, int
         outside |= counted & (in_range ^ 1u);
         const unsigned dump = static_cast<unsigned>(c) & (kDumpSlots - 1);
         const unsigned bin = static_cast<unsigned>(kDumpSlots + offset * kCopies) + (static_cast<unsigned>(c) & (kCopies - 1));
-        slot[j] = dump + (counted & in_range) * (bin - dump);
+        slot[j] = (counted & in_range) != 0 ? bin : dump;
       }
       for (int j = 0; j < n; ++j) ++counts[slot[j]];
     }
