@@ -10,7 +10,7 @@
 // node is the best two-way split of one feature's bins, bins <= t left and the others right, by the same
 // criterion: the smallest Z = 2 (sqrt(W+_L W-_L) + sqrt(W+_R W-_R)) over the samples that reach it (stored as
 // a table of -1 / +1: > 0 routes right). A leaf is the best look-up table over the samples that reach it.
-// Every level reads each sample once, so a level costs about one depth-1 round. The tree's response is its
+// The nodes of a level share each pass over the bins, so a level reads the bins once, like a depth-1 round. The tree's response is its
 // leaf's; Z of the tree is the sum of its leaves' Z.
 //
 // Shrinkage: every response is multiplied by the learning rate nu (0 < nu <= 1) before it is added and
@@ -71,15 +71,22 @@ class RealAdaBoost {
     double z = 0.0;
     std::vector<double> responses;
   };
-  /// The table with the smallest Z over `subset` (all samples when null), responses unshrunk; with
-  /// `split`, the best two-way split instead, as a routing table of -1 (left) / +1 (right).
-  TableFit best_table(const std::vector<std::size_t>* subset, const std::vector<std::uint8_t>& y, bool split) const;
+  /// For every node (its samples ascending; all samples when the only entry is null) the table with the
+  /// smallest Z over its samples, responses unshrunk; with `split`, the best two-way split instead, as a
+  /// routing table of -1 (left) / +1 (right). All the nodes share each pass over the bins.
+  std::vector<TableFit> best_tables(const std::vector<const std::vector<std::size_t>*>& members,
+                                    const std::vector<std::uint8_t>& y, bool split) const;
+  /// Z of a table (or split) from its sums[2 * bin + y].
+  double table_z(const double* sums, bool split) const;
+  /// `feature`'s table (or split) over `subset` (all samples when null), with the given Z.
+  TableFit fit_feature(std::size_t feature, double z, const std::vector<std::size_t>* subset,
+                       const std::vector<std::uint8_t>& y, bool split) const;
 
   const BinnedMatrix& data_;
   std::vector<int> labels_;
   RealAdaBoostParams params_;
   double eps_ = 0.0;
-  bool positives_first_ = false;  ///< labels are 1...1 0...0: the faster four-feature histograms apply
+  bool positives_first_ = false;  ///< labels are 1...1 0...0: the two-part histograms apply
   std::size_t positives_ = 0;
   int threads_ = 1;
   std::vector<double> weights_;
