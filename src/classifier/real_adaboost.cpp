@@ -160,9 +160,21 @@ RealAdaBoost::TableFit RealAdaBoost::fit_feature(std::size_t feature, double z, 
 }
 
 std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<const std::vector<std::size_t>*>& members,
-                                                              const std::vector<std::uint8_t>& y, bool split) const {
+                                                              const std::vector<std::uint8_t>& y, bool split,
+                                                              const Subtraction* derived, std::vector<double>* keep) const {
   const std::size_t n = data_.samples(), features = data_.features(), nodes = members.size();
   const int bin_count = data_.scheme().count;
+  const std::size_t width = 2 * static_cast<std::size_t>(bin_count);
+  // Nodes whose sums are taken (direct); with histogram subtraction the others are parent - sibling.
+  std::vector<std::size_t> direct_of(nodes, 0);
+  std::vector<const std::vector<std::size_t>*> direct_lists;
+  for (std::size_t j = 0; j < nodes; ++j) {
+    if (derived != nullptr && derived->sibling[j] >= 0) continue;
+    direct_of[j] = direct_lists.size();
+    direct_lists.push_back(members[j]);
+  }
+  const std::size_t direct = direct_lists.size();
+  if (keep != nullptr) keep->resize(nodes * features * width);  // every entry is written below
   // The two-part sums apply to the whole sample set ordered positives first (members[0] null); every
   // other set of nodes takes the four-part sums of NodeSamples.
   const bool two_part = nodes == 1 && members[0] == nullptr && positives_first_;
@@ -173,12 +185,13 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<
     std::iota(all.begin(), all.end(), std::size_t{0});
     lists[0] = &all;
   }
-  NodeSamples samples = two_part ? NodeSamples({}, y, 0) : NodeSamples(lists, y, n);
+  if (!two_part && direct == nodes) direct_lists = lists;
+  NodeSamples samples = two_part ? NodeSamples({}, y, 0) : NodeSamples(direct_lists, y, n);
   if (!two_part) samples.gather_weights(weights_);
   // Features of one pass: eight (two-part), or for the four-part sums (8 tables of 64 doubles per node
   // and feature: 4 KiB) the count that was fastest on the AMD EPYC of docs/performance.md, keeping the
   // tables within its 32 KiB first-level data cache: 4 for one node, 2 for 2-4 nodes, else 1.
-  const int pass = two_part ? 8 : bin_count > 64 || nodes > 4 ? 1 : nodes == 1 ? 4 : 2;
+  const int pass = two_part ? 8 : bin_count > 64 || direct > 4 ? 1 : direct == 1 ? 4 : 2;
   // Best feature per chunk and node, then across chunks in chunk order (lowest index wins ties). Chunks
   // are made of whole blocks of four features, so every feature's sums are taken the same way whatever
   // the thread count: in two-part passes, except the last features % 4, which take the four-part sums
@@ -191,18 +204,19 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<
   parallel_chunks(blocks, chunks, [&](std::size_t block0, std::size_t block1) {
     const std::size_t chunk = block0 / step;
     const std::size_t f0 = block0 * 4, f1 = std::min(features, block1 * 4);
-    std::vector<double> sums(8 * nodes * 2 * static_cast<std::size_t>(bin_count));
+    std::vector<double> sums(8 * nodes * width), difference(width);
     double* best_z = chunk_z.data() + chunk * nodes;
     std::size_t* best_f = chunk_feature.data() + chunk * nodes;
     for (std::size_t k = 0; k < nodes; ++k) best_f[k] = f0;
     auto consider = [&](std::size_t f, std::size_t node, const double* s) {
+      if (keep != nullptr) std::copy(s, s + width, keep->data() + (node * features + f) * width);
       const double z = table_z(s, split);
       if (z < best_z[node]) {
         best_z[node] = z;
         best_f[node] = f;
       }
     };
-    auto sums_of = [&](std::size_t k) { return sums.data() + k * 2 * static_cast<std::size_t>(bin_count); };
+    auto sums_of = [&](std::size_t k) { return sums.data() + k * width; };
     std::size_t f = f0;
     while (f < f1) {
       const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(pass), f1 - f));
@@ -220,11 +234,26 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<
         consider(f, 0, sums_of(0));
         ++f;
       } else {
-        for (std::size_t k = 0; k < static_cast<std::size_t>(count) * nodes; ++k) out[k] = sums_of(k);
+        for (std::size_t k = 0; k < static_cast<std::size_t>(count) * direct; ++k) out[k] = sums_of(k);
         node_histograms(bins, count, samples, bin_count, out);
         for (int k = 0; k < count; ++k) {
+          const std::size_t fk = f + static_cast<std::size_t>(k);
           for (std::size_t node = 0; node < nodes; ++node) {
-            consider(f + static_cast<std::size_t>(k), node, out[static_cast<std::size_t>(k) * nodes + node]);
+            if (derived == nullptr || derived->sibling[node] < 0) {
+              consider(fk, node, out[static_cast<std::size_t>(k) * direct + direct_of[node]]);
+              continue;
+            }
+            // parent - sibling; a difference within the rounding of the parent's sum (relative 1e-9) is 0:
+            // an empty bin must stay empty, or a pure node's Z is no longer 0 and ties break at random.
+            const double* parent =
+                derived->parent_sums->data() + (static_cast<std::size_t>(derived->parent[node]) * features + fk) * width;
+            const double* sibling =
+                out[static_cast<std::size_t>(k) * direct + direct_of[static_cast<std::size_t>(derived->sibling[node])]];
+            for (std::size_t j = 0; j < width; ++j) {
+              const double d = parent[j] - sibling[j];
+              difference[j] = d > 1e-9 * parent[j] ? d : 0.0;
+            }
+            consider(fk, node, difference.data());
           }
         }
         f += static_cast<std::size_t>(count);
@@ -272,6 +301,9 @@ RealAdaBoostRound RealAdaBoost::next_round() {
     const std::size_t first_leaf = node_count / 2;
     // All the nodes of a level share one pass over the bins (node_histograms). Their members are fixed
     // before the level: routing a node moves its samples to the next level only.
+    // Histogram subtraction: the sums of the previous level's fitted nodes and their index among them.
+    std::vector<double> parent_sums, level_sums;
+    std::vector<std::ptrdiff_t> parent_index(node_count, -1);
     for (std::size_t k0 = 0; k0 < node_count; k0 = 2 * k0 + 1) {
       const std::size_t k1 = 2 * k0 + 1;  // the level is nodes k0 .. k1 - 1
       const bool inner = k0 < first_leaf;
@@ -299,7 +331,28 @@ RealAdaBoostRound RealAdaBoost::next_round() {
         }
       }
       if (!fitted.empty()) {
-        std::vector<TableFit> fits = best_tables(lists, y, inner);
+        // With subtraction, of two fitted children of a fitted parent the one with fewer samples is
+        // counted and the other is parent - sibling.
+        Subtraction sub;
+        sub.parent_sums = &parent_sums;
+        sub.parent.assign(fitted.size(), -1);
+        sub.sibling.assign(fitted.size(), -1);
+        bool any = false;
+        for (std::size_t j = 0; params_.histogram_subtraction && j + 1 < fitted.size(); ++j) {
+          const std::size_t k = fitted[j];
+          if (k % 2 == 0 || fitted[j + 1] != k + 1 || parent_index[(k - 1) / 2] < 0) continue;
+          const std::size_t bigger = members[k - k0].size() >= members[k + 1 - k0].size() ? j : j + 1;
+          sub.parent[bigger] = parent_index[(k - 1) / 2];
+          sub.sibling[bigger] = static_cast<std::ptrdiff_t>(bigger == j ? j + 1 : j);
+          any = true;
+        }
+        const bool keep = params_.histogram_subtraction && inner;
+        std::vector<TableFit> fits = best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &level_sums : nullptr);
+        std::fill(parent_index.begin(), parent_index.end(), -1);
+        if (keep) {
+          for (std::size_t j = 0; j < fitted.size(); ++j) parent_index[fitted[j]] = static_cast<std::ptrdiff_t>(j);
+          parent_sums.swap(level_sums);
+        }
         for (std::size_t j = 0; j < fitted.size(); ++j) {
           LutNode& node = weak.nodes[fitted[j]];
           node.feature = static_cast<int>(fits[j].feature);
