@@ -168,18 +168,25 @@ struct ReferenceTrees {
   }
 };
 
+// n crowded rows (test::crowded_row) of `features` values: the first `positives` are people when
+// positives >= 0, else one row in three at random.
+test::ToyData crowded_rows(int n, int features, unsigned seed, int positives) {
+  std::mt19937 rng(seed);
+  test::ToyData d;
+  d.rows.create(n, features);
+  for (int r = 0; r < n; ++r) {
+    d.labels.push_back(positives >= 0 ? (r < positives ? 1 : 0) : (rng() % 3 == 0 ? 1 : 0));
+    test::crowded_row(rng, d.rows, r, d.labels.back());
+  }
+  return d;
+}
+
 TEST(RealAdaBoostTreeReference, SameTreesAsStraightforwardTrainer) {
   for (const bool sorted : {true, false}) {
     for (const int bin_count : {16, 64}) {
-      const int features = 19, n = 1403;
-      std::mt19937 rng(static_cast<unsigned>(bin_count + sorted));
-      cv::Mat1f rows(n, features);
-      std::vector<int> labels;
-      for (int r = 0; r < n; ++r) {
-        const int label = sorted ? (r < 401 ? 1 : 0) : (rng() % 3 == 0 ? 1 : 0);
-        labels.push_back(label);
-        test::crowded_row(rng, rows, r, label);
-      }
+      const test::ToyData d = crowded_rows(1403, 19, static_cast<unsigned>(bin_count + sorted), sorted ? 401 : -1);
+      const cv::Mat1f& rows = d.rows;
+      const std::vector<int>& labels = d.labels;
       BinScheme scheme;
       scheme.count = bin_count;
       const BinnedMatrix matrix(rows, scheme);
@@ -214,17 +221,10 @@ TEST(RealAdaBoostTreeReference, SameTreesAsStraightforwardTrainer) {
 
 TEST(RealAdaBoostTreeReference, TrimmedStumpsAsStraightforwardTrainer) {
   // Depth 1 with trimming: the one node is the trimmed sample list (four-part sums).
-  const int features = 13, n = 997;
-  std::mt19937 rng(5);
-  cv::Mat1f rows(n, features);
-  std::vector<int> labels;
-  for (int r = 0; r < n; ++r) {
-    labels.push_back(r < 300 ? 1 : 0);
-    for (int f = 0; f < features; ++f) {
-      rows(r, f) = static_cast<float>(std::uniform_real_distribution<double>(0.0, 1.0)(rng) * (labels.back() ? 1.0 : 0.7));
-    }
-  }
-  const BinnedMatrix matrix(rows, BinScheme{});
+  const int n = 997;
+  const test::ToyData d = crowded_rows(n, 13, 5, 300);
+  const std::vector<int>& labels = d.labels;
+  const BinnedMatrix matrix(d.rows, BinScheme{});
   RealAdaBoostParams params;
   params.weight_trim = 0.2;
   params.threads = 2;
@@ -249,15 +249,9 @@ TEST(RealAdaBoostTreeReference, HistogramSubtractionChangesOnlyTheRounding) {
   // Subtraction changes the sums that choose the features by rounding only; the chosen features' tables
   // are summed directly. On these rows (no near ties) the trees are the same bits and Z agrees to
   // rounding; at depth 1 the option does nothing.
-  const int features = 23, n = 1501;
-  std::mt19937 rng(11);
-  cv::Mat1f rows(n, features);
-  std::vector<int> labels;
-  for (int r = 0; r < n; ++r) {
-    labels.push_back(rng() % 3 == 0 ? 1 : 0);
-    test::crowded_row(rng, rows, r, labels.back());
-  }
-  const BinnedMatrix matrix(rows, BinScheme{});
+  const test::ToyData d = crowded_rows(1501, 23, 11, -1);
+  const std::vector<int>& labels = d.labels;
+  const BinnedMatrix matrix(d.rows, BinScheme{});
   for (const int depth : {1, 2, 3}) {
     for (const double trim : {0.0, 0.1}) {
       RealAdaBoostParams params;
