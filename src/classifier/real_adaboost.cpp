@@ -330,6 +330,8 @@ RealAdaBoostRound RealAdaBoost::next_round() {
           lists.push_back(k == 0 && trimmed.empty() ? nullptr : &members[k - k0]);
         }
       }
+      const std::vector<std::ptrdiff_t> parent_of_level = parent_index;
+      std::fill(parent_index.begin(), parent_index.end(), -1);  // set again below for this level's nodes
       if (!fitted.empty()) {
         // With subtraction, of two fitted children of a fitted parent the one with fewer samples is
         // counted and the other is parent - sibling.
@@ -340,15 +342,14 @@ RealAdaBoostRound RealAdaBoost::next_round() {
         bool any = false;
         for (std::size_t j = 0; params_.histogram_subtraction && j + 1 < fitted.size(); ++j) {
           const std::size_t k = fitted[j];
-          if (k % 2 == 0 || fitted[j + 1] != k + 1 || parent_index[(k - 1) / 2] < 0) continue;
+          if (k % 2 == 0 || fitted[j + 1] != k + 1 || parent_of_level[(k - 1) / 2] < 0) continue;
           const std::size_t bigger = members[k - k0].size() >= members[k + 1 - k0].size() ? j : j + 1;
-          sub.parent[bigger] = parent_index[(k - 1) / 2];
+          sub.parent[bigger] = parent_of_level[(k - 1) / 2];
           sub.sibling[bigger] = static_cast<std::ptrdiff_t>(bigger == j ? j + 1 : j);
           any = true;
         }
         const bool keep = params_.histogram_subtraction && inner;
         std::vector<TableFit> fits = best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &level_sums : nullptr);
-        std::fill(parent_index.begin(), parent_index.end(), -1);
         if (keep) {
           for (std::size_t j = 0; j < fitted.size(); ++j) parent_index[fitted[j]] = static_cast<std::ptrdiff_t>(j);
           parent_sums.swap(level_sums);
