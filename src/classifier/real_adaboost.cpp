@@ -188,10 +188,11 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<
   if (!two_part && direct == nodes) direct_lists = lists;
   NodeSamples samples = two_part ? NodeSamples({}, y, 0) : NodeSamples(direct_lists, y, n);
   if (!two_part) samples.gather_weights(weights_);
-  // Features of one pass: eight (two-part), or for the four-part sums (8 tables of 64 doubles per node
-  // and feature: 4 KiB) the count that was fastest on the AMD EPYC of docs/performance.md, keeping the
-  // tables within its 32 KiB first-level data cache: 4 for one node, 2 for 2-4 nodes, else 1.
-  const int pass = two_part ? 8 : bin_count > 64 || direct > 4 ? 1 : direct == 1 ? 4 : 2;
+  // Features of one pass: eight two-part (4 tables of 64 doubles per feature: 16 KiB; four above 64
+  // bins, whose tables take 256), or for the four-part sums (8 tables of 64 doubles per node and
+  // feature: 4 KiB) the count that was fastest on the AMD EPYC of docs/performance.md, keeping the tables
+  // within its 32 KiB first-level data cache: 4 for one node, 2 for 2-4 nodes, else 1.
+  const int pass = two_part ? (bin_count > 64 ? 4 : 8) : bin_count > 64 || direct > 4 ? 1 : direct == 1 ? 4 : 2;
   // Best feature per chunk and node, then across chunks in chunk order (lowest index wins ties). Chunks
   // are made of whole blocks of four features, so every feature's sums are taken the same way whatever
   // the thread count: in two-part passes, except the last features % 4, which take the four-part sums
