@@ -293,7 +293,8 @@ TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
 // Trees, shrinkage, augmentation and group validation through the program: recorded in the model file.
 TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   const test::RunResult r = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) +
-                                  " --name levers --rounds 4 --depth 2 --learning-rate 0.5 --augment mirror");
+                                  " --name levers --rounds 4 --depth 2 --learning-rate 0.5 --augment mirror"
+                                  " --histogram-subtraction");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("augmentation (mirror, seed 1): 60 more positives"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("calibration platt"), std::string::npos) << r.err;
@@ -306,9 +307,13 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
       << model.training().validation.source;
   EXPECT_EQ(model.training().validation.positives, 60u);
   EXPECT_EQ(model.training().train_positives, 120u);
-  bool recorded = false;
-  for (const auto& [key, value] : model.training().parameters) recorded = recorded || (key == "depth" && value == "2");
+  bool recorded = false, subtraction = false;
+  for (const auto& [key, value] : model.training().parameters) {
+    recorded = recorded || (key == "depth" && value == "2");
+    subtraction = subtraction || (key == "histogram_subtraction" && value == "on");
+  }
   EXPECT_TRUE(recorded);
+  EXPECT_TRUE(subtraction);
 }
 
 // rdsf-train --init: a lab's own samples continue a model; the new model holds the old weak classifiers

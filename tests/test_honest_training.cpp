@@ -313,7 +313,8 @@ TEST(Trees, ADepthTwoTreeLearnsWhatOneTableCannot) {
   ASSERT_EQ(w.kind, WeakClassifier::Kind::Tree);
   ASSERT_EQ(w.nodes.size(), 3u);
   EXPECT_EQ(w.depth(), 2);
-  const std::set<int> read(w.features_read().begin(), w.features_read().end());
+  const std::vector<int> features = w.features_read();  // one vector: begin and end of the same one
+  const std::set<int> read(features.begin(), features.end());
   EXPECT_TRUE(read.count(100) == 1 && read.count(200) == 1);
   // The same tree whatever the thread count.
   deep.threads = 2;

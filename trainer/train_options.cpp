@@ -48,6 +48,8 @@ po::options_description train_options(TrainOptions& o) {
       ("depth", optional_into(o.depth),
        "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees). Default 2")
       ("learning-rate", optional_into(o.learning_rate), "native: shrinkage of every response, in (0, 1]. Default 0.5")
+      ("histogram-subtraction", po::bool_switch(&o.histogram_subtraction),
+       "native trees: count one child of two, the other is parent - sibling (faster; ties may break otherwise). Default off")
       ("thesis", po::bool_switch(&o.thesis),
        "the thesis's weak learners: depth 1, learning rate 1, no augmentation (options given explicitly still win)")
       ("smoothing", optional_into(o.smoothing), "native: eps of the responses (0 = 1 / training samples). Default 0")

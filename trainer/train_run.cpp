@@ -52,6 +52,7 @@ Recipe effective_recipe(const TrainOptions& o) {
   if (o.folds) p.folds = *o.folds;
   if (o.learning_rate) p.learning_rate = *o.learning_rate;
   if (o.smoothing) p.smoothing = *o.smoothing;
+  if (o.histogram_subtraction) p.histogram_subtraction = true;
   if (o.calibration) p.calibration = *o.calibration;
   p.threads = o.threads;
   validate_training_params(p);

@@ -24,6 +24,7 @@ struct TrainOptions {
   std::optional<int> depth, folds;
   std::optional<double> learning_rate, smoothing;
   std::optional<std::string> calibration;
+  bool histogram_subtraction = false;  ///< --histogram-subtraction
   int group_frames = 30;        ///< frames per validation group block
   std::string group_by = "recording-block";  ///< recording-block, block or recording
   std::string augment = "mirror";  ///< mirror,shift,scale,occlusion or off (chosen by the quality report)

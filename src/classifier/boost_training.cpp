@@ -52,6 +52,7 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
     out.emplace_back("smoothing", p.smoothing > 0.0 ? number_text(p.smoothing) : "auto (1/N)");
     out.emplace_back("depth", std::to_string(p.depth));
     out.emplace_back("learning_rate", number_text(p.learning_rate));
+    if (p.histogram_subtraction) out.emplace_back("histogram_subtraction", "on");
   }
   out.emplace_back("calibration", p.calibration);
   if (p.folds > 0) out.emplace_back("folds", std::to_string(p.folds));
@@ -273,6 +274,7 @@ Boosted boost_native(const cv::Mat1f& rows, const TrainingSide& side, const Boos
   rp.threads = params.threads;
   rp.depth = params.depth;
   rp.learning_rate = params.learning_rate;
+  rp.histogram_subtraction = params.histogram_subtraction;
   RealAdaBoost booster(binned, side.labels, rp);
   if (!params.init.empty()) booster.start_from_scores(init_scores(rows, side.index, params));
   const Clock::time_point boost_start = Clock::now();

@@ -38,6 +38,9 @@ struct BoostTrainingParams {
   /// Default 2 and learning rate 0.5: chosen by the quality report (docs/quality.md); --thesis gives 1 and 1.
   int depth = 2;
   double learning_rate = 0.5;       ///< native: shrinkage nu in (0, 1]
+  /// native trees: one child of two counted, the other parent - sibling (RealAdaBoostParams; issue 17).
+  /// Off keeps the models the same bits; recorded in the model file only when on.
+  bool histogram_subtraction = false;
   std::string calibration = "platt";  ///< "platt" (fitted on the validation samples) or "none" (P = sigmoid(2 H))
   /// K-fold validation by group (2-20; 0 = off): K models each trained without one fold of whole groups
   /// and scored on it; their pooled out-of-fold scores give every validation figure and the calibration
