@@ -201,6 +201,8 @@ po::options_description detector_options(DetectorParams& p) {
        "objects whose fitted extents touch are one when no wider than --max-person-width; 0 = thesis")
       ("join-narrow-layers-below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
        "pieces each narrower than --min-width join only in layers nearer than this (mm)")
+      ("join-narrow-passing", po::value(&c.join_narrow_passing)->default_value(c.join_narrow_passing),
+       "... and only when their passing columns alone are together at least --narrow-passing-width wide")
       ("narrow-fitted-width", po::value(&c.narrow_fitted_width_cm)->default_value(c.narrow_fitted_width_cm),
        "objects narrower than --min-width are candidates when their fitted box is this wide (cm), they are person-"
        "tall, near and have a background above their top; 0 = thesis")

@@ -97,3 +97,24 @@ TEST(NarrowPeople, NarrowPassingColumnsMustBeWideEnoughAndTheBodyAPersonsWidth) 
   wider_legs.candidates.narrow_passing_width_cm = 9;  // the legs are 8 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_legs).empty());
 }
+
+TEST(NarrowPeople, JoinNarrowPassingJoinsLegsButNotTheSlatsOfAChairBack) {
+  // At 1.4 m (3.75 px per cm, near threshold_height 50 cm): three slats 3 px (0.8 cm) wide and 250 rows
+  // (67 cm) high under a 20-row rail: each passes, too narrow alone; their fitted extents touch over the rail.
+  DepthFrame chair = test::wall_frame(4000);
+  test::paint(chair, {298, 200, 70, 20}, 1400);
+  for (int x : {300, 330, 362}) test::paint(chair, {x, 220, 3, 230}, 1400);
+  DetectorParams any;
+  any.candidates.join_narrow_passing = false;
+  EXPECT_EQ(at_depth(chair, 1400, any).size(), 1u);  // joined: 17 cm over its passing columns
+  const DetectorParams passing;  // join_narrow_passing: 2.4 cm of passing columns, below 5 cm
+  EXPECT_TRUE(at_depth(chair, 1400, passing).empty());
+  // Two legs of 20 px (5.3 cm) under a torso 48 cm high (failing 50 cm alone) still join into one person.
+  DepthFrame legs = test::wall_frame(4000);
+  test::paint(legs, {280, 180, 100, 180}, 1400);
+  test::paint(legs, {280, 360, 20, 110}, 1400);
+  test::paint(legs, {360, 360, 20, 110}, 1400);
+  const auto found = at_depth(legs, 1400, passing);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_GE(iou(found[0].fitted_box, cv::Rect(280, 180, 100, 290)), 0.9);
+}

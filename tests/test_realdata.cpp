@@ -36,10 +36,9 @@ std::map<std::string, std::vector<cv::Rect>> read_boxes(const std::filesystem::p
 
 }  // namespace
 
-// The floor: 48 of the folder's 49 people have a candidate whose reported (fitted) box reaches IoU >= 0.5
-// (43 with the thesis's strict box; main had 43 of 49 with the strict box, issue 14; 47 before narrow
-// people, CandidateParams::narrow_fitted_width_cm).
-TEST(RealData, CandidatesCoverAtLeast48OfThe49People) {
+// The floor: 47 of the folder's 49 people have a candidate whose reported (fitted) box reaches IoU >= 0.5
+// (43 with the thesis's strict box; main had 43 of 49 with the strict box, issue 14).
+TEST(RealData, CandidatesCoverAtLeast47OfThe49People) {
   RDSF_REQUIRE_REALDATA();
   const auto truth = read_boxes(test::realdata_dir() / "people" / "boxes.csv");
   ASSERT_FALSE(truth.empty());
@@ -75,7 +74,7 @@ TEST(RealData, CandidatesCoverAtLeast48OfThe49People) {
   std::cout << "  all: " << found << "/" << people << " (fitted box), " << found_strict << " (strict box)\n";
   RecordProperty("recall_strict_box", std::to_string(found_strict) + "/" + std::to_string(people));
   EXPECT_EQ(people, 49);
-  EXPECT_GE(found, 48);
+  EXPECT_GE(found, 47);
   EXPECT_GE(found_strict, 43);
 }
 
@@ -102,5 +101,5 @@ TEST(RealData, CandidatesPerFrameInEmptyRooms) {
   std::cout << "  mean: " << static_cast<double>(total) / frames << " candidates per frame\n";
   EXPECT_EQ(frames, 9);
   EXPECT_GT(total, 0u);  // rooms have person-sized things: the classifier's negatives
-  EXPECT_LE(total, 50u);  // issue 14: no more than before its departures (49) plus the one found since
+  EXPECT_LE(total, 49u);  // issue 14: no more than before its departures (5.44 per frame)
 }

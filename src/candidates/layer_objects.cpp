@@ -69,6 +69,12 @@ class ObjectShaper {
   int px(double centimetres) const {
     return static_cast<int>(centimetres * 10.0 * layer_.camera->fx_px / std::max(1.0, layer_.depth_mm_mean));
   }
+  // Real width of the passing columns of o.first..o.last alone (the gaps between them left out).
+  double passing_cm(const LayerObject& o) const {
+    int n = 0;
+    for (int x = o.first; x <= o.last; ++x) n += passes(x);
+    return cm(n);
+  }
   bool wide_enough(const LayerObject& o) const { return cm(o.last - o.first + 1) >= params_.min_width_cm; }
   // Step 4 (narrow_fitted_width_cm): an object too narrow over its passing columns that has a person's
   // fitted width, height, depth and a background above its top.
@@ -186,10 +192,12 @@ class ObjectShaper {
       if (!joined.empty()) {
         LayerObject& previous = joined.back();
         // Pieces each too narrow to be a candidate alone join only in near layers (farther they are the
-        // legs of furniture more often than a person's).
+        // legs of furniture more often than a person's), with join_narrow_passing only when their passing
+        // columns are together at least narrow_passing_width_cm wide (legs, not a chair's slats).
+        const bool narrow = !wide_enough(previous) && !wide_enough(o);
         const bool touch = o.fit_first <= previous.fit_last + 1 &&
-                           (wide_enough(previous) || wide_enough(o) ||
-                            layer_.depth_mm_mean < params_.join_narrow_layers_below_mm);
+                           (!narrow || (layer_.depth_mm_mean < params_.join_narrow_layers_below_mm &&
+                                        (!params_.join_narrow_passing || passing_cm(previous) + passing_cm(o) >= params_.narrow_passing_width_cm)));
         if (touch && cm(o.fit_last - previous.fit_first + 1) <= params_.max_person_width_cm) {
           const int fit_first = previous.fit_first, fit_top = std::min(previous.fit_top, o.fit_top);
           previous = span(previous.first, o.last);

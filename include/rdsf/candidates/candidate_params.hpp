@@ -52,6 +52,10 @@ struct CandidateParams {
   bool join_pieces = true;
   /// ... pieces that are each narrower than min_width_cm join only in layers nearer than this (mm).
   double join_narrow_layers_below_mm = 3500.0;
+  /// ... and only when their passing columns alone (without the gaps between them) are together at least
+  /// narrow_passing_width_cm wide (a person's two legs; not the thin slats of a chair's back: the real
+  /// empty rooms' extra candidate). false: any (docs/candidates.md has both measured).
+  bool join_narrow_passing = true;
   /// Narrow people: an object whose passing columns are narrower than min_width_cm is still a candidate
   /// when its fitted extent is at least this wide (cm) and it looks like a whole person: passing columns
   /// at least narrow_passing_width_cm wide, a layer nearer than narrow_layers_below_mm, a real height

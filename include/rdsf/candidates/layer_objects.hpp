@@ -7,7 +7,9 @@
 //      within its rows, such as arms, which are too short to pass threshold_height) - fit_reach_cm;
 //   2. joining pieces: objects whose fitted extents touch and that together are no wider than a person
 //      are one object (a person whose torso columns fail the height test because the legs part) -
-//      join_pieces;
+//      join_pieces (pieces each narrower than min_width_cm: in layers nearer than
+//      join_narrow_layers_below_mm, and with join_narrow_passing when their passing columns alone are
+//      together at least narrow_passing_width_cm);
 //   3. splitting: an object wider than a person is cut where the layer's depth jumps between neighbouring
 //      columns (split_depth_jump_mm) and at deep valleys of its column-height profile (split_valley_cm);
 //      the pieces become objects, and the whole stays one too when split_keep_whole is set;
