@@ -4,6 +4,7 @@
 // classifier). Issue 17: a 100-round model scored from only the features it reads < 5 us per candidate
 // (BM_ScoreModelFeaturesOnly/rdsf), the full 8128 vector < 20 us (BM_RdsfPerCandidate); issue 13: the
 // rdsf-rect spec scored at most at the old full-vector cost, about 64 us (BM_ScoreModelFeaturesOnly/rect).
+// BM_CandidateShapingSynthetic and BM_SegmentationSynthetic run on the performance report's 48 synthetic frames.
 // Run: build/bench/bench_core
 #include <benchmark/benchmark.h>
 
@@ -19,6 +20,7 @@
 #include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
 
@@ -43,25 +45,25 @@ const std::vector<rdsf::DepthFrame>& frames() {
   return loaded;
 }
 
-void BM_Segmentation(benchmark::State& state) {
+void segment_frames(benchmark::State& state, const std::vector<rdsf::DepthFrame>& frames) {
   const rdsf::SegmentationParams params;
   std::size_t i = 0;
-  for (auto _ : state) {
-    const rdsf::DepthFrame& frame = frames()[i++ % frames().size()];
-    benchmark::DoNotOptimize(rdsf::segment_depth(frame.depth_mm, params));
-  }
+  for (auto _ : state) benchmark::DoNotOptimize(rdsf::segment_depth(frames[i++ % frames.size()].depth_mm, params));
 }
+
+void BM_Segmentation(benchmark::State& state) { segment_frames(state, frames()); }
 BENCHMARK(BM_Segmentation)->Unit(benchmark::kMillisecond);
 
-void BM_CandidateShaping(benchmark::State& state) {
+// find_candidates over `frames` in turn, with candidates per frame and time per candidate.
+void shape_candidates(benchmark::State& state, const std::vector<rdsf::DepthFrame>& frames) {
   std::vector<rdsf::Segmentation> segmentations;
-  for (const auto& frame : frames()) segmentations.push_back(rdsf::segment_depth(frame.depth_mm, {}));
+  for (const auto& frame : frames) segmentations.push_back(rdsf::segment_depth(frame.depth_mm, {}));
   const rdsf::CandidateParams params;
   std::size_t i = 0;
   std::int64_t candidates = 0;
   for (auto _ : state) {
-    const std::size_t k = i++ % frames().size();
-    const auto found = rdsf::find_candidates(frames()[k], segmentations[k], params);
+    const std::size_t k = i++ % frames.size();
+    const auto found = rdsf::find_candidates(frames[k], segmentations[k], params);
     candidates += static_cast<std::int64_t>(found.size());
     benchmark::DoNotOptimize(found.data());
   }
@@ -71,7 +73,42 @@ void BM_CandidateShaping(benchmark::State& state) {
   state.counters["time_per_candidate"] = benchmark::Counter(
       static_cast<double>(candidates), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
+
+void BM_CandidateShaping(benchmark::State& state) { shape_candidates(state, frames()); }
 BENCHMARK(BM_CandidateShaping)->Unit(benchmark::kMillisecond);
+
+// The performance report's synthetic frames (48, 1..4 people, seed 17), with their registered colour.
+const std::vector<rdsf::DepthFrame>& synthetic_frames() {
+  static const std::vector<rdsf::DepthFrame> made = [] {
+    rdsf::synth::SynthParams p;
+    p.frames = 48, p.people_min = 1, p.people_max = 4, p.seed = 17, p.rgb = true;
+    rdsf::synth::SynthSequence sequence(p);
+    std::vector<rdsf::DepthFrame> all;
+    for (int i = 0; i < p.frames; ++i) {
+      const rdsf::synth::SynthFrame f = sequence.frame(i);
+      rdsf::DepthFrame frame;
+      frame.depth_mm = f.depth_mm;
+      frame.bgr = f.bgr;
+      all.push_back(frame);
+    }
+    return all;
+  }();
+  return made;
+}
+
+// Candidates per candidate on the synthetic frames: 0 depth only (as the report's "speed against the
+// machine's limits"), 1 with colour crops (as the whole system cuts them).
+void BM_CandidateShapingSynthetic(benchmark::State& state) {
+  std::vector<rdsf::DepthFrame> frames = synthetic_frames();
+  if (state.range(0) == 0) {
+    for (rdsf::DepthFrame& f : frames) f.bgr.release();
+  }
+  shape_candidates(state, frames);
+}
+BENCHMARK(BM_CandidateShapingSynthetic)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_SegmentationSynthetic(benchmark::State& state) { segment_frames(state, synthetic_frames()); }
+BENCHMARK(BM_SegmentationSynthetic)->Unit(benchmark::kMillisecond);
 
 const std::vector<cv::Mat1w>& crops() {
   static const std::vector<cv::Mat1w> all = [] {

@@ -3,11 +3,18 @@
 // that rdsf-synth writes (cv::imencode), then read back with the direct path (rdsf::read_png_file) and
 // with cv::imdecode alone (PngDecodeOptions::direct_path = false: what every read did before). Both
 // include reading the file and checking every chunk's CRC. Arg 0 = depth, 1 = colour, 2 = both.
+// BM_InflateOnly is the floor under the direct path: libdeflate's inflate of the same zlib streams alone.
 // Run: build/bench/bench_frame_io
 #include <benchmark/benchmark.h>
 
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
+
+#include <libdeflate.h>
 #include <unistd.h>
 
 #include "rdsf/frame/depth_png.hpp"
@@ -59,6 +66,46 @@ void BM_ReadPngDirect(benchmark::State& state) { read_frame(state, true); }
 void BM_ReadPngImdecode(benchmark::State& state) { read_frame(state, false); }
 BENCHMARK(BM_ReadPngDirect)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReadPngImdecode)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+/// The zlib stream of a PNG file: its IDAT chunks' data joined.
+std::vector<unsigned char> idat_stream(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<unsigned char> stream;
+  for (std::size_t at = 8; at + 12 <= bytes.size();) {
+    const std::size_t length = (std::size_t{bytes[at]} << 24) | (std::size_t{bytes[at + 1]} << 16) |
+                               (std::size_t{bytes[at + 2]} << 8) | bytes[at + 3];
+    if (std::memcmp(&bytes[at + 4], "IDAT", 4) == 0) {
+      stream.insert(stream.end(), bytes.begin() + static_cast<std::ptrdiff_t>(at + 8),
+                    bytes.begin() + static_cast<std::ptrdiff_t>(at + 8 + length));
+    }
+    at += length + 12;
+  }
+  return stream;
+}
+
+/// The floor of the direct path: libdeflate's inflate of the files' zlib streams alone (in memory, no CRC
+/// walk, no unfiltering), the part no PNG reader built on libdeflate can avoid.
+void BM_InflateOnly(benchmark::State& state) {
+  const PngPair& pair = files();
+  std::vector<std::vector<unsigned char>> streams;
+  if (state.range(0) != 1) streams.push_back(idat_stream(pair.depth));
+  if (state.range(0) != 0) streams.push_back(idat_stream(pair.colour));
+  std::vector<unsigned char> out(640 * 480 * 3 + 480 + 64);
+  libdeflate_decompressor* inflater = libdeflate_alloc_decompressor();
+  for (auto _ : state) {
+    for (const auto& stream : streams) {
+      std::size_t got = 0;
+      if (libdeflate_zlib_decompress(inflater, stream.data(), stream.size(), out.data(), out.size(), &got) !=
+          LIBDEFLATE_SUCCESS) {
+        state.SkipWithError("inflate failed");
+      }
+      benchmark::DoNotOptimize(out.data());
+    }
+  }
+  libdeflate_free_decompressor(inflater);
+}
+BENCHMARK(BM_InflateOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

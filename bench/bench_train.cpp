@@ -15,7 +15,8 @@
 //
 // Options (before Google Benchmark's own): --positives=N --negatives=N --native-rounds=N
 // --opencv-rounds=A,B (0,0 skips OpenCV) --threads=N --feature-spec=rdsf|rdsf-rect[:...] --feature-pool=N
-// (a seeded pool of N of the spec's features, as rdsf-train --feature-pool; 0 = all).
+// (a seeded pool of N of the spec's features, as rdsf-train --feature-pool; 0 = all) --depth=N (native
+// trees, 1..4) --subtraction=1 (native histogram subtraction) --weight-trim=X.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -49,6 +50,9 @@ struct Config {
   int threads = 0;
   std::string spec = "rdsf";
   std::size_t pool = 0;
+  int depth = 1;
+  bool subtraction = false;
+  double weight_trim = 0.0;
 } config;
 
 std::vector<int> pool_columns() {
@@ -108,7 +112,7 @@ double validation_auc(const std::vector<rdsf::WeakClassifier>& weak, std::size_t
   std::vector<double> scores(data().validation_labels.size(), 0.0);
   for (std::size_t k = 0; k < std::min(rounds, weak.size()); ++k) {
     for (std::size_t i = 0; i < scores.size(); ++i) {
-      scores[i] += weak[k].respond(data().validation(static_cast<int>(i), weak[k].feature), bins);
+      scores[i] += weak[k].respond_row(data().validation[static_cast<int>(i)], bins);
     }
   }
   return rdsf::roc_auc(scores, data().validation_labels);
@@ -133,6 +137,9 @@ void BM_NativeRealAdaBoost(benchmark::State& state) {
     results.native_bin_s = seconds_since(start);
     rdsf::RealAdaBoostParams params;
     params.threads = config.threads;
+    params.depth = config.depth;
+    params.histogram_subtraction = config.subtraction;
+    params.weight_trim = config.weight_trim;
     rdsf::RealAdaBoost booster(binned, labels, params);
     const Clock::time_point rounds_start = Clock::now();
     for (int r = 0; r < config.native_rounds; ++r) booster.next_round();
@@ -184,6 +191,9 @@ void parse_own_flags(int& argc, char** argv) {
     else if (const char* v5 = value("--opencv-rounds=")) std::sscanf(v5, "%d,%d", &config.opencv_a, &config.opencv_b);
     else if (const char* v6 = value("--feature-spec=")) config.spec = v6;
     else if (const char* v7 = value("--feature-pool=")) config.pool = static_cast<std::size_t>(std::atoll(v7));
+    else if (const char* v8 = value("--depth=")) config.depth = std::atoi(v8);
+    else if (const char* v9 = value("--subtraction=")) config.subtraction = std::atoi(v9) != 0;
+    else if (const char* v10 = value("--weight-trim=")) config.weight_trim = std::atof(v10);
     else argv[kept++] = argv[i];
   }
   argc = kept;

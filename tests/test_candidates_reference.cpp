@@ -1,15 +1,20 @@
 // The candidate steps sped up for issue 17 against their straightforward versions
-// (tests/support/reference_candidates.hpp): column_runs() with its word-at-a-time run scan, and
-// floor_trimmed_bottom() with its histogram median, on random label maps and depths (runs of every length,
-// labels outside the layer's depth range) and on the layers of synthetic frames.
+// (tests/support/reference_candidates.hpp): column_runs() with its row-by-row pass, floor_trimmed_bottom()
+// with its histogram median, cut_crops() and the fitted extents of layer_objects(), on random label maps,
+// depths and windows (runs of every length, many layers, labels outside the layer's depth range, windows
+// leaving the image) and on synthetic and real frames (these skipped without ../shared/realdata).
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/floor_trim.hpp"
+#include "rdsf/candidates/layer_objects.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 #include "support/reference_candidates.hpp"
+#include "support/test_support.hpp"
 
 namespace rdsf {
 namespace {
@@ -26,24 +31,45 @@ void expect_same_runs(const cv::Mat1b& labels, int layers, int k, const std::vec
   }
 }
 
+// A label map of runs of 1..20 rows per column, labels 0..layers + 1 (layers + 1: a label beyond them).
+cv::Mat1b random_label_map(std::mt19937& rng, int rows, int cols, int layers) {
+  cv::Mat1b labels(rows, cols);
+  for (int c = 0; c < cols; ++c) {
+    int r = 0;
+    while (r < rows) {
+      const int length = 1 + static_cast<int>(rng() % 20);
+      const auto label = static_cast<std::uint8_t>(rng() % static_cast<unsigned>(layers + 2));
+      for (int i = 0; i < length && r < rows; ++i, ++r) labels(r, c) = label;
+    }
+  }
+  return labels;
+}
+
 TEST(CandidatesReference, ColumnRunsSameOnRandomLabelMaps) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 150; ++trial) {
     const int rows = 1 + static_cast<int>(rng() % 70), cols = 1 + static_cast<int>(rng() % 9);
     const int layers = 1 + static_cast<int>(rng() % 5);
-    cv::Mat1b labels(rows, cols);
-    for (int c = 0; c < cols; ++c) {
-      int r = 0;
-      while (r < rows) {  // runs of 1..20 rows of one label
-        const int length = 1 + static_cast<int>(rng() % 20);
-        const auto label = static_cast<std::uint8_t>(rng() % (layers + 2));  // layers + 1: a label beyond them
-        for (int i = 0; i < length && r < rows; ++i, ++r) labels(r, c) = label;
-      }
-    }
+    const cv::Mat1b labels = random_label_map(rng, rows, cols, layers);
     std::vector<int> occlusion(static_cast<std::size_t>(layers) + 1);
     for (int& o : occlusion) o = static_cast<int>(rng() % 12);
     expect_same_runs(labels, layers, static_cast<int>(rng() % 8), trial % 2 ? occlusion : std::vector<int>{},
                      "trial " + std::to_string(trial));
+  }
+}
+
+// Wide maps (the 16- and 8-column comparisons, 64-column blocks and their ends) and many layers (label bit
+// sets of one, two and four words), the label 255 included.
+TEST(CandidatesReference, ColumnRunsSameOnWideMapsWithManyLayers) {
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int rows = 1 + static_cast<int>(rng() % 90), cols = 1 + static_cast<int>(rng() % 200);
+    const int layers = trial % 3 == 0 ? 1 + static_cast<int>(rng() % 254) : 1 + static_cast<int>(rng() % 12);
+    cv::Mat1b labels = random_label_map(rng, rows, cols, layers);
+    if (trial % 7 == 0) labels.setTo(255, labels == static_cast<std::uint8_t>(layers));
+    std::vector<int> occlusion(static_cast<std::size_t>(layers) + 1);
+    for (int& o : occlusion) o = static_cast<int>(rng() % 12);
+    expect_same_runs(labels, layers, static_cast<int>(rng() % 8), occlusion, "wide trial " + std::to_string(trial));
   }
 }
 
@@ -96,6 +122,103 @@ TEST(CandidatesReference, SameOnSyntheticFrames) {
                                                  [](int) { return true; }));
     }
   }
+}
+
+void expect_same_crops(const Candidate& fast, const Candidate& reference, const std::string& what) {
+  ASSERT_EQ(fast.depth_crop.size(), reference.depth_crop.size()) << what;
+  EXPECT_EQ(cv::countNonZero(fast.depth_crop != reference.depth_crop), 0) << what;
+  ASSERT_EQ(fast.colour_crop.empty(), reference.colour_crop.empty()) << what;
+  if (!fast.colour_crop.empty()) {
+    cv::Mat differ;
+    cv::absdiff(fast.colour_crop, reference.colour_crop, differ);
+    EXPECT_EQ(cv::countNonZero(differ.reshape(1)), 0) << what;
+  }
+}
+
+TEST(CandidatesReference, CutCropsSameOnRandomWindows) {
+  std::mt19937 rng(14);
+  DepthFrame frame;
+  frame.depth_mm.create(60, 80);
+  frame.bgr.create(60, 80);
+  cv::randu(frame.depth_mm, 0, 5000);
+  cv::randu(frame.bgr, 0, 256);
+  cv::Mat1b labels(60, 80);
+  cv::randu(labels, 0, 4);
+  for (int trial = 0; trial < 400; ++trial) {
+    // Windows inside, across an edge, beyond the image, narrower and wider than the crop.
+    const cv::Rect window(static_cast<int>(rng() % 140) - 40, static_cast<int>(rng() % 110) - 30,
+                          1 + static_cast<int>(rng() % 120), 1 + static_cast<int>(rng() % 100));
+    const cv::Size crop(1 + static_cast<int>(rng() % 70), 1 + static_cast<int>(rng() % 130));
+    DepthFrame shown = frame;
+    if (trial % 3 == 0) shown.bgr.release();
+    Candidate fast, reference;
+    cut_crops(shown, labels, 1 + trial % 3, window, crop, fast);
+    test::cut_crops_reference(shown, labels, 1 + trial % 3, window, crop, reference);
+    expect_same_crops(fast, reference, "trial " + std::to_string(trial));
+  }
+}
+
+// Synthetic frames with colour (8, 1..4 people) and the real frames of ../shared/realdata when present.
+std::vector<DepthFrame> candidate_frames() {
+  std::vector<DepthFrame> frames;
+  synth::SynthParams p;
+  p.frames = 8, p.people_min = 1, p.people_max = 4, p.seed = 23, p.rgb = true;
+  synth::SynthSequence sequence(p);
+  for (int i = 0; i < p.frames; ++i) {
+    const synth::SynthFrame f = sequence.frame(i);
+    DepthFrame frame;
+    frame.depth_mm = f.depth_mm;
+    frame.bgr = f.bgr;
+    frames.push_back(frame);
+  }
+  if (!test::realdata_dir().empty()) {
+    for (const char* group : {"people", "empty"}) {
+      auto source = open_frame_source((test::realdata_dir() / group).string());
+      DepthFrame frame;
+      while (source->next(frame)) {
+        frames.push_back(frame);
+        frame = DepthFrame{};  // the source may reuse the frame's buffers
+      }
+    }
+  }
+  return frames;
+}
+
+// Every object's fitted extent (objects not joined, so each is one passing span fitted over the whole
+// width) equals the column-by-column walk, and every candidate's crops the pixel-by-pixel cut.
+TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
+  CandidateParams params;
+  params.join_pieces = false;
+  int objects = 0, widened = 0, candidates = 0;
+  for (const DepthFrame& frame : candidate_frames()) {
+    const Segmentation s = segment_depth(frame.depth_mm, {});
+    const auto runs = column_runs(s.labels, static_cast<int>(s.layers.size()), params.k);
+    for (const DepthLayer& layer : s.layers) {
+      const LayerView view{&runs[static_cast<std::size_t>(layer.label)], &s.labels, &frame.depth_mm, layer.label,
+                           layer.mean_depth_mm, static_cast<double>(layer.max_depth_mm), &frame.camera};
+      const LayerObjects found = layer_objects(view, params);
+      const int reach = static_cast<int>(params.fit_reach_cm * 10.0 * frame.camera.fx_px / std::max(1.0, layer.mean_depth_mm));
+      for (const LayerObject& o : found.objects) {
+        const test::FittedExtent reference = test::fitted_extent_reference(
+            s.labels, frame.depth_mm, layer.label, found.passing, o.first, o.last, o.top, o.bottom, reach,
+            params.column_gap, params.fit_depth_step_mm, 0, frame.depth_mm.cols - 1);
+        EXPECT_EQ(o.fit_first, reference.first) << "layer " << layer.label << " object at column " << o.first;
+        EXPECT_EQ(o.fit_last, reference.last) << "layer " << layer.label << " object at column " << o.first;
+        EXPECT_EQ(o.fit_top, reference.top) << "layer " << layer.label << " object at column " << o.first;
+        ++objects;
+        widened += reference.last - reference.first > o.last - o.first;
+      }
+    }
+    for (const Candidate& c : find_candidates(frame, s, {})) {
+      Candidate reference;
+      test::cut_crops_reference(frame, s.labels, c.layer, c.window_unclipped, c.depth_crop.size(), reference);
+      expect_same_crops(c, reference, "candidate at " + std::to_string(c.window.x) + "," + std::to_string(c.window.y));
+      ++candidates;
+    }
+  }
+  EXPECT_GT(objects, 10);
+  EXPECT_GT(widened, 3);  // some fitted extents reach beyond the passing columns
+  EXPECT_GT(candidates, 5);
 }
 
 }  // namespace

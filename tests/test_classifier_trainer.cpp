@@ -293,7 +293,8 @@ TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
 // Trees, shrinkage, augmentation and group validation through the program: recorded in the model file.
 TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   const test::RunResult r = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) +
-                                  " --name levers --rounds 4 --depth 2 --learning-rate 0.5 --augment mirror");
+                                  " --name levers --rounds 4 --depth 2 --learning-rate 0.5 --augment mirror"
+                                  " --histogram-subtraction");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("augmentation (mirror, seed 1): 60 more positives"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("calibration platt"), std::string::npos) << r.err;
@@ -306,9 +307,52 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
       << model.training().validation.source;
   EXPECT_EQ(model.training().validation.positives, 60u);
   EXPECT_EQ(model.training().train_positives, 120u);
-  bool recorded = false;
-  for (const auto& [key, value] : model.training().parameters) recorded = recorded || (key == "depth" && value == "2");
+  bool recorded = false, subtraction = false;
+  for (const auto& [key, value] : model.training().parameters) {
+    recorded = recorded || (key == "depth" && value == "2");
+    subtraction = subtraction || (key == "histogram_subtraction" && value == "on");
+  }
   EXPECT_TRUE(recorded);
+  EXPECT_TRUE(subtraction);
+}
+
+// rdsf-train --init: a lab's own samples continue a model; the new model holds the old weak classifiers
+// first and records where it came from; a model of other bins or another spec is refused before any work.
+TEST_F(TrainerProgram, InitContinuesAModelOnNewSetsAndRefusesOneThatDoesNotFit) {
+  const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives);
+  ASSERT_EQ(train(sets + " --name base --rounds 3 --bins 32").exit_code, 0);
+  const std::string more_people = dir / "more-people", more_negatives = dir / "more-negatives";
+  make_set(more_people, 1, 60, 7);
+  make_set(more_negatives, 0, 60, 8);
+  const std::string more = "--pos " + test::quote(more_people) + " --neg " + test::quote(more_negatives);
+  const test::RunResult r = train(more + " --name lab --init base --rounds 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("continuing base/v1"), std::string::npos) << r.err;
+  const BoostedModel base = BoostedModel::load("base", models), lab = BoostedModel::load("lab", models);
+  ASSERT_EQ(lab.weak_classifiers().size(), 5u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_TRUE(lab.weak_classifiers()[k] == base.weak_classifiers()[k]) << k;
+  EXPECT_EQ(lab.bins().count, 32);
+  bool recorded = false;
+  for (const auto& [key, value] : lab.training().parameters) {
+    recorded = recorded || (key == "init" && value.find("base/v1") == 0);
+  }
+  EXPECT_TRUE(recorded);
+
+  test::RunResult bad = train(more + " --name lab2 --init base --bins 64");
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("differs from the --init model's 32"), std::string::npos) << bad.err;
+  const std::string rect_people = dir / "rect-people", rect_negatives = dir / "rect-negatives";
+  make_set(rect_people, 1, 20, 3, FeatureSpec::rect());
+  make_set(rect_negatives, 0, 20, 4, FeatureSpec::rect());
+  bad = train("--pos " + test::quote(rect_people) + " --neg " + test::quote(rect_negatives) +
+              " --name lab3 --init base --feature-pool 0 --rounds 2");
+  EXPECT_EQ(bad.exit_code, 1) << bad.err;
+  EXPECT_NE(bad.err.find("--init model reads feature spec"), std::string::npos) << bad.err;
+  bad = train(more + " --name lab4 --init nosuchmodel");
+  EXPECT_EQ(bad.exit_code, 1) << bad.err;
+  EXPECT_NE(bad.err.find("error: nosuchmodel: no such model file"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.err.find("samples "), std::string::npos) << bad.err;  // refused before any sample was read
+  for (const char* name : {"lab2", "lab3", "lab4"}) EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(models) / name));
 }
 
 }  // namespace

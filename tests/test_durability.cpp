@@ -212,19 +212,32 @@ struct LabelSession {
   }
 };
 
-/// A mining run: one people-free synthetic frame.
-struct MineSession {
-  test::TempDir dir{"rdsf-durable-mine"};
-  MineSession() {
+/// A mining run of `frames` people-free synthetic frames with the given extra options.
+struct MineRun {
+  test::TempDir dir;
+  std::string options;
+  MineRun(const std::string& tag, int frames, std::string extra) : dir(tag), options(std::move(extra)) {
     const test::RunResult r = test::run(test::quote(test::program("rdsf-synth")) + " --out " +
-                                        test::quote(dir / "empty") + " --frames 1 --empty --seed 4");
+                                        test::quote(dir / "empty") + " --frames " + std::to_string(frames) +
+                                        " --empty --seed 4");
     EXPECT_EQ(r.exit_code, 0) << r.err;
   }
   std::string out() const { return dir / "out"; }
   std::string command() const {
     return test::quote(test::program("rdsf-mine")) + " --source " + test::quote(dir / "empty") + " --out " +
-           test::quote(out() + "/set");
+           test::quote(out() + "/set") + options;
   }
+};
+
+/// A mining run: one people-free synthetic frame.
+struct MineSession : MineRun {
+  MineSession() : MineRun("rdsf-durable-mine", 1, "") {}
+};
+
+/// A mining run in groups (group commit, MineParams::sync_every_frames): three people-free frames whose
+/// samples are flushed two frames at a time.
+struct MineGroupSession : MineRun {
+  MineGroupSession() : MineRun("rdsf-durable-mine-group", 3, " --sync-every 2 --threads 1") {}
 };
 
 cv::Mat1w toy_crop(bool person, int i) {
@@ -529,6 +542,26 @@ TEST(PowerCut, MiningRunCutAfterEveryCallKeepsEverySavedSample) {
   std::cout << "[figures] rdsf-mine: " << f.calls << " calls, " << f.cuts << " simulated power cuts, "
             << f.saved_checked << " saved samples checked, 0 lost\n";
   EXPECT_GT(f.cuts, 100u);
+}
+
+TEST(PowerCut, MiningInGroupsCutAfterEveryCallKeepsEverySavedSample) {
+  const CutFigures f = cut_everywhere<MineGroupSession>("set");
+  std::cout << "[figures] rdsf-mine --sync-every 2 (3 frames): " << f.calls << " calls, " << f.cuts
+            << " simulated power cuts, " << f.saved_checked << " saved samples checked, 0 lost\n";
+  EXPECT_GT(f.cuts, 100u);
+  // The rows were flushed in groups: two fdatasyncs of samples.tsv for three frames (frames 1-2, frame 3).
+  prefer_ram_disk();
+  MineGroupSession s;
+  fs::create_directories(s.out());
+  const std::string record = s.dir / "record";
+  ASSERT_EQ(test::run("RDSF_IO_RECORD=" + test::quote(record) + " " + s.command()).exit_code, 0);
+  int row_syncs = 0;
+  std::map<int, std::string> open_files;  // fd -> path
+  for (const test::RecordedCall& call : test::read_io_record(record)) {
+    if (call.call == io::Call::open) open_files[call.fd] = call.path;
+    if (call.call == io::Call::fdatasync && open_files[call.fd] == s.out() + "/set/samples.tsv") ++row_syncs;
+  }
+  EXPECT_EQ(row_syncs, 2);  // frames 1 and 2, then frame 3 (the header was written under a temporary name)
 }
 
 TEST(PowerCut, ModelSavedBeforeACutIsComplete) {

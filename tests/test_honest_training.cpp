@@ -313,7 +313,8 @@ TEST(Trees, ADepthTwoTreeLearnsWhatOneTableCannot) {
   ASSERT_EQ(w.kind, WeakClassifier::Kind::Tree);
   ASSERT_EQ(w.nodes.size(), 3u);
   EXPECT_EQ(w.depth(), 2);
-  const std::set<int> read(w.features_read().begin(), w.features_read().end());
+  const std::vector<int> features = w.features_read();  // one vector: begin and end of the same one
+  const std::set<int> read(features.begin(), features.end());
   EXPECT_TRUE(read.count(100) == 1 && read.count(200) == 1);
   // The same tree whatever the thread count.
   deep.threads = 2;
@@ -424,6 +425,60 @@ TEST(HonestTraining, GroupFoldsValidateEveryRowOnceAndKeepTheFullModel) {
   bad.folds = 60;
   EXPECT_NE(message_of([&] { train_boosted_model(rows, labels, bad, {}, nullptr, nullptr, info); }).find("folds must be"),
             std::string::npos);
+}
+
+// ---- continued training (rdsf-train --init) ----
+
+// Real AdaBoost's weights after t rounds are exp(-y F_t) normalised, so continuing a 4-round model for 4
+// more rounds on the same rows chooses what an 8-round training chooses, and scores as it does.
+TEST(ContinuedTraining, ContinuingAModelEqualsTrainingItLonger) {
+  cv::Mat1f rows;
+  std::vector<int> labels;
+  and_problem(rows, labels);
+  BoostTrainingParams p;
+  p.depth = 2;
+  p.bins.count = 16;
+  p.folds = 0;
+  p.validation_fraction = 0;
+  p.rounds = 4;
+  const BoostedModel first = train_boosted_model(rows, labels, p);
+  p.rounds = 8;
+  const BoostedModel longer = train_boosted_model(rows, labels, p);
+  BoostTrainingParams more = p;
+  more.rounds = 4;
+  more.init = first.weak_classifiers();
+  const BoostedModel continued = train_boosted_model(rows, labels, more);
+  ASSERT_EQ(continued.weak_classifiers().size(), 8u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_TRUE(continued.weak_classifiers()[k] == first.weak_classifiers()[k]) << k;
+  for (std::size_t k = 0; k < 8; ++k) {
+    EXPECT_EQ(continued.weak_classifiers()[k].feature, longer.weak_classifiers()[k].feature) << k;
+  }
+  const std::vector<double> a = continued.score(rows), b = longer.score(rows);
+  for (int r = 0; r < rows.rows; ++r) ASSERT_NEAR(a[static_cast<std::size_t>(r)], b[static_cast<std::size_t>(r)], 1e-6) << r;
+  EXPECT_NE(std::find(continued.training().parameters.begin(), continued.training().parameters.end(),
+                      std::make_pair(std::string("init_weak_classifiers"), std::string("4"))),
+            continued.training().parameters.end());
+
+  // With group folds every fold's model starts from the same weak classifiers; the figures are the new
+  // rounds' and the kept model holds both.
+  TrainingRowInfo info;
+  for (int r = 0; r < rows.rows; ++r) info.groups.push_back(static_cast<std::size_t>(r / 20));
+  BoostTrainingParams folds = more;
+  folds.folds = 4;
+  folds.report_every = 1;
+  const BoostedModel folded = train_boosted_model(rows, labels, folds, {}, nullptr, nullptr, info);
+  ASSERT_EQ(folded.weak_classifiers().size(), 8u);
+  EXPECT_TRUE(folded.weak_classifiers()[0] == first.weak_classifiers()[0]);
+  EXPECT_EQ(folded.training().validation.rounds.size(), 4u);
+  EXPECT_GT(folded.training().validation.summary.auc, 0.9);
+
+  BoostTrainingParams opencv = more;
+  opencv.backend = BoostBackend::opencv;
+  EXPECT_NE(message_of([&] { train_boosted_model(rows, labels, opencv); }).find("needs the native backend"),
+            std::string::npos);
+  BoostTrainingParams pool = more;
+  pool.feature_columns = {0, 1, 2, 3};
+  EXPECT_NE(message_of([&] { train_boosted_model(rows, labels, pool); }).find("--feature-pool 0"), std::string::npos);
 }
 
 }  // namespace

@@ -120,7 +120,8 @@ TEST_F(PerfReportQuick, StatesTheMachinesLimitsAndThePeers) {
   const std::regex number("[0-9]+\\.[0-9]+");
   for (const char* label : {"Memory bandwidth, streaming reads", "One pass over a 640x480 frame",
                             "Both PNGs of a frame", "Full 8128 RDSF vector per candidate",
-                            "native Real AdaBoost, depth 1", "native Real AdaBoost, depth 3"}) {
+                            "native Real AdaBoost, depth 1", "native Real AdaBoost, depth 3",
+                            "native Real AdaBoost, depth 3, histogram subtraction"}) {
     const std::string line = row(md, label);
     ASSERT_FALSE(line.empty()) << "no row '" << label << "' in\n" << md;
     EXPECT_TRUE(std::regex_search(line.substr(line.find('|', 2)), number)) << line;

@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 
+#include "classifier_support/toy_data.hpp"
 #include "rdsf/classifier/real_adaboost.hpp"
 
 namespace rdsf {
@@ -97,12 +98,7 @@ TEST(RealAdaBoostReference, SameRoundsAsStraightforwardTrainer) {
     for (int r = 0; r < rows.rows; ++r) {
       const int label = r < positives ? 1 : 0;
       labels.push_back(label);
-      for (int f = 0; f < features; ++f) {
-        // Values crowd at 0 and 1 as RDSF values do; some features carry the label.
-        const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
-        const double shifted = (f % 5 == 0 && label == 1) ? std::sqrt(u) : u * u;
-        rows(r, f) = static_cast<float>(rng() % 7 == 0 ? 1.0 : shifted);
-      }
+      test::crowded_row(rng, rows, r, label);  // values crowd at 0 and 1 as RDSF values do
     }
     BinScheme scheme;
     scheme.count = 16;

@@ -28,7 +28,10 @@ po::options_description train_options(TrainOptions& o) {
       ("negatives", optional_into(o.negatives),
        "negatives to take (seeded subset; 0 = all). Default: the recipe's, else all")
       ("name", po::value(&o.name), "model name (default: the recipe's name); saved as MODELS/NAME/vN.yml")
-      ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "folder of models and recipes/");
+      ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "folder of models and recipes/")
+      ("init", po::value(&o.init),
+       "continue training MODEL (file, NAME or NAME/vN, e.g. the shipped 'people') on the given sets: --rounds "
+       "more weak classifiers after its own, its bins; the new model holds both. Default: none (from nothing)");
   po::options_description how("Boosting (default: the recipe's value, else the one shown)");
   how.add_options()
       ("backend", optional_into(o.backend), "native (Real AdaBoost, look-up tables) or opencv (cv::ml::Boost REAL stumps). Default native")
@@ -45,6 +48,8 @@ po::options_description train_options(TrainOptions& o) {
       ("depth", optional_into(o.depth),
        "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees). Default 2")
       ("learning-rate", optional_into(o.learning_rate), "native: shrinkage of every response, in (0, 1]. Default 0.5")
+      ("histogram-subtraction", po::bool_switch(&o.histogram_subtraction),
+       "native trees: count one child of two, the other is parent - sibling (faster; ties may break otherwise). Default off")
       ("thesis", po::bool_switch(&o.thesis),
        "the thesis's weak learners: depth 1, learning rate 1, no augmentation (options given explicitly still win)")
       ("smoothing", optional_into(o.smoothing), "native: eps of the responses (0 = 1 / training samples). Default 0")

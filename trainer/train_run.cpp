@@ -6,7 +6,9 @@
 #include <iterator>
 #include <iostream>
 #include <limits>
+#include <optional>
 
+#include "rdsf/candidates/crop_provenance.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "cli/cli.hpp"
@@ -50,6 +52,7 @@ Recipe effective_recipe(const TrainOptions& o) {
   if (o.folds) p.folds = *o.folds;
   if (o.learning_rate) p.learning_rate = *o.learning_rate;
   if (o.smoothing) p.smoothing = *o.smoothing;
+  if (o.histogram_subtraction) p.histogram_subtraction = true;
   if (o.calibration) p.calibration = *o.calibration;
   p.threads = o.threads;
   validate_training_params(p);
@@ -114,6 +117,16 @@ int run_train(const TrainOptions& o) {
             << " under " << o.models_dir << "), " << recipe.params.backend.name() << " backend, " << recipe.params.rounds
             << " rounds\n";
 
+  // Continued training: the model is read (and its bins checked) before any sample is.
+  std::optional<BoostedModel> init;
+  if (!o.init.empty()) {
+    init = BoostedModel::load(o.init, o.models_dir);
+    if (o.bins && *o.bins != init->bins().count) {
+      throw cli::UsageError("--bins " + std::to_string(*o.bins) + " differs from the --init model's " +
+                            std::to_string(init->bins().count) + " (continued training keeps its bins)");
+    }
+  }
+
   const ChosenSamples train = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
   ChosenSamples validation;
   if (!recipe.validation_pos_sets.empty()) {
@@ -162,6 +175,22 @@ int run_train(const TrainOptions& o) {
   BoostTrainingParams params = recipe.params;
   params.feature_spec = train.spec;
   params.feature_columns = train.columns;
+  std::string init_reference;
+  if (init) {
+    const std::string what = init->path().empty() ? o.init : init->path();
+    if (init->feature_spec() != train.spec) {
+      throw Error(what + ": --init model reads feature spec " + init->feature_spec().name() + " (" +
+                  init->feature_spec().hash() + "), the sets hold " + train.spec.name() + " (" + train.spec.hash() + ")");
+    }
+    const std::string crops = crop_provenance_mismatch(init->training().crops, "the --init model's crops", train.crops,
+                                                       "the sets' crops");
+    if (!crops.empty()) throw Error(what + ": " + crops);
+    params.bins = init->bins();
+    params.init = init->weak_classifiers();
+    init_reference = model_reference(*init) + " (" + what + ")";
+    std::cerr << "rdsf-train: continuing " << init_reference << ": " << params.init.size()
+              << " weak classifiers, then " << params.rounds << " new rounds\n";
+  }
   BoostedModel model = train_boosted_model(train.rows, train.labels, params, progress,
                                            separate ? &validation.rows : nullptr,
                                            separate ? &validation.labels : nullptr, info);
@@ -178,6 +207,7 @@ int run_train(const TrainOptions& o) {
   record.parameters.emplace_back("group_frames", std::to_string(o.group_frames));
   record.parameters.emplace_back("group_by", o.group_by);
   record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
+  if (!init_reference.empty()) record.parameters.emplace_back("init", init_reference);
 
   const std::string path = save_new_model_version(model, name, o.models_dir);
   const ValidationFigures& v = record.validation;

@@ -24,6 +24,7 @@ struct TrainOptions {
   std::optional<int> depth, folds;
   std::optional<double> learning_rate, smoothing;
   std::optional<std::string> calibration;
+  bool histogram_subtraction = false;  ///< --histogram-subtraction
   int group_frames = 30;        ///< frames per validation group block
   std::string group_by = "recording-block";  ///< recording-block, block or recording
   std::string augment = "mirror";  ///< mirror,shift,scale,occlusion or off (chosen by the quality report)
@@ -35,6 +36,9 @@ struct TrainOptions {
   bool feature_spec_given = false;
   std::size_t feature_pool = 0;      ///< see SampleChoice::feature_pool
   std::size_t memory_budget_mb = 4096;
+  /// Continued training: start from this model (path, NAME or NAME/vN; the shipped `people` too): the new
+  /// rounds follow its weak classifiers, on the given sets; the new model keeps both. Empty: from nothing.
+  std::string init;
   std::string inspect;      ///< model to describe instead of training
   int top = 20;             ///< --inspect: features listed
   std::string export_text;  ///< write the chosen samples here instead of training

@@ -1,6 +1,6 @@
 #pragma once
 // Trainers side by side on the same hugeTree-size matrix and the same held-out rows (issue 17): the native
-// Real AdaBoost at depths 1, 2 and 3, and XGBoost (tree_method=hist, depth 1 and 3, through
+// Real AdaBoost at depths 1, 2 and 3 (and 3 with histogram subtraction), and XGBoost (tree_method=hist, depth 1 and 3, through
 // bench/report/xgboost_peer.py and Debian's python3-xgboost; skipped with a note when it is not
 // installed), each trained until a time budget or a round limit, with the held-out AUC after every round.
 // OpenCV's cv::ml::Boost is the report's own training comparison (same matrix, same rows), shown beside.

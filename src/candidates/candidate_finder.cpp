@@ -24,26 +24,49 @@ void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, cons
   } else {
     candidate.colour_crop.release();
   }
-  // Nearest neighbour: output pixel u samples source column window.x + floor((u + 0.5) * w / W).
-  std::vector<int> source_x(static_cast<std::size_t>(crop_size.width));
+  // Nearest neighbour: output pixel u samples source column window.x + floor((u + 0.5) * w / W). The
+  // source columns grow with u, so those inside the image are the outputs inside..inside_end - 1; the
+  // others, and rows outside the image, read 0 (black).
+  thread_local std::vector<int> source_x;
+  source_x.resize(static_cast<std::size_t>(std::max(0, crop_size.width)));
+  int inside = 0, inside_end = 0;
   for (int u = 0; u < crop_size.width; ++u) {
-    source_x[static_cast<std::size_t>(u)] =
-        window.x + static_cast<int>(std::floor((u + 0.5) * window.width / crop_size.width));
+    const int x = window.x + static_cast<int>(std::floor((u + 0.5) * window.width / crop_size.width));
+    source_x[static_cast<std::size_t>(u)] = x;
+    if (x < 0) inside = u + 1;
+    if (x < frame.depth_mm.cols) inside_end = u + 1;
   }
+  inside_end = std::max(inside, inside_end);
+  const int* const xs = source_x.data();
   const cv::Vec3b black(0, 0, 0);
   for (int v = 0; v < crop_size.height; ++v) {
     const int y = window.y + static_cast<int>(std::floor((v + 0.5) * window.height / crop_size.height));
     std::uint16_t* depth_out = candidate.depth_crop.ptr<std::uint16_t>(v);
     cv::Vec3b* colour_out = colour ? candidate.colour_crop.ptr<cv::Vec3b>(v) : nullptr;
     const bool row_inside = y >= 0 && y < frame.depth_mm.rows;
-    const std::uint8_t* label_row = row_inside ? labels.ptr<std::uint8_t>(y) : nullptr;
-    const std::uint16_t* depth_row = row_inside ? frame.depth_mm.ptr<std::uint16_t>(y) : nullptr;
-    const cv::Vec3b* colour_row = (row_inside && colour) ? frame.bgr.ptr<cv::Vec3b>(y) : nullptr;
-    for (int u = 0; u < crop_size.width; ++u) {
-      const int x = source_x[static_cast<std::size_t>(u)];
-      const bool inside = row_inside && x >= 0 && x < frame.depth_mm.cols && label_row[x] == layer;
-      depth_out[u] = inside ? depth_row[x] : 0;
-      if (colour) colour_out[u] = inside ? colour_row[x] : black;
+    const int from = row_inside ? inside : crop_size.width, to = row_inside ? inside_end : crop_size.width;
+    std::fill(depth_out, depth_out + from, std::uint16_t{0});
+    std::fill(depth_out + to, depth_out + crop_size.width, std::uint16_t{0});
+    if (colour) {
+      std::fill(colour_out, colour_out + from, black);
+      std::fill(colour_out + to, colour_out + crop_size.width, black);
+    }
+    if (!row_inside) continue;
+    const std::uint8_t* label_row = labels.ptr<std::uint8_t>(y);
+    const std::uint16_t* depth_row = frame.depth_mm.ptr<std::uint16_t>(y);
+    if (!colour) {
+      for (int u = from; u < to; ++u) {
+        const int x = xs[u];
+        depth_out[u] = label_row[x] == layer ? depth_row[x] : std::uint16_t{0};
+      }
+      continue;
+    }
+    const cv::Vec3b* colour_row = frame.bgr.ptr<cv::Vec3b>(y);
+    for (int u = from; u < to; ++u) {
+      const int x = xs[u];
+      const bool in = label_row[x] == layer;
+      depth_out[u] = in ? depth_row[x] : std::uint16_t{0};
+      colour_out[u] = in ? colour_row[x] : black;
     }
   }
 }

@@ -1,87 +1,183 @@
 #include "rdsf/candidates/column_heights.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace rdsf {
 namespace {
 
-struct Segment {
-  int label, first, last;  // rows first..last of one label
+using Word = std::uint64_t;
+
+// 1 in bit i when byte i of x is not zero.
+inline unsigned nonzero_bytes(Word x) {
+  const Word high = 0x8080808080808080ULL, low = 0x7F7F7F7F7F7F7F7FULL;
+  const Word t = (((x & low) + low) | x) & high;
+  return static_cast<unsigned>((t * 0x0002040810204081ULL) >> 56);
+}
+
+// Bit j when columns c0 + j of rows `above` and `row` differ (j < n <= 64).
+inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, int n) {
+  Word mask = 0;
+  int j = 0;
+#ifdef __SSE2__
+  for (; j + 16 <= n; j += 16) {
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above + j));
+    const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + j));
+    const unsigned same = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(x, y)));
+    mask |= static_cast<Word>(~same & 0xFFFFu) << j;
+  }
+#endif
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__  // the first byte in memory is the word's lowest
+  for (; j + 8 <= n; j += 8) {
+    Word x, y;
+    std::memcpy(&x, above + j, 8);
+    std::memcpy(&y, row + j, 8);
+    mask |= static_cast<Word>(nonzero_bytes(x ^ y)) << j;
+  }
+#endif
+  for (; j < n; ++j) mask |= static_cast<Word>(above[j] != row[j]) << j;
+  return mask;
+}
+
+// One pass over the label image, row by row (no transpose, no pass per layer). A column's segments (rows
+// of one label) end where its label differs from the one above: 16 columns are compared at a time, and
+// each segment is handed to its column's state when it ends, so every column sees its segments top to
+// bottom, as the reference does (tests/support/reference_candidates.hpp). Per column, two bit sets over
+// the labels replace the reference's per-layer flags:
+//   farther bit L  some segment of a label > L since L's last segment (L's nothing_farther is false)
+//   nearer bit L   some segment of a label in 1..L-1 since then (L's something_nearer is true)
+// A segment of label s sets farther bits 1..s-1 and, when s > 0, nearer bits s+1..layer_count; for
+// 1 <= s <= layer_count it then goes on with or restarts label s's run as the reference does and clears
+// s's bits. Segments of label 0 (no reading) change nothing and are skipped; labels above layer_count
+// only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
+// instead of once per layer present in its column, with no other branch on the data. Words: 64-bit words
+// of a bit set (labels 0..layer_count).
+template <int Words>
+class RunScanner {
+ public:
+  RunScanner(int width, int layer_count, int k, const std::vector<int>& occlusion_gap_px)
+      : width_(width), slots_(static_cast<std::size_t>(layer_count) + 1), k_(k) {
+    occlusion_.assign(slots_, 0);
+    for (std::size_t l = 1; l < slots_ && l < occlusion_gap_px.size(); ++l) occlusion_[l] = occlusion_gap_px[l];
+    for (int s = 0; s < 256; ++s) {
+      slot_of_[s] = static_cast<std::uint8_t>(s >= 1 && s <= layer_count ? s : 0);
+      for (int w = 0; w < Words; ++w) below_[s][w] = above_[s][w] = 0;
+      for (int l = 1; l <= layer_count; ++l) {
+        const Word bit = Word{1} << (l % 64);
+        if (l < s) below_[s][l / 64] |= bit;
+        if (s > 0 && l > s) above_[s][l / 64] |= bit;
+      }
+    }
+    columns_.assign(static_cast<std::size_t>(width), Column{});
+    runs_.assign(static_cast<std::size_t>(width) * slots_, Run{});
+  }
+
+  void scan(const cv::Mat1b& labels) {
+    const int height = labels.rows;
+    const std::uint8_t* first_row = labels.ptr<std::uint8_t>(0);
+    for (int c = 0; c < width_; ++c) columns_[static_cast<std::size_t>(c)].label = first_row[c];
+    for (int r = 1; r < height; ++r) {
+      const std::uint8_t* above = labels.ptr<std::uint8_t>(r - 1);
+      const std::uint8_t* row = labels.ptr<std::uint8_t>(r);
+      for (int c0 = 0; c0 < width_; c0 += 64) {
+        Word changed = changed_columns(above + c0, row + c0, std::min(64, width_ - c0));
+        while (changed != 0) {
+          const int c = c0 + __builtin_ctzll(changed);
+          changed &= changed - 1;
+          Column& column = columns_[static_cast<std::size_t>(c)];
+          segment(c, column, r - 1);
+          column.label = row[c];
+          column.first = r;
+        }
+      }
+    }
+    for (int c = 0; c < width_; ++c) segment(c, columns_[static_cast<std::size_t>(c)], height - 1);
+  }
+
+  // The longest run of label l (1..layer_count) in column c.
+  ColumnRun best(int l, int c) const {
+    const Run& run = runs_[static_cast<std::size_t>(c) * slots_ + static_cast<std::size_t>(l)];
+    return {run.top, run.bottom};
+  }
+
+ private:
+  struct Column {
+    Word farther[Words] = {};
+    Word nearer[Words] = {};
+    int first = 0;  // first row of the current segment
+    int label = 0;  // its label
+  };
+  struct Run {
+    int start = -1, last = -1;  // the run going on and the last row of the label in it
+    int top = -1, bottom = -1;  // the longest run so far
+  };
+
+  void segment(int c, Column& column, int last) {
+    const int s = column.label;
+    if (s == 0) return;  // no reading: sets no bit (below_[0], above_[0] are empty), and slot 0 is not reported
+    const int first = column.first;
+    for (int w = 0; w < Words; ++w) {
+      column.farther[w] |= below_[s][w];
+      column.nearer[w] |= above_[s][w];
+    }
+    const int slot = slot_of_[s];
+    const int word = slot / 64;
+    const Word bit = Word{1} << (slot % 64);
+    const bool nothing_farther = (column.farther[word] & bit) == 0;
+    const bool something_nearer = (column.nearer[word] & bit) != 0;
+    column.farther[word] &= ~bit;
+    column.nearer[word] &= ~bit;
+    Run& run = runs_[static_cast<std::size_t>(c) * slots_ + static_cast<std::size_t>(slot)];
+    const int gap = first - run.last - 1;
+    const bool occluded = nothing_farther & something_nearer & (gap <= occlusion_[static_cast<std::size_t>(slot)]);
+    const bool restart = (run.start < 0) | ((gap > k_) & !occluded);
+    run.start = restart ? first : run.start;
+    run.last = last;
+    const bool longer = last - run.start + 1 > (run.top < 0 ? 0 : run.bottom - run.top + 1);
+    run.top = longer ? run.start : run.top;
+    run.bottom = longer ? last : run.bottom;
+  }
+
+  const int width_;
+  const std::size_t slots_;  // labels 0..layer_count
+  const int k_;
+  std::vector<int> occlusion_;
+  std::uint8_t slot_of_[256];
+  Word below_[256][Words], above_[256][Words];
+  std::vector<Column> columns_;
+  std::vector<Run> runs_;  // per column, per slot
 };
 
-// The last row of the run of equal labels that starts at `r`: eight labels compared at a time (the
-// first differing byte of the XOR with the run's label repeated), then byte by byte at the end.
-int run_end(const std::uint8_t* column, int r, int height) {
-  const std::uint64_t repeated = 0x0101010101010101ULL * column[r];
-  int next = r + 1;
-  while (next + 8 <= height) {
-    std::uint64_t word;
-    std::memcpy(&word, column + next, 8);
-    const std::uint64_t differ = word ^ repeated;
-    if (differ != 0) {
-#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-      return next + __builtin_ctzll(differ) / 8 - 1;  // the first byte in memory is the lowest
-#else
-      return next + __builtin_clzll(differ) / 8 - 1;
-#endif
-    }
-    next += 8;
+template <int Words>
+void scan_runs(const cv::Mat1b& labels, int layer_count, int k, const std::vector<int>& occlusion_gap_px,
+               std::vector<std::vector<ColumnRun>>& best) {
+  RunScanner<Words> scanner(labels.cols, layer_count, k, occlusion_gap_px);
+  scanner.scan(labels);
+  for (int l = 1; l <= layer_count; ++l) {
+    for (int c = 0; c < labels.cols; ++c) best[static_cast<std::size_t>(l)][static_cast<std::size_t>(c)] = scanner.best(l, c);
   }
-  while (next < height && column[next] == column[r]) ++next;
-  return next - 1;
 }
 
 }  // namespace
 
 std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int layer_count, int k,
                                                 const std::vector<int>& occlusion_gap_px) {
-  const int width = labels.cols, height = labels.rows;
-  std::vector<std::vector<ColumnRun>> best(static_cast<std::size_t>(layer_count) + 1,
-                                           std::vector<ColumnRun>(static_cast<std::size_t>(width)));
-  // Columns as rows: one contiguous pass each.
-  cv::Mat1b columns;
-  cv::transpose(labels, columns);
-  std::vector<Segment> segments;
-  std::vector<char> present(static_cast<std::size_t>(layer_count) + 1);
-  for (int c = 0; c < width; ++c) {
-    const std::uint8_t* column = columns.ptr<std::uint8_t>(c);
-    segments.clear();
-    std::fill(present.begin(), present.end(), 0);
-    for (int r = 0; r < height;) {
-      const int label = column[r];
-      const int end = run_end(column, r, height);
-      segments.push_back({label, r, end});
-      if (label > 0 && label <= layer_count) present[static_cast<std::size_t>(label)] = 1;
-      r = end + 1;
-    }
-    for (int label = 1; label <= layer_count; ++label) {
-      if (!present[static_cast<std::size_t>(label)]) continue;
-      const int occlusion_limit =
-          static_cast<std::size_t>(label) < occlusion_gap_px.size() ? occlusion_gap_px[static_cast<std::size_t>(label)] : 0;
-      ColumnRun& b = best[static_cast<std::size_t>(label)][static_cast<std::size_t>(c)];
-      int start = -1, last = -1;
-      // Since `last`: no pixel of a farther layer, and some of a nearer one (missing readings are allowed
-      // too: a Kinect leaves a shadow of no reading beside what stands in front).
-      bool nothing_farther = true, something_nearer = false;
-      for (const Segment& s : segments) {
-        if (s.label != label) {
-          if (s.label > label) nothing_farther = false;
-          if (s.label > 0 && s.label < label) something_nearer = true;
-          continue;
-        }
-        const int gap = s.first - last - 1;
-        const bool occluded = nothing_farther && something_nearer && gap <= occlusion_limit;
-        if (start < 0 || (gap > k && !occluded)) start = s.first;
-        last = s.last;
-        nothing_farther = true;
-        something_nearer = false;
-        if (last - start + 1 > b.length()) {
-          b.top = start;
-          b.bottom = last;
-        }
-      }
-    }
+  std::vector<std::vector<ColumnRun>> best(static_cast<std::size_t>(std::max(0, layer_count)) + 1,
+                                           std::vector<ColumnRun>(static_cast<std::size_t>(labels.cols)));
+  if (labels.empty() || layer_count <= 0) return best;
+  // Labels are bytes: no pixel holds a label above 255, so those layers have no runs.
+  const int counted = std::min(layer_count, 255);
+  if (counted < 64) {
+    scan_runs<1>(labels, counted, k, occlusion_gap_px, best);
+  } else if (counted < 128) {
+    scan_runs<2>(labels, counted, k, occlusion_gap_px, best);
+  } else {
+    scan_runs<4>(labels, counted, k, occlusion_gap_px, best);
   }
   return best;
 }

@@ -146,36 +146,41 @@ class ObjectShaper {
       int far = start;
       for (int c = start + direction; c >= lo && c <= hi && std::abs(c - start) <= reach && !passes(c); c += direction) far = c;
       if (far == start) continue;
-      // The band's pixels per column from the object's edge column (start) outwards.
-      const int a = std::min(far, start), b = std::max(far, start);
-      std::vector<int> count(static_cast<std::size_t>(b - a + 1), 0), first_row(count.size(), -1);
-      std::vector<double> depth_sum(count.size(), 0.0);
-      for (int y = row_lo; y <= row_hi; y += 2) {
-        const std::uint8_t* label = layer_.labels->ptr<std::uint8_t>(y);
-        const std::uint16_t* depth = layer_.depth_mm->ptr<std::uint16_t>(y);
-        for (int c = a; c <= b; ++c) {
-          if (label[c] != layer_.label) continue;
-          const std::size_t i = static_cast<std::size_t>(c - a);
-          if (count[i]++ == 0) first_row[i] = y;
-          depth_sum[i] += depth[c];
+      // The band's pixels per column, gathered kChunk columns at a time from the object's edge column
+      // (start) outwards, only as far as the walk below goes (it stops after column_gap columns that do
+      // not continue the object); the same counts as gathering start..far at once.
+      const int n = std::abs(far - start) + 1;  // columns start, start + direction, ..., far
+      band_.assign(static_cast<std::size_t>(n), BandColumn{});
+      int gathered = 0;
+      // Sums of at most 65,535 per pixel over every other row: exact in 32 bits below 131,072 rows.
+      const bool narrow_sums = row_hi - row_lo < 131072;
+      const auto gather = [&](int until) {  // steps gathered..until-1 from start
+        if (narrow_sums) {
+          gather_band<std::uint32_t>(direction, start, n, gathered, until, row_lo, row_hi);
+        } else {
+          gather_band<std::uint64_t>(direction, start, n, gathered, until, row_lo, row_hi);
         }
-      }
-      auto mean_depth = [&](int c) {
-        const std::size_t i = static_cast<std::size_t>(c - a);
-        return count[i] > 0 ? depth_sum[i] / count[i] : 0.0;
       };
+      auto mean_depth = [&](int step) {
+        const BandColumn& b = band_[static_cast<std::size_t>(step)];
+        return b.count > 0 ? static_cast<double>(b.depth_sum) / b.count : 0.0;
+      };
+      // First the columns a walk that takes none needs (most objects have nothing attached), then kChunk more.
+      gather(1 + std::min(kChunk, std::max(1, params_.column_gap + 1)));
       // A piece continues the object: its mean depth is within fit_depth_step_mm of the last column taken.
-      double previous_depth = mean_depth(start);
+      double previous_depth = mean_depth(0);
       int edge = start, gap = 0, top = o.fit_top;
-      for (int c = start + direction; c >= a && c <= b; c += direction) {
-        const std::size_t i = static_cast<std::size_t>(c - a);
-        const bool continues = count[i] >= 2 && (previous_depth <= 0 || params_.fit_depth_step_mm <= 0 ||
-                                                 std::abs(mean_depth(c) - previous_depth) <= params_.fit_depth_step_mm);
+      for (int step = 1; step < n; ++step) {
+        if (step >= gathered) gather(step + kChunk);
+        const int c = start + direction * step;
+        const BandColumn& b = band_[static_cast<std::size_t>(step)];
+        const bool continues = b.count >= 2 && (previous_depth <= 0 || params_.fit_depth_step_mm <= 0 ||
+                                                std::abs(mean_depth(step) - previous_depth) <= params_.fit_depth_step_mm);
         if (continues) {
           edge = c;
           gap = 0;
-          top = std::min(top, first_row[i]);
-          previous_depth = mean_depth(c);
+          top = std::min(top, b.first_row);
+          previous_depth = mean_depth(step);
         } else if (++gap > params_.column_gap) {
           break;
         }
@@ -183,6 +188,36 @@ class ObjectShaper {
       (direction < 0 ? o.fit_first : o.fit_last) = edge;
       o.fit_top = top;
     }
+  }
+
+  // fit(): the band's pixels of the columns at steps gathered..until-1 (of n) from `start` in `direction`,
+  // rows row_lo..row_hi, every other one, into band_. Left to right in memory without a branch on the
+  // data (the compiler vectorises it), then stored by step.
+  template <typename Sum>
+  void gather_band(int direction, int start, int n, int& gathered, int until, int row_lo, int row_hi) const {
+    const int from_step = gathered, to_step = std::min(until, n);
+    if (to_step <= from_step) return;
+    const int c0 = direction < 0 ? start - (to_step - 1) : start + from_step;  // leftmost column
+    const int count = to_step - from_step;
+    int in_count[kChunk + 1] = {}, first_row[kChunk + 1];
+    Sum depth_sum[kChunk + 1] = {};
+    std::fill(first_row, first_row + count, -1);
+    const int layer_label = layer_.label;
+    for (int y = row_lo; y <= row_hi; y += 2) {
+      const std::uint8_t* label = layer_.labels->ptr<std::uint8_t>(y) + c0;
+      const std::uint16_t* depth = layer_.depth_mm->ptr<std::uint16_t>(y) + c0;
+      for (int j = 0; j < count; ++j) {
+        const int in = label[j] == layer_label;
+        first_row[j] = (in != 0 && first_row[j] < 0) ? y : first_row[j];
+        in_count[j] += in;
+        depth_sum[j] += static_cast<Sum>(in) * depth[j];
+      }
+    }
+    for (int j = 0; j < count; ++j) {
+      const int step = direction < 0 ? to_step - 1 - j : from_step + j;
+      band_[static_cast<std::size_t>(step)] = {in_count[j], first_row[j], static_cast<std::int64_t>(depth_sum[j])};
+    }
+    gathered = to_step;
   }
 
   // Step 2: neighbours whose fitted extents touch are one object when together no wider than a person.
@@ -222,7 +257,8 @@ class ObjectShaper {
   // Median depth of the layer's pixels in column c's run (every row_step-th row); 0 when none.
   double column_depth_mm(int c, int row_step = 2) const {
     const ColumnRun& r = run(c);
-    std::vector<std::uint16_t> depths;
+    std::vector<std::uint16_t>& depths = depths_;  // reused: called for many columns of a layer
+    depths.clear();
     for (int y = r.top; y >= 0 && y <= r.bottom; y += row_step) {
       if ((*layer_.labels)(y, c) == layer_.label) depths.push_back((*layer_.depth_mm)(y, c));
     }
@@ -327,6 +363,14 @@ class ObjectShaper {
   const std::vector<ColumnRun>& runs_;
   const int width_;
   std::vector<char> passing_;
+  // fit(): the band's pixels of one column (count, first row holding one, sum of their depths).
+  struct BandColumn {
+    int count = 0, first_row = -1;
+    std::int64_t depth_sum = 0;  // at most 65,535 per pixel, half of the rows: int sums suffice below 65,536 rows
+  };
+  static constexpr int kChunk = 16;  // columns gathered at a time
+  mutable std::vector<BandColumn> band_;
+  mutable std::vector<std::uint16_t> depths_;  // column_depth_mm()'s depths
 };
 
 }  // namespace

@@ -52,6 +52,7 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
     out.emplace_back("smoothing", p.smoothing > 0.0 ? number_text(p.smoothing) : "auto (1/N)");
     out.emplace_back("depth", std::to_string(p.depth));
     out.emplace_back("learning_rate", number_text(p.learning_rate));
+    if (p.histogram_subtraction) out.emplace_back("histogram_subtraction", "on");
   }
   out.emplace_back("calibration", p.calibration);
   if (p.folds > 0) out.emplace_back("folds", std::to_string(p.folds));
@@ -60,6 +61,7 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
   out.emplace_back("seed", std::to_string(p.seed));
   out.emplace_back("report_every", std::to_string(p.report_every));
   out.emplace_back("early_stopping", std::to_string(p.early_stopping));
+  if (!p.init.empty()) out.emplace_back("init_weak_classifiers", std::to_string(p.init.size()));
   return out;
 }
 
@@ -163,6 +165,16 @@ TrainingSide training_side(const std::vector<int>& labels, const std::vector<std
   return side;
 }
 
+// Continued training: the score F0 of params.init on each of `rows`' rows in `index`.
+std::vector<double> init_scores(const cv::Mat1f& rows, const std::vector<std::size_t>& index, const BoostTrainingParams& params) {
+  std::vector<double> scores(index.size(), 0.0);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    const float* row = rows[static_cast<int>(index[k])];
+    for (const WeakClassifier& w : params.init) scores[k] += w.respond_row(row, params.bins);
+  }
+  return scores;
+}
+
 // Why boosting ended.
 enum class Stop {
   all_rounds,      ///< every round of params.rounds
@@ -176,7 +188,9 @@ class RoundObserver {
   RoundObserver(const BoostTrainingParams& params, const ValidationView& validation, bool validating,
                 ColumnFeatures feature_of, const TrainingProgressFn& progress, Clock::time_point start)
       : params_(params), validation_(validation), validating_(validating), feature_of_(feature_of),
-        progress_(progress), start_(start), scores_(validation.labels.size(), 0.0) {}
+        progress_(progress), start_(start), scores_(validation.labels.size(), 0.0) {
+    if (!params.init.empty() && validation.rows != nullptr) scores_ = init_scores(*validation.rows, validation.index, params);
+  }
 
   /// Returns false to stop (early stopping).
   bool after_round(int round, const WeakClassifier& weak, double train_error, double round_s, double mean_round_s) {
@@ -260,7 +274,9 @@ Boosted boost_native(const cv::Mat1f& rows, const TrainingSide& side, const Boos
   rp.threads = params.threads;
   rp.depth = params.depth;
   rp.learning_rate = params.learning_rate;
+  rp.histogram_subtraction = params.histogram_subtraction;
   RealAdaBoost booster(binned, side.labels, rp);
+  if (!params.init.empty()) booster.start_from_scores(init_scores(rows, side.index, params));
   const Clock::time_point boost_start = Clock::now();
   for (int round = 1; round <= params.rounds; ++round) {
     const Clock::time_point round_start = Clock::now();
@@ -340,6 +356,7 @@ BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const 
     }
   }
 
+  weak.insert(weak.begin(), params.init.begin(), params.init.end());  // continued training: its model first
   BoostedModel model(params.feature_spec, params.bins, std::move(weak));
   if (validation.has_both_classes()) {
     std::vector<double> final_scores(validation.labels.size(), 0.0);
@@ -404,6 +421,18 @@ void validate_training_params(const BoostTrainingParams& p) {
     throw Error("calibration '" + p.calibration + "' is not known (platt or none)");
   }
   p.feature_spec.validate();
+  if (!p.init.empty()) {
+    if (p.backend != BoostBackend::native) throw Error("continued training (--init) needs the native backend");
+    if (!p.feature_columns.empty()) {
+      throw Error("continued training (--init) needs every feature of the spec in the rows (--feature-pool 0)");
+    }
+    for (const WeakClassifier& w : p.init) {
+      if (w.feature < 0 || w.feature >= p.feature_spec.dimension()) {
+        throw Error("continued training (--init): the model reads feature " + std::to_string(w.feature) +
+                    ", outside " + p.feature_spec.name() + "'s " + std::to_string(p.feature_spec.dimension()));
+      }
+    }
+  }
   if (!p.feature_columns.empty()) {
     if (p.backend != BoostBackend::native) throw Error("a feature pool needs the native backend");
     std::vector<int> sorted = p.feature_columns;
@@ -507,12 +536,15 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
       for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
       renumber_features(weak_on_rows, [&column_of](int feature) { return column_of.at(feature); });
     }
-    const std::size_t rounds = weak_on_rows.size();
+    // With continued training the fold's model starts with params.init: the rounds are the new ones.
+    const std::size_t first = params.init.size();
+    const std::size_t rounds = weak_on_rows.size() - first;
     if (per_round.size() < rounds) per_round.resize(rounds);
     for (int i : held) {
       double h = 0.0;
+      for (std::size_t r = 0; r < first; ++r) h += weak_on_rows[r].respond_row(rows[i], model.bins());
       for (std::size_t r = 0; r < rounds; ++r) {
-        h += weak_on_rows[r].respond_row(rows[i], model.bins());
+        h += weak_on_rows[first + r].respond_row(rows[i], model.bins());
         per_round[r].push_back(h);
       }
       pooled_scores.push_back(h);
@@ -547,7 +579,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
     const RocSummary s = summarise_roc(per_round[r], pooled_labels);
     RoundFigures f;
     f.round = round;
-    f.feature = model.weak_classifiers()[r].feature;
+    f.feature = model.weak_classifiers()[params.init.size() + r].feature;
     f.validation_error = s.error_rate;
     f.auc = s.auc;
     f.tar_at_far_1 = s.tar_at_far_1;

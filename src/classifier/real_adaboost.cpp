@@ -6,16 +6,18 @@
 #include <numeric>
 #include <string>
 
+#include "rdsf/classifier/bin_histograms.hpp"
 #include "rdsf/classifier/parallel_chunks.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
 namespace {
 
-constexpr int kMaxBins = 256;
+constexpr int kMaxBins = kMaxHistogramBins;
 
 // Per-bin weight sums of one feature: sums[2 * bin + y] (y = 1 person, 0 not). Four partial tables break
-// the dependency between consecutive samples that fall into the same bin.
+// the dependency between consecutive samples that fall into the same bin. The chosen feature's responses
+// come from these sums; node_histograms (bin_histograms.hpp) takes the same sums for many features.
 void feature_histogram(const std::uint8_t* bins, const std::uint8_t* y, const double* w, std::size_t n,
                        const std::size_t* subset, std::size_t subset_size, int bin_count, double* sums) {
   double part[4][2 * kMaxBins];
@@ -44,43 +46,6 @@ void feature_histogram(const std::uint8_t* bins, const std::uint8_t* y, const do
     }
   }
   for (std::size_t j = 0; j < width; ++j) sums[j] = (part[0][j] + part[1][j]) + (part[2][j] + part[3][j]);
-}
-
-// Per-bin weight sums of four features at once when the samples are ordered positives first
-// ([0, positives) have y = 1): the weight of a sample is loaded once for the four features, and two partial
-// tables per feature break the chains of consecutive samples in the same bin (RDSF values crowd at 0 and 1).
-void four_feature_histograms(const std::uint8_t* const bins[4], const double* w, std::size_t positives,
-                             std::size_t n, int bin_count, double* const sums[4]) {
-  double part[2][4][2 * kMaxBins];
-  const std::size_t width = static_cast<std::size_t>(2 * bin_count);
-  for (auto& a : part) {
-    for (auto& b : a) std::fill(b, b + width, 0.0);
-  }
-  const std::uint8_t *b0 = bins[0], *b1 = bins[1], *b2 = bins[2], *b3 = bins[3];
-  for (int y = 1; y >= 0; --y) {
-    const std::size_t begin = y == 1 ? 0 : positives, end = y == 1 ? positives : n;
-    std::size_t i = begin;
-    for (; i + 2 <= end; i += 2) {
-      const double wa = w[i], wb = w[i + 1];
-      part[0][0][(b0[i] << 1) | y] += wa;
-      part[0][1][(b1[i] << 1) | y] += wa;
-      part[0][2][(b2[i] << 1) | y] += wa;
-      part[0][3][(b3[i] << 1) | y] += wa;
-      part[1][0][(b0[i + 1] << 1) | y] += wb;
-      part[1][1][(b1[i + 1] << 1) | y] += wb;
-      part[1][2][(b2[i + 1] << 1) | y] += wb;
-      part[1][3][(b3[i + 1] << 1) | y] += wb;
-    }
-    for (; i < end; ++i) {
-      part[0][0][(b0[i] << 1) | y] += w[i];
-      part[0][1][(b1[i] << 1) | y] += w[i];
-      part[0][2][(b2[i] << 1) | y] += w[i];
-      part[0][3][(b3[i] << 1) | y] += w[i];
-    }
-  }
-  for (int f = 0; f < 4; ++f) {
-    for (std::size_t j = 0; j < width; ++j) sums[f][j] = part[0][f][j] + part[1][f][j];
-  }
 }
 
 // The best two-way split of a feature's bins, bins <= t left and the others right: the smallest
@@ -150,6 +115,24 @@ RealAdaBoost::RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, Re
   scores_.assign(labels_.size(), 0.0);
 }
 
+void RealAdaBoost::start_from_scores(const std::vector<double>& scores) {
+  if (scores.size() != labels_.size()) {
+    throw Error("Real AdaBoost: " + std::to_string(scores.size()) + " starting scores for " +
+                std::to_string(labels_.size()) + " samples");
+  }
+  if (!weak_.empty()) throw Error("Real AdaBoost: starting scores are set before the first round");
+  scores_ = scores;
+  // exp(-y F) scaled by the largest exponent first, so that large scores cannot overflow.
+  double largest = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < scores.size(); ++i) largest = std::max(largest, labels_[i] == 1 ? -scores[i] : scores[i]);
+  double total = 0.0;
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    weights_[i] = std::exp((labels_[i] == 1 ? -scores[i] : scores[i]) - largest);
+    total += weights_[i];
+  }
+  for (double& w : weights_) w /= total;
+}
+
 std::vector<std::size_t> RealAdaBoost::trimmed_samples() const {
   std::vector<std::size_t> order(weights_.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -163,65 +146,24 @@ std::vector<std::size_t> RealAdaBoost::trimmed_samples() const {
   return order;
 }
 
-RealAdaBoost::TableFit RealAdaBoost::best_table(const std::vector<std::size_t>* subset,
-                                                const std::vector<std::uint8_t>& y, bool split) const {
-  const std::size_t n = data_.samples(), features = data_.features();
+double RealAdaBoost::table_z(const double* sums, bool split) const {
   const int bin_count = data_.scheme().count;
-  // Best feature per chunk, then across chunks in chunk order (lowest index wins ties). Chunks are made of
-  // whole blocks of four features, so every feature's sums are taken the same way whatever the thread count.
-  const std::size_t blocks = (features + 3) / 4;
-  const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads_), blocks));
-  std::vector<double> chunk_z(static_cast<std::size_t>(chunks), std::numeric_limits<double>::infinity());
-  std::vector<std::size_t> chunk_feature(static_cast<std::size_t>(chunks), 0);
-  const std::size_t step = (blocks + static_cast<std::size_t>(chunks) - 1) / static_cast<std::size_t>(chunks);
-  const std::size_t* subset_data = subset == nullptr ? nullptr : subset->data();
-  const std::size_t subset_size = subset == nullptr ? 0 : subset->size();
-  parallel_chunks(blocks, chunks, [&](std::size_t block0, std::size_t block1) {
-    const std::size_t chunk = block0 / step;
-    const std::size_t f0 = block0 * 4, f1 = std::min(features, block1 * 4);
-    double sums[4][2 * kMaxBins];
-    double best_z = std::numeric_limits<double>::infinity();
-    std::size_t best_f = f0;
-    auto consider = [&](std::size_t f, const double* s) {
-      double z = 0.0;
-      if (split) {
-        z = split_z(s, bin_count).first;
-      } else {
-        for (int j = 0; j < bin_count; ++j) z += std::sqrt(s[2 * j] * s[2 * j + 1]);
-        z *= 2.0;
-      }
-      if (z < best_z) {
-        best_z = z;
-        best_f = f;
-      }
-    };
-    std::size_t f = f0;
-    if (subset == nullptr && positives_first_) {
-      for (; f + 4 <= f1; f += 4) {
-        const std::uint8_t* const bins4[4] = {data_.feature(f), data_.feature(f + 1), data_.feature(f + 2),
-                                              data_.feature(f + 3)};
-        double* const sums4[4] = {sums[0], sums[1], sums[2], sums[3]};
-        four_feature_histograms(bins4, weights_.data(), positives_, n, bin_count, sums4);
-        for (std::size_t k = 0; k < 4; ++k) consider(f + k, sums[k]);
-      }
-    }
-    for (; f < f1; ++f) {
-      feature_histogram(data_.feature(f), y.data(), weights_.data(), n, subset_data, subset_size, bin_count, sums[0]);
-      consider(f, sums[0]);
-    }
-    chunk_z[chunk] = best_z;
-    chunk_feature[chunk] = best_f;
-  });
-  std::size_t best = 0;
-  for (std::size_t c = 1; c < chunk_z.size(); ++c) {
-    if (chunk_z[c] < chunk_z[best]) best = c;
-  }
+  if (split) return split_z(sums, bin_count).first;
+  double z = 0.0;
+  for (int j = 0; j < bin_count; ++j) z += std::sqrt(sums[2 * j] * sums[2 * j + 1]);
+  return 2.0 * z;
+}
+
+RealAdaBoost::TableFit RealAdaBoost::fit_feature(std::size_t feature, double z, const std::vector<std::size_t>* subset,
+                                                 const std::vector<std::uint8_t>& y, bool split) const {
+  const int bin_count = data_.scheme().count;
   TableFit fit;
-  fit.feature = chunk_feature[best];
-  fit.z = chunk_z[best];
+  fit.feature = feature;
+  fit.z = z;
   // Responses of the chosen feature, from the same samples as its histograms.
   double sums[2 * kMaxBins];
-  feature_histogram(data_.feature(fit.feature), y.data(), weights_.data(), n, subset_data, subset_size, bin_count,
+  feature_histogram(data_.feature(feature), y.data(), weights_.data(), data_.samples(),
+                    subset == nullptr ? nullptr : subset->data(), subset == nullptr ? 0 : subset->size(), bin_count,
                     sums);
   fit.responses.resize(static_cast<std::size_t>(bin_count));
   if (split) {
@@ -233,6 +175,120 @@ RealAdaBoost::TableFit RealAdaBoost::best_table(const std::vector<std::size_t>* 
     fit.responses[static_cast<std::size_t>(j)] = 0.5 * std::log((sums[2 * j + 1] + eps_) / (sums[2 * j] + eps_));
   }
   return fit;
+}
+
+std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<const std::vector<std::size_t>*>& members,
+                                                              const std::vector<std::uint8_t>& y, bool split,
+                                                              const Subtraction* derived, std::vector<double>* keep) const {
+  const std::size_t n = data_.samples(), features = data_.features(), nodes = members.size();
+  const int bin_count = data_.scheme().count;
+  const std::size_t width = 2 * static_cast<std::size_t>(bin_count);
+  // Nodes whose sums are taken (direct); with histogram subtraction the others are parent - sibling.
+  std::vector<std::size_t> direct_of(nodes, 0);
+  std::vector<const std::vector<std::size_t>*> direct_lists;
+  for (std::size_t j = 0; j < nodes; ++j) {
+    if (derived != nullptr && derived->sibling[j] >= 0) continue;
+    direct_of[j] = direct_lists.size();
+    direct_lists.push_back(members[j]);
+  }
+  const std::size_t direct = direct_lists.size();
+  if (keep != nullptr) keep->resize(nodes * features * width);  // every entry is written below
+  // The two-part sums apply to the whole sample set ordered positives first (members[0] null); every
+  // other set of nodes takes the four-part sums of NodeSamples.
+  const bool two_part = nodes == 1 && members[0] == nullptr && positives_first_;
+  std::vector<std::size_t> all;
+  std::vector<const std::vector<std::size_t>*> lists = members;
+  if (nodes == 1 && members[0] == nullptr && !two_part) {
+    all.resize(n);
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    lists[0] = &all;
+  }
+  if (!two_part && direct == nodes) direct_lists = lists;
+  NodeSamples samples = two_part ? NodeSamples({}, y, 0) : NodeSamples(direct_lists, y, n);
+  if (!two_part) samples.gather_weights(weights_);
+  // Features of one pass: eight two-part (4 tables of 64 doubles per feature: 16 KiB; four above 64
+  // bins, whose tables take 256), or for the four-part sums (8 tables of 64 doubles per node and
+  // feature: 4 KiB) the count that was fastest on the AMD EPYC of docs/performance.md, keeping the tables
+  // within its 32 KiB first-level data cache: 4 for one node, 2 for 2-4 nodes, else 1.
+  const int pass = two_part ? (bin_count > 64 ? 4 : 8) : bin_count > 64 || direct > 4 ? 1 : direct == 1 ? 4 : 2;
+  // Best feature per chunk and node, then across chunks in chunk order (lowest index wins ties). Chunks
+  // are made of whole blocks of four features, so every feature's sums are taken the same way whatever
+  // the thread count: in two-part passes, except the last features % 4, which take the four-part sums
+  // of feature_histogram.
+  const std::size_t blocks = (features + 3) / 4;
+  const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads_), blocks));
+  std::vector<double> chunk_z(static_cast<std::size_t>(chunks) * nodes, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> chunk_feature(static_cast<std::size_t>(chunks) * nodes, 0);
+  const std::size_t step = (blocks + static_cast<std::size_t>(chunks) - 1) / static_cast<std::size_t>(chunks);
+  parallel_chunks(blocks, chunks, [&](std::size_t block0, std::size_t block1) {
+    const std::size_t chunk = block0 / step;
+    const std::size_t f0 = block0 * 4, f1 = std::min(features, block1 * 4);
+    std::vector<double> sums(8 * nodes * width), difference(width);
+    double* best_z = chunk_z.data() + chunk * nodes;
+    std::size_t* best_f = chunk_feature.data() + chunk * nodes;
+    for (std::size_t k = 0; k < nodes; ++k) best_f[k] = f0;
+    auto consider = [&](std::size_t f, std::size_t node, const double* s) {
+      if (keep != nullptr) std::copy(s, s + width, keep->data() + (node * features + f) * width);
+      const double z = table_z(s, split);
+      if (z < best_z[node]) {
+        best_z[node] = z;
+        best_f[node] = f;
+      }
+    };
+    auto sums_of = [&](std::size_t k) { return sums.data() + k * width; };
+    std::size_t f = f0;
+    while (f < f1) {
+      const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(pass), f1 - f));
+      const std::uint8_t* bins[8];
+      double* out[8 * 8];
+      for (int k = 0; k < count; ++k) bins[k] = data_.feature(f + static_cast<std::size_t>(k));
+      if (two_part && count >= 4) {
+        const int whole = count >= 8 ? 8 : 4;
+        for (int k = 0; k < whole; ++k) out[k] = sums_of(static_cast<std::size_t>(k));
+        two_part_histograms(bins, whole, weights_.data(), positives_, n, bin_count, out);
+        for (int k = 0; k < whole; ++k) consider(f + static_cast<std::size_t>(k), 0, out[k]);
+        f += static_cast<std::size_t>(whole);
+      } else if (two_part) {
+        feature_histogram(data_.feature(f), y.data(), weights_.data(), n, nullptr, 0, bin_count, sums_of(0));
+        consider(f, 0, sums_of(0));
+        ++f;
+      } else {
+        for (std::size_t k = 0; k < static_cast<std::size_t>(count) * direct; ++k) out[k] = sums_of(k);
+        node_histograms(bins, count, samples, bin_count, out);
+        for (int k = 0; k < count; ++k) {
+          const std::size_t fk = f + static_cast<std::size_t>(k);
+          for (std::size_t node = 0; node < nodes; ++node) {
+            if (derived == nullptr || derived->sibling[node] < 0) {
+              consider(fk, node, out[static_cast<std::size_t>(k) * direct + direct_of[node]]);
+              continue;
+            }
+            // parent - sibling; a difference within the rounding of the parent's sum (relative 1e-9) is 0:
+            // an empty bin must stay empty, or a pure node's Z is no longer 0 and ties break at random.
+            const double* parent =
+                derived->parent_sums->data() + (static_cast<std::size_t>(derived->parent[node]) * features + fk) * width;
+            const double* sibling =
+                out[static_cast<std::size_t>(k) * direct + direct_of[static_cast<std::size_t>(derived->sibling[node])]];
+            for (std::size_t j = 0; j < width; ++j) {
+              const double d = parent[j] - sibling[j];
+              difference[j] = d > 1e-9 * parent[j] ? d : 0.0;
+            }
+            consider(fk, node, difference.data());
+          }
+        }
+        f += static_cast<std::size_t>(count);
+      }
+    }
+  });
+  std::vector<TableFit> fits;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    std::size_t best = 0;
+    for (std::size_t c = 1; c < static_cast<std::size_t>(chunks); ++c) {
+      if (chunk_z[c * nodes + node] < chunk_z[best * nodes + node]) best = c;
+    }
+    fits.push_back(fit_feature(chunk_feature[best * nodes + node], chunk_z[best * nodes + node],
+                               two_part ? nullptr : lists[node], y, split));
+  }
+  return fits;
 }
 
 RealAdaBoostRound RealAdaBoost::next_round() {
@@ -247,7 +303,7 @@ RealAdaBoostRound RealAdaBoost::next_round() {
   std::vector<double> response(n);  // the weak classifier's (shrunk) response per sample
   double z = 0.0;
   if (params_.depth <= 1) {
-    TableFit fit = best_table(trimmed.empty() ? nullptr : &trimmed, y, false);
+    TableFit fit = std::move(best_tables({trimmed.empty() ? nullptr : &trimmed}, y, false)[0]);
     weak.kind = WeakClassifier::Kind::Lut;
     weak.feature = static_cast<int>(fit.feature);
     for (double& r : fit.responses) r *= nu;
@@ -262,35 +318,73 @@ RealAdaBoostRound RealAdaBoost::next_round() {
     weak.nodes.resize(node_count);
     std::vector<std::size_t> node_of(n, 0);
     const std::size_t first_leaf = node_count / 2;
-    for (std::size_t k = 0; k < node_count; ++k) {
-      // The samples of node k that enter its histograms (trimmed ones stay out, as at depth 1).
-      std::vector<std::size_t> members;
-      double mass = 0.0;
+    // All the nodes of a level share one pass over the bins (node_histograms). Their members are fixed
+    // before the level: routing a node moves its samples to the next level only.
+    // Histogram subtraction: the sums of the previous level's fitted nodes and their index among them.
+    std::vector<double> parent_sums, level_sums;
+    std::vector<std::ptrdiff_t> parent_index(node_count, -1);
+    for (std::size_t k0 = 0; k0 < node_count; k0 = 2 * k0 + 1) {
+      const std::size_t k1 = 2 * k0 + 1;  // the level is nodes k0 .. k1 - 1
+      const bool inner = k0 < first_leaf;
+      // The samples of each node that enter its histograms, ascending (trimmed ones stay out, as at
+      // depth 1), and their weight.
+      std::vector<std::vector<std::size_t>> members(k1 - k0);
       if (trimmed.empty()) {
-        for (std::size_t i = 0; i < n; ++i) {
-          if (node_of[i] == k) members.push_back(i);
-        }
+        for (std::size_t i = 0; i < n; ++i) members[node_of[i] - k0].push_back(i);
       } else {
-        for (std::size_t i : trimmed) {
-          if (node_of[i] == k) members.push_back(i);
+        for (std::size_t i : trimmed) members[node_of[i] - k0].push_back(i);
+      }
+      std::vector<std::size_t> fitted;
+      std::vector<const std::vector<std::size_t>*> lists;
+      for (std::size_t k = k0; k < k1; ++k) {
+        double mass = 0.0;
+        for (std::size_t i : members[k - k0]) mass += weights_[i];
+        LutNode& node = weak.nodes[k];
+        if (k > 0 && mass <= 1e-12) {
+          // Nothing reaches it: a table of zeros (a leaf responds 0, an inner node sends everything left).
+          node.feature = weak.nodes[(k - 1) / 2].feature;
+          node.responses.assign(static_cast<std::size_t>(data_.scheme().count), inner ? -1.0 : 0.0);
+        } else {
+          fitted.push_back(k);
+          lists.push_back(k == 0 && trimmed.empty() ? nullptr : &members[k - k0]);
         }
       }
-      for (std::size_t i : members) mass += weights_[i];
-      LutNode& node = weak.nodes[k];
-      if (k > 0 && mass <= 1e-12) {
-        // Nothing reaches it: a table of zeros (a leaf responds 0, an inner node sends everything left).
-        node.feature = weak.nodes[(k - 1) / 2].feature;
-        node.responses.assign(static_cast<std::size_t>(data_.scheme().count), k < first_leaf ? -1.0 : 0.0);
-      } else {
-        const TableFit fit = best_table(k == 0 && trimmed.empty() ? nullptr : &members, y, k < first_leaf);
-        node.feature = static_cast<int>(fit.feature);
-        node.responses = fit.responses;
-        if (k >= first_leaf) z += fit.z;
+      const std::vector<std::ptrdiff_t> parent_of_level = parent_index;
+      std::fill(parent_index.begin(), parent_index.end(), -1);  // set again below for this level's nodes
+      if (!fitted.empty()) {
+        // With subtraction, of two fitted children of a fitted parent the one with fewer samples is
+        // counted and the other is parent - sibling.
+        Subtraction sub;
+        sub.parent_sums = &parent_sums;
+        sub.parent.assign(fitted.size(), -1);
+        sub.sibling.assign(fitted.size(), -1);
+        bool any = false;
+        for (std::size_t j = 0; params_.histogram_subtraction && j + 1 < fitted.size(); ++j) {
+          const std::size_t k = fitted[j];
+          if (k % 2 == 0 || fitted[j + 1] != k + 1 || parent_of_level[(k - 1) / 2] < 0) continue;
+          const std::size_t bigger = members[k - k0].size() >= members[k + 1 - k0].size() ? j : j + 1;
+          sub.parent[bigger] = parent_of_level[(k - 1) / 2];
+          sub.sibling[bigger] = static_cast<std::ptrdiff_t>(bigger == j ? j + 1 : j);
+          any = true;
+        }
+        const bool keep = params_.histogram_subtraction && inner;
+        std::vector<TableFit> fits = best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &level_sums : nullptr);
+        if (keep) {
+          for (std::size_t j = 0; j < fitted.size(); ++j) parent_index[fitted[j]] = static_cast<std::ptrdiff_t>(j);
+          parent_sums.swap(level_sums);
+        }
+        for (std::size_t j = 0; j < fitted.size(); ++j) {
+          LutNode& node = weak.nodes[fitted[j]];
+          node.feature = static_cast<int>(fits[j].feature);
+          node.responses = std::move(fits[j].responses);
+          if (!inner) z += fits[j].z;
+        }
       }
-      if (k < first_leaf) {
-        const std::uint8_t* bins = data_.feature(static_cast<std::size_t>(node.feature));
+      if (inner) {
         for (std::size_t i = 0; i < n; ++i) {
-          if (node_of[i] == k) node_of[i] = 2 * k + (node.responses[bins[i]] > 0.0 ? 2 : 1);
+          const std::size_t k = node_of[i];
+          const LutNode& node = weak.nodes[k];
+          node_of[i] = 2 * k + (node.responses[data_.at(static_cast<std::size_t>(node.feature), i)] > 0.0 ? 2 : 1);
         }
       }
     }

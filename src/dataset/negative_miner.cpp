@@ -167,6 +167,9 @@ void check_mine_params(const MineParams& p) {
                 " must be i/n with 1 <= i <= n");
   }
   if (p.max_frames < 0 || p.max_negatives < 0) throw Error("mining: limits must not be negative");
+  if (p.sync_every_frames < 1) {
+    throw Error("mining: sync every " + std::to_string(p.sync_every_frames) + " frames: must be at least 1");
+  }
 }
 
 NegativeMiner::NegativeMiner(MineParams params) : params_(std::move(params)) {
@@ -215,41 +218,58 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
   }
   if (on_frame) on_frame(stats);  // frames 0: the start, with the total known
 
+  // Group commit (MineParams::sync_every_frames): frames are reported once their samples are on disk.
+  const std::int64_t sync_every = params.sync_every_frames;
+  std::int64_t unflushed_frames = 0;
+  const auto flush = [&] {
+    if (out.unsynced_rows() > 0) out.sync();
+    unflushed_frames = 0;
+    if (on_frame) on_frame(stats);
+  };
+
   for (std::size_t s = 0; s < params.sources.size() && frames_left > 0 && !stats.reached_max; ++s) {
     const std::string name = sample_source(params.sources[s]);  // the one rule (sample_source.hpp)
     FrameFeeder& feeder = *feeders_[s];
     feeder.set_limit(frames_left);
 
-    // Frames analysed on the workers, written here in frame order (ordered_map).
-    ordered_map<FrameFeeder::Job>(
-        workers, 4 * static_cast<std::size_t>(workers),
-        [&](FrameFeeder::Job& job) { return feeder.claim(job); },
-        [&](FrameFeeder::Job& job) { return analyse_frame(core, params, name, feeder.load(job)); },
-        [&](FrameResult result) {
-          const std::int64_t kept_before = stats.kept;
-          for (MinedCandidate& m : result.items) {
-            ++stats.candidates;
-            if (m.below_score) {
-              ++stats.below_score;
-              continue;
+    // Frames analysed on the workers, written here in frame order (ordered_map), flushed in groups.
+    try {
+      ordered_map<FrameFeeder::Job>(
+          workers, 4 * static_cast<std::size_t>(workers),
+          [&](FrameFeeder::Job& job) { return feeder.claim(job); },
+          [&](FrameFeeder::Job& job) { return analyse_frame(core, params, name, feeder.load(job)); },
+          [&](FrameResult result) {
+            for (MinedCandidate& m : result.items) {
+              ++stats.candidates;
+              if (m.below_score) {
+                ++stats.below_score;
+                continue;
+              }
+              if (stats.reached_max) continue;
+              if (out.is_duplicate(m.record)) {
+                ++stats.duplicates;
+                continue;
+              }
+              out.append_encoded(m.record, m.crop, /*sync=*/false);  // flushed with its group, below
+              ++stats.kept;
+              ++negatives;
+              if (params.max_negatives > 0 && negatives >= params.max_negatives) stats.reached_max = true;
             }
-            if (stats.reached_max) continue;
-            if (out.is_duplicate(m.record)) {
-              ++stats.duplicates;
-              continue;
-            }
-            out.append_encoded(m.record, m.crop, /*sync=*/false);  // one disk flush per frame, below
-            ++stats.kept;
-            ++negatives;
-            if (params.max_negatives > 0 && negatives >= params.max_negatives) stats.reached_max = true;
-          }
-          if (stats.kept != kept_before) out.sync();
-          ++stats.frames;
-          --frames_left;
-          if (on_frame) on_frame(stats);
-          return !stats.reached_max;
-        });
+            ++stats.frames;
+            --frames_left;
+            ++unflushed_frames;
+            if (unflushed_frames >= sync_every || out.unsynced_rows() == 0 || stats.reached_max) flush();
+            return !stats.reached_max;
+          });
+    } catch (...) {
+      try {  // keep what was written (best effort: a failed write leaves the writer unusable anyway)
+        if (out.unsynced_rows() > 0) out.sync();
+      } catch (...) {
+      }
+      throw;
+    }
   }
+  if (unflushed_frames > 0) flush();
   return stats;
 }
 

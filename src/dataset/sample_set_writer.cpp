@@ -27,6 +27,7 @@ struct SampleSetWriter::State {
   AppendFile vectors;
   AppendFile retracted;
   std::vector<std::string> unsynced_crops;  ///< crops of rows appended with sync = false
+  std::size_t unsynced_rows = 0;            ///< rows appended with sync = false since the last sync()
   bool recovered_torn_row = false;
   std::vector<std::string> repairs;
   bool broken = false;  ///< a write failed: the set must be reopened (which repairs it)
@@ -190,7 +191,7 @@ SampleSetWriter SampleSetWriter::open_locked(const std::string& dir, SampleSetLo
   // Rows whose depth crop is unusable (missing or empty for every row; decoded and hashed for the last
   // kCheckedRows) are retracted with the reason: such a row was never reported as saved by this version
   // (crops are on disk before their row), but a disk that lost data or an older version can leave them.
-  constexpr std::size_t kCheckedRows = 64;  // more than a mined frame's batch
+  constexpr std::size_t kCheckedRows = kMaxUnsyncedRows;  // a whole unsynced batch
   s.tsv = AppendFile(s.tsv_path(), /*create=*/false);
   std::vector<std::pair<std::int64_t, std::string>> bad;
   for (std::size_t i = 0; i < s.records.size(); ++i) {
@@ -230,6 +231,7 @@ void SampleSetWriter::append_row(const SampleRecord& record, bool sync_now) {
     s.broken = true;
     throw;
   }
+  s.unsynced_rows = sync_now ? 0 : s.unsynced_rows + 1;  // a synced row flushes the batch before it
   s.records.push_back(record);
   s.place_keys[place_key(record)] = record.id;
   if (!record.crop_hash.empty()) s.hash_keys.insert(hash_key(record));
@@ -249,7 +251,10 @@ void SampleSetWriter::sync() {
     state_->broken = true;
     throw;
   }
+  state_->unsynced_rows = 0;
 }
+
+std::size_t SampleSetWriter::unsynced_rows() const { return state_ ? state_->unsynced_rows : 0; }
 
 void SampleSetWriter::sync_crops() {
   State& s = *state_;
@@ -264,6 +269,7 @@ void SampleSetWriter::sync_crops() {
 }
 
 SampleRecord SampleSetWriter::append_encoded(SampleRecord record, const EncodedCrop& crop, bool sync_now) {
+  if (!sync_now && state_ && state_->unsynced_rows >= kMaxUnsyncedRows) sync();  // a batch stays checkable
   record = prepare(std::move(record));
   State& s = *state_;
   const FeatureSpec& spec = s.manifest.feature_spec;

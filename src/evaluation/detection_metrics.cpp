@@ -1,6 +1,7 @@
 #include "rdsf/evaluation/detection_metrics.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "rdsf/candidates/candidate_finder.hpp"
@@ -18,6 +19,17 @@ bool has_candidate(const FrameCandidates& frame, const cv::Rect& person) {
 }  // namespace
 
 std::vector<double> thesis_thresholds() { return {40, 20, 10, 0, -5, -10, -15, -20, -25, -30, -40, -60}; }
+
+RateInterval wilson_interval(long successes, long trials, double z) {
+  if (trials <= 0) return {};
+  const double n = static_cast<double>(trials);
+  const double p = static_cast<double>(successes) / n;
+  const double z2 = z * z;
+  const double denominator = 1.0 + z2 / n;
+  const double centre = (p + z2 / (2.0 * n)) / denominator;
+  const double half = z * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n)) / denominator;
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
 
 void compute_rates(DetectionFigures& f) {
   f.tar = f.n_people > 0 ? static_cast<double>(f.n_det) / static_cast<double>(f.n_people) : 0.0;

@@ -118,6 +118,7 @@ CandidateFigures classifier_figures(const std::vector<FrameCandidates>& scored, 
     if (scores[i] >= threshold) (labels[i] == 1 ? tp : fp) += 1;
   }
   f.tar = static_cast<double>(tp) / static_cast<double>(f.positives);
+  f.tar_interval = wilson_interval(tp, f.positives);
   f.far = static_cast<double>(fp) / static_cast<double>(f.negatives);
   return f;
 }
@@ -231,8 +232,11 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
                   r.candidates.positives, r.candidates.negatives, r.candidates.auc, r.candidates.tar, r.candidates.far);
     summary << line;
     if (r.validation) {
-      std::snprintf(line, sizeof line, "; the model file's validation said TAR %.3f, FAR %.3f (gap %+.3f)",
-                    r.validation->tar, r.validation->far, r.candidates.tar - r.validation->tar);
+      std::snprintf(line, sizeof line,
+                    "; the model file's validation said TAR %.3f, FAR %.3f (gap %+.3f; the held-out TAR's 95 %% "
+                    "interval over %ld positives is %.3f-%.3f)",
+                    r.validation->tar, r.validation->far, r.candidates.tar - r.validation->tar, r.candidates.positives,
+                    r.candidates.tar_interval.low, r.candidates.tar_interval.high);
       summary << line;
     }
     summary << "\n\n";
@@ -244,14 +248,15 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   // The one-table view: models x TAR at FPPF 0.1, best MOTA, fps.
   AtomicTextFile table((folder / "summary.md").string(), true);
   table.stream() << "| model | TAR at FPPF <= 0.1 | TAR at FPPF <= 0.5 | best MOTA (P >=) | MOTP | candidate recall | "
-                    "candidate AUC | TAR at P >= op: validation / held-out (gap) | fps |\n"
+                    "candidate AUC | TAR at P >= op: validation / held-out (gap; held-out 95 % interval) | fps |\n"
                     "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const SweepResult& r : results) {
     const SweepRow& best = r.best_mota();
-    char validation[96] = "no validation";
+    char validation[128] = "no validation";
     if (r.validation) {
-      std::snprintf(validation, sizeof validation, "%.3f / %.3f (%+.3f)", r.validation->tar, r.candidates.tar,
-                    r.candidates.tar - r.validation->tar);
+      std::snprintf(validation, sizeof validation, "%.3f / %.3f (%+.3f; 95 %% %.2f-%.2f)", r.validation->tar,
+                    r.candidates.tar, r.candidates.tar - r.validation->tar, r.candidates.tar_interval.low,
+                    r.candidates.tar_interval.high);
     }
     char row[512];
     std::snprintf(row, sizeof row, "| %s | %.3f | %.3f | %.3f (%.2f) | %.1f | %.3f (%ld of %ld) | %.4f | %s at %.2f | %.1f |\n",

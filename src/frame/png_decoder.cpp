@@ -13,6 +13,9 @@
 #include <vector>
 
 #include <libdeflate.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 #include <opencv2/imgcodecs.hpp>
 
 #include "rdsf/core/error.hpp"
@@ -104,13 +107,45 @@ libdeflate_decompressor* thread_decompressor() {
 // Filters (PNG specification, section 9): 1 Sub x += a, 2 Up x += b, 3 Average x += (a + b) / 2,
 // 4 Paeth x += the one of a, b, c nearest to a + b - c (ties a, then b), where a is the byte bpp to the
 // left, b the byte above, c the byte above-left (0 outside the row).
+// Sub: x += a, a running sum per byte position of a pixel. With SSE2 a block of whole pixels (16 bytes, 15
+// for 3 bytes a pixel) at a time: the previous block's last pixel added to the first, then a prefix sum of
+// the block by shifts of 1, 2, 4, 8 pixels; bytes past the block keep their value.
+template <int Bpp>
+void unsub_row(unsigned char* row, std::size_t n) {
+  std::size_t i = Bpp;
+#ifdef __SSE2__
+  constexpr int kPixels = 16 / Bpp, kBlock = kPixels * Bpp;
+  if (n >= 2 * kBlock) {
+    __m128i carry = _mm_setzero_si128();  // the last pixel of the previous block, in bytes 0..Bpp-1
+    const __m128i first_pixel = _mm_srli_si128(_mm_set1_epi8(-1), 16 - Bpp);
+    const __m128i block = _mm_srli_si128(_mm_set1_epi8(-1), 16 - kBlock);
+    std::size_t at = 0;
+    __m128i next = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row));
+    for (; at + 16 <= n; at += kBlock) {
+      const __m128i x = next;
+      // the next block's bytes, loaded before this block is stored (they do not overlap what it changes):
+      // a load of bytes just stored would wait for the store
+      if (at + kBlock + 16 <= n) next = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + at + kBlock));
+      __m128i v = _mm_add_epi8(x, carry);
+      v = _mm_add_epi8(v, _mm_slli_si128(v, Bpp));
+      if (kPixels > 2) v = _mm_add_epi8(v, _mm_slli_si128(v, 2 * Bpp));
+      if (kPixels > 4) v = _mm_add_epi8(v, _mm_slli_si128(v, (4 * Bpp) & 15));
+      if (kPixels > 8) v = _mm_add_epi8(v, _mm_slli_si128(v, (8 * Bpp) & 15));
+      v = _mm_or_si128(_mm_and_si128(block, v), _mm_andnot_si128(block, x));  // the 16th byte of 15 kept
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(row + at), v);
+      carry = _mm_and_si128(_mm_srli_si128(v, kBlock - Bpp), first_pixel);
+    }
+    i = std::max<std::size_t>(at, Bpp);
+  }
+#endif
+  for (; i < n; ++i) row[i] = static_cast<unsigned char>(row[i] + row[i - Bpp]);
+}
+
 template <int Bpp>
 void unfilter_row(int filter, unsigned char* row, const unsigned char* prior, std::size_t n) {
   switch (filter) {
     case 0: break;
-    case 1:
-      for (std::size_t i = Bpp; i < n; ++i) row[i] = static_cast<unsigned char>(row[i] + row[i - Bpp]);
-      break;
+    case 1: unsub_row<Bpp>(row, n); break;
     case 2:
       for (std::size_t i = 0; i < n; ++i) row[i] = static_cast<unsigned char>(row[i] + prior[i]);
       break;
@@ -150,7 +185,23 @@ void convert_row(const unsigned char* in, unsigned char* out, std::size_t pixels
       std::memcpy(out, in, pixels);
       return;
     }
-    for (std::size_t p = 0; p < pixels; ++p, in += channels, out += channels) {
+    std::size_t p = 0;
+#ifdef __SSE2__
+    if (channels == 3) {  // five pixels at a time: R and B swapped by shifts of two bytes
+      const __m128i keep = _mm_setr_epi8(0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0);
+      const __m128i from_right = _mm_setr_epi8(-1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, 0);
+      const __m128i from_left = _mm_setr_epi8(0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0);
+      // the 16th byte stored belongs to the next pixel, which the next block or the tail writes after
+      for (; 3 * p + 16 <= 3 * pixels; p += 5, in += 15, out += 15) {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in));
+        const __m128i bgr = _mm_or_si128(_mm_and_si128(v, keep),
+                                         _mm_or_si128(_mm_and_si128(_mm_srli_si128(v, 2), from_right),
+                                                      _mm_and_si128(_mm_slli_si128(v, 2), from_left)));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out), bgr);
+      }
+    }
+#endif
+    for (; p < pixels; ++p, in += channels, out += channels) {
       out[0] = in[2];
       out[1] = in[1];
       out[2] = in[0];
@@ -161,7 +212,15 @@ void convert_row(const unsigned char* in, unsigned char* out, std::size_t pixels
   auto* o = reinterpret_cast<std::uint16_t*>(out);
   const auto sample = [](const unsigned char* s) { return static_cast<std::uint16_t>((s[0] << 8) | s[1]); };
   if (channels == 1) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    for (std::size_t p = 0; p < pixels; ++p) {  // a byte swap of each sample, in a loop that vectorises
+      std::uint16_t v;
+      std::memcpy(&v, in + 2 * p, 2);
+      o[p] = static_cast<std::uint16_t>((v >> 8) | (v << 8));
+    }
+#else
     for (std::size_t p = 0; p < pixels; ++p) o[p] = sample(in + 2 * p);
+#endif
     return;
   }
   for (std::size_t p = 0; p < pixels; ++p, in += 2 * channels, o += channels) {

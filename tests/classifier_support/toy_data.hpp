@@ -1,6 +1,7 @@
 #pragma once
 // Small feature matrices for the classifier tests: uniform random RDSF-sized rows (8128 values in
 // [0, 1]) whose label is decided by one or a few features.
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -41,6 +42,16 @@ inline ToyData noisy_toy(int samples, std::uint64_t seed) {
     d.labels.push_back(signal > 0.5f ? 1 : 0);
   }
   return d;
+}
+
+/// Fills row r of `rows` the way RDSF values crowd: u * u (near 0), one value in seven exactly 1, and
+/// every fifth feature sqrt(u) (higher) when `label` is 1 (the Real AdaBoost reference tests' data).
+inline void crowded_row(std::mt19937& rng, cv::Mat1f& rows, int r, int label) {
+  for (int f = 0; f < rows.cols; ++f) {
+    const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+    const double shifted = (f % 5 == 0 && label == 1) ? std::sqrt(u) : u * u;
+    rows(r, f) = static_cast<float>(rng() % 7 == 0 ? 1.0 : shifted);
+  }
 }
 
 }  // namespace rdsf::test

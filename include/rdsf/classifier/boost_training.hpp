@@ -38,6 +38,9 @@ struct BoostTrainingParams {
   /// Default 2 and learning rate 0.5: chosen by the quality report (docs/quality.md); --thesis gives 1 and 1.
   int depth = 2;
   double learning_rate = 0.5;       ///< native: shrinkage nu in (0, 1]
+  /// native trees: one child of two counted, the other parent - sibling (RealAdaBoostParams; issue 17).
+  /// Off keeps the models the same bits; recorded in the model file only when on.
+  bool histogram_subtraction = false;
   std::string calibration = "platt";  ///< "platt" (fitted on the validation samples) or "none" (P = sigmoid(2 H))
   /// K-fold validation by group (2-20; 0 = off): K models each trained without one fold of whole groups
   /// and scored on it; their pooled out-of-fold scores give every validation figure and the calibration
@@ -50,6 +53,12 @@ struct BoostTrainingParams {
   /// feature of each column, distinct. Empty: every feature, column c = feature c. The model and the
   /// figures name features, not columns. Native backend only.
   std::vector<int> feature_columns;
+  /// Continued training (`rdsf-train --init MODEL`): the weak classifiers of a model of the same spec and
+  /// bins. Every training and validation score starts at their sum F0 (so the first new round sees the
+  /// weights exp(-y F0) that model left), the new rounds follow, and the model kept is those weak
+  /// classifiers first, then the new ones; its validation figures and calibration are the whole model's.
+  /// Native backend, every feature in the rows (no pool). Empty: training from nothing.
+  std::vector<WeakClassifier> init;
 };
 
 /// What is known of the rows beyond features and labels.

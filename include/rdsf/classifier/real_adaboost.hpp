@@ -10,7 +10,9 @@
 // node is the best two-way split of one feature's bins, bins <= t left and the others right, by the same
 // criterion: the smallest Z = 2 (sqrt(W+_L W-_L) + sqrt(W+_R W-_R)) over the samples that reach it (stored as
 // a table of -1 / +1: > 0 routes right). A leaf is the best look-up table over the samples that reach it.
-// Every level reads each sample once, so a level costs about one depth-1 round. The tree's response is its
+// The nodes of a level share each pass over the bins, so a level reads the bins once, like a depth-1 round.
+// Optionally (histogram_subtraction, off by default) one child of two is counted and the other is its
+// parent minus its sibling. The tree's response is its
 // leaf's; Z of the tree is the sum of its leaves' Z.
 //
 // Shrinkage: every response is multiplied by the learning rate nu (0 < nu <= 1) before it is added and
@@ -37,6 +39,13 @@ struct RealAdaBoostParams {
   int depth = 1;
   /// Shrinkage nu in (0, 1]: responses are multiplied by it.
   double learning_rate = 1.0;
+  /// Histogram subtraction for trees (depth >= 2; issue 17): of two children of a node, only the one with
+  /// fewer samples is counted and the other's sums are the parent's minus its sibling's (a difference
+  /// below 1e-9 of the parent's sum is 0, so that an empty bin stays empty), so a level below the root
+  /// costs about half a pass. The chosen features' tables are still summed directly, but the differences
+  /// are rounded differently, so a near tie can choose another feature: models are then not the same
+  /// bits as without it. Off by default.
+  bool histogram_subtraction = false;
 };
 
 struct RealAdaBoostRound {
@@ -57,6 +66,12 @@ class RealAdaBoost {
   /// `labels` (1 person, 0 not) in the sample order of `data`, which must outlive this object.
   RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, RealAdaBoostParams params = {});
 
+  /// Continued training (before the first round): every sample starts at the score F0 of a model it
+  /// continues, so its weight is exp(-y F0) normalised to sum 1, the weight it would have after training
+  /// that model from uniform weights (w ~ exp(-y F) holds for every round of Real AdaBoost); train_scores()
+  /// and the training error start from F0. Throws Error when the count differs from the samples'.
+  void start_from_scores(const std::vector<double>& scores);
+
   /// Adds one weak classifier and returns what was chosen.
   RealAdaBoostRound next_round();
 
@@ -71,15 +86,31 @@ class RealAdaBoost {
     double z = 0.0;
     std::vector<double> responses;
   };
-  /// The table with the smallest Z over `subset` (all samples when null), responses unshrunk; with
-  /// `split`, the best two-way split instead, as a routing table of -1 (left) / +1 (right).
-  TableFit best_table(const std::vector<std::size_t>* subset, const std::vector<std::uint8_t>& y, bool split) const;
+  /// For every node (its samples ascending; all samples when the only entry is null) the table with the
+  /// smallest Z over its samples, responses unshrunk; with `split`, the best two-way split instead, as a
+  /// routing table of -1 (left) / +1 (right). All the nodes share each pass over the bins.
+  /// Histogram subtraction: node j of best_tables with sibling[j] >= 0 takes, per feature, the sums of
+  /// node parent[j] of the previous level (parent_sums, [node][feature][2 * bins]) minus those of node
+  /// sibling[j] of this call.
+  struct Subtraction {
+    const std::vector<double>* parent_sums = nullptr;
+    std::vector<std::ptrdiff_t> parent, sibling;
+  };
+  /// `keep`, when given, receives every node's sums of every feature ([node][feature][2 * bins]).
+  std::vector<TableFit> best_tables(const std::vector<const std::vector<std::size_t>*>& members,
+                                    const std::vector<std::uint8_t>& y, bool split,
+                                    const Subtraction* derived = nullptr, std::vector<double>* keep = nullptr) const;
+  /// Z of a table (or split) from its sums[2 * bin + y].
+  double table_z(const double* sums, bool split) const;
+  /// `feature`'s table (or split) over `subset` (all samples when null), with the given Z.
+  TableFit fit_feature(std::size_t feature, double z, const std::vector<std::size_t>* subset,
+                       const std::vector<std::uint8_t>& y, bool split) const;
 
   const BinnedMatrix& data_;
   std::vector<int> labels_;
   RealAdaBoostParams params_;
   double eps_ = 0.0;
-  bool positives_first_ = false;  ///< labels are 1...1 0...0: the faster four-feature histograms apply
+  bool positives_first_ = false;  ///< labels are 1...1 0...0: the two-part histograms apply
   std::size_t positives_ = 0;
   int threads_ = 1;
   std::vector<double> weights_;

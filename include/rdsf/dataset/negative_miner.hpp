@@ -28,6 +28,12 @@ struct MineParams {
   std::int64_t max_negatives = 0;    ///< stop once the set holds this many label-0 samples (0: no limit)
   int threads = 0;                   ///< worker threads analysing frames (0: one per core)
   bool depth_only = false;           ///< do not read colour: crops without colour, faster on PNG folders
+  /// Group commit: the samples of up to this many frames are flushed to disk together (one sync of the
+  /// crops, one of samples.tsv), and on_frame reports those frames after that flush, so a frame reported is
+  /// on disk. The writer also flushes before a batch would exceed SampleSetWriter::kMaxUnsyncedRows rows.
+  /// A kill or power cut loses at most the unreported frames since the last flush; rerunning the same
+  /// command mines them again (duplicates are skipped). 1 flushes after every frame (before issue 17).
+  int sync_every_frames = 16;
   CameraModel camera;
   DetectorParams detector;
   /// Hard-negative mode when set: the score H(x) of one candidate's masked depth crop (called from the
@@ -68,7 +74,9 @@ class NegativeMiner {
   std::optional<std::int64_t> total_frames() const { return total_frames_; }
 
   /// Mines every source into `out` (once). `on_frame` is called on the calling thread once before the
-  /// first frame (frames 0, total_frames known) and after each frame is written.
+  /// first frame (frames 0, total_frames known) and after each flush to disk (every sync_every_frames
+  /// frames, at most; at once after a frame that left nothing to flush), with the stats of every frame
+  /// flushed so far. On an error, what was written is flushed (best effort) before the error is rethrown.
   MineStats run(SampleSetWriter& out, const std::function<void(const MineStats&)>& on_frame = {});
 
  private:

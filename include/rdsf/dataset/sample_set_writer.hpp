@@ -6,7 +6,8 @@
 // renamed and the crops folder fsync'ed; then its row is appended to samples.tsv and fdatasync'ed before
 // append() returns: a sample reported as saved survives a killed program and a power cut. A batch
 // (append_encoded with sync = false) renames its crops at once and syncs them, the folder and the rows in
-// sync(). Writes that fail (disk full, I/O error) throw Error naming the file and the cause, and the writer
+// sync(); a batch never holds more than kMaxUnsyncedRows rows (the writer syncs first), so every row a
+// power cut can leave without its crop is among the last rows that opening decodes (repair 3). Writes that fail (disk full, I/O error) throw Error naming the file and the cause, and the writer
 // refuses further appends until the set is reopened.
 //
 // Repairs on open (each reported in repairs(), one line each; never a row whose crop is valid):
@@ -33,6 +34,10 @@ namespace rdsf {
 
 class SampleSetWriter {
  public:
+  /// Rows appended with sync = false that may wait for one sync(); the last this many rows of a set are
+  /// decoded and hashed when it is opened (repair 3), so a batch is always checked whole.
+  static constexpr std::size_t kMaxUnsyncedRows = 64;
+
   /// Opens the set in `dir` for appending, creating it (and the folder) when it does not exist yet.
   /// An existing set must have the same feature spec (throws Error naming both hashes otherwise) and, when
   /// both are known, crops cut the same way (`crops`: crop_provenance(detector params); unknown for samples
@@ -54,8 +59,10 @@ class SampleSetWriter {
   /// the row is written (a killed program keeps it) but fdatasync() is left to a later sync(), so that a
   /// batch (the miner: one frame's samples) costs one disk flush.
   SampleRecord append_encoded(SampleRecord record, const EncodedCrop& crop, bool sync = true);
-  /// Flushes rows appended with sync = false to disk.
+  /// Flushes rows appended with sync = false (and their crops) to disk.
   void sync();
+  /// Rows appended with sync = false since the last sync() (at most kMaxUnsyncedRows).
+  std::size_t unsynced_rows() const;
   /// Appends a sample without crop whose feature vector (dimension() floats of the set's feature spec) is
   /// stored instead (has_crop = false).
   SampleRecord append_vector(SampleRecord record, const float* features);

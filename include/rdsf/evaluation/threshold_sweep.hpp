@@ -50,6 +50,7 @@ struct CandidateFigures {
   long positives = 0, negatives = 0;  ///< candidates covering a counted person (IoU >= 0.5) / nobody
   double auc = 0;
   double tar = 0, far = 0;            ///< at the operating probability
+  RateInterval tar_interval;          ///< tar's 95 % interval over `positives` (wilson_interval)
 };
 
 struct SweepResult {

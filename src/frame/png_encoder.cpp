@@ -1,0 +1,263 @@
+#include "rdsf/frame/png_encoder.hpp"
+
+#include <zlib.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "rdsf/core/error.hpp"
+
+namespace rdsf {
+namespace {
+
+constexpr std::size_t kIdatBytes = 8192;           // libpng's PNG_ZBUF_SIZE: the size of every IDAT but the last
+constexpr std::size_t kSmallWindowFrom = 16384;    // libpng shrinks zlib's window at or below this data size
+
+void put32(std::vector<unsigned char>& out, std::uint32_t v) {
+  const unsigned char bytes[4] = {static_cast<unsigned char>(v >> 24), static_cast<unsigned char>(v >> 16),
+                                  static_cast<unsigned char>(v >> 8), static_cast<unsigned char>(v)};
+  out.insert(out.end(), bytes, bytes + 4);
+}
+
+// length, type, data, CRC-32 of type and data.
+void put_chunk(std::vector<unsigned char>& out, const char* type, const unsigned char* data, std::size_t size) {
+  put32(out, static_cast<std::uint32_t>(size));
+  const std::size_t type_at = out.size();
+  out.insert(out.end(), type, type + 4);
+  if (size > 0) out.insert(out.end(), data, data + size);
+  const uLong crc = crc32(0L, out.data() + type_at, static_cast<uInt>(size + 4));
+  put32(out, static_cast<std::uint32_t>(crc));
+}
+
+// One image row to PNG order: 16-bit samples big-endian, BGR(A) to RGB(A).
+void to_png_order(const unsigned char* in, unsigned char* out, int width, int channels, int bytes_per_sample) {
+  if (bytes_per_sample == 1) {
+    if (channels == 1) {
+      std::memcpy(out, in, static_cast<std::size_t>(width));
+      return;
+    }
+    for (int x = 0; x < width; ++x, in += channels, out += channels) {
+      out[0] = in[2];
+      out[1] = in[1];
+      out[2] = in[0];
+      if (channels == 4) out[3] = in[3];
+    }
+    return;
+  }
+  const auto* s = reinterpret_cast<const std::uint16_t*>(in);
+  const auto put = [](unsigned char* o, std::uint16_t v) {
+    o[0] = static_cast<unsigned char>(v >> 8);
+    o[1] = static_cast<unsigned char>(v);
+  };
+  if (channels == 1) {
+    for (int x = 0; x < width; ++x) put(out + 2 * x, s[x]);
+    return;
+  }
+  for (int x = 0; x < width; ++x, s += channels, out += 2 * channels) {
+    put(out, s[2]);
+    put(out + 2, s[1]);
+    put(out + 4, s[0]);
+    if (channels == 4) put(out + 6, s[3]);
+  }
+}
+
+// libpng's measure of a filtered byte: its distance from zero, bytes >= 128 counting as negative.
+inline unsigned cost(unsigned char v) { return std::min<unsigned char>(v, static_cast<unsigned char>(0u - v)); }
+
+// The five filters of a row (PNG specification, section 9) with their costs: a is the byte bpp to the left,
+// b the byte above, c the byte above-left (0 outside the row). Each loop is branch-free so that it vectorises.
+struct FilteredRows {
+  std::vector<unsigned char> rows[5];  // filter byte, then the filtered bytes
+  unsigned sums[5] = {};
+};
+
+// The Paeth filter of bytes Bpp.. of a row (the first Bpp are done by the caller).
+template <int Bpp>
+void paeth_row(const unsigned char* raw, const unsigned char* prior, std::size_t n, unsigned char* paeth) {
+  std::size_t i = Bpp;
+#ifdef __SSE2__
+  // Eight bytes at a time in 16-bit lanes: the same predictor as the scalar loop below.
+  const __m128i zero = _mm_setzero_si128();
+  const auto abs16 = [&](__m128i v) { return _mm_max_epi16(v, _mm_sub_epi16(zero, v)); };
+  for (; i + 8 <= n; i += 8) {
+    const auto load8 = [&](const unsigned char* p) {
+      return _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)), zero);
+    };
+    const __m128i a = load8(raw + i - Bpp), b = load8(prior + i), c = load8(prior + i - Bpp);
+    const __m128i p = _mm_sub_epi16(b, c), q = _mm_sub_epi16(a, c);
+    const __m128i pa = abs16(p), pb = abs16(q), pc = abs16(_mm_add_epi16(p, q));
+    // take a where pa <= pb and pa <= pc; else b where pb <= pc; else c
+    const __m128i take_a = _mm_andnot_si128(_mm_or_si128(_mm_cmpgt_epi16(pa, pb), _mm_cmpgt_epi16(pa, pc)),
+                                            _mm_set1_epi16(-1));
+    const __m128i take_b = _mm_andnot_si128(_mm_cmpgt_epi16(pb, pc), _mm_set1_epi16(-1));
+    const __m128i b_or_c = _mm_or_si128(_mm_and_si128(take_b, b), _mm_andnot_si128(take_b, c));
+    const __m128i predictor = _mm_or_si128(_mm_and_si128(take_a, a), _mm_andnot_si128(take_a, b_or_c));
+    const __m128i x = load8(raw + i);
+    const __m128i filtered = _mm_packus_epi16(_mm_and_si128(_mm_sub_epi16(x, predictor), _mm_set1_epi16(0xff)), zero);
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(paeth + i), filtered);
+  }
+#endif
+  for (; i < n; ++i) {
+    const int a = raw[i - Bpp], b = prior[i], c = prior[i - Bpp];
+    const int p = b - c, q = a - c;
+    const int pa = std::abs(p), pb = std::abs(q), pc = std::abs(p + q);
+    const int predictor = (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
+    paeth[i] = static_cast<unsigned char>(raw[i] - predictor);
+  }
+}
+
+template <int Bpp>
+void filter_all(const unsigned char* raw, const unsigned char* prior, std::size_t n, FilteredRows& f) {
+  unsigned char* sub = f.rows[1].data() + 1;
+  unsigned char* up = f.rows[2].data() + 1;
+  unsigned char* avg = f.rows[3].data() + 1;
+  unsigned char* paeth = f.rows[4].data() + 1;
+  unsigned none_sum = 0, sub_sum = 0, up_sum = 0, avg_sum = 0, paeth_sum = 0;
+  for (std::size_t i = 0; i < n; ++i) none_sum += cost(raw[i]);
+  for (std::size_t i = 0; i < Bpp; ++i) {
+    sub[i] = raw[i];
+    avg[i] = static_cast<unsigned char>(raw[i] - (prior[i] >> 1));
+    paeth[i] = static_cast<unsigned char>(raw[i] - prior[i]);
+  }
+  for (std::size_t i = Bpp; i < n; ++i) sub[i] = static_cast<unsigned char>(raw[i] - raw[i - Bpp]);
+  for (std::size_t i = 0; i < n; ++i) up[i] = static_cast<unsigned char>(raw[i] - prior[i]);
+  for (std::size_t i = Bpp; i < n; ++i) {
+    avg[i] = static_cast<unsigned char>(raw[i] - ((unsigned{raw[i - Bpp]} + prior[i]) >> 1));
+  }
+  paeth_row<Bpp>(raw, prior, n, paeth);
+  for (std::size_t i = 0; i < n; ++i) sub_sum += cost(sub[i]);
+  for (std::size_t i = 0; i < n; ++i) up_sum += cost(up[i]);
+  for (std::size_t i = 0; i < n; ++i) avg_sum += cost(avg[i]);
+  for (std::size_t i = 0; i < n; ++i) paeth_sum += cost(paeth[i]);
+  f.sums[0] = none_sum;
+  f.sums[1] = sub_sum;
+  f.sums[2] = up_sum;
+  f.sums[3] = avg_sum;
+  f.sums[4] = paeth_sum;
+}
+
+void filter_all(int bpp, const unsigned char* raw, const unsigned char* prior, std::size_t n, FilteredRows& f) {
+  switch (bpp) {
+    case 1: filter_all<1>(raw, prior, n, f); break;
+    case 2: filter_all<2>(raw, prior, n, f); break;
+    case 3: filter_all<3>(raw, prior, n, f); break;
+    case 4: filter_all<4>(raw, prior, n, f); break;
+    case 6: filter_all<6>(raw, prior, n, f); break;
+    default: filter_all<8>(raw, prior, n, f); break;
+  }
+}
+
+struct Deflater {
+  z_stream z{};
+  bool open = false;
+  ~Deflater() {
+    if (open) deflateEnd(&z);
+  }
+};
+
+std::vector<unsigned char> encode_direct(const cv::Mat& image, int level) {
+  const int channels = image.channels();
+  const int sample_bytes = image.depth() == CV_8U ? 1 : 2;
+  const int bpp = channels * sample_bytes;
+  const std::size_t n = static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(bpp);
+
+  std::vector<unsigned char> out;
+  out.reserve(64 + n * static_cast<std::size_t>(image.rows) / 2);
+  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  out.insert(out.end(), signature, signature + 8);
+  std::vector<unsigned char> header;
+  put32(header, static_cast<std::uint32_t>(image.cols));
+  put32(header, static_cast<std::uint32_t>(image.rows));
+  const int colour_type = channels == 1 ? 0 : (channels == 3 ? 2 : 6);
+  header.insert(header.end(), {static_cast<unsigned char>(8 * sample_bytes), static_cast<unsigned char>(colour_type),
+                               0, 0, 0});
+  put_chunk(out, "IHDR", header.data(), header.size());
+
+  // A fresh stream per image, as libpng makes one: a reset stream may see another image's bytes past the
+  // end of its data in zlib's window, which can change the last match chosen.
+  Deflater d;
+  if (deflateInit2(&d.z, level, Z_DEFLATED, 15, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+    throw Error("PNG encoding: zlib could not start a stream");
+  }
+  d.open = true;
+  std::array<unsigned char, kIdatBytes> idat{};
+  d.z.next_out = idat.data();
+  d.z.avail_out = kIdatBytes;
+  const auto drain = [&](int flush) {
+    while (true) {
+      const int ret = deflate(&d.z, flush);
+      if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR) throw Error("PNG encoding: zlib failed");
+      if (d.z.avail_out == 0) {
+        put_chunk(out, "IDAT", idat.data(), kIdatBytes);
+        d.z.next_out = idat.data();
+        d.z.avail_out = kIdatBytes;
+        continue;
+      }
+      if (ret == Z_STREAM_END) {
+        const std::size_t used = kIdatBytes - d.z.avail_out;
+        if (used > 0) put_chunk(out, "IDAT", idat.data(), used);
+        return;
+      }
+      if (flush == Z_NO_FLUSH && d.z.avail_in == 0) return;
+    }
+  };
+
+  thread_local FilteredRows f;
+  thread_local std::vector<unsigned char> raw, prior;
+  for (int k = 0; k < 5; ++k) {
+    f.rows[k].resize(n + 1);
+    f.rows[k][0] = static_cast<unsigned char>(k);
+  }
+  raw.resize(n);
+  prior.assign(n, 0);
+  for (int y = 0; y < image.rows; ++y) {
+    to_png_order(image.ptr(y), raw.data(), image.cols, channels, sample_bytes);
+    filter_all(bpp, raw.data(), prior.data(), n, f);
+    int best = 0;
+    for (int k = 1; k < 5; ++k) {
+      if (f.sums[k] < f.sums[best]) best = k;
+    }
+    if (best == 0) std::memcpy(f.rows[0].data() + 1, raw.data(), n);
+    d.z.next_in = f.rows[best].data();
+    d.z.avail_in = static_cast<uInt>(n + 1);
+    drain(Z_NO_FLUSH);
+    std::swap(raw, prior);
+  }
+  drain(Z_FINISH);
+  put_chunk(out, "IEND", nullptr, 0);
+  return out;
+}
+
+}  // namespace
+
+std::vector<unsigned char> encode_png(const cv::Mat& image, const PngEncodeOptions& options) {
+  const int channels = image.channels();
+  const bool plain = (image.depth() == CV_8U || image.depth() == CV_16U) &&
+                     (channels == 1 || channels == 3 || channels == 4) && image.dims == 2;
+  const std::size_t row_bytes =
+      static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(channels) * (image.depth() == CV_8U ? 1 : 2);
+  const std::size_t data_size = static_cast<std::size_t>(image.rows) * (row_bytes + 1);
+  if (options.direct_path && plain && !image.empty() && data_size > kSmallWindowFrom &&
+      options.zlib_level >= 0 && options.zlib_level <= 9 && row_bytes < (1u << 24)) {
+    return encode_direct(image, options.zlib_level);
+  }
+  std::vector<unsigned char> bytes;
+  const std::vector<int> params = {cv::IMWRITE_PNG_COMPRESSION, options.zlib_level};
+  bool ok = false;
+  try {
+    ok = !image.empty() && cv::imencode(".png", image, bytes, params);
+  } catch (const cv::Exception&) {
+    ok = false;
+  }
+  if (!ok) throw Error("PNG encoding failed");
+  return bytes;
+}
+
+}  // namespace rdsf
