@@ -42,6 +42,7 @@ void apply_thesis_preset(po::variables_map& values) {
   set("join-pieces", c.join_pieces);
   set("max-object-width", c.max_object_width_cm);
   set("min-fitted-width", c.min_fitted_width_cm);
+  set("narrow-fitted-width", c.narrow_fitted_width_cm);
   set("split-depth-jump", c.split_depth_jump_mm);
   set("split-valley", c.split_valley_cm);
   set("split-step", c.split_step_cm);
@@ -200,6 +201,19 @@ po::options_description detector_options(DetectorParams& p) {
        "objects whose fitted extents touch are one when no wider than --max-person-width; 0 = thesis")
       ("join-narrow-layers-below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
        "pieces each narrower than --min-width join only in layers nearer than this (mm)")
+      ("join-narrow-passing", po::value(&c.join_narrow_passing)->default_value(c.join_narrow_passing),
+       "... and only when their passing columns alone are together at least --narrow-passing-width wide")
+      ("narrow-fitted-width", po::value(&c.narrow_fitted_width_cm)->default_value(c.narrow_fitted_width_cm),
+       "objects narrower than --min-width are candidates when their fitted box is this wide (cm), they are person-"
+       "tall, near and have a background above their top; 0 = thesis")
+      ("narrow-passing-width", po::value(&c.narrow_passing_width_cm)->default_value(c.narrow_passing_width_cm),
+       "... and their passing columns at least this wide (cm)")
+      ("narrow-layers-below", po::value(&c.narrow_layers_below_mm)->default_value(c.narrow_layers_below_mm),
+       "... in layers nearer than this (mm)")
+      ("narrow-min-height", po::value(&c.narrow_min_height_cm)->default_value(c.narrow_min_height_cm),
+       "... at least this tall (cm)")
+      ("narrow-clear-above", po::value(&c.narrow_clear_above_cm)->default_value(c.narrow_clear_above_cm),
+       "... with other layers over half of this band (cm) above their top")
       ("min-fitted-width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
        "objects whose fitted box is narrower than this (cm) are not candidates (border objects exempt); 0 = thesis")
       ("max-object-width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),

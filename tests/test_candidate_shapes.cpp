@@ -163,6 +163,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_FALSE(t.candidates.join_pieces);
   EXPECT_EQ(t.candidates.max_object_width_cm, 0);
   EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);
+  EXPECT_EQ(t.candidates.narrow_fitted_width_cm, 0);
   EXPECT_EQ(t.candidates.split_depth_jump_mm + t.candidates.split_valley_cm + t.candidates.split_step_cm, 0);
   EXPECT_EQ(t.reported_box, BoxKind::strict);
   EXPECT_EQ(DetectorParams().reported_box, BoxKind::fitted);

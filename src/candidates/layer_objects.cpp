@@ -50,7 +50,7 @@ class ObjectShaper {
     if (params_.join_pieces) found = join(found);
     std::vector<LayerObject> kept;
     for (const LayerObject& o : found) {
-      if (!wide_enough(o)) continue;
+      if (!wide_enough(o) && !narrow_person(o)) continue;
       if (params_.max_object_width_cm > 0 && cm(o.last - o.first + 1) > params_.max_object_width_cm) continue;
       const bool at_border = o.fit_first == 0 || o.fit_last == width_ - 1;  // a person cut by it looks narrow
       if (!at_border && cm(o.fit_last - o.fit_first + 1) < params_.min_fitted_width_cm) continue;
@@ -69,7 +69,38 @@ class ObjectShaper {
   int px(double centimetres) const {
     return static_cast<int>(centimetres * 10.0 * layer_.camera->fx_px / std::max(1.0, layer_.depth_mm_mean));
   }
+  // Real width of the passing columns of o.first..o.last alone (the gaps between them left out).
+  double passing_cm(const LayerObject& o) const {
+    int n = 0;
+    for (int x = o.first; x <= o.last; ++x) n += passes(x);
+    return cm(n);
+  }
   bool wide_enough(const LayerObject& o) const { return cm(o.last - o.first + 1) >= params_.min_width_cm; }
+  // Step 4 (narrow_fitted_width_cm): an object too narrow over its passing columns that has a person's
+  // fitted width, height, depth and a background above its top.
+  bool narrow_person(const LayerObject& o) const {
+    if (params_.narrow_fitted_width_cm <= 0) return false;
+    if (cm(o.fit_last - o.fit_first + 1) < params_.narrow_fitted_width_cm) return false;
+    if (cm(o.last - o.first + 1) < params_.narrow_passing_width_cm) return false;
+    if (layer_.depth_mm_mean >= params_.narrow_layers_below_mm) return false;
+    if (layer_.camera->height_cm(o.bottom - o.fit_top + 1, layer_.depth_mm_mean) < params_.narrow_min_height_cm) return false;
+    return clear_above(o);
+  }
+
+  // Over the passing columns, at least half the pixels of the narrow_clear_above_cm band above the
+  // object's top belong to other layers (rows above the image count as missing).
+  bool clear_above(const LayerObject& o) const {
+    const int band = std::max(1, px(params_.narrow_clear_above_cm));
+    int other = 0, total = 0;
+    for (int y = o.top - band; y < o.top; ++y) {
+      const std::uint8_t* label = y >= 0 ? layer_.labels->ptr<std::uint8_t>(y) : nullptr;
+      for (int x = o.first; x <= o.last; ++x, ++total) {
+        if (label != nullptr && label[x] != 0 && label[x] != layer_.label) ++other;
+      }
+    }
+    return total > 0 && 2 * other >= total;
+  }
+
   bool split_enabled() const { return params_.split_valley_cm > 0 || params_.split_depth_jump_mm > 0 || params_.split_step_cm > 0; }
 
   // The object over the passing columns of first..last (first and last pass).
@@ -196,10 +227,12 @@ class ObjectShaper {
       if (!joined.empty()) {
         LayerObject& previous = joined.back();
         // Pieces each too narrow to be a candidate alone join only in near layers (farther they are the
-        // legs of furniture more often than a person's).
+        // legs of furniture more often than a person's), with join_narrow_passing only when their passing
+        // columns are together at least narrow_passing_width_cm wide (legs, not a chair's slats).
+        const bool narrow = !wide_enough(previous) && !wide_enough(o);
         const bool touch = o.fit_first <= previous.fit_last + 1 &&
-                           (wide_enough(previous) || wide_enough(o) ||
-                            layer_.depth_mm_mean < params_.join_narrow_layers_below_mm);
+                           (!narrow || (layer_.depth_mm_mean < params_.join_narrow_layers_below_mm &&
+                                        (!params_.join_narrow_passing || passing_cm(previous) + passing_cm(o) >= params_.narrow_passing_width_cm)));
         if (touch && cm(o.fit_last - previous.fit_first + 1) <= params_.max_person_width_cm) {
           const int fit_first = previous.fit_first, fit_top = std::min(previous.fit_top, o.fit_top);
           previous = span(previous.first, o.last);

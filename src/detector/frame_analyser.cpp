@@ -25,6 +25,7 @@ DetectorParams thesis_params(DetectorParams params) {
   c.join_pieces = false;
   c.max_object_width_cm = 0;
   c.min_fitted_width_cm = 0;
+  c.narrow_fitted_width_cm = 0;
   c.split_depth_jump_mm = 0;
   c.split_valley_cm = 0;
   c.split_step_cm = 0;

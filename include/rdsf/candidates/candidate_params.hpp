@@ -52,6 +52,27 @@ struct CandidateParams {
   bool join_pieces = true;
   /// ... pieces that are each narrower than min_width_cm join only in layers nearer than this (mm).
   double join_narrow_layers_below_mm = 3500.0;
+  /// ... and only when their passing columns alone (without the gaps between them) are together at least
+  /// narrow_passing_width_cm wide (a person's two legs; not the thin slats of a chair's back: the real
+  /// empty rooms' extra candidate). false: any (docs/candidates.md has both measured).
+  bool join_narrow_passing = true;
+  /// Narrow people: an object whose passing columns are narrower than min_width_cm is still a candidate
+  /// when its fitted extent is at least this wide (cm) and it looks like a whole person: passing columns
+  /// at least narrow_passing_width_cm wide, a layer nearer than narrow_layers_below_mm, a real height
+  /// (fitted top to lowest row) of at least narrow_min_height_cm, and other layers' readings, not missing
+  /// ones or the border, over at least half of a narrow_clear_above_cm band above its top (the background
+  /// above a head). A person's legs or a leg behind a pole and holes can be all of its columns that pass
+  /// threshold_height, narrower than min_width_cm, while the body above is a person's width. 0 turns it
+  /// off (the thesis's min_width_cm alone).
+  double narrow_fitted_width_cm = 20.0;
+  /// ... the narrowest its passing columns may be (cm).
+  double narrow_passing_width_cm = 5.0;
+  /// ... in layers nearer than this (mm): the Kinect's people range.
+  double narrow_layers_below_mm = 5000.0;
+  /// ... the shortest it may be (cm; the thesis's far threshold_height).
+  double narrow_min_height_cm = 90.0;
+  /// ... the band above its top that must show other layers (cm).
+  double narrow_clear_above_cm = 10.0;
   /// An object whose fitted extent (arms included) is narrower than this (cm) is not a candidate: pieces
   /// of furniture, not people, whose narrowest (side-on) view is wider. Objects touching the left or right
   /// image border are exempt (a person cut by it looks narrow). 0 turns it off.

@@ -7,10 +7,18 @@
 //      within its rows, such as arms, which are too short to pass threshold_height) - fit_reach_cm;
 //   2. joining pieces: objects whose fitted extents touch and that together are no wider than a person
 //      are one object (a person whose torso columns fail the height test because the legs part) -
-//      join_pieces;
+//      join_pieces (pieces each narrower than min_width_cm: in layers nearer than
+//      join_narrow_layers_below_mm, and with join_narrow_passing when their passing columns alone are
+//      together at least narrow_passing_width_cm);
 //   3. splitting: an object wider than a person is cut where the layer's depth jumps between neighbouring
 //      columns (split_depth_jump_mm) and at deep valleys of its column-height profile (split_valley_cm);
-//      the pieces become objects, and the whole stays one too when split_keep_whole is set.
+//      the pieces become objects, and the whole stays one too when split_keep_whole is set;
+//   4. narrow people: an object narrower than min_width_cm over its passing columns stays one when its
+//      fitted extent is at least narrow_fitted_width_cm wide, its passing columns at least
+//      narrow_passing_width_cm, its layer nearer than narrow_layers_below_mm, its height (fitted top to
+//      lowest row) at least narrow_min_height_cm, and at least half of the narrow_clear_above_cm band above
+//      its top over its passing columns holds other layers' readings (no missing readings, no border: the
+//      background above a head) - narrow_fitted_width_cm.
 // Objects wider than max_object_width_cm (walls) and, unless they touch the left or right border, objects
 // whose fitted extent is narrower than min_fitted_width_cm (posts, furniture legs) are dropped.
 #include <vector>
