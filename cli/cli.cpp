@@ -205,7 +205,7 @@ po::options_description detector_options(DetectorParams& p) {
        "... and only when their passing columns alone are together at least --narrow-passing-width wide")
       ("narrow-fitted-width", po::value(&c.narrow_fitted_width_cm)->default_value(c.narrow_fitted_width_cm),
        "objects narrower than --min-width are candidates when their fitted box is this wide (cm), they are person-"
-       "tall, near and have a background above their top; 0 = thesis")
+       "tall, near and have a background above their top (20 turns it on); 0 = off, the thesis")
       ("narrow-passing-width", po::value(&c.narrow_passing_width_cm)->default_value(c.narrow_passing_width_cm),
        "... and their passing columns at least this wide (cm)")
       ("narrow-layers-below", po::value(&c.narrow_layers_below_mm)->default_value(c.narrow_layers_below_mm),

@@ -14,7 +14,14 @@ using namespace rdsf;
 
 namespace {
 
-std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = {}) {
+// The rule is off by default (narrow_fitted_width_cm = 0, see candidate_params.hpp); these tests turn it on.
+DetectorParams narrow_on() {
+  DetectorParams p;
+  p.candidates.narrow_fitted_width_cm = 20;
+  return p;
+}
+
+std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = narrow_on()) {
   std::vector<Candidate> found;
   for (const Candidate& c : FrameAnalyser(params).analyse(frame, false).candidates) {
     if (std::abs(c.layer_depth_mm - depth_mm) < 30) found.push_back(c);
@@ -43,10 +50,11 @@ TEST(NarrowPeople, PersonWhosePassingColumnsAreNarrowerThanMinWidthIsACandidate)
   ASSERT_EQ(found.size(), 1u);
   EXPECT_GE(iou(found[0].fitted_box, person), 0.9);
   EXPECT_LT(found[0].width_cm, 10.0);  // its passing columns: narrower than min_width_cm
-  // Off (and in the thesis preset): the thesis's min_width_cm drops it.
-  DetectorParams off;
+  // Off (the default, and in the thesis preset): the thesis's min_width_cm drops it.
+  DetectorParams off = narrow_on();
   off.candidates.narrow_fitted_width_cm = 0;
   EXPECT_TRUE(at_depth(frame, 3000, off).empty());
+  EXPECT_TRUE(at_depth(frame, 3000, DetectorParams{}).empty());
   EXPECT_TRUE(at_depth(frame, 3000, thesis_params()).empty());
   EXPECT_EQ(thesis_params().candidates.narrow_fitted_width_cm, 0);
 }
@@ -73,7 +81,7 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
   DepthFrame chair = test::wall_frame(5000);
   test::paint(chair, {300, 300, 70, 40}, 3000);   // seat and back, 23 cm
   test::paint(chair, {328, 340, 14, 100}, 3000);  // the leg, 57 cm
-  DetectorParams relaxed;
+  DetectorParams relaxed = narrow_on();
   relaxed.candidates.mode = HeightMode::relaxed;
   EXPECT_TRUE(at_depth(chair, 3000, relaxed).empty());
   relaxed.candidates.narrow_min_height_cm = 0;
@@ -81,7 +89,7 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
   // The person beyond narrow_layers_below_mm (5 m) is not kept.
   DepthFrame far = test::wall_frame(7000);
   paint_narrow_person(far, 160, 5500);
-  DetectorParams strict;
+  DetectorParams strict = narrow_on();
   EXPECT_TRUE(at_depth(far, 5500, strict).empty());
   strict.candidates.narrow_layers_below_mm = 6000;
   EXPECT_EQ(at_depth(far, 5500, strict).size(), 1u);
@@ -90,10 +98,10 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
 TEST(NarrowPeople, NarrowPassingColumnsMustBeWideEnoughAndTheBodyAPersonsWidth) {
   DepthFrame frame = test::wall_frame(5000);
   paint_narrow_person(frame, 160);
-  DetectorParams wider_body;
+  DetectorParams wider_body = narrow_on();
   wider_body.candidates.narrow_fitted_width_cm = 45;  // the body is 40 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_body).empty());
-  DetectorParams wider_legs;
+  DetectorParams wider_legs = narrow_on();
   wider_legs.candidates.narrow_passing_width_cm = 9;  // the legs are 8 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_legs).empty());
 }
