@@ -73,6 +73,24 @@ TEST(CandidatesReference, ColumnRunsSameOnWideMapsWithManyLayers) {
   }
 }
 
+// floor_trimmed_bottom() against the reference on `depth`/`labels` for a random object: columns passing
+// but one in `fail_one_in`, random first..last and top..bottom, the layer's range lo..lo + span - 1, a
+// tolerance of 0..tolerance_steps - 1 steps of tolerance_step mm (drawn in this order).
+void expect_same_trim(std::mt19937& rng, const cv::Mat1w& depth, const cv::Mat1b& labels, int layer, int lo, int span,
+                      int fail_one_in, int tolerance_steps, double tolerance_step, int trial) {
+  const int rows = depth.rows, cols = depth.cols;
+  std::vector<char> passing(static_cast<std::size_t>(cols));
+  for (char& p : passing) p = static_cast<char>(rng() % static_cast<unsigned>(fail_one_in) != 0);
+  const int first = static_cast<int>(rng() % cols), last = first + static_cast<int>(rng() % (cols - first));
+  const int top = static_cast<int>(rng() % rows), bottom = top + static_cast<int>(rng() % (rows - top));
+  const double tolerance = static_cast<double>(rng() % static_cast<unsigned>(tolerance_steps)) * tolerance_step;
+  const int fast = floor_trimmed_bottom(depth, labels, layer, first, last, top, bottom, tolerance, passing,
+                                        static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(lo + span - 1));
+  const int reference = test::trim_floor_reference(depth, labels, layer, first, last, top, bottom, tolerance,
+                                                   [&](int c) { return passing[static_cast<std::size_t>(c)] != 0; });
+  EXPECT_EQ(fast, reference) << "trial " << trial;
+}
+
 TEST(CandidatesReference, FloorTrimSameOnRandomObjects) {
   std::mt19937 rng(12);
   for (int trial = 0; trial < 300; ++trial) {
@@ -88,16 +106,33 @@ TEST(CandidatesReference, FloorTrimSameOnRandomObjects) {
         depth(y, x) = static_cast<std::uint16_t>(outside ? rng() % 8000 : lo + static_cast<int>(rng() % span));
       }
     }
-    std::vector<char> passing(static_cast<std::size_t>(cols));
-    for (char& p : passing) p = static_cast<char>(rng() % 4 != 0);
-    const int first = static_cast<int>(rng() % cols), last = first + static_cast<int>(rng() % (cols - first));
-    const int top = static_cast<int>(rng() % rows), bottom = top + static_cast<int>(rng() % (rows - top));
-    const double tolerance = static_cast<double>(rng() % 300);
-    const int fast = floor_trimmed_bottom(depth, labels, 1, first, last, top, bottom, tolerance, passing,
-                                          static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(lo + span - 1));
-    const int reference = test::trim_floor_reference(depth, labels, 1, first, last, top, bottom, tolerance,
-                                                     [&](int c) { return passing[static_cast<std::size_t>(c)] != 0; });
-    EXPECT_EQ(fast, reference) << "trial " << trial;
+    expect_same_trim(rng, depth, labels, 1, lo, span, 4, 300, 1.0, trial);
+  }
+}
+
+// Wide objects with long runs of passing columns (the 8-pixel counting of floor_trim.cpp and its tails),
+// layer ranges up to 3 m wide, depths now and then outside the range, and layers that are not labels.
+TEST(CandidatesReference, FloorTrimSameOnWideObjects) {
+  std::mt19937 rng(31);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int rows = 2 + static_cast<int>(rng() % 120), cols = 1 + static_cast<int>(rng() % 300);
+    cv::Mat1b labels(rows, cols);
+    cv::Mat1w depth(rows, cols);
+    // Every 23rd trial the whole 16-bit range (its counter indices do not fit 16 bits: the collecting path).
+    const bool whole_range = trial % 23 == 0;
+    const int lo = whole_range ? 0 : static_cast<int>(rng() % 6000);
+    const int span = whole_range ? 65536 : 1 + static_cast<int>(rng() % 3000);
+    const int layer = trial % 17 == 0 ? 300 : 1 + static_cast<int>(rng() % 4);
+    for (int y = 0; y < rows; ++y) {
+      for (int x = 0; x < cols; ++x) {
+        labels(y, x) = static_cast<std::uint8_t>(rng() % 5 == 0 ? rng() % 6 : 1 + (x / 37 + y / 29) % 4);
+        const bool outside = trial % 4 == 0 && rng() % 200 == 0;
+        const bool floor = trial % 2 == 0 && 5 * y > 4 * rows;  // the lowest fifth nearer: floor to trim
+        depth(y, x) = static_cast<std::uint16_t>(outside ? rng() % 65536
+                                                 : lo + static_cast<int>(rng() % (floor ? span / 8 + 1 : span)));
+      }
+    }
+    expect_same_trim(rng, depth, labels, layer, lo, span, 16, 3000, 1.0 / 7.0, trial);
   }
 }
 
