@@ -221,6 +221,71 @@ std::vector<DepthFrame> candidate_frames() {
 
 // Every object's fitted extent (objects not joined, so each is one passing span fitted over the whole
 // width) equals the column-by-column walk, and every candidate's crops the pixel-by-pixel cut.
+// Every object of layer_objects(view, params) has the fitted extent of the column-by-column walk; counts
+// the objects and those whose fitted extent reaches beyond their passing columns.
+void expect_same_fitted_extents(const LayerView& view, const CandidateParams& params, int& objects, int& widened) {
+  const LayerObjects found = layer_objects(view, params);
+  const int reach = static_cast<int>(params.fit_reach_cm * 10.0 * view.camera->fx_px / std::max(1.0, view.depth_mm_mean));
+  for (const LayerObject& o : found.objects) {
+    const test::FittedExtent reference = test::fitted_extent_reference(
+        *view.labels, *view.depth_mm, view.label, found.passing, o.first, o.last, o.top, o.bottom, reach,
+        params.column_gap, params.fit_depth_step_mm, 0, view.labels->cols - 1);
+    EXPECT_EQ(o.fit_first, reference.first) << "layer " << view.label << " object at column " << o.first;
+    EXPECT_EQ(o.fit_last, reference.last) << "layer " << view.label << " object at column " << o.first;
+    EXPECT_EQ(o.fit_top, reference.top) << "layer " << view.label << " object at column " << o.first;
+    ++objects;
+    widened += reference.last - reference.first > o.last - o.first;
+  }
+}
+
+// Random maps of upright blocks (label 1) with pieces beside them at other depths, before a background
+// (label 2) with holes (0): images narrower than 16 columns, objects at the borders, column gaps that make
+// the first gather wider than 16 columns (the one-by-one gather) and every depth step.
+TEST(CandidatesReference, FittedExtentsSameOnRandomMaps) {
+  std::mt19937 rng(41);
+  const CameraModel camera;
+  int objects = 0, widened = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int rows = 200 + static_cast<int>(rng() % 200), cols = 4 + static_cast<int>(rng() % 160);
+    cv::Mat1b labels(rows, cols, std::uint8_t{2});
+    cv::Mat1w depth(rows, cols);
+    for (int y = 0; y < rows; ++y) {
+      for (int x = 0; x < cols; ++x) depth(y, x) = static_cast<std::uint16_t>(5000 + rng() % 500);
+    }
+    const auto fill = [&](int x0, int y0, int w, int h, std::uint8_t label, int mm, int noise) {
+      for (int y = std::max(0, y0); y < std::min(rows, y0 + h); ++y) {
+        for (int x = std::max(0, x0); x < std::min(cols, x0 + w); ++x) {
+          labels(y, x) = label;
+          depth(y, x) = static_cast<std::uint16_t>(mm + static_cast<int>(rng() % static_cast<unsigned>(noise + 1)));
+        }
+      }
+    };
+    const int blocks = 1 + static_cast<int>(rng() % 4);
+    for (int b = 0; b < blocks; ++b) {
+      const int x = static_cast<int>(rng() % cols), w = 1 + static_cast<int>(rng() % 30), top = static_cast<int>(rng() % (rows / 3));
+      const int mm = 2500 + static_cast<int>(rng() % 1000);
+      fill(x, top, w, rows - top - static_cast<int>(rng() % 20), 1, mm, 60);
+      for (int piece = static_cast<int>(rng() % 5); piece > 0; --piece) {  // arms, hands, furniture beside it
+        const int px = x + (rng() % 2 == 0 ? -1 : 1) * static_cast<int>(rng() % 40), py = top + static_cast<int>(rng() % rows) - rows / 4;
+        fill(px, py, 1 + static_cast<int>(rng() % 12), 2 + static_cast<int>(rng() % 60), 1, mm - 300 + static_cast<int>(rng() % 600), 80);
+      }
+    }
+    for (int holes = static_cast<int>(rng() % 400); holes > 0; --holes) {
+      labels(static_cast<int>(rng() % rows), static_cast<int>(rng() % cols)) = 0;
+    }
+    CandidateParams params;
+    params.join_pieces = false;
+    params.column_gap = static_cast<int>(rng() % 21);
+    params.fit_reach_cm = 10.0 + static_cast<double>(rng() % 80);
+    params.fit_depth_step_mm = static_cast<double>(rng() % 3) * 150.0;
+    const auto runs = column_runs(labels, 2, params.k);
+    const LayerView view{&runs[1], &labels, &depth, 1, 3000.0, 3500.0, &camera};
+    expect_same_fitted_extents(view, params, objects, widened);
+  }
+  EXPECT_GT(objects, 100);
+  EXPECT_GT(widened, 50);
+}
+
 TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
   CandidateParams params;
   params.join_pieces = false;
@@ -231,18 +296,7 @@ TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
     for (const DepthLayer& layer : s.layers) {
       const LayerView view{&runs[static_cast<std::size_t>(layer.label)], &s.labels, &frame.depth_mm, layer.label,
                            layer.mean_depth_mm, static_cast<double>(layer.max_depth_mm), &frame.camera};
-      const LayerObjects found = layer_objects(view, params);
-      const int reach = static_cast<int>(params.fit_reach_cm * 10.0 * frame.camera.fx_px / std::max(1.0, layer.mean_depth_mm));
-      for (const LayerObject& o : found.objects) {
-        const test::FittedExtent reference = test::fitted_extent_reference(
-            s.labels, frame.depth_mm, layer.label, found.passing, o.first, o.last, o.top, o.bottom, reach,
-            params.column_gap, params.fit_depth_step_mm, 0, frame.depth_mm.cols - 1);
-        EXPECT_EQ(o.fit_first, reference.first) << "layer " << layer.label << " object at column " << o.first;
-        EXPECT_EQ(o.fit_last, reference.last) << "layer " << layer.label << " object at column " << o.first;
-        EXPECT_EQ(o.fit_top, reference.top) << "layer " << layer.label << " object at column " << o.first;
-        ++objects;
-        widened += reference.last - reference.first > o.last - o.first;
-      }
+      expect_same_fitted_extents(view, params, objects, widened);
     }
     for (const Candidate& c : find_candidates(frame, s, {})) {
       Candidate reference;
