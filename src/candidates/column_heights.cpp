@@ -79,6 +79,8 @@ class RunScanner {
 
   void scan(const cv::Mat1b& labels) {
     const int height = labels.rows;
+    const std::uint8_t* first_row = labels.ptr<std::uint8_t>(0);
+    for (int c = 0; c < width_; ++c) columns_[static_cast<std::size_t>(c)].label = first_row[c];
     for (int r = 1; r < height; ++r) {
       const std::uint8_t* above = labels.ptr<std::uint8_t>(r - 1);
       const std::uint8_t* row = labels.ptr<std::uint8_t>(r);
@@ -88,19 +90,19 @@ class RunScanner {
           const int c = c0 + __builtin_ctzll(changed);
           changed &= changed - 1;
           Column& column = columns_[static_cast<std::size_t>(c)];
-          segment(c, column, above[c], r - 1);
+          segment(c, column, r - 1);
+          column.label = row[c];
           column.first = r;
         }
       }
     }
-    const std::uint8_t* last_row = labels.ptr<std::uint8_t>(height - 1);
-    for (int c = 0; c < width_; ++c) segment(c, columns_[static_cast<std::size_t>(c)], last_row[c], height - 1);
+    for (int c = 0; c < width_; ++c) segment(c, columns_[static_cast<std::size_t>(c)], height - 1);
   }
 
   // The longest run of label l (1..layer_count) in column c.
   ColumnRun best(int l, int c) const {
     const Run& run = runs_[static_cast<std::size_t>(c) * slots_ + static_cast<std::size_t>(l)];
-    return run.top <= run.bottom ? ColumnRun{run.top, run.bottom} : ColumnRun{};
+    return {run.top, run.bottom};
   }
 
  private:
@@ -108,30 +110,23 @@ class RunScanner {
     Word farther[Words] = {};
     Word nearer[Words] = {};
     int first = 0;  // first row of the current segment
+    int label = 0;  // its label
   };
-  // A label's runs in a column. No run yet: start < 0 (restart whatever the gap); no longest run yet: an
-  // empty one (top > bottom, length bottom - top + 1 = 0).
   struct Run {
     int start = -1, last = -1;  // the run going on and the last row of the label in it
-    int top = 0, bottom = -1;   // the longest run so far
+    int top = -1, bottom = -1;  // the longest run so far
   };
 
-  // all ones when `condition`, else 0: selects without a branch (the conditions follow the data).
-  static int select(bool condition, int yes, int no) {
-    const int mask = -static_cast<int>(condition);
-    return (yes & mask) | (no & ~mask);
-  }
-
-  // The segment of label s (its rows column.first..last) in column c. Label 0 (no reading) goes through
-  // the same steps without a branch: below_[0] and above_[0] set no bit, and its slot 0 is never reported.
-  void segment(int c, Column& column, int s, int last) {
+  void segment(int c, Column& column, int last) {
+    const int s = column.label;
+    if (s == 0) return;  // no reading: sets no bit (below_[0], above_[0] are empty), and slot 0 is not reported
     const int first = column.first;
     for (int w = 0; w < Words; ++w) {
       column.farther[w] |= below_[s][w];
       column.nearer[w] |= above_[s][w];
     }
     const int slot = slot_of_[s];
-    const int word = Words == 1 ? 0 : slot / 64;
+    const int word = slot / 64;
     const Word bit = Word{1} << (slot % 64);
     const bool nothing_farther = (column.farther[word] & bit) == 0;
     const bool something_nearer = (column.nearer[word] & bit) != 0;
@@ -141,11 +136,11 @@ class RunScanner {
     const int gap = first - run.last - 1;
     const bool occluded = nothing_farther & something_nearer & (gap <= occlusion_[static_cast<std::size_t>(slot)]);
     const bool restart = (run.start < 0) | ((gap > k_) & !occluded);
-    run.start = select(restart, first, run.start);
+    run.start = restart ? first : run.start;
     run.last = last;
-    const bool longer = last - run.start > run.bottom - run.top;
-    run.top = select(longer, run.start, run.top);
-    run.bottom = select(longer, last, run.bottom);
+    const bool longer = last - run.start + 1 > (run.top < 0 ? 0 : run.bottom - run.top + 1);
+    run.top = longer ? run.start : run.top;
+    run.bottom = longer ? last : run.bottom;
   }
 
   const int width_;
