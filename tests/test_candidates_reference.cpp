@@ -238,6 +238,34 @@ void expect_same_fitted_extents(const LayerView& view, const CandidateParams& pa
   }
 }
 
+// The passing columns of layer_objects() (a bisected shortest passing length per layer) against the
+// height test of every column, at random depths (none and negative ones too) and thresholds.
+TEST(CandidatesReference, PassingColumnsSameAsTheHeightTest) {
+  std::mt19937 rng(43);
+  const CameraModel camera;
+  const cv::Mat1b labels(480, 200, std::uint8_t{1});
+  const cv::Mat1w depth(480, 200, std::uint16_t{3000});
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<ColumnRun> runs(200);
+    for (ColumnRun& r : runs) {
+      if (rng() % 5 == 0) continue;  // no run
+      r.top = static_cast<int>(rng() % 480);
+      r.bottom = r.top + static_cast<int>(rng() % static_cast<unsigned>(480 - r.top));
+    }
+    CandidateParams params;
+    params.height_at_column_depth = false;
+    params.near_height_cm = params.far_height_cm = static_cast<double>(rng() % 200);
+    const double mean = trial % 10 == 0 ? -static_cast<double>(rng() % 100) : static_cast<double>(rng() % 9000);
+    const LayerView view{&runs, &labels, &depth, 1, mean, mean + 200.0, &camera};
+    const LayerObjects found = layer_objects(view, params);
+    const double min_height_cm = params.threshold_height_cm(mean);
+    for (int c = 0; c < 200; ++c) {
+      const bool passes = camera.height_cm(runs[static_cast<std::size_t>(c)].length(), mean) >= min_height_cm;
+      EXPECT_EQ(found.passing[static_cast<std::size_t>(c)] != 0, passes) << "trial " << trial << " column " << c;
+    }
+  }
+}
+
 // Random maps of upright blocks (label 1) with pieces beside them at other depths, before a background
 // (label 2) with holes (0): images narrower than 16 columns, objects at the borders, column gaps that make
 // the first gather wider than 16 columns (the one-by-one gather) and every depth step.

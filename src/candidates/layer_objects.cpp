@@ -18,14 +18,38 @@ class ObjectShaper {
       : layer_(layer), params_(params), runs_(*layer.runs), width_(static_cast<int>(layer.runs->size())) {
     const double min_height_cm = params.threshold_height_cm(layer.depth_mm_mean);
     passing_.resize(static_cast<std::size_t>(width_));
+    int longest = 0;
+    for (int c = 0; c < width_; ++c) longest = std::max(longest, run(c).length());
+    // At depth d > 0 (and fy > 0) height_cm(length, d) grows with the length (each step of the formula
+    // does), so "at least min_height_cm" is "length >= the shortest length that passes": found once by
+    // bisection on the same formula over 0..longest (longest + 1 when none passes). Else (-1) every
+    // column is measured.
+    const auto shortest_passing = [&](double depth) {
+      if (!(depth > 0) || !(layer.camera->fy_px > 0)) return -1;
+      int lo = 0, hi = longest + 1;  // lengths below lo fail, lengths from hi on pass (or are none)
+      while (lo < hi) {
+        const int mid = lo + (hi - lo) / 2;
+        if (layer.camera->height_cm(mid, depth) >= min_height_cm) {
+          hi = mid;
+        } else {
+          lo = mid + 1;
+        }
+      }
+      return lo;
+    };
+    const int shortest_at_mean = shortest_passing(layer.depth_mm_mean);
+    const int shortest_at_max = shortest_passing(layer.depth_mm_max);
+    const auto passes_at = [&](int length, double depth, int shortest) {
+      return shortest >= 0 ? length >= shortest : layer.camera->height_cm(length, depth) >= min_height_cm;
+    };
     for (int c = 0; c < width_; ++c) {
       const int length = run(c).length();
-      bool passes = layer.camera->height_cm(length, layer.depth_mm_mean) >= min_height_cm;
+      bool passes = passes_at(length, layer.depth_mm_mean, shortest_at_mean);
       // A column that fails at the layer's mean depth may pass at its own (a layer spans up to
       // candidate_threshold of depth): measured where it could, at the median depth of its run.
       if (!passes && params.height_at_column_depth && length > 0 &&
           layer.depth_mm_mean < params.column_depth_layers_below_mm &&
-          layer.camera->height_cm(length, layer.depth_mm_max) >= min_height_cm) {
+          passes_at(length, layer.depth_mm_max, shortest_at_max)) {
         passes = layer.camera->height_cm(length, column_depth_mm(c, 4)) >= min_height_cm;
       }
       passing_[static_cast<std::size_t>(c)] = passes;
