@@ -73,6 +73,24 @@ TEST(CandidatesReference, ColumnRunsSameOnWideMapsWithManyLayers) {
   }
 }
 
+// floor_trimmed_bottom() against the reference on `depth`/`labels` for a random object: columns passing
+// but one in `fail_one_in`, random first..last and top..bottom, the layer's range lo..lo + span - 1, a
+// tolerance of 0..tolerance_steps - 1 steps of tolerance_step mm (drawn in this order).
+void expect_same_trim(std::mt19937& rng, const cv::Mat1w& depth, const cv::Mat1b& labels, int layer, int lo, int span,
+                      int fail_one_in, int tolerance_steps, double tolerance_step, int trial) {
+  const int rows = depth.rows, cols = depth.cols;
+  std::vector<char> passing(static_cast<std::size_t>(cols));
+  for (char& p : passing) p = static_cast<char>(rng() % static_cast<unsigned>(fail_one_in) != 0);
+  const int first = static_cast<int>(rng() % cols), last = first + static_cast<int>(rng() % (cols - first));
+  const int top = static_cast<int>(rng() % rows), bottom = top + static_cast<int>(rng() % (rows - top));
+  const double tolerance = static_cast<double>(rng() % static_cast<unsigned>(tolerance_steps)) * tolerance_step;
+  const int fast = floor_trimmed_bottom(depth, labels, layer, first, last, top, bottom, tolerance, passing,
+                                        static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(lo + span - 1));
+  const int reference = test::trim_floor_reference(depth, labels, layer, first, last, top, bottom, tolerance,
+                                                   [&](int c) { return passing[static_cast<std::size_t>(c)] != 0; });
+  EXPECT_EQ(fast, reference) << "trial " << trial;
+}
+
 TEST(CandidatesReference, FloorTrimSameOnRandomObjects) {
   std::mt19937 rng(12);
   for (int trial = 0; trial < 300; ++trial) {
@@ -88,16 +106,33 @@ TEST(CandidatesReference, FloorTrimSameOnRandomObjects) {
         depth(y, x) = static_cast<std::uint16_t>(outside ? rng() % 8000 : lo + static_cast<int>(rng() % span));
       }
     }
-    std::vector<char> passing(static_cast<std::size_t>(cols));
-    for (char& p : passing) p = static_cast<char>(rng() % 4 != 0);
-    const int first = static_cast<int>(rng() % cols), last = first + static_cast<int>(rng() % (cols - first));
-    const int top = static_cast<int>(rng() % rows), bottom = top + static_cast<int>(rng() % (rows - top));
-    const double tolerance = static_cast<double>(rng() % 300);
-    const int fast = floor_trimmed_bottom(depth, labels, 1, first, last, top, bottom, tolerance, passing,
-                                          static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(lo + span - 1));
-    const int reference = test::trim_floor_reference(depth, labels, 1, first, last, top, bottom, tolerance,
-                                                     [&](int c) { return passing[static_cast<std::size_t>(c)] != 0; });
-    EXPECT_EQ(fast, reference) << "trial " << trial;
+    expect_same_trim(rng, depth, labels, 1, lo, span, 4, 300, 1.0, trial);
+  }
+}
+
+// Wide objects with long runs of passing columns (the 8-pixel counting of floor_trim.cpp and its tails),
+// layer ranges up to 3 m wide, depths now and then outside the range, and layers that are not labels.
+TEST(CandidatesReference, FloorTrimSameOnWideObjects) {
+  std::mt19937 rng(31);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int rows = 2 + static_cast<int>(rng() % 120), cols = 1 + static_cast<int>(rng() % 300);
+    cv::Mat1b labels(rows, cols);
+    cv::Mat1w depth(rows, cols);
+    // Every 23rd trial the whole 16-bit range (its counter indices do not fit 16 bits: the collecting path).
+    const bool whole_range = trial % 23 == 0;
+    const int lo = whole_range ? 0 : static_cast<int>(rng() % 6000);
+    const int span = whole_range ? 65536 : 1 + static_cast<int>(rng() % 3000);
+    const int layer = trial % 17 == 0 ? 300 : 1 + static_cast<int>(rng() % 4);
+    for (int y = 0; y < rows; ++y) {
+      for (int x = 0; x < cols; ++x) {
+        labels(y, x) = static_cast<std::uint8_t>(rng() % 5 == 0 ? rng() % 6 : 1 + (x / 37 + y / 29) % 4);
+        const bool outside = trial % 4 == 0 && rng() % 200 == 0;
+        const bool floor = trial % 2 == 0 && 5 * y > 4 * rows;  // the lowest fifth nearer: floor to trim
+        depth(y, x) = static_cast<std::uint16_t>(outside ? rng() % 65536
+                                                 : lo + static_cast<int>(rng() % (floor ? span / 8 + 1 : span)));
+      }
+    }
+    expect_same_trim(rng, depth, labels, layer, lo, span, 16, 3000, 1.0 / 7.0, trial);
   }
 }
 
@@ -186,6 +221,99 @@ std::vector<DepthFrame> candidate_frames() {
 
 // Every object's fitted extent (objects not joined, so each is one passing span fitted over the whole
 // width) equals the column-by-column walk, and every candidate's crops the pixel-by-pixel cut.
+// Every object of layer_objects(view, params) has the fitted extent of the column-by-column walk; counts
+// the objects and those whose fitted extent reaches beyond their passing columns.
+void expect_same_fitted_extents(const LayerView& view, const CandidateParams& params, int& objects, int& widened) {
+  const LayerObjects found = layer_objects(view, params);
+  const int reach = static_cast<int>(params.fit_reach_cm * 10.0 * view.camera->fx_px / std::max(1.0, view.depth_mm_mean));
+  for (const LayerObject& o : found.objects) {
+    const test::FittedExtent reference = test::fitted_extent_reference(
+        *view.labels, *view.depth_mm, view.label, found.passing, o.first, o.last, o.top, o.bottom, reach,
+        params.column_gap, params.fit_depth_step_mm, 0, view.labels->cols - 1);
+    EXPECT_EQ(o.fit_first, reference.first) << "layer " << view.label << " object at column " << o.first;
+    EXPECT_EQ(o.fit_last, reference.last) << "layer " << view.label << " object at column " << o.first;
+    EXPECT_EQ(o.fit_top, reference.top) << "layer " << view.label << " object at column " << o.first;
+    ++objects;
+    widened += reference.last - reference.first > o.last - o.first;
+  }
+}
+
+// The passing columns of layer_objects() (a bisected shortest passing length per layer) against the
+// height test of every column, at random depths (none and negative ones too) and thresholds.
+TEST(CandidatesReference, PassingColumnsSameAsTheHeightTest) {
+  std::mt19937 rng(43);
+  const CameraModel camera;
+  const cv::Mat1b labels(480, 200, std::uint8_t{1});
+  const cv::Mat1w depth(480, 200, std::uint16_t{3000});
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<ColumnRun> runs(200);
+    for (ColumnRun& r : runs) {
+      if (rng() % 5 == 0) continue;  // no run
+      r.top = static_cast<int>(rng() % 480);
+      r.bottom = r.top + static_cast<int>(rng() % static_cast<unsigned>(480 - r.top));
+    }
+    CandidateParams params;
+    params.height_at_column_depth = false;
+    params.near_height_cm = params.far_height_cm = static_cast<double>(rng() % 200);
+    const double mean = trial % 10 == 0 ? -static_cast<double>(rng() % 100) : static_cast<double>(rng() % 9000);
+    const LayerView view{&runs, &labels, &depth, 1, mean, mean + 200.0, &camera};
+    const LayerObjects found = layer_objects(view, params);
+    const double min_height_cm = params.threshold_height_cm(mean);
+    for (int c = 0; c < 200; ++c) {
+      const bool passes = camera.height_cm(runs[static_cast<std::size_t>(c)].length(), mean) >= min_height_cm;
+      EXPECT_EQ(found.passing[static_cast<std::size_t>(c)] != 0, passes) << "trial " << trial << " column " << c;
+    }
+  }
+}
+
+// Random maps of upright blocks (label 1) with pieces beside them at other depths, before a background
+// (label 2) with holes (0): images narrower than 16 columns, objects at the borders, column gaps that make
+// the first gather wider than 16 columns (the one-by-one gather) and every depth step.
+TEST(CandidatesReference, FittedExtentsSameOnRandomMaps) {
+  std::mt19937 rng(41);
+  const CameraModel camera;
+  int objects = 0, widened = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int rows = 200 + static_cast<int>(rng() % 200), cols = 4 + static_cast<int>(rng() % 160);
+    cv::Mat1b labels(rows, cols, std::uint8_t{2});
+    cv::Mat1w depth(rows, cols);
+    for (int y = 0; y < rows; ++y) {
+      for (int x = 0; x < cols; ++x) depth(y, x) = static_cast<std::uint16_t>(5000 + rng() % 500);
+    }
+    const auto fill = [&](int x0, int y0, int w, int h, std::uint8_t label, int mm, int noise) {
+      for (int y = std::max(0, y0); y < std::min(rows, y0 + h); ++y) {
+        for (int x = std::max(0, x0); x < std::min(cols, x0 + w); ++x) {
+          labels(y, x) = label;
+          depth(y, x) = static_cast<std::uint16_t>(mm + static_cast<int>(rng() % static_cast<unsigned>(noise + 1)));
+        }
+      }
+    };
+    const int blocks = 1 + static_cast<int>(rng() % 4);
+    for (int b = 0; b < blocks; ++b) {
+      const int x = static_cast<int>(rng() % cols), w = 1 + static_cast<int>(rng() % 30), top = static_cast<int>(rng() % (rows / 3));
+      const int mm = 2500 + static_cast<int>(rng() % 1000);
+      fill(x, top, w, rows - top - static_cast<int>(rng() % 20), 1, mm, 60);
+      for (int piece = static_cast<int>(rng() % 5); piece > 0; --piece) {  // arms, hands, furniture beside it
+        const int px = x + (rng() % 2 == 0 ? -1 : 1) * static_cast<int>(rng() % 40), py = top + static_cast<int>(rng() % rows) - rows / 4;
+        fill(px, py, 1 + static_cast<int>(rng() % 12), 2 + static_cast<int>(rng() % 60), 1, mm - 300 + static_cast<int>(rng() % 600), 80);
+      }
+    }
+    for (int holes = static_cast<int>(rng() % 400); holes > 0; --holes) {
+      labels(static_cast<int>(rng() % rows), static_cast<int>(rng() % cols)) = 0;
+    }
+    CandidateParams params;
+    params.join_pieces = false;
+    params.column_gap = static_cast<int>(rng() % 21);
+    params.fit_reach_cm = 10.0 + static_cast<double>(rng() % 80);
+    params.fit_depth_step_mm = static_cast<double>(rng() % 3) * 150.0;
+    const auto runs = column_runs(labels, 2, params.k);
+    const LayerView view{&runs[1], &labels, &depth, 1, 3000.0, 3500.0, &camera};
+    expect_same_fitted_extents(view, params, objects, widened);
+  }
+  EXPECT_GT(objects, 100);
+  EXPECT_GT(widened, 50);
+}
+
 TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
   CandidateParams params;
   params.join_pieces = false;
@@ -196,18 +324,7 @@ TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
     for (const DepthLayer& layer : s.layers) {
       const LayerView view{&runs[static_cast<std::size_t>(layer.label)], &s.labels, &frame.depth_mm, layer.label,
                            layer.mean_depth_mm, static_cast<double>(layer.max_depth_mm), &frame.camera};
-      const LayerObjects found = layer_objects(view, params);
-      const int reach = static_cast<int>(params.fit_reach_cm * 10.0 * frame.camera.fx_px / std::max(1.0, layer.mean_depth_mm));
-      for (const LayerObject& o : found.objects) {
-        const test::FittedExtent reference = test::fitted_extent_reference(
-            s.labels, frame.depth_mm, layer.label, found.passing, o.first, o.last, o.top, o.bottom, reach,
-            params.column_gap, params.fit_depth_step_mm, 0, frame.depth_mm.cols - 1);
-        EXPECT_EQ(o.fit_first, reference.first) << "layer " << layer.label << " object at column " << o.first;
-        EXPECT_EQ(o.fit_last, reference.last) << "layer " << layer.label << " object at column " << o.first;
-        EXPECT_EQ(o.fit_top, reference.top) << "layer " << layer.label << " object at column " << o.first;
-        ++objects;
-        widened += reference.last - reference.first > o.last - o.first;
-      }
+      expect_same_fitted_extents(view, params, objects, widened);
     }
     for (const Candidate& c : find_candidates(frame, s, {})) {
       Candidate reference;

@@ -5,6 +5,10 @@
 #include <cstdint>
 #include <limits>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace rdsf {
 namespace {
 
@@ -14,14 +18,38 @@ class ObjectShaper {
       : layer_(layer), params_(params), runs_(*layer.runs), width_(static_cast<int>(layer.runs->size())) {
     const double min_height_cm = params.threshold_height_cm(layer.depth_mm_mean);
     passing_.resize(static_cast<std::size_t>(width_));
+    int longest = 0;
+    for (int c = 0; c < width_; ++c) longest = std::max(longest, run(c).length());
+    // At depth d > 0 (and fy > 0) height_cm(length, d) grows with the length (each step of the formula
+    // does), so "at least min_height_cm" is "length >= the shortest length that passes": found once by
+    // bisection on the same formula over 0..longest (longest + 1 when none passes). Else (-1) every
+    // column is measured.
+    const auto shortest_passing = [&](double depth) {
+      if (!(depth > 0) || !(layer.camera->fy_px > 0)) return -1;
+      int lo = 0, hi = longest + 1;  // lengths below lo fail, lengths from hi on pass (or are none)
+      while (lo < hi) {
+        const int mid = lo + (hi - lo) / 2;
+        if (layer.camera->height_cm(mid, depth) >= min_height_cm) {
+          hi = mid;
+        } else {
+          lo = mid + 1;
+        }
+      }
+      return lo;
+    };
+    const int shortest_at_mean = shortest_passing(layer.depth_mm_mean);
+    const int shortest_at_max = shortest_passing(layer.depth_mm_max);
+    const auto passes_at = [&](int length, double depth, int shortest) {
+      return shortest >= 0 ? length >= shortest : layer.camera->height_cm(length, depth) >= min_height_cm;
+    };
     for (int c = 0; c < width_; ++c) {
       const int length = run(c).length();
-      bool passes = layer.camera->height_cm(length, layer.depth_mm_mean) >= min_height_cm;
+      bool passes = passes_at(length, layer.depth_mm_mean, shortest_at_mean);
       // A column that fails at the layer's mean depth may pass at its own (a layer spans up to
       // candidate_threshold of depth): measured where it could, at the median depth of its run.
       if (!passes && params.height_at_column_depth && length > 0 &&
           layer.depth_mm_mean < params.column_depth_layers_below_mm &&
-          layer.camera->height_cm(length, layer.depth_mm_max) >= min_height_cm) {
+          passes_at(length, layer.depth_mm_max, shortest_at_max)) {
         passes = layer.camera->height_cm(length, column_depth_mm(c, 4)) >= min_height_cm;
       }
       passing_[static_cast<std::size_t>(c)] = passes;
@@ -191,8 +219,8 @@ class ObjectShaper {
   }
 
   // fit(): the band's pixels of the columns at steps gathered..until-1 (of n) from `start` in `direction`,
-  // rows row_lo..row_hi, every other one, into band_. Left to right in memory without a branch on the
-  // data (the compiler vectorises it), then stored by step.
+  // rows row_lo..row_hi, every other one, into band_. Left to right in memory (16 columns in SSE2 lanes
+  // when band_16_lanes() allows, else one by one without a branch on the data), then stored by step.
   template <typename Sum>
   void gather_band(int direction, int start, int n, int& gathered, int until, int row_lo, int row_hi) const {
     const int from_step = gathered, to_step = std::min(until, n);
@@ -203,14 +231,21 @@ class ObjectShaper {
     Sum depth_sum[kChunk + 1] = {};
     std::fill(first_row, first_row + count, -1);
     const int layer_label = layer_.label;
-    for (int y = row_lo; y <= row_hi; y += 2) {
-      const std::uint8_t* label = layer_.labels->ptr<std::uint8_t>(y) + c0;
-      const std::uint16_t* depth = layer_.depth_mm->ptr<std::uint16_t>(y) + c0;
-      for (int j = 0; j < count; ++j) {
-        const int in = label[j] == layer_label;
-        first_row[j] = (in != 0 && first_row[j] < 0) ? y : first_row[j];
-        in_count[j] += in;
-        depth_sum[j] += static_cast<Sum>(in) * depth[j];
+#ifdef __SSE2__
+    if (band_16_lanes<Sum>(count, row_hi)) {
+      band_sse2(c0, count, row_lo, row_hi, in_count, first_row, depth_sum);
+    } else
+#endif
+    {
+      for (int y = row_lo; y <= row_hi; y += 2) {
+        const std::uint8_t* label = layer_.labels->ptr<std::uint8_t>(y) + c0;
+        const std::uint16_t* depth = layer_.depth_mm->ptr<std::uint16_t>(y) + c0;
+        for (int j = 0; j < count; ++j) {
+          const int in = label[j] == layer_label;
+          first_row[j] = (in != 0 && first_row[j] < 0) ? y : first_row[j];
+          in_count[j] += in;
+          depth_sum[j] += static_cast<Sum>(in) * depth[j];
+        }
       }
     }
     for (int j = 0; j < count; ++j) {
@@ -219,6 +254,78 @@ class ObjectShaper {
     }
     gathered = to_step;
   }
+
+#ifdef __SSE2__
+  // The 16-lane gather holds: at most 16 columns, an image at least 16 wide (the 16 columns read may
+  // start left of c0), a label that is a byte, rows that are 16-bit, 32-bit depth sums.
+  template <typename Sum>
+  bool band_16_lanes(int count, int row_hi) const {
+    return sizeof(Sum) == 4 && count <= 16 && layer_.labels->cols >= 16 && layer_.label >= 0 && layer_.label <= 255 &&
+           row_hi <= 65535;
+  }
+
+  // gather_band()'s counts for columns c0..c0+count-1 in 16 lanes: lane i is column base + i, base =
+  // min(c0, cols - 16) so that the 16 columns read lie inside the row. Per lane: the count in 8-bit lanes,
+  // added into 16-bit ones every 255 rows (at most 65,535 rows every other one: 16 bits suffice); the
+  // first row as a 16-bit row index kept while no earlier row held the layer; the depth sum in 32 bits.
+  void band_sse2(int c0, int count, int row_lo, int row_hi, int* in_count, int* first_row,
+                 std::uint32_t* depth_sum) const {
+    const int base = std::min(c0, layer_.labels->cols - 16), offset = c0 - base;
+    const __m128i layer_v = _mm_set1_epi8(static_cast<char>(layer_.label));
+    const __m128i zero = _mm_setzero_si128();
+    __m128i count8 = zero, count_lo = zero, count_hi = zero;  // 16-bit counts of lanes 0-7 and 8-15
+    __m128i seen_lo = zero, seen_hi = zero, first_lo = zero, first_hi = zero;
+    __m128i sum0 = zero, sum1 = zero, sum2 = zero, sum3 = zero;  // 32-bit sums of lanes 0-3, 4-7, 8-11, 12-15
+    int pending = 0;  // rows in count8
+    const auto flush = [&]() {
+      count_lo = _mm_add_epi16(count_lo, _mm_unpacklo_epi8(count8, zero));
+      count_hi = _mm_add_epi16(count_hi, _mm_unpackhi_epi8(count8, zero));
+      count8 = zero;
+      pending = 0;
+    };
+    for (int y = row_lo; y <= row_hi; y += 2) {
+      const std::uint8_t* label = layer_.labels->ptr<std::uint8_t>(y) + base;
+      const std::uint16_t* depth = layer_.depth_mm->ptr<std::uint16_t>(y) + base;
+      const __m128i in = _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(label)), layer_v);
+      count8 = _mm_sub_epi8(count8, in);
+      const __m128i in_lo = _mm_unpacklo_epi8(in, in), in_hi = _mm_unpackhi_epi8(in, in);
+      const __m128i row = _mm_set1_epi16(static_cast<short>(y));
+      first_lo = _mm_or_si128(first_lo, _mm_and_si128(_mm_andnot_si128(seen_lo, in_lo), row));
+      first_hi = _mm_or_si128(first_hi, _mm_and_si128(_mm_andnot_si128(seen_hi, in_hi), row));
+      seen_lo = _mm_or_si128(seen_lo, in_lo);
+      seen_hi = _mm_or_si128(seen_hi, in_hi);
+      const __m128i d_lo = _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(depth)), in_lo);
+      const __m128i d_hi = _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(depth + 8)), in_hi);
+      sum0 = _mm_add_epi32(sum0, _mm_unpacklo_epi16(d_lo, zero));
+      sum1 = _mm_add_epi32(sum1, _mm_unpackhi_epi16(d_lo, zero));
+      sum2 = _mm_add_epi32(sum2, _mm_unpacklo_epi16(d_hi, zero));
+      sum3 = _mm_add_epi32(sum3, _mm_unpackhi_epi16(d_hi, zero));
+      if (++pending == 255) flush();
+    }
+    flush();
+    alignas(16) std::uint16_t counts[16], firsts[16], seen[16];
+    alignas(16) std::uint32_t sums[16];
+    _mm_store_si128(reinterpret_cast<__m128i*>(counts), count_lo);
+    _mm_store_si128(reinterpret_cast<__m128i*>(counts + 8), count_hi);
+    _mm_store_si128(reinterpret_cast<__m128i*>(firsts), first_lo);
+    _mm_store_si128(reinterpret_cast<__m128i*>(firsts + 8), first_hi);
+    _mm_store_si128(reinterpret_cast<__m128i*>(seen), seen_lo);
+    _mm_store_si128(reinterpret_cast<__m128i*>(seen + 8), seen_hi);
+    _mm_store_si128(reinterpret_cast<__m128i*>(sums), sum0);
+    _mm_store_si128(reinterpret_cast<__m128i*>(sums + 4), sum1);
+    _mm_store_si128(reinterpret_cast<__m128i*>(sums + 8), sum2);
+    _mm_store_si128(reinterpret_cast<__m128i*>(sums + 12), sum3);
+    for (int j = 0; j < count; ++j) {
+      const int lane = offset + j;
+      in_count[j] = counts[lane];
+      first_row[j] = seen[lane] != 0 ? firsts[lane] : -1;
+      depth_sum[j] = sums[lane];
+    }
+  }
+
+  template <typename Sum>
+  void band_sse2(int, int, int, int, int*, int*, Sum*) const {}  // 64-bit sums: never (band_16_lanes)
+#endif
 
   // Step 2: neighbours whose fitted extents touch are one object when together no wider than a person.
   std::vector<LayerObject> join(const std::vector<LayerObject>& objects) const {
