@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "rdsf/segmentation/depth_candidates.hpp"
+#include "rdsf/segmentation/layer_labels.hpp"
 
 namespace rdsf {
 namespace {
@@ -66,6 +68,11 @@ cv::Mat1b Segmentation::mask(int label) const {
 
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
                            int max_iterations) {
+  return kmeans_layers(depth_mm, depth_histogram(depth_mm), centres_mm, max_iterations);
+}
+
+Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const DepthHistogram& histogram,
+                           const std::vector<double>& centres_mm, int max_iterations) {
   Segmentation result;
 
   std::vector<double> centres;
@@ -81,42 +88,9 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>&
     return result;
   }
 
-  // Histogram of valid depth values, over four interleaved partial histograms so that runs of equal
-  // depths (the common case) do not wait on one counter.
-  std::uint16_t max_value = 0;
-  for (int r = 0; r < depth_mm.rows; ++r) {
-    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
-    std::uint16_t row_max = 0;
-    for (int c = 0; c < depth_mm.cols; ++c) row_max = d[c] > row_max ? d[c] : row_max;
-    max_value = std::max(max_value, row_max);
-  }
-  const std::size_t levels = std::size_t{max_value} + 1;
-  thread_local std::vector<std::uint32_t> parts;
-  parts.assign(4 * levels, 0);
-  std::uint32_t* h0 = parts.data();
-  std::uint32_t* h1 = h0 + levels;
-  std::uint32_t* h2 = h1 + levels;
-  std::uint32_t* h3 = h2 + levels;
-  const int rows = depth_mm.rows, cols = depth_mm.cols;
-  for (int r = 0; r < rows; ++r) {
-    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
-    int c = 0;
-    for (; c + 4 <= cols; c += 4) {
-      ++h0[d[c]];
-      ++h1[d[c + 1]];
-      ++h2[d[c + 2]];
-      ++h3[d[c + 3]];
-    }
-    for (; c < cols; ++c) ++h0[d[c]];
-  }
-  // Prefix sums: count_before[x] = pixels with 1 <= d < x, depth_before[x] = the sum of their depths (exact
-  // integers; the reference's double sums of d * histogram[d] are exact too, below 2^53).
-  std::vector<std::uint64_t> count_before(levels + 1, 0), depth_before(levels + 1, 0);
-  for (std::size_t d = 1; d < levels; ++d) {
-    const std::uint64_t n = std::uint64_t{h0[d]} + h1[d] + h2[d] + h3[d];
-    count_before[d + 1] = count_before[d] + n;
-    depth_before[d + 1] = depth_before[d] + n * d;
-  }
+  const std::size_t levels = histogram.levels;
+  const std::vector<std::uint64_t>& count_before = histogram.count_before;
+  const std::vector<std::uint64_t>& depth_before = histogram.depth_before;
   const auto cluster_sums = [&](const std::vector<std::int64_t>& ends, std::vector<double>& sums,
                                 std::vector<std::uint64_t>& counts) {
     sums.assign(ends.size(), 0.0);
@@ -163,8 +137,9 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>&
     }
   }
 
-  // Layers: clusters with pixels, nearest first, labelled 1..K; each one's nearest and farthest depth.
-  std::vector<std::uint8_t> lut(levels, 0);
+  // Layers: clusters with pixels, nearest first, labelled 1..K; each one's nearest and farthest depth, and
+  // where its interval starts (the first one at 1: values below it occur in no pixel but 0).
+  std::vector<std::uint16_t> starts;
   std::size_t start = 1;
   for (std::size_t k = 0; k < assignment.size(); ++k) {
     const auto end = static_cast<std::size_t>(assignment[k]);
@@ -178,35 +153,20 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>&
       while (count_before[hi + 1] == count_before[hi]) --hi;
       layer.min_depth_mm = static_cast<std::uint16_t>(lo);
       layer.max_depth_mm = static_cast<std::uint16_t>(hi);
-      std::fill(lut.begin() + static_cast<std::ptrdiff_t>(start), lut.begin() + static_cast<std::ptrdiff_t>(end),
-                static_cast<std::uint8_t>(layer.label));
+      starts.push_back(static_cast<std::uint16_t>(starts.empty() ? 1 : start));
       result.layers.push_back(layer);
     }
     start = end;
   }
-  result.labels.create(depth_mm.size());
-  // rows, cols as locals: the byte stores below may alias anything.
-  const std::uint8_t* const table = lut.data();
-  for (int r = 0; r < rows; ++r) {
-    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
-    std::uint8_t* out = result.labels.ptr<std::uint8_t>(r);
-    int c = 0;
-    for (; c + 4 <= cols; c += 4) {
-      const std::uint8_t l0 = table[d[c]], l1 = table[d[c + 1]], l2 = table[d[c + 2]], l3 = table[d[c + 3]];
-      out[c] = l0;
-      out[c + 1] = l1;
-      out[c + 2] = l2;
-      out[c + 3] = l3;
-    }
-    for (; c < cols; ++c) out[c] = table[d[c]];
-  }
+  label_by_layer_starts(depth_mm, starts, result.labels);
   return result;
 }
 
 Segmentation segment_depth(const cv::Mat1w& depth_mm, const SegmentationParams& params) {
-  const std::vector<double> seeds =
-      merge_depth_candidates(scan_depth_candidates(depth_mm, params), params);
-  return kmeans_layers(depth_mm, seeds, params.max_iterations);
+  // One pass over the map for the histogram and the scanned rows' candidates, one for the labels.
+  std::vector<int> raw;
+  const DepthHistogram histogram = depth_histogram(depth_mm, &params, &raw);
+  return kmeans_layers(depth_mm, histogram, merge_depth_candidates(std::move(raw), params), params.max_iterations);
 }
 
 }  // namespace rdsf

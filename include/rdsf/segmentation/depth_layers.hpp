@@ -18,6 +18,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/segmentation/depth_histogram.hpp"
 #include "rdsf/segmentation/segmentation_params.hpp"
 
 namespace rdsf {
@@ -45,7 +46,13 @@ struct Segmentation {
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
                            int max_iterations);
 
-/// The whole segmentation: scan, merge, k-means.
+/// The same with `histogram` = depth_histogram(depth_mm) already made (segment_depth makes it in the pass
+/// that scans for the candidates).
+Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const DepthHistogram& histogram,
+                           const std::vector<double>& centres_mm, int max_iterations);
+
+/// The whole segmentation: scan, merge, k-means (two passes over the map: the histogram with the scan's
+/// rows, then the labels).
 Segmentation segment_depth(const cv::Mat1w& depth_mm, const SegmentationParams& params);
 
 }  // namespace rdsf
