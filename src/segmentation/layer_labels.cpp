@@ -1,6 +1,7 @@
 #include "rdsf/segmentation/layer_labels.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -42,35 +43,45 @@ void label_by_table(const cv::Mat1w& depth_mm, const std::vector<std::uint16_t>&
   }
 }
 
+#ifdef __SSE2__
+// K starts counted per pixel, 16 pixels a step; K a constant so that the counting is unrolled.
+template <std::size_t K>
+void label_by_counting(const cv::Mat1w& depth_mm, const std::vector<std::uint16_t>& starts, cv::Mat1b& labels) {
+  const __m128i bias = _mm_set1_epi16(static_cast<short>(0x8000));
+  __m128i below[K];  // (b - 1) ^ 0x8000: d >= b <=> (d ^ 0x8000) > below, signed
+  for (std::size_t k = 0; k < K; ++k) below[k] = _mm_set1_epi16(static_cast<short>((starts[k] - 1) ^ 0x8000));
+  const int rows = depth_mm.rows, cols = depth_mm.cols;
+  for (int r = 0; r < rows; ++r) {
+    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
+    std::uint8_t* out = labels.ptr<std::uint8_t>(r);
+    int c = 0;
+    for (; c + 16 <= cols; c += 16) {
+      const __m128i a = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(d + c)), bias);
+      const __m128i b = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(d + c + 8)), bias);
+      __m128i la = _mm_setzero_si128(), lb = _mm_setzero_si128();
+      for (std::size_t k = 0; k < K; ++k) {
+        la = _mm_sub_epi16(la, _mm_cmpgt_epi16(a, below[k]));
+        lb = _mm_sub_epi16(lb, _mm_cmpgt_epi16(b, below[k]));
+      }
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), _mm_packus_epi16(la, lb));
+    }
+    for (; c < cols; ++c) out[c] = counted_label(d[c], starts.data(), K);
+  }
+}
+
+template <std::size_t... K>
+bool label_by_counting_upto(const cv::Mat1w& depth_mm, const std::vector<std::uint16_t>& starts, cv::Mat1b& labels,
+                            std::index_sequence<K...>) {
+  return ((starts.size() == K + 1 ? (label_by_counting<K + 1>(depth_mm, starts, labels), true) : false) || ...);
+}
+#endif
+
 }  // namespace
 
 void label_by_layer_starts(const cv::Mat1w& depth_mm, const std::vector<std::uint16_t>& starts, cv::Mat1b& labels) {
   labels.create(depth_mm.size());
 #ifdef __SSE2__
-  if (starts.size() <= kMaxVectorStarts) {
-    const std::size_t count = starts.size();
-    const __m128i bias = _mm_set1_epi16(static_cast<short>(0x8000));
-    __m128i below[kMaxVectorStarts];  // (b - 1) ^ 0x8000: d >= b <=> (d ^ 0x8000) > below, signed
-    for (std::size_t k = 0; k < count; ++k) below[k] = _mm_set1_epi16(static_cast<short>((starts[k] - 1) ^ 0x8000));
-    const int rows = depth_mm.rows, cols = depth_mm.cols;
-    for (int r = 0; r < rows; ++r) {
-      const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
-      std::uint8_t* out = labels.ptr<std::uint8_t>(r);
-      int c = 0;
-      for (; c + 16 <= cols; c += 16) {
-        const __m128i a = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(d + c)), bias);
-        const __m128i b = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(d + c + 8)), bias);
-        __m128i la = _mm_setzero_si128(), lb = _mm_setzero_si128();
-        for (std::size_t k = 0; k < count; ++k) {
-          la = _mm_sub_epi16(la, _mm_cmpgt_epi16(a, below[k]));
-          lb = _mm_sub_epi16(lb, _mm_cmpgt_epi16(b, below[k]));
-        }
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), _mm_packus_epi16(la, lb));
-      }
-      for (; c < cols; ++c) out[c] = counted_label(d[c], starts.data(), count);
-    }
-    return;
-  }
+  if (label_by_counting_upto(depth_mm, starts, labels, std::make_index_sequence<kMaxVectorStarts>{})) return;
 #endif
   label_by_table(depth_mm, starts, labels);
 }

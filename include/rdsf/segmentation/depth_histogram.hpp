@@ -10,10 +10,14 @@
 // to depth_before[b] - depth_before[a], and the values that occur are those x with count_before[x + 1] >
 // count_before[x]. Pixels without a reading (0) are not counted.
 //
-// One pass over the map, row by row, the maximum found with the row (SSE2) and the row counted into four
-// interleaved partial histograms of all 65536 values, kept zero between calls (per thread), so that no pass
-// for the maximum comes first and runs of equal depths (the common case) do not wait on one counter. The rows
-// the depth-candidate scan reads can be scanned in the same pass, while they are in cache.
+// One pass over the map, row by row: the next row prefetched, the row's maximum found eight values at a time
+// (SSE2), the row counted into eight partial histograms of all 65536 values (pixel c into part c % 8; the
+// parts lie 65536 + 72 counters apart, never a multiple of 4 KiB, so that one depth in two parts shares
+// neither a cache set nor the 4 KiB alias check of loads against stores), kept zero between calls (per
+// thread, 2 MiB), so that no pass for the maximum comes first and runs of equal depths (the common case) do
+// not wait on one counter. The parts are summed and cleared up to the maximum only. The rows the
+// depth-candidate scan reads are scanned in the same pass, while they are in cache. Maps of fewer than 2^32
+// pixels (the part counters are 32-bit).
 #include <cstdint>
 #include <vector>
 
