@@ -51,6 +51,77 @@ void block_summary(const cv::Mat1w& crop, int x0, int y0, int g, std::uint16_t& 
   zeros = horizontal_sum(count);
 }
 
+// Smallest of eight signed 16-bit lanes, in every lane.
+__m128i lane_min(__m128i v) {
+  v = _mm_min_epi16(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(1, 0, 3, 2)));
+  v = _mm_min_epi16(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(2, 3, 0, 1)));
+  return _mm_min_epi16(v, _mm_shufflelo_epi16(v, _MM_SHUFFLE(2, 3, 0, 1)));
+}
+
+// Sum of eight 16-bit lanes each below 256 (their high bytes zero: the sum of the 16 bytes).
+int small_lane_sum(__m128i v) {
+  const __m128i halves = _mm_sad_epu8(v, _mm_setzero_si128());
+  return _mm_cvtsi128_si32(_mm_add_epi32(halves, _mm_unpackhi_epi64(halves, halves)));
+}
+
+// The occupied bins of an 8 x 8 block at (x0, y0), ascending, with their pixel counts (> 0); returns how
+// many. Its eight rows stay in registers: one pass finds the smallest, largest and smallest non-zero depth
+// and the zeros; then, from the lowest occupied non-zero bin b up to the largest depth's bin, one pass per
+// OCCUPIED bin counts the pixels below b's upper edge and finds the smallest depth at or above it, whose
+// bin is the next occupied one (empty bins in between cost nothing). The counts are those of the
+// pixel-by-pixel histogram: differences of "pixels below an edge", bin_of being monotonic.
+int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut, const std::uint16_t* upper_edge,
+                 std::uint8_t* bin, std::uint32_t* count) {
+  const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000)), zero = _mm_setzero_si128();
+  __m128i raw[8];
+  __m128i mn = _mm_set1_epi16(0x7fff), mx = _mm_set1_epi16(static_cast<short>(0x8000)), nz = mn, zeros_v = zero;
+  for (int y = 0; y < 8; ++y) {
+    raw[y] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(crop.ptr<std::uint16_t>(y0 + y) + x0));
+    const __m128i is_zero = _mm_cmpeq_epi16(raw[y], zero);
+    const __m128i v = _mm_xor_si128(raw[y], flip);
+    mn = _mm_min_epi16(mn, v);
+    mx = _mm_max_epi16(mx, v);
+    nz = _mm_min_epi16(nz, _mm_xor_si128(_mm_or_si128(raw[y], is_zero), flip));  // zeros count as 65535
+    zeros_v = _mm_sub_epi16(zeros_v, is_zero);
+  }
+  const __m128i all = _mm_set1_epi16(-1);
+  const int lo = (_mm_cvtsi128_si32(lane_min(mn)) & 0xffff) ^ 0x8000;
+  const int hi = (_mm_cvtsi128_si32(lane_min(_mm_xor_si128(mx, all))) & 0xffff) ^ 0x7fff;  // max = ~min(~v)
+  const int last = lut[hi];
+  if (lut[lo] == last) {
+    bin[0] = static_cast<std::uint8_t>(last);
+    count[0] = 64;
+    return 1;
+  }
+  int n = 0;
+  const int zeros = small_lane_sum(zeros_v);
+  if (zeros > 0) {
+    bin[0] = 0;
+    count[0] = static_cast<std::uint32_t>(zeros);
+    n = 1;
+  }
+  int below = zeros;
+  int b = lut[(_mm_cvtsi128_si32(lane_min(nz)) & 0xffff) ^ 0x8000];
+  while (b < last) {
+    const __m128i limit = _mm_set1_epi16(static_cast<short>(upper_edge[b] ^ 0x8000));
+    __m128i under = zero, above_min = _mm_set1_epi16(0x7fff);
+    for (int y = 0; y < 8; ++y) {
+      const __m128i is_below = _mm_cmplt_epi16(_mm_xor_si128(raw[y], flip), limit);
+      under = _mm_sub_epi16(under, is_below);
+      above_min = _mm_min_epi16(above_min, _mm_xor_si128(_mm_or_si128(raw[y], is_below), flip));  // below: 65535
+    }
+    const int c = small_lane_sum(under);
+    bin[n] = static_cast<std::uint8_t>(b);
+    count[n] = static_cast<std::uint32_t>(c - below);
+    ++n;
+    below = c;
+    b = lut[(_mm_cvtsi128_si32(lane_min(above_min)) & 0xffff) ^ 0x8000];
+  }
+  bin[n] = static_cast<std::uint8_t>(last);
+  count[n] = static_cast<std::uint32_t>(64 - below);
+  return n + 1;
+}
+
 // Pixels of the block with a depth below `edge`.
 int count_below(const cv::Mat1w& crop, int x0, int y0, int g, std::uint16_t edge) {
   const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000));
@@ -128,6 +199,13 @@ int RegionHistogramBuilder::count_block(const cv::Mat1w& crop, int bx, int by, s
   const int g = block_px_, x0 = bx * g, y0 = by * g;
   const std::uint8_t* lut = lut_.data();
 #if defined(__SSE2__)
+  if (g == 8) {
+    std::uint8_t bin[256];
+    std::uint32_t count[256];
+    const int n = block_bins_8(crop, x0, y0, lut, upper_edge_.data(), bin, count);
+    for (int k = 0; k < n; ++k) counts[bin[k]] += count[k];
+    return n == 1 ? bin[0] : -1;
+  }
   if (vector_block(g)) {
     std::uint16_t lo = 0, hi = 0, nonzero_lo = 0;
     int zeros = 0;
@@ -228,11 +306,39 @@ void RegionHistogramBuilder::finish_slot(const std::uint32_t* counts, int region
   out.nz_count[static_cast<std::size_t>(slot)] = static_cast<std::uint16_t>(n);
 }
 
+void RegionHistogramBuilder::finish_sparse_slot(const std::uint8_t* bin, const std::uint32_t* count, int n, int region,
+                                                int slot, RootHistograms& out) const {
+  const float* table = roots_of(region);
+  const float area_f = static_cast<float>(regions_[static_cast<std::size_t>(region)].area());
+  const std::size_t base = static_cast<std::size_t>(slot) * static_cast<std::size_t>(out.bins);
+  float* dense = out.dense.data() + base;
+  std::fill(dense, dense + out.bins, 0.0f);
+  for (int k = 0; k < n; ++k) {
+    const float root = table != nullptr ? table[count[k]] : std::sqrt(static_cast<float>(count[k]) / area_f);
+    dense[bin[k]] = root;
+    out.nz_bin[base + static_cast<std::size_t>(k)] = bin[k];
+    out.nz_root[base + static_cast<std::size_t>(k)] = root;
+  }
+  out.nz_count[static_cast<std::size_t>(slot)] = static_cast<std::uint16_t>(n);
+}
+
 void RegionHistogramBuilder::compute(const cv::Mat1w& crop, const std::vector<int>& regions,
                                      RootHistograms& out) const {
   check(crop);
   const int bins = spec_.bin_count();
   out.resize(static_cast<int>(regions.size()), bins);
+#if defined(__SSE2__)
+  if (single_blocks_ && block_px_ == 8) {  // each region one 8 x 8 block: its occupied bins straight to the slot
+    std::uint8_t bin[256];
+    std::uint32_t count[256];
+    for (std::size_t k = 0; k < regions.size(); ++k) {
+      const Geometry& g = geometry_[static_cast<std::size_t>(regions[k])];
+      const int n = block_bins_8(crop, g.bx0 * 8, g.by0 * 8, lut_.data(), upper_edge_.data(), bin, count);
+      finish_sparse_slot(bin, count, n, regions[k], static_cast<int>(k), out);
+    }
+    return;
+  }
+#endif
   thread_local std::vector<std::uint32_t> counts, integral;  // reused: no allocation per crop
   counts.resize(static_cast<std::size_t>(bins));
   if (single_blocks_) {

@@ -8,6 +8,9 @@
 // region is a union of whole blocks. A block whose smallest and largest depth fall into the same bin is
 // counted at once (bin_of is monotonic); in others the pixels below each bin edge between the smallest
 // non-zero and the largest depth are counted with 8-wide comparisons (SSE2), or pixel by pixel without it.
+// Blocks of 8 x 8 (SSE2) keep their rows in registers and visit only the occupied bins: the pass that
+// counts the pixels below bin b's upper edge also finds the smallest depth at or above it, whose bin is the
+// next occupied one. When every region is one such block, the occupied bins go straight to the slot.
 // A region that is one block takes the block's counts; larger regions take four look-ups per bin in the
 // integral histogram of the block counts (Porikli's integral histogram at block resolution: exact, as
 // counts are integers).
@@ -81,6 +84,9 @@ class RegionHistogramBuilder {
   /// Counts of every block, then their integral: integral_[((by * (blocks_x + 1)) + bx) * bins + b].
   void build_integral(const cv::Mat1w& crop, std::vector<std::uint32_t>& integral) const;
   void finish_slot(const std::uint32_t* counts, int region, int slot, RootHistograms& out) const;
+  /// The same from the occupied bins alone (n of them, ascending, counts > 0).
+  void finish_sparse_slot(const std::uint8_t* bin, const std::uint32_t* count, int n, int region, int slot,
+                          RootHistograms& out) const;
   /// The roots of every count for the region's area, or null when it has no table (very large areas).
   const float* roots_of(int region) const;
   static constexpr std::uint32_t kNoTable = 0xffffffffu;
