@@ -74,24 +74,32 @@ int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut,
                  std::uint8_t* bin, std::uint32_t* count) {
   const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000)), zero = _mm_setzero_si128();
   __m128i raw[8];
-  __m128i mn = _mm_set1_epi16(0x7fff), mx = _mm_set1_epi16(static_cast<short>(0x8000)), nz = mn, zeros_v = zero;
+  __m128i mn = _mm_set1_epi16(0x7fff), mx = _mm_set1_epi16(static_cast<short>(0x8000));
   for (int y = 0; y < 8; ++y) {
     raw[y] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(crop.ptr<std::uint16_t>(y0 + y) + x0));
-    const __m128i is_zero = _mm_cmpeq_epi16(raw[y], zero);
     const __m128i v = _mm_xor_si128(raw[y], flip);
     mn = _mm_min_epi16(mn, v);
     mx = _mm_max_epi16(mx, v);
-    nz = _mm_min_epi16(nz, _mm_xor_si128(_mm_or_si128(raw[y], is_zero), flip));  // zeros count as 65535
-    zeros_v = _mm_sub_epi16(zeros_v, is_zero);
   }
-  const __m128i all = _mm_set1_epi16(-1);
-  const int lo = (_mm_cvtsi128_si32(lane_min(mn)) & 0xffff) ^ 0x8000;
-  const int hi = (_mm_cvtsi128_si32(lane_min(_mm_xor_si128(mx, all))) & 0xffff) ^ 0x7fff;  // max = ~min(~v)
+  // Both reductions at once: lanes 0-3 from the minima, 4-7 from the complemented maxima (max = ~min(~v)).
+  const __m128i not_mx = _mm_xor_si128(mx, _mm_set1_epi16(-1));
+  __m128i both = _mm_unpacklo_epi64(_mm_min_epi16(mn, _mm_shuffle_epi32(mn, _MM_SHUFFLE(1, 0, 3, 2))),
+                                    _mm_min_epi16(not_mx, _mm_shuffle_epi32(not_mx, _MM_SHUFFLE(1, 0, 3, 2))));
+  both = _mm_min_epi16(both, _mm_shuffle_epi32(both, _MM_SHUFFLE(2, 3, 0, 1)));
+  both = _mm_min_epi16(both, _mm_srli_epi32(both, 16));  // lanes 0 and 4 hold the two results
+  const int lo = (_mm_extract_epi16(both, 0) & 0xffff) ^ 0x8000;
+  const int hi = (_mm_extract_epi16(both, 4) & 0xffff) ^ 0x7fff;
   const int last = lut[hi];
   if (lut[lo] == last) {
     bin[0] = static_cast<std::uint8_t>(last);
     count[0] = 64;
     return 1;
+  }
+  __m128i nz = _mm_set1_epi16(0x7fff), zeros_v = zero;  // only blocks of several bins need these
+  for (int y = 0; y < 8; ++y) {
+    const __m128i is_zero = _mm_cmpeq_epi16(raw[y], zero);
+    nz = _mm_min_epi16(nz, _mm_xor_si128(_mm_or_si128(raw[y], is_zero), flip));  // zeros count as 65535
+    zeros_v = _mm_sub_epi16(zeros_v, is_zero);
   }
   int n = 0;
   const int zeros = small_lane_sum(zeros_v);
@@ -306,22 +314,6 @@ void RegionHistogramBuilder::finish_slot(const std::uint32_t* counts, int region
   out.nz_count[static_cast<std::size_t>(slot)] = static_cast<std::uint16_t>(n);
 }
 
-void RegionHistogramBuilder::finish_sparse_slot(const std::uint8_t* bin, const std::uint32_t* count, int n, int region,
-                                                int slot, RootHistograms& out) const {
-  const float* table = roots_of(region);
-  const float area_f = static_cast<float>(regions_[static_cast<std::size_t>(region)].area());
-  const std::size_t base = static_cast<std::size_t>(slot) * static_cast<std::size_t>(out.bins);
-  float* dense = out.dense.data() + base;
-  std::fill(dense, dense + out.bins, 0.0f);
-  for (int k = 0; k < n; ++k) {
-    const float root = table != nullptr ? table[count[k]] : std::sqrt(static_cast<float>(count[k]) / area_f);
-    dense[bin[k]] = root;
-    out.nz_bin[base + static_cast<std::size_t>(k)] = bin[k];
-    out.nz_root[base + static_cast<std::size_t>(k)] = root;
-  }
-  out.nz_count[static_cast<std::size_t>(slot)] = static_cast<std::uint16_t>(n);
-}
-
 void RegionHistogramBuilder::compute(const cv::Mat1w& crop, const std::vector<int>& regions,
                                      RootHistograms& out) const {
   check(crop);
@@ -329,12 +321,34 @@ void RegionHistogramBuilder::compute(const cv::Mat1w& crop, const std::vector<in
   out.resize(static_cast<int>(regions.size()), bins);
 #if defined(__SSE2__)
   if (single_blocks_ && block_px_ == 8) {  // each region one 8 x 8 block: its occupied bins straight to the slot
-    std::uint8_t bin[256];
+    // Every region has the area 64: the one root table, sqrt(float(c) / 64.0f). The pointers are locals
+    // so that the byte stores (which may alias anything) do not make the compiler reload them.
+    const float* table = root_table_.data();
+    const std::uint8_t* lut = lut_.data();
+    const std::uint16_t* upper_edge = upper_edge_.data();
+    const Geometry* geometry = geometry_.data();
+    std::uint8_t* nz_bin = out.nz_bin.data();
+    float* nz_root = out.nz_root.data();
+    float* dense = out.dense.data();
+    std::uint16_t* nz_count = out.nz_count.data();
+    const std::size_t stride = static_cast<std::size_t>(bins);
     std::uint32_t count[256];
-    for (std::size_t k = 0; k < regions.size(); ++k) {
-      const Geometry& g = geometry_[static_cast<std::size_t>(regions[k])];
-      const int n = block_bins_8(crop, g.bx0 * 8, g.by0 * 8, lut_.data(), upper_edge_.data(), bin, count);
-      finish_sparse_slot(bin, count, n, regions[k], static_cast<int>(k), out);
+    const __m128 zero = _mm_setzero_ps();
+    for (std::size_t k = 0; k < regions.size(); ++k, nz_bin += stride, nz_root += stride, dense += stride) {
+      const Geometry& g = geometry[regions[k]];
+      const int n = block_bins_8(crop, g.bx0 * 8, g.by0 * 8, lut, upper_edge, nz_bin, count);
+      if (bins >= 4) {  // whole vectors, the last one overlapping the one before
+        for (int b = 0; b + 4 < bins; b += 4) _mm_storeu_ps(dense + b, zero);
+        _mm_storeu_ps(dense + bins - 4, zero);
+      } else {
+        for (int b = 0; b < bins; ++b) dense[b] = 0.0f;
+      }
+      for (int i = 0; i < n; ++i) {
+        const float root = table[count[i]];
+        dense[nz_bin[i]] = root;
+        nz_root[i] = root;
+      }
+      nz_count[k] = static_cast<std::uint16_t>(n);
     }
     return;
   }

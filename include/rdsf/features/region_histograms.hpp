@@ -84,9 +84,6 @@ class RegionHistogramBuilder {
   /// Counts of every block, then their integral: integral_[((by * (blocks_x + 1)) + bx) * bins + b].
   void build_integral(const cv::Mat1w& crop, std::vector<std::uint32_t>& integral) const;
   void finish_slot(const std::uint32_t* counts, int region, int slot, RootHistograms& out) const;
-  /// The same from the occupied bins alone (n of them, ascending, counts > 0).
-  void finish_sparse_slot(const std::uint8_t* bin, const std::uint32_t* count, int n, int region, int slot,
-                          RootHistograms& out) const;
   /// The roots of every count for the region's area, or null when it has no table (very large areas).
   const float* roots_of(int region) const;
   static constexpr std::uint32_t kNoTable = 0xffffffffu;
