@@ -65,24 +65,27 @@ int small_lane_sum(__m128i v) {
 }
 
 // The occupied bins of an 8 x 8 block at (x0, y0), ascending, with their pixel counts (> 0); returns how
-// many. Its eight rows stay in registers: one pass finds the smallest, largest and smallest non-zero depth
-// and the zeros; then, from the lowest occupied non-zero bin b up to the largest depth's bin, one pass per
-// OCCUPIED bin counts the pixels below b's upper edge and finds the smallest depth at or above it, whose
-// bin is the next occupied one (empty bins in between cost nothing). The counts are those of the
-// pixel-by-pixel histogram: differences of "pixels below an edge", bin_of being monotonic.
+// many. Its eight rows stay in registers, kept only as v = depth ^ 0x8000 (unsigned order in signed
+// lanes; a depth of 0 is v = -32768): one pass finds the smallest and largest depth; a block of one bin
+// ends there. Otherwise one more pass finds the zeros (v == -32768) and the smallest non-zero depth (the
+// minimum of v - 1, wrapping, which sends the zeros to the top); then, from the lowest occupied non-zero
+// bin b up to the largest depth's bin, one pass per OCCUPIED bin counts the pixels below b's upper edge e
+// and finds the smallest depth at or above e: the unsigned minimum of depth - e (mod 2^16, where the
+// depths below e wrap above every other), whose bin is the next occupied one (empty bins in between cost
+// nothing). The counts are those of the pixel-by-pixel histogram: differences of "pixels below an edge",
+// bin_of being monotonic.
 int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut, const std::uint16_t* upper_edge,
                  std::uint8_t* bin, std::uint32_t* count) {
-  const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000)), zero = _mm_setzero_si128();
-  __m128i raw[8];
-  __m128i mn = _mm_set1_epi16(0x7fff), mx = _mm_set1_epi16(static_cast<short>(0x8000));
+  const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000)), ones = _mm_set1_epi16(-1);
+  __m128i v[8];
+  __m128i mn = _mm_set1_epi16(0x7fff), mx = flip;
   for (int y = 0; y < 8; ++y) {
-    raw[y] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(crop.ptr<std::uint16_t>(y0 + y) + x0));
-    const __m128i v = _mm_xor_si128(raw[y], flip);
-    mn = _mm_min_epi16(mn, v);
-    mx = _mm_max_epi16(mx, v);
+    v[y] = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(crop.ptr<std::uint16_t>(y0 + y) + x0)), flip);
+    mn = _mm_min_epi16(mn, v[y]);
+    mx = _mm_max_epi16(mx, v[y]);
   }
   // Both reductions at once: lanes 0-3 from the minima, 4-7 from the complemented maxima (max = ~min(~v)).
-  const __m128i not_mx = _mm_xor_si128(mx, _mm_set1_epi16(-1));
+  const __m128i not_mx = _mm_xor_si128(mx, ones);
   __m128i both = _mm_unpacklo_epi64(_mm_min_epi16(mn, _mm_shuffle_epi32(mn, _MM_SHUFFLE(1, 0, 3, 2))),
                                     _mm_min_epi16(not_mx, _mm_shuffle_epi32(not_mx, _MM_SHUFFLE(1, 0, 3, 2))));
   both = _mm_min_epi16(both, _mm_shuffle_epi32(both, _MM_SHUFFLE(2, 3, 0, 1)));
@@ -95,11 +98,10 @@ int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut,
     count[0] = 64;
     return 1;
   }
-  __m128i nz = _mm_set1_epi16(0x7fff), zeros_v = zero;  // only blocks of several bins need these
+  __m128i nz = _mm_set1_epi16(0x7fff), zeros_v = _mm_setzero_si128();  // only blocks of several bins need these
   for (int y = 0; y < 8; ++y) {
-    const __m128i is_zero = _mm_cmpeq_epi16(raw[y], zero);
-    nz = _mm_min_epi16(nz, _mm_xor_si128(_mm_or_si128(raw[y], is_zero), flip));  // zeros count as 65535
-    zeros_v = _mm_sub_epi16(zeros_v, is_zero);
+    zeros_v = _mm_sub_epi16(zeros_v, _mm_cmpeq_epi16(v[y], flip));
+    nz = _mm_min_epi16(nz, _mm_add_epi16(v[y], ones));  // v - 1: depth 0 -> 32767, depth d > 0 -> d - 32769
   }
   int n = 0;
   const int zeros = small_lane_sum(zeros_v);
@@ -109,21 +111,22 @@ int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut,
     n = 1;
   }
   int below = zeros;
-  int b = lut[(_mm_cvtsi128_si32(lane_min(nz)) & 0xffff) ^ 0x8000];
+  int b = lut[((_mm_cvtsi128_si32(lane_min(nz)) + 1) & 0xffff) ^ 0x8000];
   while (b < last) {
-    const __m128i limit = _mm_set1_epi16(static_cast<short>(upper_edge[b] ^ 0x8000));
-    __m128i under = zero, above_min = _mm_set1_epi16(0x7fff);
+    const int edge = upper_edge[b];
+    const __m128i limit = _mm_set1_epi16(static_cast<short>(edge ^ 0x8000));
+    __m128i under = _mm_setzero_si128(), above_min = _mm_set1_epi16(0x7fff);
     for (int y = 0; y < 8; ++y) {
-      const __m128i is_below = _mm_cmplt_epi16(_mm_xor_si128(raw[y], flip), limit);
-      under = _mm_sub_epi16(under, is_below);
-      above_min = _mm_min_epi16(above_min, _mm_xor_si128(_mm_or_si128(raw[y], is_below), flip));  // below: 65535
+      under = _mm_sub_epi16(under, _mm_cmplt_epi16(v[y], limit));
+      // (v - limit) is depth - edge mod 2^16; ^ 0x8000 makes its unsigned order signed
+      above_min = _mm_min_epi16(above_min, _mm_xor_si128(_mm_sub_epi16(v[y], limit), flip));
     }
     const int c = small_lane_sum(under);
     bin[n] = static_cast<std::uint8_t>(b);
     count[n] = static_cast<std::uint32_t>(c - below);
     ++n;
     below = c;
-    b = lut[(_mm_cvtsi128_si32(lane_min(above_min)) & 0xffff) ^ 0x8000];
+    b = lut[(((_mm_cvtsi128_si32(lane_min(above_min)) & 0xffff) ^ 0x8000) + edge) & 0xffff];
   }
   bin[n] = static_cast<std::uint8_t>(last);
   count[n] = static_cast<std::uint32_t>(64 - below);
