@@ -74,7 +74,7 @@ int small_lane_sum(__m128i v) {
 // depths below e wrap above every other), whose bin is the next occupied one (empty bins in between cost
 // nothing). The counts are those of the pixel-by-pixel histogram: differences of "pixels below an edge",
 // bin_of being monotonic.
-int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut, const std::uint16_t* upper_edge,
+inline int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut, const std::uint16_t* upper_edge,
                  std::uint8_t* bin, std::uint32_t* count) {
   const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000)), ones = _mm_set1_epi16(-1);
   __m128i v[8];
