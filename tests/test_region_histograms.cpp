@@ -2,11 +2,14 @@
 // pixel, bit for bit: the 8 x 8 blocks' register path (occupied bins only, straight to the slot, or into
 // the integral histogram of the rectangles), the general vector path (16-pixel cells) and the scalar one,
 // on crops built to reach every branch: uniform blocks, blocks of zeros, zeros and one bin, depths on and
-// around every bin edge, spans with empty bins between occupied ones, 65535, noise.
+// around every bin edge, spans with empty bins between occupied ones, 65535, noise. pair_value_short (no
+// branches on the data) against pair_value on every pair it takes, histograms reused from crop to crop
+// and from spec to spec (stale entries past nz_count).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
+#include <algorithm>
 #include <random>
 
 #include "rdsf/features/region_histograms.hpp"
@@ -129,6 +132,29 @@ TEST(RegionHistograms, SomeRegionsInAnyOrderEqualTheDefinition) {
     expect_definition(spec, crop, some, h);
     if (::testing::Test::HasFatalFailure()) return;
   }
+}
+
+TEST(RegionHistograms, ShortPairValueEqualsPairValue) {
+  RootHistograms h;  // reused: entries past each slot's nz_count hold earlier crops' and specs' values
+  std::size_t checked = 0;
+  for (int round = 0; round < 2; ++round) {
+    for (const FeatureSpec& spec : specs()) {
+      const RegionHistogramBuilder builder(spec);
+      for (unsigned seed = 11; seed <= 13; ++seed) {
+        builder.compute_all(mixed_crop(spec, seed + static_cast<unsigned>(round)), h);
+        ASSERT_GE(h.bins, 4);
+        const int slots = std::min(spec.region_count(), 160);
+        for (int i = 0; i < slots; ++i) {
+          for (int j = 0; j < slots; ++j) {
+            if (h.nz_count[static_cast<std::size_t>(j)] > 4) continue;
+            ASSERT_EQ(bits(pair_value_short(h, i, j)), bits(pair_value(h, i, j))) << spec.canonical() << " " << i << ", " << j;
+            ++checked;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 100000u);
 }
 
 }  // namespace
