@@ -44,14 +44,15 @@ struct RootHistograms {
 
   void resize(int slots, int bin_count);
   const float* dense_of(int slot) const { return dense.data() + static_cast<std::size_t>(slot) * bins; }
+  const std::uint8_t* nz_bin_of(int slot) const { return nz_bin.data() + static_cast<std::size_t>(slot) * bins; }
+  const float* nz_root_of(int slot) const { return nz_root.data() + static_cast<std::size_t>(slot) * bins; }
 };
 
 /// The Bhattacharyya coefficient of the regions in slots i and j (see the header comment).
 inline float pair_value(const RootHistograms& h, int slot_i, int slot_j) {
   const float* dense = h.dense_of(slot_i);
-  const std::size_t base = static_cast<std::size_t>(slot_j) * static_cast<std::size_t>(h.bins);
-  const std::uint8_t* bin = h.nz_bin.data() + base;
-  const float* root = h.nz_root.data() + base;
+  const std::uint8_t* bin = h.nz_bin_of(slot_j);
+  const float* root = h.nz_root_of(slot_j);
   const int n = h.nz_count[static_cast<std::size_t>(slot_j)];
   if (n == 1) {  // the common uniform region: 0 + x is x, so the same bits as the loop
     const float value = dense[bin[0]] * root[0];
@@ -69,9 +70,8 @@ inline float pair_value(const RootHistograms& h, int slot_i, int slot_j) {
 /// the non-negative float sum as it was, so these are pair_value's bits.
 inline float pair_value_short(const RootHistograms& h, int slot_i, int slot_j) {
   const float* dense = h.dense_of(slot_i);
-  const std::size_t base = static_cast<std::size_t>(slot_j) * static_cast<std::size_t>(h.bins);
-  const std::uint8_t* bin = h.nz_bin.data() + base;
-  const float* root = h.nz_root.data() + base;
+  const std::uint8_t* bin = h.nz_bin_of(slot_j);
+  const float* root = h.nz_root_of(slot_j);
   const unsigned n = h.nz_count[static_cast<std::size_t>(slot_j)];
 #if defined(__SSE2__)
   const __m128i keep = _mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(static_cast<int>(n)));
