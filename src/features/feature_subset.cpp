@@ -39,7 +39,13 @@ int FeatureSubset::position(int feature) const {
 void FeatureSubset::compute(const cv::Mat1w& crop, float* out) const {
   thread_local RootHistograms h;
   builder_.compute(crop, regions_, h);
-  for (const auto& [i, j] : slots_) *out++ = pair_value(h, i, j);
+  if (h.bins < 4) {
+    for (const auto& [i, j] : slots_) *out++ = pair_value(h, i, j);
+    return;
+  }
+  for (const auto& [i, j] : slots_) {  // nearly every region has at most 4 bins: a branch well predicted
+    *out++ = h.nz_count[static_cast<std::size_t>(j)] <= 4 ? pair_value_short(h, i, j) : pair_value(h, i, j);
+  }
 }
 
 }  // namespace rdsf

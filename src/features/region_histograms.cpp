@@ -51,6 +51,88 @@ void block_summary(const cv::Mat1w& crop, int x0, int y0, int g, std::uint16_t& 
   zeros = horizontal_sum(count);
 }
 
+// Smallest of eight signed 16-bit lanes, in every lane.
+__m128i lane_min(__m128i v) {
+  v = _mm_min_epi16(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(1, 0, 3, 2)));
+  v = _mm_min_epi16(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(2, 3, 0, 1)));
+  return _mm_min_epi16(v, _mm_shufflelo_epi16(v, _MM_SHUFFLE(2, 3, 0, 1)));
+}
+
+// Sum of eight 16-bit lanes each below 256 (their high bytes zero: the sum of the 16 bytes).
+int small_lane_sum(__m128i v) {
+  const __m128i halves = _mm_sad_epu8(v, _mm_setzero_si128());
+  return _mm_cvtsi128_si32(_mm_add_epi32(halves, _mm_unpackhi_epi64(halves, halves)));
+}
+
+// The occupied bins of an 8 x 8 block at (x0, y0), ascending, with their pixel counts (> 0); returns how
+// many. Its eight rows stay in registers, kept only as v = depth ^ 0x8000 (unsigned order in signed
+// lanes; a depth of 0 is v = -32768): one pass finds the smallest and largest depth; a block of one bin
+// ends there. Otherwise one more pass finds the zeros (v == -32768) and the smallest non-zero depth (the
+// minimum of v - 1, wrapping, which sends the zeros to the top); then, from the lowest occupied non-zero
+// bin b up to the largest depth's bin, one pass per OCCUPIED bin counts the pixels below b's upper edge e
+// and finds the smallest depth at or above e: the unsigned minimum of depth - e (mod 2^16, where the
+// depths below e wrap above every other), whose bin is the next occupied one (empty bins in between cost
+// nothing). The counts are those of the pixel-by-pixel histogram: differences of "pixels below an edge",
+// bin_of being monotonic.
+inline int block_bins_8(const cv::Mat1w& crop, int x0, int y0, const std::uint8_t* lut, const std::uint16_t* upper_edge,
+                 std::uint8_t* bin, std::uint32_t* count) {
+  const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000)), ones = _mm_set1_epi16(-1);
+  __m128i v[8];
+  __m128i mn = _mm_set1_epi16(0x7fff), mx = flip;
+  for (int y = 0; y < 8; ++y) {
+    v[y] = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(crop.ptr<std::uint16_t>(y0 + y) + x0)), flip);
+    mn = _mm_min_epi16(mn, v[y]);
+    mx = _mm_max_epi16(mx, v[y]);
+  }
+  // Both reductions at once: lanes 0-3 from the minima, 4-7 from the complemented maxima (max = ~min(~v)).
+  const __m128i not_mx = _mm_xor_si128(mx, ones);
+  __m128i both = _mm_unpacklo_epi64(_mm_min_epi16(mn, _mm_shuffle_epi32(mn, _MM_SHUFFLE(1, 0, 3, 2))),
+                                    _mm_min_epi16(not_mx, _mm_shuffle_epi32(not_mx, _MM_SHUFFLE(1, 0, 3, 2))));
+  both = _mm_min_epi16(both, _mm_shuffle_epi32(both, _MM_SHUFFLE(2, 3, 0, 1)));
+  both = _mm_min_epi16(both, _mm_srli_epi32(both, 16));  // lanes 0 and 4 hold the two results
+  const int lo = (_mm_extract_epi16(both, 0) & 0xffff) ^ 0x8000;
+  const int hi = (_mm_extract_epi16(both, 4) & 0xffff) ^ 0x7fff;
+  const int last = lut[hi];
+  if (lut[lo] == last) {
+    bin[0] = static_cast<std::uint8_t>(last);
+    count[0] = 64;
+    return 1;
+  }
+  __m128i nz = _mm_set1_epi16(0x7fff), zeros_v = _mm_setzero_si128();  // only blocks of several bins need these
+  for (int y = 0; y < 8; ++y) {
+    zeros_v = _mm_sub_epi16(zeros_v, _mm_cmpeq_epi16(v[y], flip));
+    nz = _mm_min_epi16(nz, _mm_add_epi16(v[y], ones));  // v - 1: depth 0 -> 32767, depth d > 0 -> d - 32769
+  }
+  int n = 0;
+  const int zeros = small_lane_sum(zeros_v);
+  if (zeros > 0) {
+    bin[0] = 0;
+    count[0] = static_cast<std::uint32_t>(zeros);
+    n = 1;
+  }
+  int below = zeros;
+  int b = lut[((_mm_cvtsi128_si32(lane_min(nz)) + 1) & 0xffff) ^ 0x8000];
+  while (b < last) {
+    const int edge = upper_edge[b];
+    const __m128i limit = _mm_set1_epi16(static_cast<short>(edge ^ 0x8000));
+    __m128i under = _mm_setzero_si128(), above_min = _mm_set1_epi16(0x7fff);
+    for (int y = 0; y < 8; ++y) {
+      under = _mm_sub_epi16(under, _mm_cmplt_epi16(v[y], limit));
+      // (v - limit) is depth - edge mod 2^16; ^ 0x8000 makes its unsigned order signed
+      above_min = _mm_min_epi16(above_min, _mm_xor_si128(_mm_sub_epi16(v[y], limit), flip));
+    }
+    const int c = small_lane_sum(under);
+    bin[n] = static_cast<std::uint8_t>(b);
+    count[n] = static_cast<std::uint32_t>(c - below);
+    ++n;
+    below = c;
+    b = lut[(((_mm_cvtsi128_si32(lane_min(above_min)) & 0xffff) ^ 0x8000) + edge) & 0xffff];
+  }
+  bin[n] = static_cast<std::uint8_t>(last);
+  count[n] = static_cast<std::uint32_t>(64 - below);
+  return n + 1;
+}
+
 // Pixels of the block with a depth below `edge`.
 int count_below(const cv::Mat1w& crop, int x0, int y0, int g, std::uint16_t edge) {
   const __m128i flip = _mm_set1_epi16(static_cast<short>(0x8000));
@@ -128,6 +210,13 @@ int RegionHistogramBuilder::count_block(const cv::Mat1w& crop, int bx, int by, s
   const int g = block_px_, x0 = bx * g, y0 = by * g;
   const std::uint8_t* lut = lut_.data();
 #if defined(__SSE2__)
+  if (g == 8) {
+    std::uint8_t bin[256];
+    std::uint32_t count[256];
+    const int n = block_bins_8(crop, x0, y0, lut, upper_edge_.data(), bin, count);
+    for (int k = 0; k < n; ++k) counts[bin[k]] += count[k];
+    return n == 1 ? bin[0] : -1;
+  }
   if (vector_block(g)) {
     std::uint16_t lo = 0, hi = 0, nonzero_lo = 0;
     int zeros = 0;
@@ -233,6 +322,40 @@ void RegionHistogramBuilder::compute(const cv::Mat1w& crop, const std::vector<in
   check(crop);
   const int bins = spec_.bin_count();
   out.resize(static_cast<int>(regions.size()), bins);
+#if defined(__SSE2__)
+  if (single_blocks_ && block_px_ == 8) {  // each region one 8 x 8 block: its occupied bins straight to the slot
+    // Every region has the area 64: the one root table, sqrt(float(c) / 64.0f). The pointers are locals
+    // so that the byte stores (which may alias anything) do not make the compiler reload them.
+    const float* table = root_table_.data();
+    const std::uint8_t* lut = lut_.data();
+    const std::uint16_t* upper_edge = upper_edge_.data();
+    const Geometry* geometry = geometry_.data();
+    std::uint8_t* nz_bin = out.nz_bin.data();
+    float* nz_root = out.nz_root.data();
+    float* dense = out.dense.data();
+    std::uint16_t* nz_count = out.nz_count.data();
+    const std::size_t stride = static_cast<std::size_t>(bins);
+    std::uint32_t count[256];
+    const __m128 zero = _mm_setzero_ps();
+    for (std::size_t k = 0; k < regions.size(); ++k, nz_bin += stride, nz_root += stride, dense += stride) {
+      const Geometry& g = geometry[regions[k]];
+      const int n = block_bins_8(crop, g.bx0 * 8, g.by0 * 8, lut, upper_edge, nz_bin, count);
+      if (bins >= 4) {  // whole vectors, the last one overlapping the one before
+        for (int b = 0; b + 4 < bins; b += 4) _mm_storeu_ps(dense + b, zero);
+        _mm_storeu_ps(dense + bins - 4, zero);
+      } else {
+        for (int b = 0; b < bins; ++b) dense[b] = 0.0f;
+      }
+      for (int i = 0; i < n; ++i) {
+        const float root = table[count[i]];
+        dense[nz_bin[i]] = root;
+        nz_root[i] = root;
+      }
+      nz_count[k] = static_cast<std::uint16_t>(n);
+    }
+    return;
+  }
+#endif
   thread_local std::vector<std::uint32_t> counts, integral;  // reused: no allocation per crop
   counts.resize(static_cast<std::size_t>(bins));
   if (single_blocks_) {

@@ -16,7 +16,10 @@ BoostedModel renumbered(const BoostedModel& model, const FeatureSubset& subset) 
 }  // namespace
 
 ModelScorer::ModelScorer(const BoostedModel& model)
-    : subset_(model.feature_spec(), features_read(model)), compact_(renumbered(model, subset_)) {}
+    : subset_(model.feature_spec(), features_read(model)), compact_(renumbered(model, subset_)) {
+  binned_ = BinnedForest::supports(compact_);
+  if (binned_) forest_ = BinnedForest(compact_, subset_.size());
+}
 
 double ModelScorer::score(const cv::Mat1w& crop) const {
   constexpr int kOnStack = 512;
@@ -28,7 +31,7 @@ double ModelScorer::score(const cv::Mat1w& crop) const {
     values = on_heap.data();
   }
   subset_.compute(crop, values);
-  return compact_.score(values);
+  return score_features(values);
 }
 
 std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates) const {

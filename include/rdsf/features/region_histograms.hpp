@@ -8,6 +8,9 @@
 // region is a union of whole blocks. A block whose smallest and largest depth fall into the same bin is
 // counted at once (bin_of is monotonic); in others the pixels below each bin edge between the smallest
 // non-zero and the largest depth are counted with 8-wide comparisons (SSE2), or pixel by pixel without it.
+// Blocks of 8 x 8 (SSE2) keep their rows in registers and visit only the occupied bins: the pass that
+// counts the pixels below bin b's upper edge also finds the smallest depth at or above it, whose bin is the
+// next occupied one. When every region is one such block, the occupied bins go straight to the slot.
 // A region that is one block takes the block's counts; larger regions take four look-ups per bin in the
 // integral histogram of the block counts (Porikli's integral histogram at block resolution: exact, as
 // counts are integers).
@@ -15,11 +18,17 @@
 // The coefficient of regions (i, j) is pair_value(): the sequential float sum over j's non-zero bins,
 // ascending, of dense_i[b] * sparse_j[b], clamped to [0, 1]. Bins where either root is zero add exactly
 // zero, so this equals the dense sum over all bins, and every caller gets the same bits for the same pair.
+// pair_value_short() is the same sum for a j of at most 4 bins without branches on the data (FeatureSubset).
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <opencv2/core.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "rdsf/features/feature_spec.hpp"
 
@@ -35,14 +44,15 @@ struct RootHistograms {
 
   void resize(int slots, int bin_count);
   const float* dense_of(int slot) const { return dense.data() + static_cast<std::size_t>(slot) * bins; }
+  const std::uint8_t* nz_bin_of(int slot) const { return nz_bin.data() + static_cast<std::size_t>(slot) * bins; }
+  const float* nz_root_of(int slot) const { return nz_root.data() + static_cast<std::size_t>(slot) * bins; }
 };
 
 /// The Bhattacharyya coefficient of the regions in slots i and j (see the header comment).
 inline float pair_value(const RootHistograms& h, int slot_i, int slot_j) {
   const float* dense = h.dense_of(slot_i);
-  const std::size_t base = static_cast<std::size_t>(slot_j) * static_cast<std::size_t>(h.bins);
-  const std::uint8_t* bin = h.nz_bin.data() + base;
-  const float* root = h.nz_root.data() + base;
+  const std::uint8_t* bin = h.nz_bin_of(slot_j);
+  const float* root = h.nz_root_of(slot_j);
   const int n = h.nz_count[static_cast<std::size_t>(slot_j)];
   if (n == 1) {  // the common uniform region: 0 + x is x, so the same bits as the loop
     const float value = dense[bin[0]] * root[0];
@@ -51,6 +61,44 @@ inline float pair_value(const RootHistograms& h, int slot_i, int slot_j) {
   float sum = 0.0f;
   for (int k = 0; k < n; ++k) sum += dense[bin[k]] * root[k];
   return sum > 1.0f ? 1.0f : sum;  // rounding can leave 1 + 1e-7; the sum is never negative
+}
+
+/// pair_value() without branches on the data, for a region j of at most 4 non-zero bins (nz_count <= 4)
+/// in histograms of at least 4 bins: always 4 terms, the k-th dense_i[b_k] * root_k kept when k <
+/// nz_count[j] and +0 otherwise (its bits and-ed with a mask; index 0 read instead), the four products in
+/// SSE2 lanes (each an IEEE product, as the scalar one), summed lane by lane in order. Adding +0 leaves
+/// the non-negative float sum as it was, so these are pair_value's bits.
+inline float pair_value_short(const RootHistograms& h, int slot_i, int slot_j) {
+  const float* dense = h.dense_of(slot_i);
+  const std::uint8_t* bin = h.nz_bin_of(slot_j);
+  const float* root = h.nz_root_of(slot_j);
+  const unsigned n = h.nz_count[static_cast<std::size_t>(slot_j)];
+#if defined(__SSE2__)
+  const __m128i keep = _mm_cmplt_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(static_cast<int>(n)));
+  const unsigned k1 = 0u - static_cast<unsigned>(n > 1), k2 = 0u - static_cast<unsigned>(n > 2),
+                 k3 = 0u - static_cast<unsigned>(n > 3);
+  const __m128 d = _mm_setr_ps(dense[bin[0]], dense[bin[1] & k1], dense[bin[2] & k2], dense[bin[3] & k3]);
+  const __m128 t = _mm_and_ps(_mm_mul_ps(d, _mm_loadu_ps(root)), _mm_castsi128_ps(keep));
+  __m128 sum = _mm_add_ss(_mm_setzero_ps(), t);  // ((0 + t0) + t1) + t2) + t3, in this order
+  sum = _mm_add_ss(sum, _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 1, 1, 1)));
+  sum = _mm_add_ss(sum, _mm_movehl_ps(t, t));
+  sum = _mm_add_ss(sum, _mm_shuffle_ps(t, t, _MM_SHUFFLE(3, 3, 3, 3)));
+  const float value = _mm_cvtss_f32(sum);
+  return value > 1.0f ? 1.0f : value;
+#else
+  float sum = 0.0f;
+  for (unsigned k = 0; k < 4; ++k) {
+    const std::uint32_t keep = 0u - static_cast<std::uint32_t>(k < n);  // all ones or zero
+    const float term = dense[bin[k] & keep] * root[k];
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &term, sizeof bits);
+    bits &= keep;
+    float kept = 0.0f;
+    std::memcpy(&kept, &bits, sizeof kept);
+    sum += kept;
+  }
+  return sum > 1.0f ? 1.0f : sum;
+#endif
 }
 
 class RegionHistogramBuilder {

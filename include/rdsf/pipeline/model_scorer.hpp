@@ -2,12 +2,14 @@
 // Scores candidates with a model by computing only the features it reads (features_read, FeatureSubset):
 // the histograms of the regions those pairs name, then the pairs, then H(x). The score is bit for bit the
 // model's score of the full feature vector: same values, same weak classifiers in the same order (the
-// model is kept with its weak classifiers renumbered to positions in the subset).
+// model is kept with its weak classifiers renumbered to positions in the subset). A model without stumps
+// is evaluated as a BinnedForest of that compact model (the same bits, classifier/binned_forest.hpp).
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "rdsf/candidates/candidate.hpp"
+#include "rdsf/classifier/binned_forest.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/features/feature_subset.hpp"
 
@@ -27,13 +29,17 @@ class ModelScorer {
   /// P(person) of one crop: the model's calibration of score(crop).
   double probability(const cv::Mat1w& crop_depth_mm) const { return compact_.probability(score(crop_depth_mm)); }
   /// H(x) from the features() values of one crop (features().size() values).
-  double score_features(const float* values) const { return compact_.score(values); }
+  double score_features(const float* values) const {
+    return binned_ ? forest_.score(values) : compact_.score(values);
+  }
   /// H(x) of every candidate's depth crop.
   std::vector<double> score(const std::vector<Candidate>& candidates) const;
 
  private:
   FeatureSubset subset_;
   BoostedModel compact_;  ///< the model reading positions in subset_ instead of feature indices
+  bool binned_ = false;   ///< compact_ has no stumps: forest_ scores it
+  BinnedForest forest_;   ///< compact_ on rows of subset_.size() bins
 };
 
 }  // namespace rdsf
