@@ -26,7 +26,6 @@ void expect_same(const BinScheme& scheme, const std::vector<float>& values) {
   bin_row(scheme, values.data(), static_cast<int>(values.size()), bins.data());
   for (std::size_t k = 0; k < values.size(); ++k) {
     ASSERT_EQ(bins[k], scheme.bin_of(values[k])) << "value " << values[k] << " at " << k;
-    ASSERT_EQ(bin_clamped(scheme, values[k]), scheme.bin_of(values[k])) << "value " << values[k];
   }
 }
 
@@ -49,7 +48,7 @@ std::vector<float> awkward_values(const BinScheme& scheme) {
   std::vector<float> out = {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN(),
                             -std::numeric_limits<float>::infinity(), -1e30f, -1.0f, -0.0f, 0.0f,
                             std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::min(),
-                            1.0f, 1.5f, 2.0f, 100.0f, 1e6f};
+                            1.0f, 1.5f, 2.0f, 100.0f, 1e6f, 1e30f, std::numeric_limits<float>::infinity()};
   // every bin edge and the 64 floats either side of it
   for (int b = 0; b <= scheme.count; ++b) {
     float edge = scheme.lower_edge(b);

@@ -24,7 +24,7 @@ void bin_row(const BinScheme& bins, const float* values, int n, std::uint8_t* ou
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm_packus_epi16(words, words2));  // 0..255
   }
 #endif
-  for (; k < n; ++k) out[k] = static_cast<std::uint8_t>(bin_clamped(bins, values[k]));
+  for (; k < n; ++k) out[k] = static_cast<std::uint8_t>(bins.bin_of(values[k]));
 }
 
 }  // namespace rdsf

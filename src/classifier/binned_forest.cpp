@@ -14,12 +14,10 @@ bool BinnedForest::supports(const BoostedModel& model) {
 
 BinnedForest::BinnedForest(const BoostedModel& model, int row_size) : bins_(model.bins()), row_size_(row_size) {
   if (!supports(model)) throw Error("binned forest: the model has stumps, which read values, not bins");
-  const std::size_t count = static_cast<std::size_t>(bins_.count);
   auto add_node = [&](int feature, const std::vector<double>& responses, bool leaf) {
     if (feature < 0 || feature >= row_size_) {
       throw Error("binned forest: feature " + std::to_string(feature) + " outside a row of " + std::to_string(row_size_));
     }
-    if (responses.size() != count) throw Error("binned forest: a table of " + std::to_string(responses.size()) + " responses");
     Node node{feature, 0};
     if (leaf) {
       node.table = static_cast<std::uint32_t>(response_.size());

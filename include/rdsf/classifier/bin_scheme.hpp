@@ -13,12 +13,14 @@ struct BinScheme {
   float min_value = 0.0f;  ///< lower edge of bin 0
   float max_value = 1.0f;  ///< upper edge of the last bin
 
-  /// Bin index of `value` in [0, count).
+  /// Bin index of `value` in [0, count): scaled = (value - min_value) * count / (max_value - min_value), 0
+  /// when !(scaled > 0) (NaN too), else trunc(min(scaled, count - 1)), clamped before the conversion so a
+  /// huge value or +infinity is the last bin (bin_row.hpp computes the same in SSE2 lanes).
   int bin_of(float value) const {
     const float scaled = (value - min_value) * static_cast<float>(count) / (max_value - min_value);
     if (!(scaled > 0.0f)) return 0;  // also NaN
-    const int bin = static_cast<int>(scaled);
-    return bin >= count ? count - 1 : bin;
+    const float top = static_cast<float>(count - 1);
+    return static_cast<int>(scaled < top ? scaled : top);
   }
   /// Lower edge of bin `bin`.
   float lower_edge(int bin) const {

@@ -2,7 +2,8 @@
 // A boosted model's look-up-table weak classifiers (kinds Lut and Tree) as flat tables that read a row of
 // bins instead of a row of values: the row is binned once (bin_row, four values at a time, no division per
 // node), then every weak classifier is walked without a data-dependent branch.
-//   node k of a weak classifier: feature f_k and a table of count entries at table_k;
+//   node k of a weak classifier: feature f_k and a table of count entries at table_k (BoostedModel checks
+//     every table has bins().count responses);
 //   inner node: k <- 2k + 1 + right[table_k + bin[f_k]], right[.] = (responses[.] > 0.0), exactly the
 //     child WeakClassifier::respond_row takes; a Lut is a tree of one leaf;
 //   leaf: H += response[table_k + bin[f_k]], the same double, added in the model's order from 0.0.
