@@ -165,13 +165,12 @@ TrainingSide training_side(const std::vector<int>& labels, const std::vector<std
   return side;
 }
 
-// Continued training: the score F0 of params.init on each of `rows`' rows in `index`.
+// Continued training: the score F0 of params.init (H(x) of a model of those weak classifiers) on each of
+// `rows`' rows in `index`.
 std::vector<double> init_scores(const cv::Mat1f& rows, const std::vector<std::size_t>& index, const BoostTrainingParams& params) {
+  const BoostedModel init(params.feature_spec, params.bins, params.init);
   std::vector<double> scores(index.size(), 0.0);
-  for (std::size_t k = 0; k < index.size(); ++k) {
-    const float* row = rows[static_cast<int>(index[k])];
-    for (const WeakClassifier& w : params.init) scores[k] += w.respond_row(row, params.bins);
-  }
+  for (std::size_t k = 0; k < index.size(); ++k) scores[k] = init.score(rows[static_cast<int>(index[k])]);
   return scores;
 }
 
