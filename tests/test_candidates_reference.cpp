@@ -197,7 +197,7 @@ TEST(CandidatesReference, CutCropsSameOnRandomWindows) {
 std::vector<DepthFrame> candidate_frames() {
   std::vector<DepthFrame> frames;
   synth::SynthParams p;
-  p.frames = 8, p.people_min = 1, p.people_max = 4, p.seed = 23, p.rgb = true;
+  p.frames = 16, p.people_min = 1, p.people_max = 4, p.seed = 23, p.rgb = true;
   synth::SynthSequence sequence(p);
   for (int i = 0; i < p.frames; ++i) {
     const synth::SynthFrame f = sequence.frame(i);
