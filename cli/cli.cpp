@@ -46,6 +46,7 @@ void apply_thesis_preset(po::variables_map& values) {
   set("split-depth-jump", c.split_depth_jump_mm);
   set("split-valley", c.split_valley_cm);
   set("split-step", c.split_step_cm);
+  set("split-head-drop", c.split_head_drop_cm);
   set("split-keep-whole", c.split_keep_whole);
   set("box", std::string("strict"));
 }
@@ -219,13 +220,24 @@ po::options_description detector_options(DetectorParams& p) {
       ("max-object-width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),
        "objects wider than this (cm) are walls, not candidates; 0 = thesis (no limit)")
       ("max-person-width", po::value(&c.max_person_width_cm)->default_value(c.max_person_width_cm),
-       "the widest person (cm): wider objects are tried for splitting")
+       "the widest person (cm): wider objects are tried for splitting by depth jumps, valleys and steps, narrower pieces joined")
       ("split-depth-jump", po::value(&c.split_depth_jump_mm)->default_value(c.split_depth_jump_mm),
        "split a wide object where its column depth jumps by more than this (mm); 0 = off")
       ("split-valley", po::value(&c.split_valley_cm)->default_value(c.split_valley_cm),
        "... or at a valley of its height profile this deep (cm); 0 = off")
       ("split-step", po::value(&c.split_step_cm)->default_value(c.split_step_cm),
        "... or at a step of its height profile this high (cm); 0 = off")
+      ("split-head-drop", po::value(&c.split_head_drop_cm)->default_value(c.split_head_drop_cm),
+       "split an object of any width between two heads (tops of its height profile with shoulders at least this "
+       "far below, cm: people overlapping at one depth); 0 = off, the thesis")
+      ("split-head-width", po::value(&c.split_head_width_cm)->default_value(c.split_head_width_cm),
+       "... a head's top (within 5 cm of its height) at most this wide (cm)")
+      ("split-head-min-width", po::value(&c.split_head_min_width_cm)->default_value(c.split_head_min_width_cm),
+       "... and at least this wide (cm; a raised hand is narrower)")
+      ("split-head-layers-below", po::value(&c.split_head_layers_below_mm)->default_value(c.split_head_layers_below_mm),
+       "... in layers nearer than this (mm)")
+      ("split-head-keep-whole", po::value(&c.split_head_keep_whole)->default_value(c.split_head_keep_whole),
+       "an object split between heads stays a candidate besides its pieces")
       ("min-part-width", po::value(&c.min_part_width_cm)->default_value(c.min_part_width_cm),
        "the narrowest piece a split leaves (cm)")
       ("split-keep-whole", po::value(&c.split_keep_whole)->default_value(c.split_keep_whole),

@@ -1,6 +1,6 @@
 // Candidates for every person on hand-built depth maps: boxes that fit (side-on people, arms), joined
-// pieces, splitting people side by side and a person against a cupboard, people cut by the border, and
-// the thesis preset.
+// pieces, splitting people side by side, overlapping people between their heads (not at a raised hand)
+// and a person against a cupboard, people cut by the border, and the thesis preset.
 #include <gtest/gtest.h>
 
 #include "rdsf/candidates/candidate_finder.hpp"
@@ -32,11 +32,19 @@ void paint_person(DepthFrame& frame, int left, int body_px, int depth_mm = 2000)
   test::paint(frame, {left, 150, body_px, 310}, depth_mm);
 }
 
+// The wide-object cuts alone (heads off).
 DetectorParams splitting() {
   DetectorParams p;
+  p.candidates.split_head_drop_cm = 0;
   p.candidates.split_valley_cm = 15;
   p.candidates.split_step_cm = 30;
   p.candidates.split_depth_jump_mm = 250;
+  return p;
+}
+
+DetectorParams splitting_off() {
+  DetectorParams p;
+  p.candidates.split_head_drop_cm = 0;
   return p;
 }
 
@@ -89,7 +97,7 @@ TEST(CandidateShapes, TwoPeopleSideBySideAtOneDepthGiveTwoCandidates) {
   paint_person(frame, 150, 144);  // shoulders 55 cm wide, touching
   paint_person(frame, 294, 144);
   const cv::Rect left(150, 100, 144, 360), right(294, 100, 144, 360);
-  const auto whole = at_depth(frame, 2000);  // without splitting: one object
+  const auto whole = at_depth(frame, 2000, splitting_off());  // without splitting: one object
   ASSERT_EQ(whole.size(), 1u);
   EXPECT_LE(best_iou(whole, left, BoxKind::fitted), 0.5);
   const auto split = at_depth(frame, 2000, splitting());
@@ -100,6 +108,44 @@ TEST(CandidateShapes, TwoPeopleSideBySideAtOneDepthGiveTwoCandidates) {
   DetectorParams both = splitting();
   both.candidates.split_keep_whole = true;
   EXPECT_EQ(at_depth(frame, 2000, both).size(), 3u);
+}
+
+TEST(CandidateShapes, PeopleOverlappingAtOneDepthAreCutBetweenTheirHeads) {
+  // Bodies 42 cm wide overlapping by 8 cm: 72 cm together, narrower than max_person_width (the wide-object
+  // cuts never try it); heads 15 cm wide, 19 cm above the shoulders.
+  DepthFrame frame = test::wall_frame(4000);
+  paint_person(frame, 150, 110);
+  paint_person(frame, 230, 110);
+  const cv::Rect left(150, 100, 110, 360), right(230, 100, 110, 360), both(150, 100, 190, 360);
+  const auto whole = at_depth(frame, 2000, splitting_off());
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_LT(best_iou(whole, left, BoxKind::fitted), 0.6);
+  const auto found = at_depth(frame, 2000);  // the default: both pieces and the whole
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_GE(best_iou(found, left, BoxKind::fitted), 0.8);
+  EXPECT_GE(best_iou(found, right, BoxKind::fitted), 0.8);
+  EXPECT_GE(best_iou(found, both, BoxKind::fitted), 0.95);
+  DetectorParams pieces;
+  pieces.candidates.split_head_keep_whole = false;
+  EXPECT_EQ(at_depth(frame, 2000, pieces).size(), 2u);
+  DetectorParams shallow;  // shoulders less than 25 cm below the heads: no heads
+  shallow.candidates.split_head_drop_cm = 25;
+  EXPECT_EQ(at_depth(frame, 2000, shallow).size(), 1u);
+  DetectorParams far;  // heads only in layers nearer than split_head_layers_below
+  far.candidates.split_head_layers_below_mm = 2000;
+  EXPECT_EQ(at_depth(frame, 2000, far).size(), 1u);
+}
+
+TEST(CandidateShapes, ARaisedHandIsNoHead) {
+  DepthFrame frame = test::wall_frame(4000);
+  paint_person(frame, 280, 140);                  // head 15 cm wide on columns 330-369
+  test::paint(frame, {420, 90, 20, 120}, 2000);  // an arm raised beside it, the hand above the head: 8 cm wide
+  const auto found = at_depth(frame, 2000);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].fitted_box, cv::Rect(280, 90, 160, 370));
+  DetectorParams any_width;  // without the narrowest head top, the hand is a second head
+  any_width.candidates.split_head_min_width_cm = 0;
+  EXPECT_EQ(at_depth(frame, 2000, any_width).size(), 3u);
 }
 
 TEST(CandidateShapes, PersonAgainstACupboardAtTheSameDepthIsSplitOff) {
@@ -165,6 +211,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);
   EXPECT_EQ(t.candidates.narrow_fitted_width_cm, 0);
   EXPECT_EQ(t.candidates.split_depth_jump_mm + t.candidates.split_valley_cm + t.candidates.split_step_cm, 0);
+  EXPECT_EQ(t.candidates.split_head_drop_cm, 0);
   EXPECT_EQ(t.reported_box, BoxKind::strict);
   EXPECT_EQ(DetectorParams().reported_box, BoxKind::fitted);
 }

@@ -219,8 +219,8 @@ std::vector<DepthFrame> candidate_frames() {
   return frames;
 }
 
-// Every object's fitted extent (objects not joined, so each is one passing span fitted over the whole
-// width) equals the column-by-column walk, and every candidate's crops the pixel-by-pixel cut.
+// Every object's fitted extent (objects neither joined nor split, so each is one passing span fitted over
+// the whole width) equals the column-by-column walk, and every candidate's crops the pixel-by-pixel cut.
 // Every object of layer_objects(view, params) has the fitted extent of the column-by-column walk; counts
 // the objects and those whose fitted extent reaches beyond their passing columns.
 void expect_same_fitted_extents(const LayerView& view, const CandidateParams& params, int& objects, int& widened) {
@@ -303,6 +303,7 @@ TEST(CandidatesReference, FittedExtentsSameOnRandomMaps) {
     }
     CandidateParams params;
     params.join_pieces = false;
+    params.split_head_drop_cm = 0;
     params.column_gap = static_cast<int>(rng() % 21);
     params.fit_reach_cm = 10.0 + static_cast<double>(rng() % 80);
     params.fit_depth_step_mm = static_cast<double>(rng() % 3) * 150.0;
@@ -317,6 +318,7 @@ TEST(CandidatesReference, FittedExtentsSameOnRandomMaps) {
 TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
   CandidateParams params;
   params.join_pieces = false;
+  params.split_head_drop_cm = 0;
   int objects = 0, widened = 0, candidates = 0;
   for (const DepthFrame& frame : candidate_frames()) {
     const Segmentation s = segment_depth(frame.depth_mm, {});

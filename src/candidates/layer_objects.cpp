@@ -83,8 +83,9 @@ class ObjectShaper {
       const bool at_border = o.fit_first == 0 || o.fit_last == width_ - 1;  // a person cut by it looks narrow
       if (!at_border && cm(o.fit_last - o.fit_first + 1) < params_.min_fitted_width_cm) continue;
       std::vector<LayerObject> pieces;
-      if (split_enabled()) split(o, pieces);
-      if (pieces.empty() || params_.split_keep_whole) kept.push_back(o);
+      bool by_heads = false;
+      if (split_wide_enabled() || split_heads_enabled()) split(o, pieces, 0, &by_heads);
+      if (pieces.empty() || (by_heads ? params_.split_head_keep_whole : params_.split_keep_whole)) kept.push_back(o);
       kept.insert(kept.end(), pieces.begin(), pieces.end());
     }
     return kept;
@@ -129,7 +130,12 @@ class ObjectShaper {
     return total > 0 && 2 * other >= total;
   }
 
-  bool split_enabled() const { return params_.split_valley_cm > 0 || params_.split_depth_jump_mm > 0 || params_.split_step_cm > 0; }
+  bool split_wide_enabled() const {
+    return params_.split_valley_cm > 0 || params_.split_depth_jump_mm > 0 || params_.split_step_cm > 0;
+  }
+  bool split_heads_enabled() const {
+    return params_.split_head_drop_cm > 0 && layer_.depth_mm_mean < params_.split_head_layers_below_mm;
+  }
 
   // The object over the passing columns of first..last (first and last pass).
   LayerObject span(int first, int last) const {
@@ -361,6 +367,15 @@ class ObjectShaper {
     return layer_.camera->height_cm(o.bottom - std::max(o.top, r.top) + 1, layer_.depth_mm_mean);
   }
 
+  // Height (cm) above the object's lowest row of column c's highest pixel of the layer at or below the
+  // object's fitted top; 0 without one.
+  double top_profile_cm(const LayerObject& o, int c) const {
+    for (int y = std::max(0, o.fit_top); y <= o.bottom; ++y) {
+      if ((*layer_.labels)(y, c) == layer_.label) return layer_.camera->height_cm(o.bottom - y + 1, layer_.depth_mm_mean);
+    }
+    return 0.0;
+  }
+
   // Median depth of the layer's pixels in column c's run (every row_step-th row); 0 when none.
   double column_depth_mm(int c, int row_step = 2) const {
     const ColumnRun& r = run(c);
@@ -440,12 +455,93 @@ class ObjectShaper {
     return -1;
   }
 
-  // Step 3: an object wider than a person is cut in two where cut() says, and each piece again while it is
-  // wider than a person; the final pieces (with their passing columns) are appended to `out`, nothing when
-  // the object is not cut.
-  void split(const LayerObject& whole, std::vector<LayerObject>& out, int depth = 0) const {
-    if (depth > 4 || cm(whole.fit_last - whole.fit_first + 1) <= params_.max_person_width_cm) return;
-    const int c = cut(whole, std::max(1, px(params_.min_part_width_cm)));
+  // Heads (split_head_drop_cm; CandidateParams has the rule): the columns where a head tops the profile
+  // h of o.fit_first..o.fit_last, left to right.
+  std::vector<int> heads(const LayerObject& o, const std::vector<double>& h) const {
+    const int n = static_cast<int>(h.size());
+    const int head_px = std::max(2, px(params_.split_head_width_cm)), half = head_px / 2;
+    const int min_gap = std::max(1, px(params_.min_part_width_cm));
+    const double tallest = *std::max_element(h.begin(), h.end());
+    const auto at = [&](int i) { return i >= 0 && i < n ? h[static_cast<std::size_t>(i)] : 0.0; };
+    // Within head_px beyond `from` in direction `step`, the profile reaches top - drop or the extent ends.
+    const auto drops = [&](int from, int step, double top) {
+      for (int k = 1; k <= head_px; ++k) {
+        const int j = from + step * k;
+        if (j < 0 || j >= n || at(j) <= top - params_.split_head_drop_cm) return true;
+      }
+      return false;
+    };
+    std::vector<int> found;
+    for (int i = 0; i < n;) {
+      const double top = at(i);
+      bool peak = top > 0 && top >= 0.75 * tallest;
+      for (int j = i - half; peak && j <= i + half; ++j) peak = at(j) <= top;
+      if (!peak) {
+        ++i;
+        continue;
+      }
+      int end = i;  // the columns at this peak's height; the head is at their middle
+      while (end + 1 < n && at(end + 1) == top) ++end;
+      const int c = (i + end) / 2;
+      int left = c, right = c;  // the head's top: the columns within 5 cm of its height
+      while (left > 0 && at(left - 1) >= top - 5.0) --left;
+      while (right + 1 < n && at(right + 1) >= top - 5.0) ++right;
+      const double top_cm = cm(right - left + 1);
+      if (right - left + 1 <= head_px && top_cm >= params_.split_head_min_width_cm && drops(left, -1, top) &&
+          drops(right, 1, top)) {
+        if (found.empty() || c - found.back() >= min_gap) {
+          found.push_back(c);
+        } else if (top > at(found.back())) {
+          found.back() = c;
+        }
+      }
+      i = end + 1;
+    }
+    for (int& c : found) c += o.fit_first;
+    return found;
+  }
+
+  // The cut between two heads (the first column of the right piece), or -1 with fewer than two: between the
+  // neighbouring heads whose lower one rises the most above the lowest point of the profile between them,
+  // at the middle of the columns within 2 cm of that point, both pieces at least min_piece wide.
+  int cut_heads(const LayerObject& o, int min_piece) const {
+    const int a = o.fit_first, b = o.fit_last;
+    std::vector<double> h(static_cast<std::size_t>(b - a + 1));
+    for (int c = a; c <= b; ++c) h[static_cast<std::size_t>(c - a)] = top_profile_cm(o, c);
+    const std::vector<int> found = heads(o, h);
+    const auto at = [&](int c) { return h[static_cast<std::size_t>(c - a)]; };
+    int best = -1;
+    double best_dip = 0;
+    for (std::size_t k = 0; k + 1 < found.size(); ++k) {
+      const int lo = std::max(found[k] + 1, a + min_piece), hi = std::min(found[k + 1], b - min_piece + 1);
+      if (lo > hi) continue;
+      double lowest = std::numeric_limits<double>::max();
+      for (int c = lo; c <= hi; ++c) lowest = std::min(lowest, at(c));
+      const double dip = std::min(at(found[k]), at(found[k + 1])) - lowest;
+      if (dip <= best_dip) continue;
+      int first = -1, last = -1;
+      for (int c = lo; c <= hi; ++c) {
+        if (at(c) > lowest + 2.0) continue;
+        if (first < 0) first = c;
+        last = c;
+      }
+      best_dip = dip;
+      best = (first + last + 1) / 2;
+    }
+    return best;
+  }
+
+  // Step 3: an object with two heads (split_head_drop_cm) is cut between them, else one wider than a person
+  // where cut() says, and each piece again; the final pieces (with their passing columns) are appended to
+  // `out`, nothing when the object is not cut. *by_heads tells whether the first cut was between heads.
+  void split(const LayerObject& whole, std::vector<LayerObject>& out, int depth = 0, bool* by_heads = nullptr) const {
+    if (depth > 4) return;
+    const int min_piece = std::max(1, px(params_.min_part_width_cm));
+    int c = split_heads_enabled() ? cut_heads(whole, min_piece) : -1;
+    if (by_heads != nullptr) *by_heads = c >= 0;
+    if (c < 0 && split_wide_enabled() && cm(whole.fit_last - whole.fit_first + 1) > params_.max_person_width_cm) {
+      c = cut(whole, min_piece);
+    }
     if (c < 0) return;
     for (const auto& [lo, hi] : {std::pair<int, int>{whole.fit_first, c - 1}, std::pair<int, int>{c, whole.fit_last}}) {
       int first = -1, last = -1;

@@ -29,6 +29,7 @@ DetectorParams thesis_params(DetectorParams params) {
   c.split_depth_jump_mm = 0;
   c.split_valley_cm = 0;
   c.split_step_cm = 0;
+  c.split_head_drop_cm = 0;
   c.split_keep_whole = false;
   return params;
 }

@@ -82,8 +82,8 @@ struct CandidateParams {
   double min_fitted_width_cm = 15.0;
   /// Objects wider than this over their passing columns (cm) are walls, not candidates. 0 turns it off.
   double max_object_width_cm = 400.0;
-  /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting,
-  /// narrower pieces may be joined.
+  /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting by
+  /// depth jumps, valleys and steps, narrower pieces may be joined.
   double max_person_width_cm = 100.0;
   /// Splitting: an object wider than max_person_width_cm is cut where the layer's median column depth
   /// jumps by more than this between neighbouring columns (mm; a person before a cupboard in the same
@@ -95,6 +95,26 @@ struct CandidateParams {
   /// ... else where the mean height of a min_part_width_cm band on one side differs from the other side's
   /// by more than this (cm; a person beside a lower or taller piece of furniture). 0 turns it off.
   double split_step_cm = 0.0;
+  /// Heads: an object in a layer nearer than split_head_layers_below_mm with two or more heads on top of
+  /// its profile is cut between neighbouring heads at the lowest point between them (people overlapping in
+  /// the image at one depth, whatever their width together), each piece again while it has two. The
+  /// profile: per column of the fitted extent, the height of its highest pixel of the layer at or below the
+  /// fitted top. A head: a local maximum over half a head's width either side whose top (the columns
+  /// within 5 cm of its height) is split_head_min_width_cm to split_head_width_cm wide (a raised hand's is
+  /// narrower), at least 3/4 of the profile's maximum, with the profile dropping by at least this (cm)
+  /// within split_head_width_cm beyond its top on both sides (the shoulders) or the extent ending there;
+  /// of two heads closer than min_part_width_cm the lower goes. 0 turns it off.
+  double split_head_drop_cm = 15.0;
+  /// ... the widest a head's top may be (cm).
+  double split_head_width_cm = 30.0;
+  /// ... the narrowest a head's top may be (cm).
+  double split_head_min_width_cm = 12.0;
+  /// ... in layers nearer than this (mm): farther, the tops of walls and shelves are ragged with missing
+  /// readings and look like rows of heads.
+  double split_head_layers_below_mm = 4000.0;
+  /// ... the object cut between heads stays a candidate besides its pieces: people overlapping in the
+  /// image have overlapping boxes, and the whole is the nearer one's when an arm crosses the other.
+  bool split_head_keep_whole = true;
   /// The narrowest piece a split leaves (cm).
   double min_part_width_cm = 25.0;
   /// A split object stays a candidate as a whole besides its pieces.

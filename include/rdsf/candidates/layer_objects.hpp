@@ -10,9 +10,12 @@
 //      join_pieces (pieces each narrower than min_width_cm: in layers nearer than
 //      join_narrow_layers_below_mm, and with join_narrow_passing when their passing columns alone are
 //      together at least narrow_passing_width_cm);
-//   3. splitting: an object wider than a person is cut where the layer's depth jumps between neighbouring
-//      columns (split_depth_jump_mm) and at deep valleys of its column-height profile (split_valley_cm);
-//      the pieces become objects, and the whole stays one too when split_keep_whole is set;
+//   3. splitting: an object of any width with two heads on top of its profile (the highest pixel per
+//      column) is cut between them at the lowest point (people overlapping in the image at one depth:
+//      split_head_drop_cm; the whole stays one too, split_head_keep_whole); else an object wider than a
+//      person is cut where the layer's depth jumps between neighbouring columns (split_depth_jump_mm), at
+//      deep valleys of its column-height profile (split_valley_cm) or at steps (split_step_cm); the pieces
+//      become objects, and the whole stays one too when split_keep_whole is set;
 //   4. narrow people: an object narrower than min_width_cm over its passing columns stays one when its
 //      fitted extent is at least narrow_fitted_width_cm wide, its passing columns at least
 //      narrow_passing_width_cm, its layer nearer than narrow_layers_below_mm, its height (fitted top to
