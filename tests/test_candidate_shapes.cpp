@@ -138,14 +138,28 @@ TEST(CandidateShapes, PeopleOverlappingAtOneDepthAreCutBetweenTheirHeads) {
 
 TEST(CandidateShapes, ARaisedHandIsNoHead) {
   DepthFrame frame = test::wall_frame(4000);
-  paint_person(frame, 280, 140);                  // head 15 cm wide on columns 330-369
-  test::paint(frame, {420, 90, 20, 120}, 2000);  // an arm raised beside it, the hand above the head: 8 cm wide
+  paint_person(frame, 280, 200);                  // head 15 cm wide on columns 360-399
+  test::paint(frame, {450, 90, 20, 120}, 2000);  // a hand raised above the head and the shoulder: 8 cm wide
   const auto found = at_depth(frame, 2000);
   ASSERT_EQ(found.size(), 1u);
-  EXPECT_EQ(found[0].fitted_box, cv::Rect(280, 90, 160, 370));
+  EXPECT_EQ(found[0].fitted_box, cv::Rect(280, 90, 200, 370));
   DetectorParams any_width;  // without the narrowest head top, the hand is a second head
   any_width.candidates.split_head_min_width_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, any_width).size(), 3u);
+}
+
+TEST(CandidateShapes, AHeadNeedsShouldersInsideTheObject) {
+  // A lamp post (15 cm) touching a person, as tall as the head: a top with a drop on one side only, where
+  // the object ends (not at the image's border): no second head.
+  DepthFrame frame = test::wall_frame(4000);
+  paint_person(frame, 150, 110);
+  test::paint(frame, {260, 100, 40, 360}, 2000);
+  ASSERT_EQ(at_depth(frame, 2000).size(), 1u);
+  // The same shapes cut by the image's right border: the lamp could be a head whose shoulder is outside.
+  DepthFrame border = test::wall_frame(4000);
+  paint_person(border, 490, 110);
+  test::paint(border, {600, 100, 40, 360}, 2000);
+  EXPECT_EQ(at_depth(border, 2000).size(), 3u);
 }
 
 TEST(CandidateShapes, PersonAgainstACupboardAtTheSameDepthIsSplitOff) {

@@ -463,11 +463,15 @@ class ObjectShaper {
     const int min_gap = std::max(1, px(params_.min_part_width_cm));
     const double tallest = *std::max_element(h.begin(), h.end());
     const auto at = [&](int i) { return i >= 0 && i < n ? h[static_cast<std::size_t>(i)] : 0.0; };
-    // Within head_px beyond `from` in direction `step`, the profile reaches top - drop or the extent ends.
+    // Within head_px beyond `from` in direction `step`, the profile reaches top - drop (inside the extent,
+    // or beyond it where the extent ends at the image's left or right border).
+    const bool open_left = o.fit_first == 0, open_right = o.fit_last == width_ - 1;
     const auto drops = [&](int from, int step, double top) {
       for (int k = 1; k <= head_px; ++k) {
         const int j = from + step * k;
-        if (j < 0 || j >= n || at(j) <= top - params_.split_head_drop_cm) return true;
+        if (j < 0) return open_left;
+        if (j >= n) return open_right;
+        if (at(j) <= top - params_.split_head_drop_cm) return true;
       }
       return false;
     };

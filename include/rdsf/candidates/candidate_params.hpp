@@ -102,7 +102,8 @@ struct CandidateParams {
   /// fitted top. A head: a local maximum over half a head's width either side whose top (the columns
   /// within 5 cm of its height) is split_head_min_width_cm to split_head_width_cm wide (a raised hand's is
   /// narrower), at least 3/4 of the profile's maximum, with the profile dropping by at least this (cm)
-  /// within split_head_width_cm beyond its top on both sides (the shoulders) or the extent ending there;
+  /// within split_head_width_cm beyond its top on both sides (the shoulders: inside the fitted extent, or
+  /// beyond it where the extent ends at the image's left or right border);
   /// of two heads closer than min_part_width_cm the lower goes. 0 turns it off.
   double split_head_drop_cm = 15.0;
   /// ... the widest a head's top may be (cm).
