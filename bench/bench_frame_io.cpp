@@ -4,6 +4,10 @@
 // with cv::imdecode alone (PngDecodeOptions::direct_path = false: what every read did before). Both
 // include reading the file and checking every chunk's CRC. Arg 0 = depth, 1 = colour, 2 = both.
 // BM_InflateOnly is the floor under the direct path: libdeflate's inflate of the same zlib streams alone.
+// BM_EncodeCrop (issue 17): one sample crop, depth (64x128, 16-bit) and colour (8-bit BGR), to PNG bytes, per
+// crop: the candidates' crops of ../shared/realdata/empty (with colour; else of the synthetic frame above), in turn.
+// Args {0, 0}: cv::imencode level 1; {1, 0}: the direct zlib path (the same bytes); {2, L}: libdeflate at
+// level L. Counters: depth_bytes and colour_bytes, the mean PNG size of a crop.
 // Run: build/bench/bench_frame_io
 #include <benchmark/benchmark.h>
 
@@ -17,8 +21,13 @@
 #include <libdeflate.h>
 #include <unistd.h>
 
+#include <opencv2/imgcodecs.hpp>
+
+#include "rdsf/detector/frame_analyser.hpp"
 #include "rdsf/frame/depth_png.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_decoder.hpp"
+#include "rdsf/frame/png_encoder.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
@@ -106,6 +115,70 @@ void BM_InflateOnly(benchmark::State& state) {
   libdeflate_free_decompressor(inflater);
 }
 BENCHMARK(BM_InflateOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+struct CropPair {
+  cv::Mat1w depth;
+  cv::Mat3b colour;
+};
+
+const std::vector<CropPair>& sample_crops() {
+  static const std::vector<CropPair> all = [] {
+    const auto empty = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/empty";
+    auto source = rdsf::open_frame_source(std::filesystem::is_directory(empty) ? empty.string() : files().dir.string());
+    std::vector<CropPair> out;
+    const rdsf::FrameAnalyser core;
+    rdsf::DepthFrame frame;
+    while (source->next(frame)) {
+      for (const auto& c : core.analyse(frame, false).candidates) out.push_back({c.depth_crop.clone(), c.colour_crop.clone()});
+    }
+    return out;
+  }();
+  return all;
+}
+
+void BM_EncodeCrop(benchmark::State& state) {
+  const std::vector<CropPair>& crops = sample_crops();
+  if (crops.empty()) {
+    state.SkipWithError("no crops");
+    return;
+  }
+  const int mode = static_cast<int>(state.range(0));
+  rdsf::PngEncodeOptions options{1};
+  if (mode == 2) {
+    options.deflater = rdsf::PngDeflater::libdeflate;
+    options.libdeflate_level = static_cast<int>(state.range(1));
+  }
+  const auto encode = [&](const cv::Mat& image) {
+    if (mode != 0) return rdsf::encode_png(image, options);
+    std::vector<unsigned char> bytes;
+    cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, 1});
+    return bytes;
+  };
+  double depth_bytes = 0, colour_bytes = 0;
+  for (const CropPair& c : crops) {
+    depth_bytes += static_cast<double>(encode(c.depth).size());
+    if (!c.colour.empty()) colour_bytes += static_cast<double>(encode(c.colour).size());
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const CropPair& c = crops[i++ % crops.size()];
+    benchmark::DoNotOptimize(encode(c.depth).data());
+    if (!c.colour.empty()) benchmark::DoNotOptimize(encode(c.colour).data());
+  }
+  state.counters["depth_bytes"] = depth_bytes / static_cast<double>(crops.size());
+  state.counters["colour_bytes"] = colour_bytes / static_cast<double>(crops.size());
+  state.counters["crops"] = static_cast<double>(crops.size());
+}
+BENCHMARK(BM_EncodeCrop)
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({2, 1})
+    ->Args({2, 2})
+    ->Args({2, 3})
+    ->Args({2, 4})
+    ->Args({2, 5})
+    ->Args({2, 6})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -1,13 +1,18 @@
-// The bytes a mining run leaves (issue 17's faster miner must not change them): the rows and crops of the
+// What a mining run leaves (issue 17's faster miner must not change it): the rows and the crops' pixels of the
 // real people-free frames are those main gave before the direct PNG encoder and the group commit
-// (ae93907), and flushing in groups of any size or on any number of threads leaves the same bytes.
+// (ae93907); the crops' bytes are libdeflate's (kSampleCropPng), pinned so that an encoder change shows,
+// and the zlib path still gives main's bytes; flushing in groups of any size or on any number of threads
+// leaves the same bytes.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include "rdsf/core/stable_hash.hpp"
 #include "rdsf/dataset/negative_miner.hpp"
@@ -25,10 +30,34 @@ std::string file_bytes(const fs::path& path) {
   return bytes.str();
 }
 
+/// "WxH:type:" and the decoded pixels of PNG bytes, row by row, 16-bit samples little-endian.
+std::string pixels_of(const std::string& png) {
+  const cv::Mat image =
+      cv::imdecode(cv::Mat(1, static_cast<int>(png.size()), CV_8U, const_cast<char*>(png.data())), cv::IMREAD_UNCHANGED);
+  EXPECT_FALSE(image.empty());
+  std::string out = std::to_string(image.cols) + "x" + std::to_string(image.rows) + ":" + std::to_string(image.type()) + ":";
+  const std::size_t row_bytes = static_cast<std::size_t>(image.cols) * image.elemSize();
+  for (int y = 0; y < image.rows; ++y) {
+    const unsigned char* row = image.ptr(y);
+    if (image.depth() == CV_8U) {
+      out.append(reinterpret_cast<const char*>(row), row_bytes);
+      continue;
+    }
+    const auto* samples = reinterpret_cast<const std::uint16_t*>(row);
+    for (std::size_t i = 0; i < row_bytes / 2; ++i) {
+      out += static_cast<char>(samples[i] & 0xff);
+      out += static_cast<char>(samples[i] >> 8);
+    }
+  }
+  return out;
+}
+
 /// FNV-1a 64 over every row of samples.tsv without its source (4th) and time (17th) columns, each followed by
-/// the bytes of the row's depth and colour crops: what a set holds, wherever and whenever it was mined.
+/// the row's depth and colour crops: `hash` with the crops' file bytes, `pixels` with their decoded pixels
+/// (pixels_of) instead. What a set holds, wherever and whenever it was mined.
 struct SetDigest {
   std::string hash;
+  std::string pixels;
   int rows = 0;
 };
 
@@ -36,7 +65,7 @@ SetDigest digest_of(const std::string& dir) {
   std::ifstream in(fs::path(dir) / "samples.tsv");
   std::string line;
   std::getline(in, line);  // header
-  std::uint64_t h = 0xcbf29ce484222325ULL;
+  std::uint64_t h = 0xcbf29ce484222325ULL, p = h;
   SetDigest digest;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
@@ -54,19 +83,25 @@ SetDigest digest_of(const std::string& dir) {
       kept += fields[i];
     }
     h = rdsf::fnv1a64(kept + "\n", h);
+    p = rdsf::fnv1a64(kept + "\n", p);
     const std::string stem = rdsf::crop_stem(std::stoll(fields[0]));
     for (const char* kind : {".depth.png", ".rgb.png"}) {
       const fs::path crop = fs::path(dir) / (stem + kind);
-      if (fs::exists(crop)) h = rdsf::fnv1a64(file_bytes(crop), h);
+      if (!fs::exists(crop)) continue;
+      const std::string bytes = file_bytes(crop);
+      h = rdsf::fnv1a64(bytes, h);
+      p = rdsf::fnv1a64(pixels_of(bytes), p);
     }
     ++digest.rows;
   }
   digest.hash = rdsf::to_hex16(h);
+  digest.pixels = rdsf::to_hex16(p);
   return digest;
 }
 
 SetDigest mine_into(const std::string& dir, const std::string& source, int threads, int sync_every,
-                    bool join_narrow_passing = rdsf::CandidateParams{}.join_narrow_passing) {
+                    bool join_narrow_passing = rdsf::CandidateParams{}.join_narrow_passing,
+                    const rdsf::PngEncodeOptions& crop_png = rdsf::kSampleCropPng) {
   rdsf::SampleSetWriter writer =
       rdsf::SampleSetWriter::open_or_create(dir, rdsf::FeatureSpec{}, rdsf::CameraModel::kinect_v1(), "test");
   rdsf::MineParams params;
@@ -74,6 +109,7 @@ SetDigest mine_into(const std::string& dir, const std::string& source, int threa
   params.threads = threads;
   params.sync_every_frames = sync_every;
   params.detector.candidates.join_narrow_passing = join_narrow_passing;
+  params.crop_png = crop_png;
   std::vector<std::int64_t> reported;
   rdsf::mine_negatives(params, writer, [&](const rdsf::MineStats& s) {
     reported.push_back(s.frames);
@@ -89,15 +125,23 @@ SetDigest mine_into(const std::string& dir, const std::string& source, int threa
 
 }  // namespace
 
-TEST(MinerOutput, RealFramesGiveTheBytesOfBeforeTheFasterMiner) {
+TEST(MinerOutput, RealFramesGiveTheRowsAndPixelsOfBeforeTheFasterMiner) {
   RDSF_REQUIRE_REALDATA();
   rdsf::test::TempDir dir{"rdsf-miner-output"};
   // rdsf-mine --source ../shared/realdata/empty on main at ae93907 (cv::imencode crops, a flush per frame),
-  // whose candidates are today's with join_narrow_passing off (issue 14 removed one of them since).
-  const SetDigest mined =
-      mine_into(dir / "set", (rdsf::test::realdata_dir() / "empty").string(), 2, 16, /*join_narrow_passing=*/false);
+  // whose candidates are today's with join_narrow_passing off (issue 14 removed one of them since): its
+  // rows and crop pixels; the crop bytes are libdeflate's since issue 17.
+  const std::string empty = (rdsf::test::realdata_dir() / "empty").string();
+  const SetDigest mined = mine_into(dir / "set", empty, 2, 16, /*join_narrow_passing=*/false);
   EXPECT_EQ(mined.rows, 50);
-  EXPECT_EQ(mined.hash, "488e366968cde91b");
+  EXPECT_EQ(mined.pixels, "811c35eb9597e00a");
+  EXPECT_EQ(mined.hash, "1c1e2a0ee70a55bb");
+  // The zlib path still gives main's bytes at ae93907, and so the pixels pinned above are main's.
+  const SetDigest zlib =
+      mine_into(dir / "zlib", empty, 2, 16, /*join_narrow_passing=*/false, rdsf::PngEncodeOptions{1});
+  EXPECT_EQ(zlib.rows, 50);
+  EXPECT_EQ(zlib.hash, "488e366968cde91b");
+  EXPECT_EQ(zlib.pixels, mined.pixels);
 }
 
 TEST(MinerOutput, GroupSizeAndThreadsLeaveTheSameBytes) {

@@ -145,7 +145,7 @@ FrameResult analyse_frame(const FrameAnalyser& core, const MineParams& params, c
       m.below_score = score < params.min_score;
     }
     if (!m.below_score) {
-      m.crop = EncodedCrop::encode(c.depth_crop, c.colour_crop);
+      m.crop = EncodedCrop::encode(c.depth_crop, c.colour_crop, params.crop_png);
       m.record.crop_hash = m.crop.hash;
     }
   }

@@ -5,7 +5,6 @@
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/stable_hash.hpp"
-#include "rdsf/frame/png_encoder.hpp"
 
 namespace rdsf {
 
@@ -24,7 +23,8 @@ std::string depth_crop_hash(const cv::Mat1w& depth_crop_mm) {
   return to_hex16(h);
 }
 
-EncodedCrop EncodedCrop::encode(const cv::Mat1w& depth_crop_mm, const cv::Mat3b& colour_crop) {
+EncodedCrop EncodedCrop::encode(const cv::Mat1w& depth_crop_mm, const cv::Mat3b& colour_crop,
+                                const PngEncodeOptions& png) {
   if (depth_crop_mm.empty()) throw Error("sample crop: empty depth crop");
   if (!colour_crop.empty() && colour_crop.size() != depth_crop_mm.size()) {
     throw Error("sample crop: colour crop " + std::to_string(colour_crop.cols) + "x" +
@@ -32,11 +32,9 @@ EncodedCrop EncodedCrop::encode(const cv::Mat1w& depth_crop_mm, const cv::Mat3b&
                 std::to_string(depth_crop_mm.cols) + "x" + std::to_string(depth_crop_mm.rows));
   }
   EncodedCrop crop;
-  // Fast, still lossless: crops are small and written at mining speed. The bytes of cv::imencode with
-  // compression 1 (what every set holds), by the faster direct encoder (frame/png_encoder.hpp).
-  const PngEncodeOptions level1{1};
-  crop.depth_png = encode_png(depth_crop_mm, level1);
-  if (!colour_crop.empty()) crop.colour_png = encode_png(colour_crop, level1);
+  // Fast, still lossless: crops are small and written at mining speed (kSampleCropPng).
+  crop.depth_png = encode_png(depth_crop_mm, png);
+  if (!colour_crop.empty()) crop.colour_png = encode_png(colour_crop, png);
   crop.hash = depth_crop_hash(depth_crop_mm);
   crop.size = depth_crop_mm.size();
   return crop;

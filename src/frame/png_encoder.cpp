@@ -1,5 +1,6 @@
 #include "rdsf/frame/png_encoder.hpp"
 
+#include <libdeflate.h>
 #include <zlib.h>
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -9,6 +10,8 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <string>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -20,9 +23,17 @@ namespace {
 constexpr std::size_t kIdatBytes = 8192;           // libpng's PNG_ZBUF_SIZE: the size of every IDAT but the last
 constexpr std::size_t kSmallWindowFrom = 16384;    // libpng shrinks zlib's window at or below this data size
 
+// v big-endian at o[0..3].
+void store32(unsigned char* o, std::uint32_t v) {
+  o[0] = static_cast<unsigned char>(v >> 24);
+  o[1] = static_cast<unsigned char>(v >> 16);
+  o[2] = static_cast<unsigned char>(v >> 8);
+  o[3] = static_cast<unsigned char>(v);
+}
+
 void put32(std::vector<unsigned char>& out, std::uint32_t v) {
-  const unsigned char bytes[4] = {static_cast<unsigned char>(v >> 24), static_cast<unsigned char>(v >> 16),
-                                  static_cast<unsigned char>(v >> 8), static_cast<unsigned char>(v)};
+  unsigned char bytes[4];
+  store32(bytes, v);
   out.insert(out.end(), bytes, bytes + 4);
 }
 
@@ -32,8 +43,7 @@ void put_chunk(std::vector<unsigned char>& out, const char* type, const unsigned
   const std::size_t type_at = out.size();
   out.insert(out.end(), type, type + 4);
   if (size > 0) out.insert(out.end(), data, data + size);
-  const uLong crc = crc32(0L, out.data() + type_at, static_cast<uInt>(size + 4));
-  put32(out, static_cast<std::uint32_t>(crc));
+  put32(out, static_cast<std::uint32_t>(libdeflate_crc32(0, out.data() + type_at, size + 4)));
 }
 
 // One image row to PNG order: 16-bit samples big-endian, BGR(A) to RGB(A).
@@ -154,6 +164,58 @@ void filter_all(int bpp, const unsigned char* raw, const unsigned char* prior, s
   }
 }
 
+// The signature and IHDR of an image the direct paths take.
+std::vector<unsigned char> start_png(const cv::Mat& image, std::size_t reserve) {
+  const int channels = image.channels();
+  const int sample_bytes = image.depth() == CV_8U ? 1 : 2;
+  std::vector<unsigned char> out;
+  out.reserve(reserve);
+  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  out.insert(out.end(), signature, signature + 8);
+  unsigned char header[13];
+  store32(header, static_cast<std::uint32_t>(image.cols));
+  store32(header + 4, static_cast<std::uint32_t>(image.rows));
+  header[8] = static_cast<unsigned char>(8 * sample_bytes);
+  header[9] = static_cast<unsigned char>(channels == 1 ? 0 : (channels == 3 ? 2 : 6));
+  header[10] = header[11] = header[12] = 0;  // deflate, filter method 0, no interlace
+  put_chunk(out, "IHDR", header, sizeof header);
+  return out;
+}
+
+// Filters the image's rows in PNG order with libpng's adaptive choice and hands each to `row(bytes, n + 1)`:
+// the filter byte, then the n filtered bytes (valid until the next call).
+template <typename RowSink>
+void for_each_filtered_row(const cv::Mat& image, RowSink&& row) {
+  const int channels = image.channels();
+  const int sample_bytes = image.depth() == CV_8U ? 1 : 2;
+  const int bpp = channels * sample_bytes;
+  const std::size_t n = static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(bpp);
+  thread_local FilteredRows f;
+  thread_local std::vector<unsigned char> raw, prior;
+  for (int k = 0; k < 5; ++k) {
+    f.rows[k].resize(n + 1);
+    f.rows[k][0] = static_cast<unsigned char>(k);
+  }
+  raw.resize(n);
+  prior.assign(n, 0);
+  for (int y = 0; y < image.rows; ++y) {
+    to_png_order(image.ptr(y), raw.data(), image.cols, channels, sample_bytes);
+    filter_all(bpp, raw.data(), prior.data(), n, f);
+    int best = 0;
+    for (int k = 1; k < 5; ++k) {
+      if (f.sums[k] < f.sums[best]) best = k;
+    }
+    if (best == 0) std::memcpy(f.rows[0].data() + 1, raw.data(), n);
+    row(f.rows[best].data(), n + 1);
+    std::swap(raw, prior);
+  }
+}
+
+std::size_t row_bytes_of(const cv::Mat& image) {
+  return static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(image.channels()) *
+         (image.depth() == CV_8U ? 1 : 2);
+}
+
 struct Deflater {
   z_stream z{};
   bool open = false;
@@ -162,23 +224,10 @@ struct Deflater {
   }
 };
 
-std::vector<unsigned char> encode_direct(const cv::Mat& image, int level) {
-  const int channels = image.channels();
-  const int sample_bytes = image.depth() == CV_8U ? 1 : 2;
-  const int bpp = channels * sample_bytes;
-  const std::size_t n = static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(bpp);
-
-  std::vector<unsigned char> out;
-  out.reserve(64 + n * static_cast<std::size_t>(image.rows) / 2);
-  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  out.insert(out.end(), signature, signature + 8);
-  std::vector<unsigned char> header;
-  put32(header, static_cast<std::uint32_t>(image.cols));
-  put32(header, static_cast<std::uint32_t>(image.rows));
-  const int colour_type = channels == 1 ? 0 : (channels == 3 ? 2 : 6);
-  header.insert(header.end(), {static_cast<unsigned char>(8 * sample_bytes), static_cast<unsigned char>(colour_type),
-                               0, 0, 0});
-  put_chunk(out, "IHDR", header.data(), header.size());
+// cv::imencode's bytes: zlib fed row by row, IDAT chunks of kIdatBytes.
+std::vector<unsigned char> encode_zlib(const cv::Mat& image, int level) {
+  const std::size_t n = row_bytes_of(image);
+  std::vector<unsigned char> out = start_png(image, 64 + n * static_cast<std::size_t>(image.rows) / 2);
 
   // A fresh stream per image, as libpng makes one: a reset stream may see another image's bytes past the
   // end of its data in zlib's window, which can change the last match chosen.
@@ -208,29 +257,52 @@ std::vector<unsigned char> encode_direct(const cv::Mat& image, int level) {
       if (flush == Z_NO_FLUSH && d.z.avail_in == 0) return;
     }
   };
-
-  thread_local FilteredRows f;
-  thread_local std::vector<unsigned char> raw, prior;
-  for (int k = 0; k < 5; ++k) {
-    f.rows[k].resize(n + 1);
-    f.rows[k][0] = static_cast<unsigned char>(k);
-  }
-  raw.resize(n);
-  prior.assign(n, 0);
-  for (int y = 0; y < image.rows; ++y) {
-    to_png_order(image.ptr(y), raw.data(), image.cols, channels, sample_bytes);
-    filter_all(bpp, raw.data(), prior.data(), n, f);
-    int best = 0;
-    for (int k = 1; k < 5; ++k) {
-      if (f.sums[k] < f.sums[best]) best = k;
-    }
-    if (best == 0) std::memcpy(f.rows[0].data() + 1, raw.data(), n);
-    d.z.next_in = f.rows[best].data();
-    d.z.avail_in = static_cast<uInt>(n + 1);
+  for_each_filtered_row(image, [&](unsigned char* bytes, std::size_t size) {
+    d.z.next_in = bytes;
+    d.z.avail_in = static_cast<uInt>(size);
     drain(Z_NO_FLUSH);
-    std::swap(raw, prior);
-  }
+  });
   drain(Z_FINISH);
+  put_chunk(out, "IEND", nullptr, 0);
+  return out;
+}
+
+struct CompressorDeleter {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+
+// This thread's libdeflate compressor of `level` (0..12), made on first use.
+libdeflate_compressor* thread_compressor(int level) {
+  thread_local std::array<std::unique_ptr<libdeflate_compressor, CompressorDeleter>, 13> compressors;
+  auto& c = compressors[static_cast<std::size_t>(level)];
+  if (!c) c.reset(libdeflate_alloc_compressor(level));
+  if (!c) throw Error("PNG encoding: libdeflate could not make a compressor of level " + std::to_string(level));
+  return c.get();
+}
+
+// The filtered rows gathered, compressed in one call into one IDAT chunk written in place.
+std::vector<unsigned char> encode_libdeflate(const cv::Mat& image, int level) {
+  const std::size_t n = row_bytes_of(image);
+  const std::size_t data_size = static_cast<std::size_t>(image.rows) * (n + 1);
+  thread_local std::vector<unsigned char> filtered;
+  filtered.resize(data_size);
+  std::size_t at = 0;
+  for_each_filtered_row(image, [&](const unsigned char* bytes, std::size_t size) {
+    std::memcpy(filtered.data() + at, bytes, size);
+    at += size;
+  });
+  libdeflate_compressor* compressor = thread_compressor(level);
+  const std::size_t bound = libdeflate_zlib_compress_bound(compressor, data_size);
+  std::vector<unsigned char> out = start_png(image, 33 + 12 + bound + 12);
+  const std::size_t chunk_at = out.size();
+  out.resize(chunk_at + 8 + bound);
+  std::memcpy(out.data() + chunk_at + 4, "IDAT", 4);
+  const std::size_t size =
+      libdeflate_zlib_compress(compressor, filtered.data(), data_size, out.data() + chunk_at + 8, bound);
+  if (size == 0) throw Error("PNG encoding: libdeflate failed");
+  out.resize(chunk_at + 8 + size);
+  store32(out.data() + chunk_at, static_cast<std::uint32_t>(size));
+  put32(out, static_cast<std::uint32_t>(libdeflate_crc32(0, out.data() + chunk_at + 4, size + 4)));
   put_chunk(out, "IEND", nullptr, 0);
   return out;
 }
@@ -238,15 +310,20 @@ std::vector<unsigned char> encode_direct(const cv::Mat& image, int level) {
 }  // namespace
 
 std::vector<unsigned char> encode_png(const cv::Mat& image, const PngEncodeOptions& options) {
+  const bool libdeflate = options.deflater == PngDeflater::libdeflate;
+  if (libdeflate && (options.libdeflate_level < 0 || options.libdeflate_level > 12)) {
+    throw Error("PNG encoding: libdeflate level " + std::to_string(options.libdeflate_level) + " is not in 0..12");
+  }
   const int channels = image.channels();
   const bool plain = (image.depth() == CV_8U || image.depth() == CV_16U) &&
                      (channels == 1 || channels == 3 || channels == 4) && image.dims == 2;
-  const std::size_t row_bytes =
-      static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(channels) * (image.depth() == CV_8U ? 1 : 2);
-  const std::size_t data_size = static_cast<std::size_t>(image.rows) * (row_bytes + 1);
-  if (options.direct_path && plain && !image.empty() && data_size > kSmallWindowFrom &&
-      options.zlib_level >= 0 && options.zlib_level <= 9 && row_bytes < (1u << 24)) {
-    return encode_direct(image, options.zlib_level);
+  if (options.direct_path && plain && !image.empty() && row_bytes_of(image) < (1u << 24)) {
+    const std::size_t data_size = static_cast<std::size_t>(image.rows) * (row_bytes_of(image) + 1);
+    // libdeflate: any size (no zlib window to match); zlib: libpng's window below kSmallWindowFrom is not.
+    if (libdeflate) return encode_libdeflate(image, options.libdeflate_level);
+    if (data_size > kSmallWindowFrom && options.zlib_level >= 0 && options.zlib_level <= 9) {
+      return encode_zlib(image, options.zlib_level);
+    }
   }
   std::vector<unsigned char> bytes;
   const std::vector<int> params = {cv::IMWRITE_PNG_COMPRESSION, options.zlib_level};

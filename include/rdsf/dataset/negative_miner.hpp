@@ -41,6 +41,8 @@ struct MineParams {
   std::function<double(const cv::Mat1w&)> scorer;
   double min_score = 0;
   std::string model;  ///< recorded with each sample in hard-negative mode ("tree2/v3")
+  /// How the crops are encoded (kSampleCropPng; {1}: cv::imencode's bytes, as main mined at ae93907).
+  PngEncodeOptions crop_png = kSampleCropPng;
 };
 
 struct MineStats {
