@@ -10,6 +10,7 @@
 // Run: build/bench/bench_dataset
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <random>
@@ -27,14 +28,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A scratch folder removed at exit (kept when RDSF_BENCH_KEEP is set, to look at or reuse).
+/// A scratch folder removed at exit (kept when RDSF_BENCH_KEEP is set, to look at or reuse). The exit
+/// handler removes a copy of the path that is never destroyed: the handler is registered while the static
+/// path is being made, so it runs after that path's destructor.
 const fs::path& scratch() {
   static const fs::path dir = [] {
     std::string pattern = (fs::temp_directory_path() / "rdsf-bench-dataset-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr) std::abort();
+    static const std::string* to_remove = new std::string(pattern);
     if (std::getenv("RDSF_BENCH_KEEP") == nullptr) std::atexit([] {
       std::error_code ec;
-      fs::remove_all(scratch(), ec);
+      fs::remove_all(*to_remove, ec);
     });
     return fs::path(pattern);
   }();
@@ -100,7 +104,11 @@ const std::string& coloured_frames() {
       auto source = rdsf::open_frame_source(empty.string());
       rdsf::DepthFrame frame;
       while (source->next(frame)) originals.push_back(frame);
+      std::fprintf(stderr, "bench_dataset: mining %zu real frames of %s (copied to 180)\n", originals.size(),
+                   empty.string().c_str());
     } else {  // boxes and poles before a wall
+      std::fprintf(stderr, "bench_dataset: %s is absent: mining a made-up scene of boxes and poles instead\n",
+                   empty.string().c_str());
       rdsf::DepthFrame frame;
       frame.depth_mm = cv::Mat1w(480, 640, std::uint16_t{4000});
       frame.depth_mm(cv::Rect(100, 150, 60, 330)).setTo(2000);
