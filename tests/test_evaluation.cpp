@@ -138,6 +138,25 @@ TEST(CurvePlot, DrawsAxesCurvesAndLegend) {
   EXPECT_EQ(log_plot.size(), cv::Size(900, 650));
 }
 
+// The legend lands in the corner asked for, away from a curve that rises at the left and runs along the top.
+TEST(CurvePlot, LegendInItsCorner) {
+  PlotAxes axes;
+  const std::vector<PlotCurve> curve = {{"tree", {{0, 0}, {0, 1}, {0.3, 1}}, {}, ""}};
+  const cv::Mat3b empty = draw_plot(axes, {});
+  const cv::Rect bottom_right(450, 325, 450, 325), top_right(450, 0, 450, 325);
+  const auto changed = [&](const cv::Mat3b& plot, const cv::Rect& area) {
+    return cv::norm(plot(area), empty(area), cv::NORM_L1);
+  };
+  axes.legend = PlotAxes::Corner::bottom_right;
+  const cv::Mat3b at_bottom = draw_plot(axes, curve);
+  EXPECT_GT(changed(at_bottom, bottom_right), 0.0);
+  EXPECT_EQ(changed(at_bottom, top_right), 0.0);
+  axes.legend = PlotAxes::Corner::top_right;
+  const cv::Mat3b at_top = draw_plot(axes, curve);
+  EXPECT_EQ(changed(at_top, bottom_right), 0.0);
+  EXPECT_GT(changed(at_top, top_right), 0.0);
+}
+
 TEST(DetectionMetrics, HardlyVisiblePeopleAreDontCare) {
   GroundTruth truth = parse_ground_truth(
       "frame,person,x,y,w,h,visible_fraction,track\n"

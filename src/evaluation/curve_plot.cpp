@@ -111,9 +111,8 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
     rotated.copyTo(image(cv::Rect(8, y0, rotated.cols, rotated.rows)));
   }
 
-  // Curves, operating points, legend.
-  int legend_y = axes.legend_bottom_left ? frame.area.br().y - 22 * static_cast<int>(curves.size()) + 6
-                                         : frame.area.y + 22;
+  // Curves and operating points (each curve's label one line lower than the previous curve's: the points of
+  // similar models lie close together), then the legend on top of them.
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const PlotCurve& curve = curves[i];
     const cv::Scalar colour = kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
@@ -124,12 +123,25 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
     if (curve.operating_point) {
       const cv::Point p = frame.at(curve.operating_point->x, curve.operating_point->y);
       cv::drawMarker(image, p, colour, cv::MARKER_DIAMOND, 18, 2, cv::LINE_AA);
-      if (!curve.operating_label.empty()) text(image, curve.operating_label, p + cv::Point(10, -8), 0.45, colour);
+      if (!curve.operating_label.empty()) {
+        text(image, curve.operating_label, p + cv::Point(12, 16 * static_cast<int>(i) - 8), 0.45, colour);
+      }
     }
-    const int legend_x = axes.legend_bottom_left ? frame.area.x + 20 : frame.area.br().x - 230;
-    cv::line(image, {legend_x, legend_y - 5}, {legend_x + 30, legend_y - 5}, colour, 3, cv::LINE_AA);
-    text(image, curve.label, {legend_x + 38, legend_y}, 0.5, kInk);
-    legend_y += 22;
+  }
+  const int rows = static_cast<int>(curves.size()), box_w = 230, box_h = 22 * rows + 8;
+  if (rows > 0) {
+    const bool left = axes.legend == PlotAxes::Corner::bottom_left;
+    const bool bottom = axes.legend != PlotAxes::Corner::top_right;
+    const cv::Rect box(left ? frame.area.x + 10 : frame.area.br().x - box_w - 10,
+                       bottom ? frame.area.br().y - box_h - 10 : frame.area.y + 10, box_w, box_h);
+    cv::rectangle(image, box, cv::Scalar(255, 255, 255), cv::FILLED);
+    cv::rectangle(image, box, cv::Scalar(200, 200, 200), 1);
+    for (int i = 0; i < rows; ++i) {
+      const cv::Scalar colour = kPalette[static_cast<std::size_t>(i) % (sizeof kPalette / sizeof kPalette[0])];
+      const int y = box.y + 22 * (i + 1);
+      cv::line(image, {box.x + 10, y - 5}, {box.x + 40, y - 5}, colour, 3, cv::LINE_AA);
+      text(image, curves[static_cast<std::size_t>(i)].label, {box.x + 48, y}, 0.5, kInk);
+    }
   }
   return image;
 }

@@ -277,8 +277,8 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   det.x_label = "FPPF (false positives per frame, log)";
   det.y_label = "FRR (miss rate, log)";
   det.log_x = det.log_y = true;
-  det.legend_bottom_left = true;  // DET curves fall from top left to bottom right
-  roc.legend_bottom_left = false;
+  det.legend = PlotAxes::Corner::bottom_left;  // DET curves fall from top left to bottom right
+  roc.legend = PlotAxes::Corner::bottom_right;  // ROC curves rise to the top left and run along the top
   det.x_min = 1e-3;
   det.x_max = 10;
   det.y_min = 1e-3;

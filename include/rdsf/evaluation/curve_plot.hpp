@@ -20,7 +20,10 @@ struct PlotAxes {
   std::string title, x_label, y_label;
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
   bool log_x = false, log_y = false;        ///< log axes clamp values below the minimum to the minimum
-  bool legend_bottom_left = false;          ///< legend corner: bottom left instead of top right
+  /// The legend's corner, drawn last on a white box: where the curves are not (a ROC curve rises to the top
+  /// left and runs along the top, so bottom right; a DET curve falls from top left to bottom right).
+  enum class Corner { top_right, bottom_left, bottom_right };
+  Corner legend = Corner::bottom_right;
 };
 
 cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, cv::Size size = {900, 650});
