@@ -389,6 +389,18 @@ class ObjectShaper {
     return depths[depths.size() / 2];
   }
 
+  // A cut column: the middle of the first and last columns of lo..hi where `near(c)` holds (one must).
+  template <typename Near>
+  static int middle_of(int lo, int hi, Near near) {
+    int first = -1, last = -1;
+    for (int c = lo; c <= hi; ++c) {
+      if (!near(c)) continue;
+      if (first < 0) first = c;
+      last = c;
+    }
+    return (first + last + 1) / 2;
+  }
+
   // The best place to cut o.fit_first..o.fit_last (the first column of the right piece), or -1: the
   // largest depth jump between neighbouring columns, else the deepest valley of the height profile, else
   // the largest step between the mean heights of a person-wide band on each side.
@@ -424,15 +436,10 @@ class ObjectShaper {
       }
       if (deepest >= params_.split_valley_cm) {
         // The middle of the columns within 2 cm of the deepest point of the valley.
-        int first = -1, last = -1;
-        for (int c = lo; c <= hi; ++c) {
+        return middle_of(lo, hi, [&](int c) {
           const std::size_t i = static_cast<std::size_t>(c - a);
-          if (std::min(left[i], right[i]) - h[i] >= deepest - 2.0) {
-            if (first < 0) first = c;
-            last = c;
-          }
-        }
-        return (first + last + 1) / 2;
+          return std::min(left[i], right[i]) - h[i] >= deepest - 2.0;
+        });
       }
     }
     if (params_.split_step_cm > 0) {
@@ -523,14 +530,8 @@ class ObjectShaper {
       for (int c = lo; c <= hi; ++c) lowest = std::min(lowest, at(c));
       const double dip = std::min(at(found[k]), at(found[k + 1])) - lowest;
       if (dip <= best_dip) continue;
-      int first = -1, last = -1;
-      for (int c = lo; c <= hi; ++c) {
-        if (at(c) > lowest + 2.0) continue;
-        if (first < 0) first = c;
-        last = c;
-      }
       best_dip = dip;
-      best = (first + last + 1) / 2;
+      best = middle_of(lo, hi, [&](int c) { return at(c) <= lowest + 2.0; });
     }
     return best;
   }

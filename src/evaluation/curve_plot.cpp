@@ -11,6 +11,8 @@ namespace {
 
 const cv::Scalar kPalette[] = {{200, 90, 20}, {30, 120, 230}, {60, 170, 60}, {40, 40, 200},
                                {170, 80, 160}, {30, 170, 200}, {90, 90, 90}};
+// Curve i's colour (the palette repeats).
+const cv::Scalar& palette(std::size_t i) { return kPalette[i % (sizeof kPalette / sizeof kPalette[0])]; }
 const cv::Scalar kInk(40, 40, 40);
 const cv::Scalar kGrid(225, 225, 225);
 
@@ -115,7 +117,7 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
   // similar models lie close together), then the legend on top of them.
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const PlotCurve& curve = curves[i];
-    const cv::Scalar colour = kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
+    const cv::Scalar colour = palette(i);
     std::vector<cv::Point> polyline;
     for (const cv::Point2d& p : curve.points) polyline.push_back(frame.at(p.x, p.y));
     if (polyline.size() > 1) cv::polylines(image, polyline, false, colour, 2, cv::LINE_AA);
@@ -137,7 +139,7 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
     cv::rectangle(image, box, cv::Scalar(255, 255, 255), cv::FILLED);
     cv::rectangle(image, box, cv::Scalar(200, 200, 200), 1);
     for (int i = 0; i < rows; ++i) {
-      const cv::Scalar colour = kPalette[static_cast<std::size_t>(i) % (sizeof kPalette / sizeof kPalette[0])];
+      const cv::Scalar colour = palette(static_cast<std::size_t>(i));
       const int y = box.y + 22 * (i + 1);
       cv::line(image, {box.x + 10, y - 5}, {box.x + 40, y - 5}, colour, 3, cv::LINE_AA);
       text(image, curves[static_cast<std::size_t>(i)].label, {box.x + 48, y}, 0.5, kInk);
