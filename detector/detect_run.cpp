@@ -183,7 +183,8 @@ int run_detect(const DetectOptions& o) {
       for (std::size_t i = 0; i < found.size(); ++i) {
         base.push_back({reported_box(found[i], box), found[i].layer_depth_mm, 0.0,
                         ColourHistogram::of(found[i].colour_crop, found[i].depth_crop,
-                                            o.pipeline.tracking.histogram_bins)});
+                                            o.pipeline.tracking.histogram_bins),
+                        o.pipeline.suppress_duplicates ? kin_of(found[i]) : CandidateKin{}});
       }
       for (std::size_t m = 0; m < models.size(); ++m) {
         const std::vector<double> scores = m == 0 ? processed.scores : scorers[m].score(found);

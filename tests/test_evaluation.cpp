@@ -67,9 +67,9 @@ TEST(DetectionMetrics, HandWorkedFrames) {
   // everyone (score 1); person 2 has no candidate at all (segmentation error).
   // f2: person 1 found with score -2. f3: no people, one candidate with score 0.
   const std::vector<FrameCandidates> frames = {
-      {"f1", {{cv::Rect(0, 0, 100, 200), 5}, {cv::Rect(10, 0, 100, 200), 3}, {cv::Rect(500, 0, 50, 50), 1}}},
-      {"f2", {{cv::Rect(0, 10, 100, 200), -2}}},
-      {"f3", {{cv::Rect(0, 0, 10, 10), 0}}}};
+      {"f1", {{cv::Rect(0, 0, 100, 200), 5, {}}, {cv::Rect(10, 0, 100, 200), 3, {}}, {cv::Rect(500, 0, 50, 50), 1, {}}}},
+      {"f2", {{cv::Rect(0, 10, 100, 200), -2, {}}}},
+      {"f3", {{cv::Rect(0, 0, 10, 10), 0, {}}}}};
   const DetectionFigures at0 = detection_figures(frames, truth, 0);
   EXPECT_EQ(at0.n_frames, 3);
   EXPECT_EQ(at0.n_people, 3);
@@ -166,7 +166,7 @@ TEST(DetectionMetrics, HardlyVisiblePeopleAreDontCare) {
   EXPECT_EQ(ignore_hardly_visible(truth, 0.5), 1u);
   // Person 2 (10% visible) is detected once and missed nowhere: neither a detection nor a false positive.
   const std::vector<FrameCandidates> frames = {
-      {"f1", {{cv::Rect(300, 0, 100, 200), 2}, {cv::Rect(600, 0, 10, 10), 1}}}};
+      {"f1", {{cv::Rect(300, 0, 100, 200), 2, {}}, {cv::Rect(600, 0, 10, 10), 1, {}}}}};
   const DetectionFigures f = detection_figures(frames, truth, 0);
   EXPECT_EQ(f.n_people, 1);
   EXPECT_EQ(f.n_det, 0);

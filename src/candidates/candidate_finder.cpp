@@ -84,6 +84,7 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
   const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px);
   const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);
 
+  int objects_before = 0;  // objects of the layers already done: Candidate::object is unique in the frame
   for (const DepthLayer& layer : segmentation.layers) {
     const auto& column = runs[static_cast<std::size_t>(layer.label)];
     const double depth_mm = layer.mean_depth_mm;
@@ -120,9 +121,13 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       candidate.width_cm = frame.camera.width_cm(object.last - object.first + 1, depth_mm);
       candidate.highest_column = object.highest;
       candidate.part = object.part;
+      candidate.object = objects_before + object.object;
       cut_crops(frame, segmentation.labels, layer.label, candidate.window_unclipped, crop_size, candidate);
       candidates.push_back(std::move(candidate));
     }
+    int in_layer = 0;
+    for (const LayerObject& object : found.objects) in_layer = std::max(in_layer, object.object + 1);
+    objects_before += in_layer;
   }
   return candidates;
 }

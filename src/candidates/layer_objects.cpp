@@ -77,13 +77,15 @@ class ObjectShaper {
     for (LayerObject& o : found) fit(o, 0, width_ - 1);
     if (params_.join_pieces) found = join(found);
     std::vector<LayerObject> kept;
-    for (const LayerObject& o : found) {
+    int object = 0;
+    for (LayerObject& o : found) {
       if (!wide_enough(o) && !narrow_person(o)) continue;
       if (params_.max_object_width_cm > 0 && cm(o.last - o.first + 1) > params_.max_object_width_cm) continue;
       const bool at_border = o.fit_first == 0 || o.fit_last == width_ - 1;  // a person cut by it looks narrow
       if (!at_border && cm(o.fit_last - o.fit_first + 1) < params_.min_fitted_width_cm) continue;
       std::vector<LayerObject> pieces;
       bool by_heads = false;
+      o.object = object++;
       if (split_wide_enabled() || split_heads_enabled()) split(o, pieces, 0, &by_heads);
       if (pieces.empty() || (by_heads ? params_.split_head_keep_whole : params_.split_keep_whole)) kept.push_back(o);
       kept.insert(kept.end(), pieces.begin(), pieces.end());
@@ -559,6 +561,7 @@ class ObjectShaper {
       LayerObject piece = span(first, last);
       fit(piece, lo, hi);
       piece.part = true;
+      piece.object = whole.object;
       if (!wide_enough(piece)) continue;
       const std::size_t before = out.size();
       split(piece, out, depth + 1);

@@ -18,6 +18,16 @@ bool has_candidate(const FrameCandidates& frame, const cv::Rect& person) {
 
 }  // namespace
 
+std::vector<char> duplicates_of(const FrameCandidates& frame) {
+  std::vector<CandidateKin> kin;
+  std::vector<double> scores;
+  for (const ScoredCandidate& c : frame.candidates) {
+    kin.push_back(c.kin);
+    scores.push_back(c.score);
+  }
+  return duplicate_candidates(kin, scores);
+}
+
 std::vector<double> thesis_thresholds() { return {40, 20, 10, 0, -5, -10, -15, -20, -25, -30, -40, -60}; }
 
 RateInterval wilson_interval(long successes, long trials, double z) {
@@ -66,8 +76,9 @@ DetectionFigures detection_figures(const std::vector<FrameCandidates>& frames, c
       people.push_back(person.box);
     }
     std::vector<const ScoredCandidate*> detections;
-    for (const ScoredCandidate& c : frame.candidates) {
-      if (c.score >= threshold) detections.push_back(&c);
+    const std::vector<char> duplicate = duplicates_of(frame);
+    for (std::size_t i = 0; i < frame.candidates.size(); ++i) {
+      if (frame.candidates[i].score >= threshold && duplicate[i] == 0) detections.push_back(&frame.candidates[i]);
     }
     std::stable_sort(detections.begin(), detections.end(),
                      [](const ScoredCandidate* a, const ScoredCandidate* b) { return a->score > b->score; });

@@ -25,7 +25,9 @@ std::vector<std::vector<CandidateOutcome>> candidate_outcomes(const std::vector<
     });
     std::vector<CandidateOutcome> outcome(frame.candidates.size(), CandidateOutcome::neutral);
     std::vector<bool> matched(people.size(), false);
+    const std::vector<char> duplicate = duplicates_of(frame);
     for (std::size_t i : order) {
+      if (duplicate[i] != 0) continue;  // no detection at any threshold: neutral
       const cv::Rect& box = frame.candidates[i].box;
       double best = kMinIou;
       int best_person = -1;

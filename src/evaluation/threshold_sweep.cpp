@@ -54,8 +54,16 @@ MotFigures tracking_figures(const std::vector<EvaluatedFrame>& frames, const Gro
   ClearMot mot;
   for (const EvaluatedFrame& f : frames) {
     std::vector<TrackInput> detections;
+    std::vector<CandidateKin> kin;
+    std::vector<double> scores;
     for (const EvaluatedCandidate& c : f.candidates) {
-      if (c.score >= threshold) detections.push_back({c.box, c.depth_mm, c.histogram});
+      kin.push_back(c.kin);
+      scores.push_back(c.score);
+    }
+    const std::vector<char> duplicate = duplicate_candidates(kin, scores);
+    for (std::size_t i = 0; i < f.candidates.size(); ++i) {
+      const EvaluatedCandidate& c = f.candidates[i];
+      if (c.score >= threshold && duplicate[i] == 0) detections.push_back({c.box, c.depth_mm, c.histogram});
     }
     const std::vector<int> ids = tracker.update(detections, f.camera, f.index);
     std::vector<TrackedBox> hypotheses, people;
@@ -135,7 +143,7 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
   std::vector<FrameCandidates> scored;
   for (const EvaluatedFrame& f : frames) {
     FrameCandidates fc{f.frame, {}};
-    for (const EvaluatedCandidate& c : f.candidates) fc.candidates.push_back({c.box, c.score});
+    for (const EvaluatedCandidate& c : f.candidates) fc.candidates.push_back({c.box, c.score, c.kin});
     scored.push_back(std::move(fc));
   }
   result.segmentation_errors = segmentation_errors(scored, truth);

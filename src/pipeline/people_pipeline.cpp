@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "rdsf/candidates/duplicate_candidates.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/pipeline/model_fit.hpp"
 
@@ -67,13 +68,16 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
+  std::vector<CandidateKin> kin;
+  for (const Candidate& c : out.analysis.candidates) kin.push_back(params_.suppress_duplicates ? kin_of(c) : CandidateKin{});
+  out.duplicate = duplicate_candidates(kin, out.scores);
   out.times.classifier_ms = ms_since(start);
 
   start = std::chrono::steady_clock::now();
   const double threshold = params_.score_threshold_for(*model_);
   out.histograms.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (out.scores[i] < threshold) continue;
+    if (out.scores[i] < threshold || out.duplicate[i] != 0) continue;
     const Candidate& c = out.analysis.candidates[i];
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
   }
@@ -88,7 +92,7 @@ void PeoplePipeline::track(const DepthFrame& frame, PipelineFrame& out) {
   std::vector<TrackInput> detections;
   std::vector<std::size_t> which;
   for (std::size_t i = 0; i < out.scores.size(); ++i) {
-    if (out.scores[i] < threshold) continue;
+    if (out.scores[i] < threshold || out.duplicate[i] != 0) continue;
     const Candidate& c = out.analysis.candidates[i];
     detections.push_back({reported_box(c, params_.detector.reported_box), c.layer_depth_mm, out.histograms[i]});
     which.push_back(i);

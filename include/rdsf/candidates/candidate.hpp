@@ -23,6 +23,9 @@ struct Candidate {
   double width_cm = 0;        ///< real width of the object (its passing columns)
   int highest_column = 0;     ///< image column of the highest point
   bool part = false;          ///< a piece split off a wider object (CandidateParams::split_*)
+  /// The object it is, or was cut from: unique in the frame, shared by a whole object and its pieces
+  /// (duplicate_candidates.hpp), in find_candidates()'s order of layers and objects.
+  int object = 0;
   /// The window's depth, only the layer's pixels (others 0), resized to the crop size by nearest
   /// neighbour (no blending of masked zeros into depths); the image outside the frame reads 0. CV_16UC1.
   cv::Mat1w depth_crop;

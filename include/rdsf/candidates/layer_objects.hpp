@@ -42,6 +42,7 @@ struct LayerObject {
   int tallest = 0;                  ///< longest passing run (rows)
   int highest = 0;                  ///< column of the highest point (middle of those reaching `top`)
   bool part = false;                ///< a piece cut out of a wider object (step 3)
+  int object = 0;                   ///< the object it is or was cut from (0, 1, ... in the layer, left to right)
 };
 
 /// Everything find_candidates() needs of one layer to find its objects.

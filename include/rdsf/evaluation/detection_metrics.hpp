@@ -15,6 +15,9 @@
 // People marked ignored (hardly visible, see ignore_hardly_visible()) count neither as misses nor as
 // people, and a detection of one counts neither as a detection nor as a false positive.
 //
+// Duplicates (duplicate_candidates.hpp: a whole object and a piece of it, the lower-scoring one) are no
+// detections at any threshold; they still count as candidates for segmentation errors.
+//
 // "Without segmentation errors": a person no candidate overlaps with IoU >= 0.5 was never shown to the
 // classifier; that table leaves such people out of n_people and n_miss.
 #include <string>
@@ -22,19 +25,25 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/candidates/duplicate_candidates.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 
 namespace rdsf {
 
 struct ScoredCandidate {
-  cv::Rect box;  ///< strict box
+  cv::Rect box;  ///< the reported box
   double score = 0;
+  CandidateKin kin;  ///< its object: a duplicate of a higher-scoring one is no detection (duplicate_candidates.hpp)
 };
+
 
 struct FrameCandidates {
   std::string frame;                       ///< name, as in boxes.csv
   std::vector<ScoredCandidate> candidates; ///< every candidate of the frame, with its score
 };
+
+/// Per candidate of the frame, 1 when it is a duplicate (duplicate_candidates()) and so never a detection.
+std::vector<char> duplicates_of(const FrameCandidates& frame);
 
 struct DetectionFigures {
   double threshold = 0;

@@ -6,8 +6,9 @@
 // highest score first. Lowering t only appends candidates to the end of that order, so every candidate's
 // outcome (it detects a person, is a false positive, or is neither because it only covers a don't-care
 // person) is the same at every threshold that admits it: the outcomes of the matching at the lowest
-// threshold, cumulated in descending score order, give n_det and n_fp at every threshold. A test checks
-// it against detection_figures() at every distinct score.
+// threshold, cumulated in descending score order, give n_det and n_fp at every threshold. Duplicates
+// (duplicate_candidates.hpp) are neutral: the rule is greedy by score too, so a candidate's being one does
+// not depend on the threshold. A test checks it against detection_figures() at every distinct score.
 #include <vector>
 
 #include "rdsf/evaluation/detection_metrics.hpp"

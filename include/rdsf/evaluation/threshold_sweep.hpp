@@ -29,6 +29,7 @@ struct EvaluatedCandidate {
   double depth_mm = 0;
   double score = 0;
   ColourHistogram histogram;
+  CandidateKin kin;  ///< its object (kin_of(); default: related to none, never a duplicate)
 };
 
 struct EvaluatedFrame {

@@ -31,6 +31,9 @@ struct PipelineParams {
   /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
   /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
   bool full_feature_vector = false;
+  /// Of a whole object and a piece cut out of it that both score as people, only the higher-scoring one
+  /// is a detection (duplicate_candidates.hpp). Off: both are (which counts one person twice).
+  bool suppress_duplicates = true;
 };
 
 /// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
@@ -49,6 +52,7 @@ struct PipelineFrame {
   cv::Mat1f model_features;               ///< per candidate the features the model reads (ModelScorer order)
   std::vector<double> scores;             ///< H(x) per candidate (empty without a model)
   std::vector<double> probabilities;      ///< P(person) per candidate (empty without a model)
+  std::vector<char> duplicate;            ///< per candidate: 1 when a duplicate, never a detection (with a model)
   std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
   std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
   PipelineTimes times;
