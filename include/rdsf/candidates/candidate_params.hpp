@@ -117,7 +117,8 @@ struct CandidateParams {
   /// overlapping boxes, and the whole is the nearer one's when an arm crosses the other). Off: the quality
   /// report measured it finding more people a candidate (main job's held-out sequence 224 instead of 219 of
   /// 234) but the whole and a piece both detected on one person (MOTA 0.73 -> 0.69 there, real frames'
-  /// TAR at FPPF <= 0.1 0.70 -> 0.65 over the lever models; docs/candidates.md).
+  /// TAR at FPPF <= 0.1 0.70 -> 0.65 over the lever models; docs/candidates.md). Suppressing the
+  /// duplicate (duplicate_candidates.hpp) lifts that MOTA to 0.72 but not the TARs: still off.
   bool split_head_keep_whole = false;
   /// The narrowest piece a split leaves (cm).
   double min_part_width_cm = 25.0;
