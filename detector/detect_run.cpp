@@ -19,6 +19,7 @@
 #include "rdsf/core/thread_count.hpp"
 #include "rdsf/detector/detection_csv.hpp"
 #include "rdsf/detector/overlay.hpp"
+#include "rdsf/evaluation/candidate_misses.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/evaluation/threshold_sweep.hpp"
 #include "rdsf/candidates/candidate_finder.hpp"
@@ -52,13 +53,16 @@ class CandidateCoverage {
     for (const TruthBox& person : people) {
       if (person.ignored) continue;
       double best = 0, best_other = 0;
+      cv::Rect best_box;
       for (const Candidate& c : candidates) {
-        best = std::max(best, iou(reported_box(c, box), person.box));
+        const double overlap = iou(reported_box(c, box), person.box);
+        if (overlap > best) best = overlap, best_box = reported_box(c, box);
         best_other = std::max(best_other, iou(reported_box(c, other), person.box));
       }
       ++people_;
       found_ += best >= 0.5 ? 1 : 0;
       found_other_ += best_other >= 0.5 ? 1 : 0;
+      if (best < 0.5) misses_.add(miss_shape(person.box, best_box, best));
     }
   }
   std::string summary(BoxKind box) const {
@@ -70,11 +74,17 @@ class CandidateCoverage {
                   "%lld\n",
                   static_cast<long long>(found_), static_cast<long long>(people_), name,
                   static_cast<long long>(people_ - found_), other, static_cast<long long>(found_other_));
-    return text;
+    std::string lines = text;
+    if (misses_.total() > 0) {
+      lines += "rdsf-detect: without a candidate, by the nearest candidate's " + std::string(name) +
+               " box: " + misses_.summary() + " (candidate_misses.hpp)\n";
+    }
+    return lines;
   }
 
  private:
   std::int64_t people_ = 0, found_ = 0, found_other_ = 0;
+  MissShapes misses_;  // the people without a candidate, by the best candidate's shape
 };
 
 bool ends_with(const std::string& text, const std::string& suffix) {

@@ -108,6 +108,20 @@ TEST(DetectProgram, TruthWithoutAModelCountsThePeopleWithACandidate) {
       << r.err;
 }
 
+TEST(DetectProgram, PeopleWithoutACandidateAreCountedByTheNearestCandidatesShape) {
+  test::TempDir dir;
+  write_scene(dir);
+  // The scene's person, a box where nothing is (none) and one half as wide as the candidate (wide).
+  std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\nscene,1,300,100,40,360\nscene,2,20,20,40,100\n"
+                                      "scene,3,300,100,19,360\n";
+  const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --truth " +
+                                      test::quote(dir / "boxes.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("1 of 3 people have a candidate (fitted box IoU >= 0.5), 2 without"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("without a candidate, by the nearest candidate's fitted box: 1 none, 1 wide"), std::string::npos)
+      << r.err;
+}
+
 TEST(DetectProgram, ConfigFileAndCommandLineOverride) {
   test::TempDir dir;
   write_scene(dir);
