@@ -77,6 +77,48 @@ TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
   EXPECT_EQ(at_depth(frame, 2000, no_reach)[0].fitted_box, cv::Rect(300, 100, 60, 360));
 }
 
+TEST(CandidateShapes, FittedBoxReachesAnArmBehindSomethingNearer) {
+  // A person at 3 m holds an arm out to the right (51 cm); a post at 1.5 m stands before the arm near the
+  // body, 20 columns wide (11 cm at 3 m): more than column_gap, less than fit_occlusion_gap (15 cm).
+  DepthFrame frame = test::wall_frame(4500);
+  test::paint(frame, {300, 100, 60, 360}, 3000);  // body
+  test::paint(frame, {360, 160, 90, 20}, 3000);   // the arm
+  test::paint(frame, {370, 40, 20, 440}, 1500);   // the post, in front of the arm's columns 370-389
+  DetectorParams on;
+  on.candidates.fit_occlusion_gap_cm = 15;
+  const auto found = at_depth(frame, 3000, on);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].fitted_box, cv::Rect(300, 100, 150, 360));  // to the hand
+  EXPECT_EQ(at_depth(frame, 3000)[0].fitted_box, cv::Rect(300, 100, 70, 360));  // off (the default): stops at the post
+  on.candidates.fit_occlusion_gap_cm = 5;  // 8 columns at 3 m, and column_gap's 6: the post's 20 are too many
+  EXPECT_EQ(at_depth(frame, 3000, on)[0].fitted_box, cv::Rect(300, 100, 70, 360));
+  const auto thesis = at_depth(frame, 3000, thesis_params());
+  ASSERT_EQ(thesis.size(), 1u);
+  EXPECT_EQ(thesis[0].fitted_box, cv::Rect(300, 100, 60, 360));  // no reach at all
+}
+
+TEST(CandidateShapes, FittedBoxDoesNotJumpASmallNearerThingToAnotherObject) {
+  // Beside the person at 3 m, 20 columns of nothing of the layer, then a box at the same depth (a chair's
+  // back, 30 columns): with a post before the gap the fitted box takes the box; with only a small nearer
+  // thing low in the gap (3 of the band's rows, fewer than half the pixels of the column last taken) it
+  // does not.
+  const auto scene = [](int post_top) {
+    DepthFrame frame = test::wall_frame(4500);
+    test::paint(frame, {300, 100, 60, 360}, 3000);  // the person
+    test::paint(frame, {380, 200, 30, 120}, 3000);  // the box, 69 cm tall: below threshold_height (90)
+    test::paint(frame, {360, post_top, 20, 480 - post_top}, 1500);
+    return frame;
+  };
+  DetectorParams on;
+  on.candidates.fit_occlusion_gap_cm = 15;
+  const auto big = at_depth(scene(40), 3000, on);
+  ASSERT_EQ(big.size(), 1u);
+  EXPECT_EQ(big[0].fitted_box, cv::Rect(300, 100, 110, 360));
+  const auto small = at_depth(scene(364), 3000, on);
+  ASSERT_EQ(small.size(), 1u);
+  EXPECT_EQ(small[0].fitted_box, cv::Rect(300, 100, 60, 360));
+}
+
 TEST(CandidateShapes, LegsThatPassAloneAreJoinedIntoOnePerson) {
   // Torso rows 100-299 (76 cm: fails 90 cm), legs below to 459 pass: the thesis finds two leg objects.
   DepthFrame frame = test::wall_frame(4000);
@@ -222,6 +264,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_EQ(t.candidates.floor_tolerance_mm, 0);
   EXPECT_FALSE(t.candidates.height_at_column_depth);
   EXPECT_EQ(t.candidates.fit_reach_cm, 0);
+  EXPECT_EQ(t.candidates.fit_occlusion_gap_cm, 0);
   EXPECT_FALSE(t.candidates.join_pieces);
   EXPECT_EQ(t.candidates.max_object_width_cm, 0);
   EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);

@@ -167,7 +167,10 @@ class ObjectShaper {
   // hand: at least two of the layer's pixels, every other row, in the object's rows above its lowest
   // quarter, where the floor would be, or up to fit_reach_cm above its top), gaps of column_gap allowed,
   // up to fit_reach_cm each side, never into a passing column (that belongs to an object) nor beyond
-  // lo..hi. The fitted top rises to the highest such pixel.
+  // lo..hi. The fitted top rises to the highest such pixel. A column that does not continue the object
+  // but shows something nearer before the band (at least half as many pixels of nearer layers, in the
+  // band's rows, as the column last taken has of the layer, and at least two) does not count towards
+  // the gap for up to fit_occlusion_gap_cm of such columns after the column last taken.
   void fit(LayerObject& o, int lo, int hi) const {
     o.fit_first = o.first;
     o.fit_last = o.last;
@@ -205,7 +208,9 @@ class ObjectShaper {
       gather(1 + std::min(kChunk, std::max(1, params_.column_gap + 1)));
       // A piece continues the object: its mean depth is within fit_depth_step_mm of the last column taken.
       double previous_depth = mean_depth(0);
-      int edge = start, gap = 0, top = o.fit_top;
+      int edge = start, gap = 0, occluded = 0, top = o.fit_top;
+      int previous_count = band_[0].count;
+      const int occlusion_gap = px(params_.fit_occlusion_gap_cm);
       for (int step = 1; step < n; ++step) {
         if (step >= gathered) gather(step + kChunk);
         const int c = start + direction * step;
@@ -215,8 +220,12 @@ class ObjectShaper {
         if (continues) {
           edge = c;
           gap = 0;
+          occluded = 0;
           top = std::min(top, b.first_row);
           previous_depth = mean_depth(step);
+          previous_count = b.count;
+        } else if (occluded < occlusion_gap && nearer_in_band(c, row_lo, row_hi, std::max(2, previous_count / 2))) {
+          ++occluded;
         } else if (++gap > params_.column_gap) {
           break;
         }
@@ -224,6 +233,17 @@ class ObjectShaper {
       (direction < 0 ? o.fit_first : o.fit_last) = edge;
       o.fit_top = top;
     }
+  }
+
+  // fit(): at least `needed` pixels of nearer layers (labels 1..label-1) in column c, rows row_lo..row_hi,
+  // every other one (the band's rows): something stands in front of the band there.
+  bool nearer_in_band(int c, int row_lo, int row_hi, int needed) const {
+    int nearer = 0;
+    for (int y = row_lo; y <= row_hi && nearer < needed; y += 2) {
+      const int label = layer_.labels->ptr<std::uint8_t>(y)[c];
+      nearer += label > 0 && label < layer_.label;
+    }
+    return nearer >= needed;
   }
 
   // fit(): the band's pixels of the columns at steps gathered..until-1 (of n) from `start` in `direction`,

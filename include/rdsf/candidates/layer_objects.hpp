@@ -4,7 +4,8 @@
 // when it fails at the layer's mean), then the departures that make every person an object of their own with a box
 // that fits (each one a parameter of CandidateParams that can be turned off):
 //   1. fitted extent: an object reaches out over the columns attached to it (the layer's pixels beside it,
-//      within its rows, such as arms, which are too short to pass threshold_height) - fit_reach_cm;
+//      within its rows, such as arms, which are too short to pass threshold_height) - fit_reach_cm - also
+//      across something nearer standing before them (an arm behind a nearer person) - fit_occlusion_gap_cm;
 //   2. joining pieces: objects whose fitted extents touch and that together are no wider than a person
 //      are one object (a person whose torso columns fail the height test because the legs part) -
 //      join_pieces (pieces each narrower than min_width_cm: in layers nearer than
