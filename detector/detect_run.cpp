@@ -55,8 +55,9 @@ class CandidateCoverage {
       double best = 0, best_other = 0;
       cv::Rect best_box;
       for (const Candidate& c : candidates) {
-        const double overlap = iou(reported_box(c, box), person.box);
-        if (overlap > best) best = overlap, best_box = reported_box(c, box);
+        const cv::Rect& reported = reported_box(c, box);
+        const double overlap = iou(reported, person.box);
+        if (overlap > best) best = overlap, best_box = reported;
         best_other = std::max(best_other, iou(reported_box(c, other), person.box));
       }
       ++people_;

@@ -2,9 +2,8 @@
 // the order the rules are tested in, and the counts' summary.
 #include <gtest/gtest.h>
 
-#include <stdexcept>
-
 #include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/core/error.hpp"
 #include "rdsf/evaluation/candidate_misses.hpp"
 
 namespace rdsf {
@@ -43,8 +42,8 @@ TEST(CandidateMisses, WidthIsTestedBeforeHeight) {
 }
 
 TEST(CandidateMisses, AMatchIsNoMiss) {
-  EXPECT_THROW(miss_shape(kPerson, kPerson, 1.0), std::invalid_argument);
-  EXPECT_THROW(miss_shape(kPerson, kPerson, 0.5), std::invalid_argument);
+  EXPECT_THROW(miss_shape(kPerson, kPerson, 1.0), Error);
+  EXPECT_THROW(miss_shape(kPerson, kPerson, 0.5), Error);
 }
 
 TEST(CandidateMisses, SummaryListsTheShapesThatOccurMostFirst) {

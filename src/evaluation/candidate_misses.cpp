@@ -1,14 +1,15 @@
 #include "rdsf/evaluation/candidate_misses.hpp"
 
+#include "rdsf/core/error.hpp"
+
 #include <algorithm>
 #include <numeric>
-#include <stdexcept>
 #include <vector>
 
 namespace rdsf {
 
 MissShape miss_shape(const cv::Rect& person, const cv::Rect& best, double best_iou) {
-  if (best_iou >= 0.5) throw std::invalid_argument("miss_shape: IoU >= 0.5 is a match, not a miss");
+  if (best_iou >= 0.5) fail("miss_shape", "IoU >= 0.5 is a match, not a miss");
   if (best_iou < 0.1 || person.width <= 0 || person.height <= 0) return MissShape::none;
   const double width = static_cast<double>(best.width) / person.width;
   const double height = static_cast<double>(best.height) / person.height;

@@ -23,7 +23,7 @@ enum class MissShape { none, wide, narrow, tall, short_box, shifted };
 constexpr int kMissShapes = 6;
 
 /// The shape of a miss: `best` is the candidate box with the highest IoU `best_iou` with `person` (any box
-/// when best_iou is 0). best_iou must be below 0.5.
+/// when best_iou is 0). best_iou must be below 0.5 (else Error).
 MissShape miss_shape(const cv::Rect& person, const cv::Rect& best, double best_iou);
 
 /// "none", "wide", "narrow", "tall", "short", "shifted".
