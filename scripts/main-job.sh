@@ -104,6 +104,8 @@ have_real=0
 if [ -n "$real" ] && [ -f "$real/boxes.csv" ]; then
   evaluate "$real" "$real/boxes.csv" "$run/real"
   have_real=1
+elif [ -n "$real" ]; then
+  echo "main-job: $real/boxes.csv not found: no real-frame evaluation (--real DIR names another folder)" >&2
 fi
 
 step 6 "summary"

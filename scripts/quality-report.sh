@@ -60,7 +60,11 @@ data=$out/data sets=$out/sets models=$out/models logs=$out/logs
 run=$out/runs/$(date -u +%Y%m%dT%H%M%SZ)
 mkdir -p "$data" "$sets" "$models" "$logs" "$run"
 have_real=0
-if [ -n "$real" ] && [ -f "$real/boxes.csv" ]; then have_real=1; fi
+if [ -n "$real" ] && [ -f "$real/boxes.csv" ]; then
+  have_real=1
+elif [ -n "$real" ]; then
+  echo "quality-report: $real/boxes.csv not found: no real-frame evaluation (--real DIR names another folder)" >&2
+fi
 
 step "render the synthetic recordings (reused when present)"
 # A recording is reused only when the generator that made it is the one built now (synth.yml's
