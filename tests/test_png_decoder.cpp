@@ -180,6 +180,36 @@ TEST(PngDecoder, EveryFilterTypeSameAsImdecode) {
   }
 }
 
+// Paeth's three-way choice and its ties (pa == pb, pb == pc: a before b before c) on samples from a
+// four-value alphabet, where ties are common, with every filter, at widths on both sides of the
+// vectorised Paeth path's bounds (it needs two pixels) and the row's end, where it reads past the pixel.
+TEST(PngDecoder, PaethTiesAndRowEndsSameAsImdecode) {
+  std::mt19937 rng(23);
+  const int alphabet[] = {0, 1, 128, 255};
+  for (const int type : kTypes) {
+    for (const int cols : {1, 2, 3, 5, 8, 17, 33}) {
+      cv::Mat image(9, cols, type);
+      const bool wide = image.depth() == CV_16U;
+      for (int y = 0; y < image.rows; ++y) {
+        for (int i = 0; i < cols * image.channels(); ++i) {
+          const int v = alphabet[rng() % 4], w = alphabet[rng() % 4];
+          if (wide) {
+            image.ptr<std::uint16_t>(y)[i] = static_cast<std::uint16_t>(v << 8 | w);
+          } else {
+            image.ptr<std::uint8_t>(y)[i] = static_cast<std::uint8_t>(v);
+          }
+        }
+      }
+      for (int shift = 0; shift < 5; ++shift) {
+        const Bytes png = build_png(image, shift, 1U << 20);
+        const cv::Mat decoded = rdsf::decode_png("x.png", png.data(), png.size());
+        EXPECT_TRUE(same(decoded, image)) << "type " << type << " cols " << cols << " shift " << shift;
+        EXPECT_TRUE(same(decoded, cv::imdecode(png, cv::IMREAD_UNCHANGED)));
+      }
+    }
+  }
+}
+
 TEST(PngDecoder, DamagedStreamsRefusedAsImdecodeRefusesThem) {
   std::mt19937 rng(7);
   const cv::Mat image = random_image(24, 32, CV_16UC1, true);

@@ -3,7 +3,7 @@
 // (reading a buffer far larger than the caches on 1 and N threads), the one-pass floor of a 640x480 frame
 // (read its 16-bit depth, write one byte per pixel), and, on one thread, best of a few passes each:
 // reading a frame's PNG files by the direct path and by cv::imdecode (the same files, one after the
-// other), segmentation per frame, candidates per candidate and the full 8128 vector per candidate.
+// other; also the frames of a folder of real ones when given), segmentation per frame, candidates per candidate and the full 8128 vector per candidate.
 #include <string>
 
 namespace rdsf::perf {
@@ -12,6 +12,9 @@ struct SpeedLimitOptions {
   bool quick = false;
   int threads = 2;
   int frames = 48;  ///< synthetic frames with 1..4 people for the per-stage figures (quick: 8)
+  /// A folder of real NAME.depth.png + NAME.rgb.png frames whose reading is timed too (real recorders'
+  /// PNGs use libpng's adaptive filters, nearly all Paeth in colour; rdsf-synth's use Sub); empty: skipped.
+  std::string real_frames_dir;
 };
 
 struct SpeedLimits {
@@ -21,6 +24,10 @@ struct SpeedLimits {
   double frame_pass_ms = 0;  ///< one pass over a 640x480 frame: 614,400 B read, 307,200 B written (1 thread)
   // PNG reading of one synthetic frame, one thread (ms)
   double png_depth_direct_ms = 0, png_depth_imdecode_ms = 0, png_colour_direct_ms = 0, png_colour_imdecode_ms = 0;
+  // ... and of the real frames, the mean per frame of the fastest pass over all of them (ms; 0: none)
+  std::string real_frames_dir;
+  int real_frames = 0;
+  double real_depth_direct_ms = 0, real_depth_imdecode_ms = 0, real_colour_direct_ms = 0, real_colour_imdecode_ms = 0;
   // Stages, one thread
   int frames = 0;
   long long candidates = 0;
