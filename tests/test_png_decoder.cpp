@@ -35,6 +35,15 @@ void put_chunk(Bytes& out, const char* type, const Bytes& data) {
 
 // The PNG rows of `image` (RGB order, big-endian samples) each filtered with filter (row + shift) % 5, the
 // straightforward way of the PNG specification.
+// The filter of row y: shifts 0..4 cycle through the five filters (no two Paeth rows in a row); 5 is Paeth
+// on every row; 6 mixes runs of 1, 2 and 3 Paeth rows with the others (the decoder pairs Paeth rows).
+int filter_of(int y, int shift) {
+  static const int kRuns[] = {4, 2, 4, 4, 1, 4, 4, 4, 0, 3};
+  if (shift == 5) return 4;
+  if (shift == 6) return kRuns[y % 10];
+  return (y + shift) % 5;
+}
+
 Bytes filtered_rows(const cv::Mat& image, int shift) {
   const int channels = image.channels();
   const int sample_bytes = image.depth() == CV_16U ? 2 : 1;
@@ -57,7 +66,7 @@ Bytes filtered_rows(const cv::Mat& image, int shift) {
         }
       }
     }
-    const int filter = (y + shift) % 5;
+    const int filter = filter_of(y, shift);
     out.push_back(static_cast<unsigned char>(filter));
     for (std::size_t i = 0; i < row_bytes; ++i) {
       const int a = i >= static_cast<std::size_t>(bpp) ? row[i - bpp] : 0;
@@ -182,13 +191,14 @@ TEST(PngDecoder, EveryFilterTypeSameAsImdecode) {
 
 // Paeth's three-way choice and its ties (pa == pb, pb == pc: a before b before c) on samples from a
 // four-value alphabet, where ties are common, with every filter, at widths on both sides of the
-// vectorised Paeth path's bounds (it needs two pixels) and the row's end, where it reads past the pixel.
+// vectorised Paeth path's bounds (it needs two pixels) and the row's end, where it reads past the pixel;
+// with Paeth rows alone, in pairs and in odd runs (two Paeth rows are undone together), odd and even heights.
 TEST(PngDecoder, PaethTiesAndRowEndsSameAsImdecode) {
   std::mt19937 rng(23);
   const int alphabet[] = {0, 1, 128, 255};
   for (const int type : kTypes) {
     for (const int cols : {1, 2, 3, 5, 8, 17, 33}) {
-      cv::Mat image(9, cols, type);
+      cv::Mat image(cols % 2 ? 9 : 12, cols, type);
       const bool wide = image.depth() == CV_16U;
       for (int y = 0; y < image.rows; ++y) {
         for (int i = 0; i < cols * image.channels(); ++i) {
@@ -200,7 +210,7 @@ TEST(PngDecoder, PaethTiesAndRowEndsSameAsImdecode) {
           }
         }
       }
-      for (int shift = 0; shift < 5; ++shift) {
+      for (int shift = 0; shift < 7; ++shift) {
         const Bytes png = build_png(image, shift, 1U << 20);
         const cv::Mat decoded = rdsf::decode_png("x.png", png.data(), png.size());
         EXPECT_TRUE(same(decoded, image)) << "type " << type << " cols " << cols << " shift " << shift;

@@ -239,7 +239,7 @@ std::string speed_limits_markdown(const SpeedLimits& s) {
     << "| Both PNGs of a frame | direct " << clock::fixed(s.png_depth_direct_ms + s.png_colour_direct_ms, 2)
     << " ms | cv::imdecode " << clock::fixed(s.png_depth_imdecode_ms + s.png_colour_imdecode_ms, 2) << " ms | "
     << times((s.png_depth_imdecode_ms + s.png_colour_imdecode_ms) / (s.png_depth_direct_ms + s.png_colour_direct_ms))
-    << " faster (target 3x) |\n";
+    << " faster (rdsf-synth's noisy colour: libdeflate's inflate alone is most of it, bench_frame_io's BM_InflateOnly) |\n";
   if (s.real_frames > 0) {
     const double direct = s.real_depth_direct_ms + s.real_colour_direct_ms;
     const double reference = s.real_depth_imdecode_ms + s.real_colour_imdecode_ms;
@@ -250,7 +250,8 @@ std::string speed_limits_markdown(const SpeedLimits& s) {
       << " ms | cv::imdecode " << clock::fixed(s.real_colour_imdecode_ms, 2) << " ms | "
       << times(s.real_colour_imdecode_ms / s.real_colour_direct_ms) << " faster |\n"
       << "| Real frames, both PNGs | direct " << clock::fixed(direct, 2) << " ms | cv::imdecode "
-      << clock::fixed(reference, 2) << " ms | " << times(reference / direct) << " faster (target 3x) |\n";
+      << clock::fixed(reference, 2) << " ms | " << times(reference / direct) << " faster (target 3x: "
+      << (reference >= 3 * direct ? "met" : "not met") << ") |\n";
   } else {
     m << "| Real frames | not measured: no folder of real frames (--real-frames) | - | - |\n";
   }

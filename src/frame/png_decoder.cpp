@@ -143,62 +143,133 @@ void unsub_row(unsigned char* row, std::size_t n) {
 
 // Paeth: x += the one of a, b, c nearest to p = a + b - c, ties a, then b. With pa = |p - a| = |b - c|,
 // pb = |p - b| = |a - c|, pc = |p - c| = |(a - c) + (b - c)|: a when pa <= pb and pa <= pc, else b when
-// pb <= pc, else c. Each pixel needs the one just reconstructed on its left (a), so the row is a chain
-// of pixels; with SSE2 a pixel's Bpp bytes go through it together, in 16-bit lanes, without branches (the
-// scalar choice mispredicts on noisy rows: real colour frames are nearly all Paeth rows, and decoding them
-// took 5 of their 7 ms). Bytes outside a pixel are not written; up to 8 bytes past it are read.
+// pb <= pc, else c. Each pixel needs the one just reconstructed on its left (a), so a row is a chain of
+// pixels; with SSE2 a pixel's bytes go through it together, in 16-bit lanes, without branches (the scalar
+// choice mispredicts on noisy rows: real colour frames are nearly all Paeth rows, and decoding them took 5
+// of their 7 ms). The chain's latency, not the work, bounds a row; two Paeth rows in a row (most of the
+// real frames' depth and colour rows) are done together, the lower one a pixel behind the upper one: its
+// pixel i - 1 needs the upper row's pixels i - 1 and i - 2, which are done, so both halves of one register
+// take a step at a time. Bytes outside a pixel are not written; up to 8 bytes past it are read.
 constexpr std::size_t kRowSlack = 16;  // readable bytes after the last row of `row` and `prior`
+
+inline int paeth_predictor(int a, int b, int c) {
+  const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+  return (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
+}
+
+// Bytes from..n of a Paeth row, one at a time (from >= Bpp).
+template <int Bpp>
+void unpaeth_bytes(unsigned char* row, const unsigned char* prior, std::size_t from, std::size_t n) {
+  for (std::size_t i = from; i < n; ++i) {
+    row[i] = static_cast<unsigned char>(row[i] + paeth_predictor(row[i - Bpp], prior[i], prior[i - Bpp]));
+  }
+}
+
+#ifdef __SSE2__
+// x + the Paeth predictor in each 16-bit lane (samples 0..255): the next a.
+inline __m128i paeth_lanes(__m128i a, __m128i b, __m128i c, __m128i x) {
+  const __m128i zero = _mm_setzero_si128(), low_byte = _mm_set1_epi16(0x00ff);
+  const auto abs16 = [](__m128i v, __m128i negated) { return _mm_max_epi16(v, negated); };
+  const __m128i bc = _mm_sub_epi16(b, c);  // b - c: off the chain of a single row
+  const __m128i pa = abs16(bc, _mm_sub_epi16(zero, bc));
+  const __m128i xb = _mm_and_si128(_mm_add_epi16(x, b), low_byte), xc = _mm_and_si128(_mm_add_epi16(x, c), low_byte);
+  const __m128i ac = _mm_sub_epi16(a, c), ca = _mm_sub_epi16(c, a);
+  const __m128i pb = abs16(ac, ca);
+  const __m128i pc = abs16(_mm_add_epi16(ac, bc), _mm_sub_epi16(ca, bc));
+  const __m128i xa = _mm_and_si128(_mm_add_epi16(x, a), low_byte);
+  const __m128i not_a = _mm_or_si128(_mm_cmpgt_epi16(pa, pb), _mm_cmpgt_epi16(pa, pc));
+  const __m128i take_c = _mm_cmpgt_epi16(pb, pc);
+  const __m128i b_or_c = _mm_or_si128(_mm_and_si128(take_c, xc), _mm_andnot_si128(take_c, xb));
+  return _mm_or_si128(_mm_and_si128(not_a, b_or_c), _mm_andnot_si128(not_a, xa));
+}
+
+// The 8 bytes at p in 16-bit lanes.
+inline __m128i load_lanes(const unsigned char* p) {
+  return _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)), _mm_setzero_si128());
+}
+
+// The 4 bytes at p, zero-extended to a 32-bit value's register.
+inline __m128i load4(const unsigned char* p) {
+  std::uint32_t v;
+  std::memcpy(&v, p, 4);
+  return _mm_cvtsi32_si128(static_cast<int>(v));
+}
+
+// Writes the low Bpp bytes of `bytes` (Bpp <= 8) to out, from registers where it can.
+template <int Bpp>
+inline void store_pixel(unsigned char* out, std::uint64_t bytes) {
+  if (Bpp == 1 || Bpp == 3) out[Bpp - 1] = static_cast<unsigned char>(bytes >> (8 * (Bpp - 1)));
+  if (Bpp == 2 || Bpp == 3) {
+    const auto low = static_cast<std::uint16_t>(bytes);
+    std::memcpy(out, &low, 2);
+  }
+  if (Bpp == 4) {
+    const auto low = static_cast<std::uint32_t>(bytes);
+    std::memcpy(out, &low, 4);
+  }
+  if (Bpp > 4) std::memcpy(out, &bytes, Bpp);
+}
+
+inline std::uint64_t low_bytes(__m128i lanes) {
+  std::uint64_t out;
+  _mm_storel_epi64(reinterpret_cast<__m128i*>(&out), _mm_packus_epi16(lanes, _mm_setzero_si128()));
+  return out;
+}
+#endif
+
 template <int Bpp>
 void unpaeth_row(unsigned char* row, const unsigned char* prior, std::size_t n) {
   for (std::size_t i = 0; i < Bpp && i < n; ++i) row[i] = static_cast<unsigned char>(row[i] + prior[i]);
   std::size_t i = Bpp;
 #ifdef __SSE2__
   if (n >= 2 * Bpp) {
-    const __m128i zero = _mm_setzero_si128(), low_byte = _mm_set1_epi16(0x00ff);
-    // A pixel's Bpp bytes in the low 16-bit lanes: 8 bytes read straight from the row (the buffers have
-    // kRowSlack bytes after their last row), the lanes past Bpp computed and never stored.
-    const auto load = [&](const unsigned char* p) {
-      return _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)), zero);
-    };
-    const auto abs16 = [](__m128i v, __m128i negated) { return _mm_max_epi16(v, negated); };
-    __m128i a = load(row), c = load(prior);
+    __m128i a = load_lanes(row), c = load_lanes(prior);
     for (; i + Bpp <= n; i += Bpp) {
-      const __m128i b = load(prior + i), x = load(row + i);
-      const __m128i bc = _mm_sub_epi16(b, c);                    // b - c: not on the chain
-      const __m128i pa = abs16(bc, _mm_sub_epi16(zero, bc));
-      const __m128i xb = _mm_and_si128(_mm_add_epi16(x, b), low_byte), xc = _mm_and_si128(_mm_add_epi16(x, c), low_byte);
-      const __m128i ac = _mm_sub_epi16(a, c), ca = _mm_sub_epi16(c, a);
-      const __m128i pb = abs16(ac, ca);
-      const __m128i pc = abs16(_mm_add_epi16(ac, bc), _mm_sub_epi16(ca, bc));
-      const __m128i xa = _mm_and_si128(_mm_add_epi16(x, a), low_byte);
-      const __m128i not_a = _mm_or_si128(_mm_cmpgt_epi16(pa, pb), _mm_cmpgt_epi16(pa, pc));
-      const __m128i take_c = _mm_cmpgt_epi16(pb, pc);
-      const __m128i b_or_c = _mm_or_si128(_mm_and_si128(take_c, xc), _mm_andnot_si128(take_c, xb));
-      a = _mm_or_si128(_mm_and_si128(not_a, b_or_c), _mm_andnot_si128(not_a, xa));
+      const __m128i b = load_lanes(prior + i);
+      a = paeth_lanes(a, b, c, load_lanes(row + i));
       c = b;
-      const __m128i bytes = _mm_packus_epi16(a, zero);
-      if (Bpp <= 4) {  // from a register: no store to the stack and reload
-        const auto out = static_cast<std::uint32_t>(_mm_cvtsi128_si32(bytes));
-        if (Bpp == 1 || Bpp == 3) row[i + Bpp - 1] = static_cast<unsigned char>(out >> (8 * (Bpp - 1)));
-        if (Bpp == 2 || Bpp == 3) {
-          const auto low = static_cast<std::uint16_t>(out);
-          std::memcpy(row + i, &low, 2);
-        }
-        if (Bpp == 4) std::memcpy(row + i, &out, 4);
-      } else {
-        std::uint64_t out = 0;
-        _mm_storel_epi64(reinterpret_cast<__m128i*>(&out), bytes);
-        std::memcpy(row + i, &out, Bpp);
-      }
+      store_pixel<Bpp>(row + i, low_bytes(a));
     }
   }
 #endif
-  for (; i < n; ++i) {
-    const int a = row[i - Bpp], b = prior[i], c = prior[i - Bpp];
-    const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
-    const int predictor = (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
-    row[i] = static_cast<unsigned char>(row[i] + predictor);
+  unpaeth_bytes<Bpp>(row, prior, i, n);
+}
+
+// Two consecutive Paeth rows: `upper` (whose row above is `prior`) and `lower` (below it). Bpp <= 4: a
+// register holds the upper row's pixel i in lanes 0..3 and the lower row's pixel i - 1 in lanes 4..7; the
+// lower half's b and c are the upper half's last two results.
+template <int Bpp>
+void unpaeth_two_rows(unsigned char* upper, unsigned char* lower, const unsigned char* prior, std::size_t n) {
+  static_assert(Bpp <= 4, "a pixel of each row in one register");
+  const std::size_t pixels = n / Bpp;
+#ifdef __SSE2__
+  if (pixels >= 2) {
+    for (std::size_t i = 0; i < Bpp; ++i) upper[i] = static_cast<unsigned char>(upper[i] + prior[i]);
+    const __m128i zero = _mm_setzero_si128();
+    const auto lanes = [&](__m128i low, __m128i high) {  // 4 bytes each, to lanes 0..3 and 4..7
+      return _mm_unpacklo_epi8(_mm_unpacklo_epi32(low, high), zero);
+    };
+    // Pixel 0 of the lower row has a = c = 0 (outside the row): its predictor is b, as Paeth's.
+    __m128i a = lanes(load4(upper), zero);
+    __m128i c = lanes(load4(prior), zero);
+    __m128i b = _mm_unpacklo_epi64(_mm_unpacklo_epi8(load4(prior + Bpp), zero), a);
+    for (std::size_t p = 1; p < pixels; ++p) {
+      const __m128i x = lanes(load4(upper + p * Bpp), load4(lower + (p - 1) * Bpp));
+      a = paeth_lanes(a, b, c, x);
+      c = b;
+      b = _mm_unpacklo_epi64(_mm_unpacklo_epi8(load4(prior + (p + 1) * Bpp), zero), a);
+      const std::uint64_t out = low_bytes(a);
+      store_pixel<Bpp>(upper + p * Bpp, out);
+      store_pixel<Bpp>(lower + (p - 1) * Bpp, out >> 32);
+    }
+    // The lower row's last pixel, and bytes past whole pixels (none in a PNG row), one at a time.
+    unpaeth_bytes<Bpp>(upper, prior, pixels * Bpp, n);
+    unpaeth_bytes<Bpp>(lower, upper, (pixels - 1) * Bpp, n);
+    return;
   }
+#endif
+  unpaeth_row<Bpp>(upper, prior, n);
+  unpaeth_row<Bpp>(lower, upper, n);
 }
 
 template <int Bpp>
@@ -227,6 +298,15 @@ void unfilter(int bpp, int filter, unsigned char* row, const unsigned char* prio
     case 4: unfilter_row<4>(filter, row, prior, n); break;
     case 6: unfilter_row<6>(filter, row, prior, n); break;
     default: unfilter_row<8>(filter, row, prior, n); break;
+  }
+}
+
+void unpaeth_pair(int bpp, unsigned char* upper, unsigned char* lower, const unsigned char* prior, std::size_t n) {
+  switch (bpp) {
+    case 1: unpaeth_two_rows<1>(upper, lower, prior, n); break;
+    case 2: unpaeth_two_rows<2>(upper, lower, prior, n); break;
+    case 3: unpaeth_two_rows<3>(upper, lower, prior, n); break;
+    default: unpaeth_two_rows<4>(upper, lower, prior, n); break;
   }
 }
 
@@ -324,7 +404,15 @@ cv::Mat decode_direct(const unsigned char* bytes, const PngLayout& layout) {
     unsigned char* line = raw.data() + std::size_t{y} * (row_bytes + 1);
     const int filter = line[0];
     if (filter > 4) return {};
-    unfilter(bpp, filter, line + 1, prior, row_bytes);
+    unsigned char* next = line + row_bytes + 1;
+    if (filter == 4 && bpp <= 4 && y + 1 < layout.height && next[0] == 4) {
+      unpaeth_pair(bpp, line + 1, next + 1, prior, row_bytes);
+      convert_row(line + 1, image.ptr(static_cast<int>(y)), layout.width, channels, layout.bit_depth);
+      ++y;
+      line = next;
+    } else {
+      unfilter(bpp, filter, line + 1, prior, row_bytes);
+    }
     convert_row(line + 1, image.ptr(static_cast<int>(y)), layout.width, channels, layout.bit_depth);
     prior = line + 1;
   }
