@@ -148,6 +148,8 @@ int run_detect(const DetectOptions& o) {
   // The detector computes the first model's feature spec unless --feature-spec names one (then they must
   // agree: PeoplePipeline refuses otherwise). Further models score the same crops in their own specs.
   if (!models.empty() && !o.feature_spec_given) pipeline_params.detector.features = models.front().feature_spec();
+  // The evaluation sweeps tracking over every candidate's colour histogram, not only the detections'.
+  pipeline_params.colour_crops_of_all = evaluate;
   std::vector<ModelScorer> scorers;
   for (const BoostedModel& m : models) scorers.emplace_back(m);
   GroundTruth truth;

@@ -3,7 +3,9 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/column_heights.hpp"
 #include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 #include "support/depth_scenes.hpp"
+#include "support/test_support.hpp"
 
 using namespace rdsf;
 
@@ -162,6 +164,45 @@ TEST(CandidateFinder, ColourCropIsMaskedByTheLayer) {
   ASSERT_EQ(person->colour_crop.size(), cv::Size(64, 128));
   EXPECT_EQ(person->colour_crop(50, 30), cv::Vec3b(200, 100, 50));
   EXPECT_EQ(person->colour_crop(50, 5), cv::Vec3b(0, 0, 0));  // the wall is another layer: black
+}
+
+// CropColour::later leaves the colour crops empty and everything else as it was; cut_colour_crop() then
+// cuts the same pixels, for windows inside the image and across its borders (synthetic rooms, 1-4 people).
+TEST(CandidateFinder, ColourCropCutLaterIsTheSame) {
+  synth::SynthParams p;
+  p.frames = 12;
+  p.seed = 5;
+  p.people_min = 1;
+  p.people_max = 4;
+  p.rgb = true;
+  p.clip_frames = 3;
+  const FrameAnalyser core;
+  int candidates = 0, crossing_border = 0;
+  for (const DepthFrame& frame : test::synthetic_frames(p)) {
+    const FrameAnalysis now = core.analyse(frame, false, CropColour::cut);
+    FrameAnalysis later = core.analyse(frame, false, CropColour::later);
+    ASSERT_EQ(now.candidates.size(), later.candidates.size());
+    for (std::size_t c = 0; c < now.candidates.size(); ++c) {
+      Candidate& x = later.candidates[c];
+      EXPECT_TRUE(x.colour_crop.empty());
+      EXPECT_EQ(x.window_unclipped, now.candidates[c].window_unclipped);
+      EXPECT_EQ(cv::norm(x.depth_crop, now.candidates[c].depth_crop, cv::NORM_INF), 0.0);
+      cut_colour_crop(frame, later.segmentation.labels, x);
+      ASSERT_EQ(x.colour_crop.size(), cv::Size(64, 128));
+      EXPECT_EQ(cv::norm(x.colour_crop, now.candidates[c].colour_crop, cv::NORM_INF), 0.0) << frame.name;
+      ++candidates;
+      crossing_border += (x.window_unclipped & cv::Rect(0, 0, 640, 480)) != x.window_unclipped ? 1 : 0;
+    }
+  }
+  EXPECT_GT(candidates, 20);
+  EXPECT_GT(crossing_border, 0);
+  // Without colour in the frame there is none to cut.
+  DepthFrame grey = test::wall_frame(4000);
+  test::paint(grey, {300, 100, 40, 360}, 2000);
+  FrameAnalysis a = core.analyse(grey, false, CropColour::later);
+  ASSERT_FALSE(a.candidates.empty());
+  cut_colour_crop(grey, a.segmentation.labels, a.candidates[0]);
+  EXPECT_TRUE(a.candidates[0].colour_crop.empty());
 }
 
 TEST(CandidateFinder, IntersectionOverUnion) {

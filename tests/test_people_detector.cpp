@@ -55,20 +55,7 @@ std::vector<DepthFrame> synthetic_frames(int count) {
   p.people_max = 3;
   p.rgb = true;
   p.clip_frames = 8;
-  synth::SynthSequence sequence(p);
-  std::vector<DepthFrame> frames;
-  for (int i = 0; i < count; ++i) {
-    const synth::SynthFrame f = sequence.frame(i);
-    DepthFrame frame;
-    frame.depth_mm = f.depth_mm;
-    frame.bgr = f.bgr;
-    frame.index = i;
-    frame.name = f.name;
-    frame.timestamp_us = i * 33333;
-    frame.camera = p.camera();
-    frames.push_back(frame);
-  }
-  return frames;
+  return test::synthetic_frames(p);
 }
 
 }  // namespace
@@ -214,6 +201,43 @@ TEST(ParallelPipeline, OneAndManyThreadsGiveIdenticalResults) {
       }
     }
   }
+}
+
+// The pipeline cuts colour crops for its detections only (colour_crops_of_all off, the default): the same
+// scores, colour histograms and people as cutting every candidate's, the detections' colour crops the same
+// pixels, the other candidates' left empty.
+TEST(PeoplePipeline, ColourCropsOfDetectionsOnlyChangeNothingButTheOthersCrops) {
+  const std::vector<DepthFrame> frames = synthetic_frames(24);
+  const BoostedModel model = read_model_file(reference_model());
+  PipelineParams params = PipelineParams{};
+  params.score_threshold = model.calibration().score_at(0.3);  // some detections, some not
+  PipelineParams all_params = params;
+  all_params.colour_crops_of_all = true;
+  PeoplePipeline lazy(params, &model), all(all_params, &model);
+  std::size_t detections = 0, others = 0;
+  for (const DepthFrame& f : frames) {
+    const PipelineFrame a = all.process(f), b = lazy.process(f);
+    ASSERT_EQ(a.analysis.candidates.size(), b.analysis.candidates.size());
+    EXPECT_EQ(a.scores, b.scores) << f.name;
+    EXPECT_EQ(a.person, b.person) << f.name;
+    for (std::size_t c = 0; c < a.analysis.candidates.size(); ++c) {
+      const Candidate& x = a.analysis.candidates[c];
+      const Candidate& y = b.analysis.candidates[c];
+      EXPECT_EQ(a.histograms[c].values, b.histograms[c].values) << f.name << " candidate " << c;
+      EXPECT_EQ(cv::norm(x.depth_crop, y.depth_crop, cv::NORM_INF), 0.0);
+      ASSERT_FALSE(x.colour_crop.empty());
+      if (b.person[c] != 0) {
+        ++detections;
+        ASSERT_EQ(x.colour_crop.size(), y.colour_crop.size()) << f.name << " candidate " << c;
+        EXPECT_EQ(cv::norm(x.colour_crop, y.colour_crop, cv::NORM_INF), 0.0) << f.name << " candidate " << c;
+      } else {
+        ++others;
+        EXPECT_TRUE(y.colour_crop.empty()) << f.name << " candidate " << c;
+      }
+    }
+  }
+  EXPECT_GT(detections, 0u);
+  EXPECT_GT(others, 0u);
 }
 
 TEST(ParallelPipeline, FolderDecodedOnWorkersEqualsTheSourceAndStopsWhenAsked) {

@@ -15,18 +15,18 @@ double iou(const cv::Rect& a, const cv::Rect& b) {
   return uni > 0 ? inter / uni : 0.0;
 }
 
-void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
-               cv::Size crop_size, Candidate& candidate) {
-  candidate.depth_crop.create(crop_size);
-  const bool colour = frame.has_colour();
-  if (colour) {
-    candidate.colour_crop.create(crop_size);
-  } else {
-    candidate.colour_crop.release();
-  }
-  // Nearest neighbour: output pixel u samples source column window.x + floor((u + 0.5) * w / W). The
-  // source columns grow with u, so those inside the image are the outputs inside..inside_end - 1; the
-  // others, and rows outside the image, read 0 (black).
+namespace {
+
+// The window's nearest-neighbour sampling, shared by both crops (so a colour crop cut later is the one
+// cut_crops() would have cut): output pixel u samples source column window.x + floor((u + 0.5) * w / W),
+// row v source row window.y + floor((v + 0.5) * h / H). The source columns grow with u, so those inside
+// the image are the outputs inside..inside_end - 1; the others, and rows outside the image, read 0
+// (black). Only the layer's pixels are kept. Depth: fill `depth`; Colour: fill `colour` from frame.bgr.
+template <bool Depth, bool Colour>
+void sample_window(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
+                   cv::Size crop_size, cv::Mat1w* depth, cv::Mat3b* colour) {
+  if (Depth) depth->create(crop_size);
+  if (Colour) colour->create(crop_size);
   thread_local std::vector<int> source_x;
   source_x.resize(static_cast<std::size_t>(std::max(0, crop_size.width)));
   int inside = 0, inside_end = 0;
@@ -41,38 +41,54 @@ void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, cons
   const cv::Vec3b black(0, 0, 0);
   for (int v = 0; v < crop_size.height; ++v) {
     const int y = window.y + static_cast<int>(std::floor((v + 0.5) * window.height / crop_size.height));
-    std::uint16_t* depth_out = candidate.depth_crop.ptr<std::uint16_t>(v);
-    cv::Vec3b* colour_out = colour ? candidate.colour_crop.ptr<cv::Vec3b>(v) : nullptr;
+    std::uint16_t* depth_out = Depth ? depth->ptr<std::uint16_t>(v) : nullptr;
+    cv::Vec3b* colour_out = Colour ? colour->ptr<cv::Vec3b>(v) : nullptr;
     const bool row_inside = y >= 0 && y < frame.depth_mm.rows;
     const int from = row_inside ? inside : crop_size.width, to = row_inside ? inside_end : crop_size.width;
-    std::fill(depth_out, depth_out + from, std::uint16_t{0});
-    std::fill(depth_out + to, depth_out + crop_size.width, std::uint16_t{0});
-    if (colour) {
+    if (Depth) {
+      std::fill(depth_out, depth_out + from, std::uint16_t{0});
+      std::fill(depth_out + to, depth_out + crop_size.width, std::uint16_t{0});
+    }
+    if (Colour) {
       std::fill(colour_out, colour_out + from, black);
       std::fill(colour_out + to, colour_out + crop_size.width, black);
     }
     if (!row_inside) continue;
     const std::uint8_t* label_row = labels.ptr<std::uint8_t>(y);
     const std::uint16_t* depth_row = frame.depth_mm.ptr<std::uint16_t>(y);
-    if (!colour) {
-      for (int u = from; u < to; ++u) {
-        const int x = xs[u];
-        depth_out[u] = label_row[x] == layer ? depth_row[x] : std::uint16_t{0};
-      }
-      continue;
-    }
-    const cv::Vec3b* colour_row = frame.bgr.ptr<cv::Vec3b>(y);
+    const cv::Vec3b* colour_row = Colour ? frame.bgr.ptr<cv::Vec3b>(y) : nullptr;
     for (int u = from; u < to; ++u) {
       const int x = xs[u];
       const bool in = label_row[x] == layer;
-      depth_out[u] = in ? depth_row[x] : std::uint16_t{0};
-      colour_out[u] = in ? colour_row[x] : black;
+      if (Depth) depth_out[u] = in ? depth_row[x] : std::uint16_t{0};
+      if (Colour) colour_out[u] = in ? colour_row[x] : black;
     }
   }
 }
 
+}  // namespace
+
+void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
+               cv::Size crop_size, Candidate& candidate, CropColour colour) {
+  if (frame.has_colour() && colour == CropColour::cut) {
+    sample_window<true, true>(frame, labels, layer, window, crop_size, &candidate.depth_crop, &candidate.colour_crop);
+  } else {
+    candidate.colour_crop.release();
+    sample_window<true, false>(frame, labels, layer, window, crop_size, &candidate.depth_crop, nullptr);
+  }
+}
+
+void cut_colour_crop(const DepthFrame& frame, const cv::Mat1b& labels, Candidate& candidate) {
+  if (!frame.has_colour()) {
+    candidate.colour_crop.release();
+    return;
+  }
+  sample_window<false, true>(frame, labels, candidate.layer, candidate.window_unclipped, candidate.depth_crop.size(),
+                             nullptr, &candidate.colour_crop);
+}
+
 std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentation& segmentation,
-                                       const CandidateParams& params, cv::Size crop_size) {
+                                       const CandidateParams& params, cv::Size crop_size, CropColour colour) {
   std::vector<Candidate> candidates;
   const int layer_count = static_cast<int>(segmentation.layers.size());
   if (layer_count == 0) return candidates;
@@ -122,7 +138,7 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       candidate.highest_column = object.highest;
       candidate.part = object.part;
       candidate.object = objects_before + object.object;
-      cut_crops(frame, segmentation.labels, layer.label, candidate.window_unclipped, crop_size, candidate);
+      cut_crops(frame, segmentation.labels, layer.label, candidate.window_unclipped, crop_size, candidate, colour);
       candidates.push_back(std::move(candidate));
     }
     int in_layer = 0;

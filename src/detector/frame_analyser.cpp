@@ -37,7 +37,7 @@ DetectorParams thesis_params(DetectorParams params) {
 
 FrameAnalyser::FrameAnalyser(DetectorParams params) : params_(params), extractor_(params.features) {}
 
-FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features) const {
+FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features, CropColour colour) const {
   if (frame.depth_mm.empty()) throw Error("frame " + frame.name + ": empty depth image");
   FrameAnalysis analysis;
   auto start = std::chrono::steady_clock::now();
@@ -46,7 +46,7 @@ FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features
 
   start = std::chrono::steady_clock::now();
   const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
-  analysis.candidates = find_candidates(frame, analysis.segmentation, params_.candidates, crop);
+  analysis.candidates = find_candidates(frame, analysis.segmentation, params_.candidates, crop, colour);
   analysis.times.candidates_ms = milliseconds_since(start);
 
   if (with_features) {

@@ -46,7 +46,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   }
   PipelineFrame out;
   const bool full = model_ != nullptr && params_.full_feature_vector;
-  out.analysis = core_.analyse(frame, full);
+  out.analysis = core_.analyse(frame, full, params_.colour_crops_of_all ? CropColour::cut : CropColour::later);
   out.times.segmentation_ms = out.analysis.times.segmentation_ms;
   out.times.candidates_ms = out.analysis.times.candidates_ms;
   out.times.features_ms = out.analysis.times.features_ms;
@@ -78,7 +78,8 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   out.histograms.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (out.scores[i] < threshold || out.duplicate[i] != 0) continue;
-    const Candidate& c = out.analysis.candidates[i];
+    Candidate& c = out.analysis.candidates[i];
+    if (!params_.colour_crops_of_all) cut_colour_crop(frame, out.analysis.segmentation.labels, c);
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
   }
   out.times.tracking_ms = ms_since(start);

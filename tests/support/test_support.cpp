@@ -1,6 +1,7 @@
 #include "support/test_support.hpp"
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/synth/synth_sequence.hpp"
 
 #include <array>
 #include <cstdio>
@@ -11,6 +12,23 @@
 #include <sys/wait.h>
 
 namespace rdsf::test {
+
+std::vector<DepthFrame> synthetic_frames(const synth::SynthParams& p) {
+  synth::SynthSequence sequence(p);
+  std::vector<DepthFrame> frames;
+  for (int i = 0; i < p.frames; ++i) {
+    const synth::SynthFrame f = sequence.frame(i);
+    DepthFrame frame;
+    frame.depth_mm = f.depth_mm;
+    frame.bgr = f.bgr;
+    frame.index = i;
+    frame.name = f.name;
+    frame.timestamp_us = i * kFrameIntervalUs;
+    frame.camera = p.camera();
+    frames.push_back(frame);
+  }
+  return frames;
+}
 
 std::filesystem::path realdata_dir() {
   const std::filesystem::path dir = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared" / "realdata";

@@ -4,6 +4,10 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
+
+#include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/synth/synth_params.hpp"
 
 namespace rdsf::test {
 
@@ -48,5 +52,9 @@ std::string error_message(const std::function<void()>& f);
 
 /// Quotes a path for the shell.
 std::string quote(const std::string& text);
+
+/// The frames of a synthetic sequence as a frame source gives them: depth, colour (when p.rgb), index,
+/// name, timestamp (index x 33,333 us) and p's camera model.
+std::vector<DepthFrame> synthetic_frames(const synth::SynthParams& p);
 
 }  // namespace rdsf::test

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "rdsf/candidates/candidate.hpp"
+#include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/candidate_params.hpp"
 #include "rdsf/features/feature_spec.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
@@ -52,8 +53,10 @@ class FrameAnalyser {
   const DetectorParams& params() const { return params_; }
   const RdsfExtractor& extractor() const { return extractor_; }
 
-  /// Segments the frame and shapes its candidates; with `with_features`, also computes their RDSF.
-  FrameAnalysis analyse(const DepthFrame& frame, bool with_features = true) const;
+  /// Segments the frame and shapes its candidates; with `with_features`, also computes their RDSF. With
+  /// CropColour::later the candidates' colour crops are left empty (cut_colour_crop() cuts one later).
+  FrameAnalysis analyse(const DepthFrame& frame, bool with_features = true,
+                        CropColour colour = CropColour::cut) const;
 
   /// RDSF rows for the given candidates (candidates.size() x dimension()).
   cv::Mat1f features(const std::vector<Candidate>& candidates) const;

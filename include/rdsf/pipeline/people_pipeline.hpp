@@ -34,6 +34,10 @@ struct PipelineParams {
   /// Of a whole object and a piece cut out of it that both score as people, only the higher-scoring one
   /// is a detection (duplicate_candidates.hpp). Off: both are (which counts one person twice).
   bool suppress_duplicates = true;
+  /// Cut every candidate's colour crop (analysis.candidates[i].colour_crop), as the analyser does for
+  /// mining and labelling. Off (default): only the detections get one, when they are found (tracking reads
+  /// their colour histograms); the other candidates' stay empty. The same pixels, histograms and people.
+  bool colour_crops_of_all = false;
 };
 
 /// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
@@ -42,7 +46,7 @@ struct PipelineTimes {
   double candidates_ms = 0;     ///< candidate initialisation and filtering (column scan, boxes, crops)
   double features_ms = 0;       ///< RDSF of every candidate
   double classifier_ms = 0;
-  double tracking_ms = 0;       ///< colour histograms and matching
+  double tracking_ms = 0;       ///< colour histograms (and the detections' colour crops) and matching
   double total_ms() const { return segmentation_ms + candidates_ms + features_ms + classifier_ms + tracking_ms; }
   PipelineTimes& operator+=(const PipelineTimes& o);
 };
