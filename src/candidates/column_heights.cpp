@@ -53,7 +53,7 @@ inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, 
 //   nearer bit L   some segment of a label in 1..L-1 since then (L's something_nearer is true)
 // A segment of label s sets farther bits 1..s-1 and, when s > 0, nearer bits s+1..layer_count; for
 // 1 <= s <= layer_count it then goes on with or restarts label s's run as the reference does and clears
-// s's bits. Segments of label 0 (no reading) change nothing and are skipped; labels above layer_count
+// s's bits. Segments of label 0 (no reading) change nothing (their run is slot 0's); labels above layer_count
 // only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
 // instead of once per layer present in its column, with no other branch on the data. Words: 64-bit words
 // of a bit set (labels 0..layer_count).
@@ -102,7 +102,7 @@ class RunScanner {
   // The longest run of label l (1..layer_count) in column c.
   ColumnRun best(int l, int c) const {
     const Run& run = runs_[static_cast<std::size_t>(c) * slots_ + static_cast<std::size_t>(l)];
-    return {run.top, run.bottom};
+    return {run.top, run.length > 0 ? run.top + run.length - 1 : -1};
   }
 
  private:
@@ -113,13 +113,14 @@ class RunScanner {
     int label = 0;  // its label
   };
   struct Run {
-    int start = -1, last = -1;  // the run going on and the last row of the label in it
-    int top = -1, bottom = -1;  // the longest run so far
+    int start = 0, last = -1;  // the run going on and the last row of the label in it (-1: none yet)
+    int top = -1, length = 0;  // the longest run so far
   };
 
   void segment(int c, Column& column, int last) {
     const int s = column.label;
-    if (s == 0) return;  // no reading: sets no bit (below_[0], above_[0] are empty), and slot 0 is not reported
+    // s == 0 (no reading) takes the same steps: below_[0] and above_[0] are empty, so it sets no bit, and
+    // its run is slot 0's, which is never reported (no branch on the data).
     const int first = column.first;
     for (int w = 0; w < Words; ++w) {
       column.farther[w] |= below_[s][w];
@@ -133,14 +134,17 @@ class RunScanner {
     column.farther[word] &= ~bit;
     column.nearer[word] &= ~bit;
     Run& run = runs_[static_cast<std::size_t>(c) * slots_ + static_cast<std::size_t>(slot)];
+    // The run's update without a branch on the data (masks: all ones where a condition holds).
     const int gap = first - run.last - 1;
-    const bool occluded = nothing_farther & something_nearer & (gap <= occlusion_[static_cast<std::size_t>(slot)]);
-    const bool restart = (run.start < 0) | ((gap > k_) & !occluded);
-    run.start = restart ? first : run.start;
+    const int occluded = nothing_farther & something_nearer & (gap <= occlusion_[static_cast<std::size_t>(slot)]);
+    const int restart = -((run.last < 0) | ((gap > k_) & (occluded ^ 1)));
+    const int start = (first & restart) | (run.start & ~restart);
+    run.start = start;
     run.last = last;
-    const bool longer = last - run.start + 1 > (run.top < 0 ? 0 : run.bottom - run.top + 1);
-    run.top = longer ? run.start : run.top;
-    run.bottom = longer ? last : run.bottom;
+    const int length = last - start + 1;
+    const int longer = -(length > run.length);
+    run.top = (start & longer) | (run.top & ~longer);
+    run.length = (length & longer) | (run.length & ~longer);
   }
 
   const int width_;
