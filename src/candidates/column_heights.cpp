@@ -79,8 +79,6 @@ class RunScanner {
 
   void scan(const cv::Mat1b& labels) {
     const int height = labels.rows;
-    const std::uint8_t* first_row = labels.ptr<std::uint8_t>(0);
-    for (int c = 0; c < width_; ++c) columns_[static_cast<std::size_t>(c)].label = first_row[c];
     for (int r = 1; r < height; ++r) {
       const std::uint8_t* above = labels.ptr<std::uint8_t>(r - 1);
       const std::uint8_t* row = labels.ptr<std::uint8_t>(r);
@@ -90,13 +88,13 @@ class RunScanner {
           const int c = c0 + __builtin_ctzll(changed);
           changed &= changed - 1;
           Column& column = columns_[static_cast<std::size_t>(c)];
-          segment(c, column, r - 1);
-          column.label = row[c];
+          segment(c, column, r - 1, above[c]);  // the segment ending here is of the label above
           column.first = r;
         }
       }
     }
-    for (int c = 0; c < width_; ++c) segment(c, columns_[static_cast<std::size_t>(c)], height - 1);
+    const std::uint8_t* last_row = labels.ptr<std::uint8_t>(height - 1);
+    for (int c = 0; c < width_; ++c) segment(c, columns_[static_cast<std::size_t>(c)], height - 1, last_row[c]);
   }
 
   // The longest run of label l (1..layer_count) in column c.
@@ -109,16 +107,15 @@ class RunScanner {
   struct Column {
     Word farther[Words] = {};
     Word nearer[Words] = {};
-    int first = 0;  // first row of the current segment
-    int label = 0;  // its label
+    int first = 0;  // first row of the current segment (its label is the image's)
   };
   struct Run {
     int start = 0, last = -1;  // the run going on and the last row of the label in it (-1: none yet)
     int top = -1, length = 0;  // the longest run so far
   };
 
-  void segment(int c, Column& column, int last) {
-    const int s = column.label;
+  // The segment of label s from column.first to `last` in column c.
+  void segment(int c, Column& column, int last, int s) {
     // s == 0 (no reading) takes the same steps: below_[0] and above_[0] are empty, so it sets no bit, and
     // its run is slot 0's, which is never reported (no branch on the data).
     const int first = column.first;
