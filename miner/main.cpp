@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
         ("shard", po::value(&o.shard)->default_value(o.shard),
          "mine slice i of n (1-based): of the strided frames k = index / stride, those with k % n == i - 1; "
          "e.g. --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
-        ("threads", po::value(&o.mine.threads)->default_value(0), "worker threads (0: one per core)")
+        ("threads", po::value(&o.mine.threads)->default_value(0), "threads analysing frames, this one among them (0: one per core)")
         ("sync-every", po::value(&o.mine.sync_every_frames)->default_value(o.mine.sync_every_frames),
          "flush to disk once per N frames (group commit; a kill or power cut loses at most the frames since "
          "the last flush, which a rerun mines again; 1: after every frame)")

@@ -1,8 +1,11 @@
 // The library's one ordered thread pool (core/ordered_pool.hpp) and thread-count rule: results in claim
-// order whatever the thread count, bounded look-ahead, early stop, errors passed on.
+// order whatever the thread count, bounded look-ahead, the calling thread working too, early stop, errors
+// passed on.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <mutex>
+#include <set>
 #include <cstdint>
 #include <stdexcept>
 #include <thread>
@@ -71,6 +74,34 @@ TEST(OrderedPool, ResultsComeInClaimOrderWithBoundedLookAhead) {
       EXPECT_LE(most_outstanding, std::max<std::size_t>(ahead, static_cast<std::size_t>(threads)));
       EXPECT_LE(most_running.load(), threads);
     }
+  }
+}
+
+// `threads` threads work in all, the calling thread one of them (it works while the next result is not
+// ready), so no extra thread competes with the workers for the cores.
+TEST(OrderedPool, TheCallingThreadIsOneOfTheThreads) {
+  for (int threads : {2, 3}) {
+    std::mutex mutex;
+    std::set<std::thread::id> working;
+    std::size_t next = 0, consumed = 0;
+    ordered_map<std::size_t>(
+        threads, 16,
+        [&](std::size_t& item) {
+          if (next >= 200) return false;
+          item = next++;
+          return true;
+        },
+        [&](std::size_t& item) {
+          {
+            std::lock_guard<std::mutex> lock(mutex);
+            working.insert(std::this_thread::get_id());
+          }
+          return busy(item);
+        },
+        [&](std::uint64_t) { return ++consumed > 0; });
+    EXPECT_EQ(consumed, 200u);
+    EXPECT_LE(working.size(), static_cast<std::size_t>(threads));
+    EXPECT_EQ(working.count(std::this_thread::get_id()), 1u) << threads << " threads";
   }
 }
 

@@ -114,7 +114,7 @@ std::string perf_markdown(const PerfResults& r) {
     << r.candidates << " candidates; RDSF is only the features the model reads, see docs/features.md, with "
     << "scores identical to the full vector's); the 1-thread line is the wall time of `PeoplePipeline::process`. The "
     << r.threads << "-thread lines analyse frames (segmentation, candidates, RDSF, scores, colour histograms) on "
-    << r.threads << " worker threads and track in frame order on the calling thread; their person ids are "
+    << r.threads << " threads (the calling thread one of them) and track in frame order on the calling thread; their person ids are "
     << (r.parallel_identical ? "identical to" : "**different from**") << " the 1-thread run's. "
     << "Showing (drawing) is not included. Both multi-thread lines run the library's parallel pipeline "
     << "(`run_in_frame_order`, include/rdsf/pipeline/parallel_pipeline.hpp), the code `rdsf-detect --threads` runs.\n\n";

@@ -16,9 +16,9 @@ int main(int argc, char** argv) {
     namespace po = rdsf::cli::po;
     rdsf::perf::PerfOptions o;
     double peer_budget_s = -1;
-    // Real frames whose PNG reading is timed: ../shared/realdata/people beside the source tree when present.
-    std::string real_frames = (std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/people").string();
-    if (!std::filesystem::is_directory(real_frames)) real_frames = "none";
+    // Real frames whose PNG reading is timed: "auto" is ../shared/realdata/people beside the source tree
+    // when present (else none).
+    std::string real_frames = "auto";
     po::options_description options("rdsf-perf-report");
     options.add_options()
         ("out", po::value(&o.out)->default_value(o.out), "Markdown report to write")
@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
         ("opencv-rounds", po::value(&o.opencv_rounds), "OpenCV timed at A and B rounds: A,B (1,3, quick 1,2; 0,0 skips)")
         ("peer-budget", po::value(&peer_budget_s), "seconds of training per trainer side by side (20, quick 1; 0 skips)")
         ("real-frames", po::value(&real_frames)->default_value(real_frames),
-         "folder of real NAME.depth.png + NAME.rgb.png frames whose PNG reading is timed too; none skips");
+         "folder of real NAME.depth.png + NAME.rgb.png frames whose PNG reading is timed too; auto: "
+         "../shared/realdata/people beside the source tree when present; none skips");
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-perf-report", "[--out FILE.md] [--force] [--quick]",
@@ -52,6 +53,10 @@ int main(int argc, char** argv) {
     }
     const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
     // Issue 17: the machine's limits beside the figures, and the trainers side by side.
+    if (real_frames == "auto") {
+      const auto beside = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/people";
+      real_frames = std::filesystem::is_directory(beside) ? beside.string() : "none";
+    }
     if (real_frames != "none" && !std::filesystem::is_directory(real_frames)) {
       throw rdsf::Error(real_frames + ": no such folder (--real-frames; none skips the real frames)");
     }

@@ -30,47 +30,56 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
     changed.notify_all();
   };
 
+  // Claims the next item and works it, on whichever thread calls it: with the lock held and an item
+  // claimable (!claiming, claimed < consumed + ahead, !stop, !end); returns with the lock held, false when
+  // there was nothing more to claim or the item failed.
+  auto take_one = [&](std::unique_lock<std::mutex>& lock) {
+    const std::size_t seq = claimed;
+    const std::size_t slot = seq % ahead;  // free: its previous item was consumed
+    claiming = true;
+    lock.unlock();
+    bool got = false;
+    std::exception_ptr error;
+    try {
+      got = claim(slot);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    lock.lock();
+    claiming = false;
+    changed.notify_all();
+    if (error) {
+      fail_locked(error, seq);
+      return false;
+    }
+    if (!got) {
+      end = true;
+      changed.notify_all();
+      return false;
+    }
+    ++claimed;
+    lock.unlock();
+    try {
+      work(slot);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    lock.lock();
+    if (error) {
+      fail_locked(error, seq);
+      return false;
+    }
+    done[slot] = 1;
+    changed.notify_all();
+    return true;
+  };
+  const auto claimable = [&] { return !stop && !end && !claiming && claimed < consumed + ahead; };
+
   auto worker = [&] {
     std::unique_lock<std::mutex> lock(mutex);
     while (true) {
-      changed.wait(lock, [&] { return stop || end || (!claiming && claimed < consumed + ahead); });
-      if (stop || end) return;
-      const std::size_t seq = claimed;
-      const std::size_t slot = seq % ahead;  // free: its previous item was consumed
-      claiming = true;
-      lock.unlock();
-      bool got = false;
-      std::exception_ptr error;
-      try {
-        got = claim(slot);
-      } catch (...) {
-        error = std::current_exception();
-      }
-      lock.lock();
-      claiming = false;
-      changed.notify_all();
-      if (error) {
-        fail_locked(error, seq);
-        return;
-      }
-      if (!got) {
-        end = true;
-        return;
-      }
-      ++claimed;
-      lock.unlock();
-      try {
-        work(slot);
-      } catch (...) {
-        error = std::current_exception();
-      }
-      lock.lock();
-      if (error) {
-        fail_locked(error, seq);
-        return;
-      }
-      done[slot] = 1;
-      changed.notify_all();
+      changed.wait(lock, [&] { return stop || end || claimable(); });
+      if (stop || end || !take_one(lock)) return;
     }
   };
 
@@ -78,13 +87,21 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(threads));
   try {
-    for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
     for (std::size_t seq = 0;; ++seq) {
       const std::size_t slot = seq % ahead;
       {
         std::unique_lock<std::mutex> lock(mutex);
-        // Items before a failure are all claimed and finish (their workers complete them).
-        changed.wait(lock, [&] { return done[slot] || (failure && failure_seq <= seq) || (end && seq == claimed); });
+        // Items before a failure are all claimed and finish (their workers complete them). While the next
+        // result is not ready the calling thread works an item itself (it is one of the `threads`).
+        const auto ready = [&] { return done[slot] || (failure && failure_seq <= seq) || (end && seq == claimed); };
+        while (!ready()) {
+          if (claimable()) {
+            take_one(lock);
+          } else {
+            changed.wait(lock);
+          }
+        }
         if (!done[slot]) {
           if (failure && failure_seq <= seq) met = failure;
           break;

@@ -4,7 +4,10 @@
 //                             (never two at once; not under the pool's lock, so a claim that waits for a
 //                             camera does not hold up the rest): keep it cheap (take an index or a path;
 //                             reading a sequential file or a device here is fine, it is what they allow).
-//   work(item)      -> result the heavy part, on `threads` worker threads at once, any item on any worker.
+//   work(item)      -> result the heavy part, on `threads` threads at once, any item on any of them: the
+//                             calling thread and threads - 1 workers (the calling thread works an item
+//                             whenever the next result to consume is not ready, so `threads` threads keep
+//                             `threads` cores busy, with no extra thread waking up to consume).
 //   consume(result) -> bool   on the calling thread, results in claim order, one at a time; false stops.
 // Invariants:
 //   - consume sees exactly the sequence of `while (claim(item)) if (!consume(work(item))) break;`, so when

@@ -1,6 +1,6 @@
 #pragma once
-// The whole system over many frames, analysed on N worker threads and tracked in frame order:
-//   frames -> PeoplePipeline::analyse on workers 1..N -> PeoplePipeline::track in frame order -> on_frame
+// The whole system over many frames, analysed on N threads and tracked in frame order:
+//   frames -> PeoplePipeline::analyse on threads 1..N -> PeoplePipeline::track in frame order -> on_frame
 // built on the library's one ordered thread pool (core/ordered_pool.hpp). Tracking and on_frame run on the
 // calling thread, frame after frame, so the results are bit for bit those of PeoplePipeline::process called
 // frame after frame, whatever the thread count (threads 1 runs exactly that loop, without threads).
