@@ -40,6 +40,13 @@ std::string ms(double v) {
 std::string times(double ratio) { return num(ratio, ratio < 10 ? 1 : 0) + "x"; }
 std::string yes_no(bool met) { return met ? "**yes**" : "**no**"; }
 
+// " (median of N passes; slowest-fastest fps)" for a whole-system line, nothing for one pass.
+std::string pass_range(const PerfResults& r, double fastest_s, double slowest_s) {
+  if (r.whole_passes <= 1 || fastest_s <= 0 || slowest_s <= 0) return "";
+  return " (median of " + std::to_string(r.whole_passes) + " passes; " + num(r.frames / slowest_s, 0) + "-" +
+         num(r.frames / fastest_s, 0) + ")";
+}
+
 struct Derived {
   double frames, candidates_per_frame, seg_ms, cand_per_candidate_ms, features_per_candidate_ms,
       classifier_per_candidate_ms, feat_cls_per_candidate_ms, tracking_ms, one_thread_ms, one_thread_fps,
@@ -103,16 +110,19 @@ std::string perf_markdown(const PerfResults& r) {
     << " faster |\n"
     << "| Tracking per frame | " << ms(d.tracking_ms) << " | - | - |\n"
     << "| Whole system, 1 thread | " << ms(d.one_thread_ms) << " per frame = " << num(d.one_thread_fps, 1)
-    << " fps | " << num(kThesisFps, 1) << " fps | " << times(d.one_thread_fps / kThesisFps) << " |\n"
-    << "| Whole system, " << r.threads << " threads (frames in memory) | " << num(d.parallel_fps, 1) << " fps | "
-    << num(kThesisFps, 1) << " fps | " << times(d.parallel_fps / kThesisFps) << " |\n"
+    << " fps" << pass_range(r, r.pipeline_wall_min_s, r.pipeline_wall_max_s) << " | " << num(kThesisFps, 1) << " fps | "
+    << times(d.one_thread_fps / kThesisFps) << " |\n"
+    << "| Whole system, " << r.threads << " threads (frames in memory) | " << num(d.parallel_fps, 1) << " fps"
+    << pass_range(r, r.parallel_wall_min_s, r.parallel_wall_max_s) << " | " << num(kThesisFps, 1) << " fps | "
+    << times(d.parallel_fps / kThesisFps) << " |\n"
     << "| PNG reading per frame (depth and colour), 1 thread | " << ms(r.png_read_ms_per_frame) << " = "
     << num(d.png_fps, 1) << " fps | - | - |\n"
     << "| Whole system from PNG files, " << r.threads << " threads | " << num(d.files_fps, 1) << " fps | "
     << num(kThesisFps, 1) << " fps | " << times(d.files_fps / kThesisFps) << " |\n\n"
     << "Stage times are PeoplePipeline's own (summed over all frames, divided by frames or by the "
     << r.candidates << " candidates; RDSF is only the features the model reads, see docs/features.md, with "
-    << "scores identical to the full vector's); the 1-thread line is the wall time of `PeoplePipeline::process`. The "
+    << "scores identical to the full vector's); the 1-thread line is the wall time of `PeoplePipeline::process`; both whole-system lines "
+    << "give the median of their passes over the frames (a fresh pipeline each), the stage times are the median 1-thread pass's. The "
     << r.threads << "-thread lines analyse frames (segmentation, candidates, RDSF, scores, colour histograms) on "
     << r.threads << " threads (the calling thread one of them) and track in frame order on the calling thread; their person ids are "
     << (r.parallel_identical ? "identical to" : "**different from**") << " the 1-thread run's. "

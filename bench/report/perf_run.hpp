@@ -47,13 +47,17 @@ struct PerfResults {
   int train_frames = 0, train_positives = 0, train_negatives = 0, model_rounds = 0;
   double model_validation_auc = 0, model_train_s = 0;
   // Whole system, one thread (PeoplePipeline)
-  PipelineTimes stage_ms;          ///< sums over all frames
-  double pipeline_wall_s = 0;      ///< wall time of all process() calls
+  // Each whole-system line runs `whole_passes` times over the frames (a fresh pipeline each time): the
+  // median pass is reported, with the fastest and slowest beside it.
+  int whole_passes = 1;
+  PipelineTimes stage_ms;          ///< sums over all frames (the median pass)
+  double pipeline_wall_s = 0;      ///< wall time of all process() calls (the median pass)
+  double pipeline_wall_min_s = 0, pipeline_wall_max_s = 0;
   long long candidates = 0, detections = 0;
   int people_tracked = 0;
   // Whole system, frames analysed on `threads` threads, tracking in frame order
   int threads = 2;
-  double parallel_wall_s = 0;
+  double parallel_wall_s = 0, parallel_wall_min_s = 0, parallel_wall_max_s = 0;  ///< median, fastest, slowest pass
   bool parallel_identical = false;  ///< same person ids as the one-thread run
   // Live mode (LivePipeline, `threads` workers): frames in memory pushed at a camera's rate
   struct LiveRun {
