@@ -5,9 +5,9 @@
 // installed), each trained until a time budget or a round limit, with the held-out AUC after every round.
 // OpenCV's cv::ml::Boost is the report's own training comparison (same matrix, same rows), shown beside.
 // The native rounds are also set against the streaming time of their bins at the bandwidth measured in
-// the same run, and against the scatter-add floor: one weighted histogram update per sample and feature
-// (h[bin] += w, four tables so that equal bins in a row do not wait for each other, no class split and no
-// fixed order), the least work a histogram trainer does per round, timed on the same bins and threads.
+// the same run, and against a plain weighted scatter-add over the same bins on the same threads (h[bin] +=
+// w per sample and feature, four tables so that equal bins in a row wait less for each other, no class
+// split and no fixed order): the update rate a round's table updates run at, which streaming does not bound.
 #include <string>
 #include <vector>
 
@@ -39,7 +39,7 @@ struct PeerCurve {
 struct PeerResults {
   int threads = 2, train_rows = 0, held_out_rows = 0, features = 0;
   double bins_mb = 0, binning_s = 0, read_gbps_n = 0;
-  double scatter_s = 0;  ///< the scatter-add floor over every bin once (best of 3)
+  double scatter_s = 0;  ///< the plain scatter-add over every bin once (best of 3)
   std::vector<PeerCurve> curves;
   PeerOptions options;
   std::string load_start, load_end;
