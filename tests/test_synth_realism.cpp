@@ -6,6 +6,8 @@
 //   depth percentiles       p5 0.43-2.35 m, median 0.88-4.35 m, p95 1.46-8.08 m
 //   edge-hole fraction      per frame 0.15-0.73 (mean 0.58): the share of depth edges along rows
 //                           (jump > 300 mm and > 10%) that pass through missing readings
+//   hole runs along rows    mean 5.7 per row, 0.09 of them 1 px (printed, not checked: the synthetic
+//                           frames have 18.4, 0.26 specks; docs/rdsf-synth.md)
 // and what the detector core (default DetectorParams) makes of them: the candidates per frame and the
 // distribution of their sizes, measured on the 46 frames of ../shared/realdata/people (49 people):
 //   candidates per frame    mean 5.72, quartiles 4..7
@@ -38,7 +40,7 @@ constexpr double median_mean_min_mm = 880, median_mean_max_mm = 4350;
 constexpr double p95_max_mm = 8080;
 
 struct Summary {
-  double valid = 0, edge_holes = 0, median_mm = 0, p95_max_mm = 0;
+  double valid = 0, edge_holes = 0, median_mm = 0, p95_max_mm = 0, hole_runs = 0, specks = 0;
   int frames = 0;
 };
 
@@ -49,19 +51,24 @@ Summary summarise(const std::vector<DepthStatistics>& stats) {
     s.edge_holes += f.edge_hole_fraction;
     s.median_mm += f.p50_mm;
     s.p95_max_mm = std::max(s.p95_max_mm, f.p95_mm);
+    s.hole_runs += f.hole_runs_per_row;
+    s.specks += f.single_pixel_hole_share;
   }
   s.frames = static_cast<int>(stats.size());
   if (s.frames > 0) {
     s.valid /= s.frames;
     s.edge_holes /= s.frames;
     s.median_mm /= s.frames;
+    s.hole_runs /= s.frames;
+    s.specks /= s.frames;
   }
   return s;
 }
 
 void print(const char* what, const Summary& s) {
-  std::printf("%s: %d frames, valid %.3f, edge holes %.3f, mean median %.0f mm, largest p95 %.0f mm\n", what,
-              s.frames, s.valid, s.edge_holes, s.median_mm, s.p95_max_mm);
+  std::printf("%s: %d frames, valid %.3f, edge holes %.3f, mean median %.0f mm, largest p95 %.0f mm, "
+              "hole runs per row %.1f (%.2f of them 1 px)\n",
+              what, s.frames, s.valid, s.edge_holes, s.median_mm, s.p95_max_mm, s.hole_runs, s.specks);
 }
 
 TEST(SynthRealism, DepthStatisticsMatchRealKinectFrames) {
@@ -125,6 +132,20 @@ TEST(SynthRealism, DepthStatisticsOfAKnownImage) {
   EXPECT_DOUBLE_EQ(s.valid_fraction, 190.0 / 200.0);
   EXPECT_EQ(s.p50_mm, 1000);  // 95 readings of 3000 and 100 of 1000 -> median 1000
   EXPECT_EQ(s.p95_mm, 3000);
+}
+
+// Runs of missing readings along rows, and the specks among them.
+TEST(SynthRealism, HoleRunsOfAKnownImage) {
+  cv::Mat1w depth(4, 10, static_cast<std::uint16_t>(2000));
+  depth(0, 3) = 0;                                // a speck
+  depth(cv::Rect(4, 1, 3, 1)) = 0;                // a hole of 3 px
+  depth(2, 0) = 0;                                // specks at both ends of a row
+  depth(2, 9) = 0;
+  depth.row(3) = 0;                               // a row without readings: one run
+  const DepthStatistics s = rdsf::synth::depth_statistics(depth);
+  EXPECT_DOUBLE_EQ(s.hole_runs_per_row, 5.0 / 4.0);
+  EXPECT_DOUBLE_EQ(s.single_pixel_hole_share, 3.0 / 5.0);
+  EXPECT_DOUBLE_EQ(rdsf::synth::depth_statistics(cv::Mat1w(3, 3, static_cast<std::uint16_t>(900))).single_pixel_hole_share, 0.0);
 }
 
 // ---- candidates of the detector core ----

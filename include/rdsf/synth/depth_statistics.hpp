@@ -1,7 +1,8 @@
 #pragma once
 // Summary statistics of a depth image, used to compare synthetic frames with real Kinect frames:
-// how much of the image has a reading, the spread of the readings, and how often a depth edge passes
-// through missing readings (the Kinect's shadow beside every near object).
+// how much of the image has a reading, the spread of the readings, how often a depth edge passes
+// through missing readings (the Kinect's shadow beside every near object), and how the missing readings
+// lie: few wide holes (shadows, dark objects) or many specks.
 #include <opencv2/core.hpp>
 
 namespace rdsf::synth {
@@ -16,6 +17,10 @@ struct DepthStatistics {
   /// depths differ by more than edge_jump_mm and by more than 10%. 0 when there are no edges.
   double edge_hole_fraction = 0;
   long long edges = 0;  ///< the number of depth edges counted
+  /// Runs of missing readings along rows (a run: consecutive zeros of one row), per image row.
+  double hole_runs_per_row = 0;
+  /// Runs of missing readings one pixel long / all runs (0 when there are none): specks.
+  double single_pixel_hole_share = 0;
 };
 
 /// The statistics of `depth_mm` (CV_16UC1, millimetres, 0 = no reading).
