@@ -20,6 +20,7 @@
 #include "rdsf/features/rdsf_extractor.hpp"
 #include "rdsf/frame/depth_png.hpp"
 #include "rdsf/frame/png_decoder.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
@@ -60,6 +61,26 @@ double best_cpu_of(int passes, const Work& work) {
     best = std::min(best, thread_cpu_seconds() - t);
   }
   return best;
+}
+
+// Reading PNG files by the direct path and by cv::imdecode, the two alternated twice: each figure is the
+// best of `passes` passes over all of `paths` (processor time), in ms per file.
+void time_png_reading(const std::vector<std::string>& depth, const std::vector<std::string>& colour, int passes,
+                      double& depth_direct_ms, double& depth_imdecode_ms, double& colour_direct_ms,
+                      double& colour_imdecode_ms) {
+  const PngDecodeOptions direct{true}, reference{false};
+  const auto best = [&](double& into, const std::vector<std::string>& paths, const PngDecodeOptions& how) {
+    const double ms = 1e3 * best_cpu_of(passes, [&] {
+      for (const std::string& path : paths) read_png_file(path, how);
+    }) / static_cast<double>(paths.size());
+    into = into == 0 ? ms : std::min(into, ms);
+  };
+  for (int round = 0; round < 2; ++round) {
+    best(depth_direct_ms, depth, direct);
+    best(depth_imdecode_ms, depth, reference);
+    best(colour_direct_ms, colour, direct);
+    best(colour_imdecode_ms, colour, reference);
+  }
 }
 
 }  // namespace
@@ -129,46 +150,28 @@ SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
   write_png_atomically(depth_png, shown.depth_mm);
   write_png_atomically(colour_png, shown.bgr);
   const int reps = o.quick ? 5 : 30;
-  const PngDecodeOptions direct{true}, reference{false};
-  for (int round = 0; round < 2; ++round) {  // alternated, best of each
-    const auto best = [&](double& into, const std::string& path, const PngDecodeOptions& how) {
-      const double ms = 1e3 * best_cpu_of(reps, [&] { read_png_file(path, how); });
-      into = into == 0 ? ms : std::min(into, ms);
-    };
-    best(s.png_depth_direct_ms, depth_png, direct);
-    best(s.png_depth_imdecode_ms, depth_png, reference);
-    best(s.png_colour_direct_ms, colour_png, direct);
-    best(s.png_colour_imdecode_ms, colour_png, reference);
-  }
+  time_png_reading({depth_png}, {colour_png}, reps, s.png_depth_direct_ms, s.png_depth_imdecode_ms,
+                   s.png_colour_direct_ms, s.png_colour_imdecode_ms);
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
   if (!o.real_frames_dir.empty()) {
-    std::vector<std::pair<std::string, std::string>> pairs;  // depth and colour PNG of each real frame
-    for (const auto& entry : std::filesystem::directory_iterator(o.real_frames_dir)) {
-      const std::string name = entry.path().filename().string();
-      const std::string suffix = ".depth.png";
-      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-      const auto colour = entry.path().parent_path() / (name.substr(0, name.size() - suffix.size()) + ".rgb.png");
-      if (std::filesystem::exists(colour)) pairs.emplace_back(entry.path().string(), colour.string());
+    // The frames of the folder as a frame source delivers them, those with a colour image.
+    std::vector<std::string> depth, colour;
+    const PngFolderSource folder(o.real_frames_dir, CameraModel::kinect_v1());
+    for (const std::string& path : folder.depth_paths()) {
+      const std::string rgb = PngFolderSource::colour_path(path);
+      if (rgb.empty() || !std::filesystem::exists(rgb, ec)) continue;
+      depth.push_back(path);
+      colour.push_back(rgb);
+      if (o.quick && depth.size() == 4) break;
     }
-    std::sort(pairs.begin(), pairs.end());
-    if (o.quick && pairs.size() > 4) pairs.resize(4);
     s.real_frames_dir = o.real_frames_dir;
-    s.real_frames = static_cast<int>(pairs.size());
-    say("PNG reading: direct path and cv::imdecode on the " + std::to_string(pairs.size()) + " real frames of " +
+    s.real_frames = static_cast<int>(depth.size());
+    say("PNG reading: direct path and cv::imdecode on the " + std::to_string(depth.size()) + " real frames of " +
         o.real_frames_dir);
-    const int passes = o.quick ? 1 : 3;
-    for (int round = 0; round < 2 && !pairs.empty(); ++round) {  // alternated, best pass of each
-      const auto best = [&](double& into, bool colour, const PngDecodeOptions& how) {
-        const double ms = 1e3 * best_cpu_of(passes, [&] {
-          for (const auto& [depth, rgb] : pairs) read_png_file(colour ? rgb : depth, how);
-        }) / static_cast<double>(pairs.size());
-        into = into == 0 ? ms : std::min(into, ms);
-      };
-      best(s.real_depth_direct_ms, false, direct);
-      best(s.real_depth_imdecode_ms, false, reference);
-      best(s.real_colour_direct_ms, true, direct);
-      best(s.real_colour_imdecode_ms, true, reference);
+    if (!depth.empty()) {
+      time_png_reading(depth, colour, o.quick ? 1 : 3, s.real_depth_direct_ms, s.real_depth_imdecode_ms,
+                       s.real_colour_direct_ms, s.real_colour_imdecode_ms);
     }
   }
 

@@ -84,17 +84,19 @@ std::string PngFolderSource::frame_name(const std::string& depth_path) {
   return name;
 }
 
+std::string PngFolderSource::colour_path(const std::string& depth_path) {
+  if (!ends_with(depth_path, kDepthSuffix)) return {};
+  return depth_path.substr(0, depth_path.size() - kDepthSuffix.size()) + kColourSuffix;
+}
+
 bool PngFolderSource::next(DepthFrame& frame) {
   if (next_ >= depth_paths_.size()) return false;
   const std::string& depth_path = depth_paths_[next_];
   frame.depth_mm = read_depth_png(depth_path);
   frame.bgr.release();
-  if (ends_with(depth_path, kDepthSuffix)) {
-    const std::string colour_path =
-        depth_path.substr(0, depth_path.size() - kDepthSuffix.size()) + kColourSuffix;
-    std::error_code ec;
-    if (fs::exists(colour_path, ec)) frame.bgr = read_colour_png(colour_path, frame.depth_mm.size());
-  }
+  const std::string colour = colour_path(depth_path);
+  std::error_code ec;
+  if (!colour.empty() && fs::exists(colour, ec)) frame.bgr = read_colour_png(colour, frame.depth_mm.size());
   frame.index = static_cast<std::int64_t>(next_);
   frame.name = frame_name(depth_path);
   frame.timestamp_us = frame.index * kFrameIntervalUs;  // image folders carry no clock: 30 frames per second

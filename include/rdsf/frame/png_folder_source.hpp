@@ -24,6 +24,9 @@ class PngFolderSource : public FrameSource {
 
   /// "lab_alberto1" for ".../lab_alberto1.depth.png".
   static std::string frame_name(const std::string& depth_path);
+  /// The colour image that goes with a depth image: ".../NAME.rgb.png" for ".../NAME.depth.png" (it may not
+  /// exist); empty for a path not named NAME.depth.png.
+  static std::string colour_path(const std::string& depth_path);
 
  private:
   std::string spec_;
