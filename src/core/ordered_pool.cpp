@@ -47,16 +47,13 @@ void run_ordered_pool(int threads, std::size_t ahead, const std::function<bool(s
     }
     lock.lock();
     claiming = false;
-    changed.notify_all();
     if (error) {
-      fail_locked(error, seq);
+      fail_locked(error, seq);  // notifies
       return false;
     }
-    if (!got) {
-      end = true;
-      changed.notify_all();
-      return false;
-    }
+    end = !got;
+    changed.notify_all();
+    if (end) return false;
     ++claimed;
     lock.unlock();
     try {

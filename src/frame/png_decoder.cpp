@@ -262,8 +262,7 @@ void unpaeth_two_rows(unsigned char* upper, unsigned char* lower, const unsigned
       store_pixel<Bpp>(upper + p * Bpp, out);
       store_pixel<Bpp>(lower + (p - 1) * Bpp, out >> 32);
     }
-    // The lower row's last pixel, and bytes past whole pixels (none in a PNG row), one at a time.
-    unpaeth_bytes<Bpp>(upper, prior, pixels * Bpp, n);
+    // The lower row's last pixel, one byte at a time (a PNG row is whole pixels: n = pixels * Bpp).
     unpaeth_bytes<Bpp>(lower, upper, (pixels - 1) * Bpp, n);
     return;
   }
