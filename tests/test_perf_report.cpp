@@ -3,6 +3,7 @@
 // report measures, not what the test checks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -154,6 +155,22 @@ TEST(PerfReport, RejectsBadOpenCvRounds) {
   EXPECT_EQ(bad.exit_code, 2);  // a wrong command line
   EXPECT_NE(bad.err.find("--opencv-rounds"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "other.md"));
+}
+
+// A --real-frames folder that is missing or holds no frames is refused at once (not after the run), one line.
+TEST(PerfReport, RefusesRealFramesThatAreNoFramesBeforeMeasuring) {
+  if (!std::filesystem::exists(perf_program())) GTEST_SKIP() << perf_program() << " is not built";
+  TempDir dir("rdsf-perf-report-test");
+  std::filesystem::create_directories(std::string(dir / "no-frames"));
+  for (const auto& [folder, says] : {std::pair{dir / "missing", "no such folder"},
+                                     std::pair{dir / "no-frames", "folder holds no *.depth.png frames"}}) {
+    const rdsf::test::RunResult bad =
+        run(quote(perf_program()) + " --quick --real-frames " + quote(folder) + " --out " + quote(dir / "r.md"));
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find(std::string(folder) + ": " + says), std::string::npos) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << "measured before refusing: " << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "r.md"));
+  }
 }
 
 }  // namespace

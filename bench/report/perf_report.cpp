@@ -7,6 +7,7 @@
 #include "cli/cli.hpp"
 #include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 #include "peer_training.hpp"
 #include "perf_run.hpp"
 #include "speed_limits.hpp"
@@ -51,15 +52,18 @@ int main(int argc, char** argv) {
     if (!o.force && std::filesystem::exists(o.out)) {  // refused before measuring anything
       throw rdsf::Error(o.out + ": already exists (use --force to replace it)");
     }
-    const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
-    // Issue 17: the machine's limits beside the figures, and the trainers side by side.
     if (real_frames == "auto") {
       const auto beside = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/people";
       real_frames = std::filesystem::is_directory(beside) ? beside.string() : "none";
     }
-    if (real_frames != "none" && !std::filesystem::is_directory(real_frames)) {
-      throw rdsf::Error(real_frames + ": no such folder (--real-frames; none skips the real frames)");
+    if (real_frames != "none") {  // refused before measuring anything, too
+      if (!std::filesystem::is_directory(real_frames)) {
+        throw rdsf::Error(real_frames + ": no such folder (--real-frames; none skips the real frames)");
+      }
+      rdsf::PngFolderSource(real_frames, rdsf::CameraModel::kinect_v1());  // throws when it holds no frames
     }
+    const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
+    // Issue 17: the machine's limits beside the figures, and the trainers side by side.
     rdsf::perf::SpeedLimitOptions limit_options;
     limit_options.quick = o.quick;
     limit_options.threads = o.threads;
