@@ -325,6 +325,34 @@ TEST(DurableIo, FaultAtTheNthCallFailsWithTheGivenCauseAndNamesTheFile) {
   EXPECT_EQ(read_text(path), "two\n");
 }
 
+TEST(DurableIo, NewFileUnsyncedNeverOverwritesAndLeavesNothingWhenAWriteFails) {
+  prefer_ram_disk();
+  test::TempDir dir;
+  const std::string path = dir / "crop.png";
+  // Calls: open, write, close; no temporary name, no rename, no sync.
+  io::set_fault({});
+  write_new_file_unsynced(path, std::string("first"));
+  EXPECT_EQ(io::calls_made(), 3);
+  EXPECT_EQ(read_text(path), "first");
+  try {
+    write_new_file_unsynced(path, std::string("second"));
+    ADD_FAILURE() << "an existing file was overwritten";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": already exists"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_text(path), "first");  // untouched
+  // A failing write or close removes the new file; a failing open never created it. (The fault passes, as
+  // an EIO does: under a fault that fails every later call the removal fails too, and the sample set's
+  // reopening removes the crop without a row.)
+  for (std::int64_t n = 1; n <= 3; ++n) {
+    const std::string other = dir / ("other" + std::to_string(n) + ".png");
+    io::set_fault({n, EIO, false, true});
+    EXPECT_THROW(write_new_file_unsynced(other, std::string(100, 'x')), Error) << n;
+    io::set_fault({});
+    EXPECT_FALSE(fs::exists(other)) << "call " << n << " failed and left " << other;
+  }
+}
+
 TEST(DurableIo, PowerCutModelLosesWhatWasNotSynced) {
   prefer_ram_disk();
   test::TempDir dir;

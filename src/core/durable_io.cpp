@@ -369,13 +369,22 @@ void write_synced(const std::string& path, std::string_view bytes, Sync sync) {
   }
 }
 
-void write_file_unsynced(const std::string& path, std::string_view bytes) {
-  const std::string temporary = path + ".tmp";
-  write_synced(temporary, bytes, Sync::later);
-  if (io::rename(temporary, path) != 0) {
+void write_new_file_unsynced(const std::string& path, std::string_view bytes) {
+  const int fd = io::open(path, O_WRONLY | O_CREAT | O_EXCL);
+  if (fd < 0) {
+    fail(path, errno == EEXIST ? std::string("already exists (never overwritten)")
+                               : "cannot be created: " + errno_text(errno));
+  }
+  try {
+    write_all(fd, bytes.data(), bytes.size(), path, "write failed");
+  } catch (...) {
+    abandon(fd, path);
+    throw;
+  }
+  if (io::close(fd) != 0) {
     const int error = errno;
-    io::unlink(temporary);
-    fail(path, "cannot rename " + temporary + " into place: " + errno_text(error));
+    io::unlink(path);
+    fail(path, "write failed on close: " + errno_text(error));
   }
 }
 

@@ -126,7 +126,7 @@ SampleSetWriter SampleSetWriter::open_existing(const std::string& dir) {
 }
 
 void SampleSetWriter::write_crop_unsynced(const std::string& path, const std::vector<unsigned char>& bytes) {
-  write_file_unsynced(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  write_new_file_unsynced(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   state_->unsynced_crops.push_back(path);
 }
 
@@ -288,7 +288,8 @@ SampleRecord SampleSetWriter::append_encoded(SampleRecord record, const EncodedC
       write_file_durably(stem + ".depth.png", crop.depth_png);
       if (record.has_colour) write_file_durably(stem + ".rgb.png", crop.colour_png);
     } else {
-      // Batched (the miner): written and renamed now, synced by sync() before the rows are.
+      // Batched (the miner): written under their own names now (a crop without a row is removed at
+      // open), synced by sync() before the rows are.
       write_crop_unsynced(stem + ".depth.png", crop.depth_png);
       if (record.has_colour) write_crop_unsynced(stem + ".rgb.png", crop.colour_png);
     }

@@ -86,9 +86,13 @@ enum class Sync { now, later };
 /// Creates (or truncates) `path`, writes `bytes`, fdatasyncs (Sync::now) and closes it; removes it on
 /// failure. The name itself is not made durable (a temporary file: see write_file_durably).
 void write_synced(const std::string& path, std::string_view bytes, Sync sync = Sync::now);
-/// Writes "<path>.tmp" and renames it to `path`, syncing neither: the caller makes the file and its name
-/// durable later (sync_file or sync_file_system, then sync_folder). A reader never sees a partial file.
-void write_file_unsynced(const std::string& path, std::string_view bytes);
+/// Creates `path`, which must not exist (Error "already exists": nothing is overwritten), writes `bytes`
+/// and closes it, syncing neither: the caller makes the file and its name durable later (sync_file or
+/// sync_file_system, then sync_folder). No temporary name and no rename (half the cost of a small file on
+/// ext4): a failed write removes the file, but a killed process can leave it partial under its own name,
+/// so callers publish it only after it is complete (a sample set's row comes after its crops, and a crop
+/// without a row is removed when the set is opened).
+void write_new_file_unsynced(const std::string& path, std::string_view bytes);
 
 enum class Replace { allowed, never };
 /// Writes `bytes` to `path` durably (temporary "<path>.tmp", fdatasync, rename or link, folder fsync).
