@@ -48,6 +48,14 @@ std::string pass_range(const PerfResults& r, double fastest_s, double slowest_s)
          num(r.frames / fastest_s, 0) + ")";
 }
 
+// "<separator>median of N runs, slowest-fastest" for a mining line, nothing for one run.
+std::string mining_range(const PerfResults& r, double fastest_s, double slowest_s, const std::string& separator) {
+  if (r.mining_passes <= 1 || fastest_s <= 0 || slowest_s <= 0) return "";
+  const double frames = static_cast<double>(r.mined_frames);
+  return separator + "median of " + std::to_string(r.mining_passes) + " runs, " + num(frames / slowest_s, 1) + "-" +
+         num(frames / fastest_s, 1);
+}
+
 struct Derived {
   double frames, candidates_per_frame, seg_ms, cand_per_candidate_ms, features_per_candidate_ms,
       classifier_per_candidate_ms, feat_cls_per_candidate_ms, tracking_ms, one_thread_ms, one_thread_fps,
@@ -182,10 +190,16 @@ std::string perf_markdown(const PerfResults& r) {
   m << "## Mining and labelling\n\n| Measure | This run | Target |\n|---|---|---|\n"
     << "| Mining negatives, " << r.threads << " threads (PNG frames with colour) | "
     << num(d.mining_fps, 1) << " fps (" << r.mined_frames << " frames, " << r.mined_candidates << " candidates, "
-    << r.mined_kept << " kept) | " << num(kTargetMiningFps, 0) << " fps |\n"
+    << r.mined_kept << " kept" << mining_range(r, r.mining_wall_min_s, r.mining_wall_max_s, "; ") << ") | "
+    << num(kTargetMiningFps, 0) << " fps |\n"
     << "| ... the same into a set in memory (/dev/shm: no disk) | "
-    << (r.mining_memory_wall_s > 0 ? num(static_cast<double>(r.mined_frames) / r.mining_memory_wall_s, 1) + " fps"
-                                   : std::string("not measured (no /dev/shm)"))
+    << (r.mining_memory_wall_s > 0
+            ? num(static_cast<double>(r.mined_frames) / r.mining_memory_wall_s, 1) + " fps" +
+                  [&] {
+                    const std::string range = mining_range(r, r.mining_memory_wall_min_s, r.mining_memory_wall_max_s, " (");
+                    return range.empty() ? range : range + ")";
+                  }()
+            : std::string("not measured (no /dev/shm)"))
     << " | " << num(kTargetMiningFps, 0) << " fps |\n"
     << "| Labelling: answer to next candidate, mean | " << ms(r.label_mean_ms) << " | " << num(kTargetLabelMs, 0)
     << " ms |\n"

@@ -81,10 +81,15 @@ struct PerfResults {
   int native_rounds_to_opencv_auc = -1;  ///< first native round whose AUC >= OpenCV's after B rounds (-1: none)
   // Mining
   long long mined_frames = 0, mined_candidates = 0, mined_kept = 0;
+  /// Mining runs `mining_passes` times each way, alternated (disk, memory, disk, ...), each into a new set:
+  /// the median pass is reported with the fastest and slowest (one 0.5 s run moves by 10-20 % here).
+  int mining_passes = 1;
   double mining_wall_s = 0;  ///< into a set in the scratch folder (the disk a lab's sets are on)
+  double mining_wall_min_s = 0, mining_wall_max_s = 0;
   /// The same frames into a set in memory (/dev/shm, when it is a folder): the processor's share without
   /// the disk's file creation and flushes (0: not measured).
   double mining_memory_wall_s = 0;
+  double mining_memory_wall_min_s = 0, mining_memory_wall_max_s = 0;
   // Labelling
   int label_answers = 0, label_frame_waits = 0;
   double label_mean_ms = 0, label_p95_ms = 0, label_max_ms = 0;
