@@ -68,6 +68,10 @@ int main(int argc, char** argv) {
          "step of an 8-bit capture, MIN..MAX mm (1..60)")
         ("xtion", po::value(&p.sensor.xtion_share)->default_value(p.sensor.xtion_share, g(p.sensor.xtion_share)),
          "share of clips with Xtion-like noise: 1.3-2x stronger, half of it shared by neighbours (0..1)")
+        ("coherent-holes", po::value(&p.sensor.coherent_holes_px)->default_value(p.sensor.coherent_holes_px),
+         "block matching's coherence: holes of at most this many pixels on one surface are filled and runs "
+         "of at most this many readings between holes lost, along rows and columns (0..8; 0 = per-pixel "
+         "holes; 1 gives the real frames' share of 1-px holes, docs/rdsf-synth.md)")
         ("classic", po::bool_switch(&o.classic),
          "turn all of the variety above off: the generator before it (overrides these options)");
     options.add(variety);

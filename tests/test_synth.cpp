@@ -12,6 +12,8 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/core/stable_hash.hpp"
 #include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/synth/depth_statistics.hpp"
+#include "rdsf/synth/kinect_sensor.hpp"
 #include "rdsf/synth/people_planner.hpp"
 #include "rdsf/synth/person_model.hpp"
 #include "rdsf/synth/random.hpp"
@@ -255,6 +257,64 @@ TEST(SynthSensor, EightBitCapturesLieOnALinearGrid) {
 }
 
 // Everything a person wears or carries belongs to the person (so the truth box covers bags, boxes and
+
+// Block matching's coherence on a hand-built row and column: a short hole on one surface takes its ends'
+// readings, a hole across a depth edge or longer than the limit stays, and a short run of readings between
+// holes is lost.
+TEST(SynthSensor, CoherentHolesFillSpecksOnOneSurfaceOnly) {
+  using rdsf::synth::KinectSensor;
+  // Row: 2000 2000 _ 2010 | 2000 _ 3000 (an edge) | 2000 _ _ _ 2000 (3 px) | _ 1500 _ _ | 1500 ...
+  const std::vector<std::uint16_t> row = {2000, 2000, 0, 2010, 2000, 0, 3000, 3000, 0, 0, 0, 3000, 0, 1500,
+                                          0,    0,    1500, 1500, 1500, 1500};
+  cv::Mat1w depth(1, static_cast<int>(row.size()));
+  for (std::size_t i = 0; i < row.size(); ++i) depth(0, static_cast<int>(i)) = row[i];
+  cv::Mat1w one = depth.clone();
+  KinectSensor::make_holes_coherent(one, 1, 0.05);
+  EXPECT_EQ(one(0, 2), 2000) << "a 1-px hole on one surface takes the left end's reading";
+  EXPECT_EQ(one(0, 5), 0) << "a hole across a depth edge (2000 | 3000) stays";
+  EXPECT_EQ(one(0, 8) + one(0, 9) + one(0, 10), 0) << "a 3-px hole stays with a limit of 1";
+  EXPECT_EQ(one(0, 13), 0) << "a lone reading between holes is lost";
+  EXPECT_EQ(one(0, 16), 1500);
+  cv::Mat1w three = depth.clone();
+  KinectSensor::make_holes_coherent(three, 3, 0.05);
+  EXPECT_EQ(three(0, 8), 3000);
+  EXPECT_EQ(three(0, 10), 3000) << "with a limit of 3 the 3-px hole is filled from its ends";
+  EXPECT_EQ(three(0, 14), 1500) << "the 2-px hole between two 1500 readings is filled";
+  EXPECT_EQ(three(0, 12), 0) << "a hole across the edge 3000 | 1500 stays";
+  EXPECT_EQ(three(0, 13), 1500) << "a reading that joined a run by the filling stays";
+  // 0 changes nothing; a column is treated like a row.
+  cv::Mat1w zero = depth.clone();
+  KinectSensor::make_holes_coherent(zero, 0, 0.05);
+  EXPECT_EQ(cv::countNonZero(zero != depth), 0);
+  cv::Mat1w column = depth.t();
+  KinectSensor::make_holes_coherent(column, 1, 0.05);
+  EXPECT_EQ(cv::countNonZero(column.t() != one), 0);
+}
+
+// On whole frames it gives fewer, wider holes, like the real frames' (docs/rdsf-synth.md): the same seed
+// with 1 against 0.
+TEST(SynthSensor, CoherentHolesAreFewerAndWider) {
+  double runs[2] = {0, 0}, specks[2] = {0, 0};
+  for (int px : {0, 1}) {
+    SynthParams p = small_params(31);
+    p.width_px = 640;
+    p.height_px = 480;
+    p.frames = 8;
+    p.clip_frames = 2;
+    p.sensor.coherent_holes_px = px;
+    SynthSequence sequence(p);
+    for (int i = 0; i < p.frames; ++i) {
+      const rdsf::synth::DepthStatistics s = rdsf::synth::depth_statistics(sequence.frame(i).depth_mm);
+      runs[px] += s.hole_runs_per_row / p.frames;
+      specks[px] += s.single_pixel_hole_share / p.frames;
+    }
+  }
+  std::printf("[figures] hole runs per row %.1f -> %.1f, of them 1 px %.2f -> %.2f\n", runs[0], runs[1], specks[0],
+              specks[1]);
+  EXPECT_LT(runs[1], 0.85 * runs[0]);
+  EXPECT_LT(specks[1], 0.15);
+  EXPECT_GT(specks[0], 0.2);
+}
 // trays, as the real boxes from the middleware's user mask do), and carrying a box puts shapes in front.
 TEST(SynthPeople, CarriedThingsAndClothesBelongToThePerson) {
   using namespace rdsf::synth;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 
 #include "rdsf/synth/random.hpp"
 
@@ -38,6 +40,47 @@ SensorProfile KinectSensor::draw_profile(Rng& rng) const {
   }
   return profile;
 }
+
+namespace {
+
+// One line of `count` pixels starting at `first`, `step` apart (a row: step 1; a column: the row stride).
+// Holes of at most max_px pixels between two readings within jump_fraction of each other take the
+// nearer end's reading (the value of a capture, 8-bit steps included); then runs of at most max_px
+// readings between holes (or a hole and the image's end) are lost.
+void close_line(std::uint16_t* first, int count, std::ptrdiff_t step, int max_px, double jump_fraction) {
+  auto at = [&](int i) -> std::uint16_t& { return first[static_cast<std::ptrdiff_t>(i) * step]; };
+  for (int i = 1; i < count;) {
+    if (at(i) != 0 || at(i - 1) == 0) {
+      ++i;
+      continue;
+    }
+    int end = i;  // the hole is i..end-1
+    while (end < count && at(end) == 0) ++end;
+    const int length = end - i;
+    if (end < count && length <= max_px) {
+      const double left = at(i - 1), right = at(end);
+      if (std::abs(left - right) <= jump_fraction * std::min(left, right)) {
+        for (int k = i; k < end; ++k) at(k) = (k - i) * 2 < length ? at(i - 1) : at(end);
+      }
+    }
+    i = end;
+  }
+  for (int i = 0; i < count;) {
+    if (at(i) == 0) {
+      ++i;
+      continue;
+    }
+    int end = i;
+    while (end < count && at(end) != 0) ++end;
+    const bool hole_before = i > 0, hole_after = end < count;  // the image's end counts as a hole
+    if (end - i <= max_px && (hole_before || hole_after)) {
+      for (int k = i; k < end; ++k) at(k) = 0;
+    }
+    i = end;
+  }
+}
+
+}  // namespace
 
 cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers, std::uint64_t seed,
                                 const SensorProfile& profile) const {
@@ -188,7 +231,17 @@ cv::Mat1w KinectSensor::measure(const Scene& scene, const RenderBuffers& buffers
       depth_mm[u] = static_cast<std::uint16_t>(std::lround(mm));
     }
   }
+  if (p.coherent_holes_px > 0) make_holes_coherent(out, p.coherent_holes_px, p.edge_jump);
   return out;
+}
+
+void KinectSensor::make_holes_coherent(cv::Mat1w& depth_mm, int max_px, double jump_fraction) {
+  if (max_px <= 0 || depth_mm.empty()) return;
+  const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(depth_mm.step1());
+  for (int v = 0; v < depth_mm.rows; ++v) close_line(depth_mm.ptr<std::uint16_t>(v), depth_mm.cols, 1, max_px, jump_fraction);
+  for (int u = 0; u < depth_mm.cols; ++u) {
+    close_line(depth_mm.ptr<std::uint16_t>(0) + u, depth_mm.rows, stride, max_px, jump_fraction);
+  }
 }
 
 }  // namespace rdsf::synth

@@ -88,6 +88,7 @@ void SynthParams::set_classic() {
   sensor.eight_bit_share = 0;
   sensor.xtion_share = 0;
   sensor.patch_cell_px = 20;
+  sensor.coherent_holes_px = 0;
   people.body.varied_bodies = false;
   people.body.outfits = false;
   people.poses = false;
@@ -149,6 +150,9 @@ void SynthParams::validate() const {
   need_share("--eight-bit", sensor.eight_bit_share);
   need_range("--eight-bit-step", sensor.eight_bit_step_min_mm, sensor.eight_bit_step_max_mm, 1, 60, "mm");
   need_share("--xtion", sensor.xtion_share);
+  if (sensor.coherent_holes_px < 0 || sensor.coherent_holes_px > 8) {
+    fail("--coherent-holes " + std::to_string(sensor.coherent_holes_px), "must be 0..8 pixels");
+  }
   need_share("--children", people.body.child_share);
   need_share("--sitting", people.sitting_share);
   need_share("--groups", people.group_share);

@@ -116,6 +116,7 @@ std::string SynthWriter::describe(const SynthParams& p, const std::string& comma
       << ", top: " << s.band_top_px << ", bottom: " << s.band_bottom_px << "}\n"
       << "  eight_bit: {share: " << s.eight_bit_share << ", step_mm: [" << s.eight_bit_step_min_mm << ", "
       << s.eight_bit_step_max_mm << "], offset_m: [" << s.eight_bit_offset_min_m << ", " << s.eight_bit_offset_max_m << "]}\n"
+      << "  coherent_holes_px: " << s.coherent_holes_px << "\n"
       << "  xtion: {share: " << s.xtion_share << ", noise_factor: [" << s.xtion_noise_min << ", " << s.xtion_noise_max << "]}\n"
       << "camera_pose:\n"
       << "  height_m: [" << r.camera_height_min_m << ", " << r.camera_height_max_m << "]\n"

@@ -40,6 +40,11 @@ struct KinectSensorParams {
   int patch_cell_px = 10;          ///< scale of the blobby dropout field (at 640 px wide; 20 before issue 13)
   double grazing_cosine = 0.3;     ///< surfaces seen at a cosine below this lose readings increasingly
   double base_dropout = 0.0;       ///< dropout of every surface in addition to its material's
+  /// Block matching's coherence: the Kinect correlates windows of about 9x9 pixels, so its holes are
+  /// blobs, not specks. After the per-pixel model, along rows and then columns, a hole of at most this
+  /// many pixels between two readings of one surface (depths within edge_jump of each other) takes their
+  /// readings, and a run of at most this many readings between holes is lost. 0: per-pixel holes only.
+  int coherent_holes_px = 0;
   /// Border band without readings (registration), in pixels at 640x480; scaled with the image.
   int band_left_px = 18, band_right_px = 30, band_top_px = 20, band_bottom_px = 8;
   double eight_bit_share = 0.5;  ///< share of clips stored as 8-bit linear captures
@@ -69,6 +74,12 @@ class KinectSensor {
 
   /// A clip's capture profile drawn from the shares and ranges of the parameters.
   SensorProfile draw_profile(Rng& rng) const;
+
+  /// Block matching's coherence (KinectSensorParams::coherent_holes_px), in place: along every row and
+  /// then every column, a hole of at most `max_px` pixels between two readings whose depths differ by at
+  /// most `jump_fraction` of the smaller takes the nearer end's reading (8-bit steps stay steps); then a
+  /// run of at most `max_px` readings between holes (the image's end counts as one) is lost.
+  static void make_holes_coherent(cv::Mat1w& depth_mm, int max_px, double jump_fraction);
 
   /// True when pixel (x, y) lies in the registration band (never has a reading).
   bool in_band(int x, int y) const;
