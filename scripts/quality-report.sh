@@ -19,7 +19,8 @@ cd "$(dirname "$0")/.."
 usage() {
   cat <<USAGE
 Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes] [--test-frames N] [--docs]
-  --out DIR      output folder (default out/quality); recordings and sample sets there are reused
+  --out DIR      output folder (default out/quality); recordings and sample sets there are reused (the
+                 hard negatives and lever models are made again: a rerun gives a fresh run's figures)
   --test-frames N  frames of the held-out synthetic sequence (default 960: 16 rooms of 60 frames; 4 rooms,
                  the main job's 240 frames, make single figures noisy); its first 240 frames are also
                  reported on their own when N > 240
@@ -176,6 +177,10 @@ report=$run/REPORT.md
 # A common hard-negative set mined with the thesis baseline, so that every lever trains on the same data.
 if [ "$only" != "recipes" ]; then
   step "lever table"
+  # The hard negatives and the lever models follow the models of this run: made again each time, so that a
+  # rerun in the same --out gives the figures of a fresh run (reused hard-negative sets had collected every
+  # earlier run's rounds, and an earlier run's L6-boot3 would have been evaluated beside this run's models).
+  rm -rf "$sets/hard-L0" "$sets/hard-boot" "$models"/L[0-9]-*
   base_neg=("$sets/negatives" "$sets/people")
   train_model L0-thesis --neg "${base_neg[@]}" --calibration none --group-frames 0 --folds 0 --depth 1 \
     --learning-rate 1 --augment off

@@ -24,6 +24,7 @@
 #include "rdsf/dataset/sample_set_writer.hpp"
 #include "rdsf/evaluation/detection_metrics.hpp"
 #include "rdsf/evaluation/exact_curve.hpp"
+#include "rdsf/evaluation/threshold_sweep.hpp"
 #include "support/test_support.hpp"
 
 namespace rdsf {
@@ -173,6 +174,32 @@ TEST(Calibration, PlattMapsHeldOutScoresToFrequencies) {
 }
 
 // ---- exact curve ----
+
+// The TAR read off the exact curve at an FPPF limit, and its 95 % interval over the people at that point.
+TEST(ExactCurve, TarAtAnFppfLimitAndItsIntervalOverThePeople) {
+  SweepResult r;
+  auto point = [](double fppf, long found, long people) {
+    DetectionFigures f;
+    f.fppf = fppf;
+    f.n_det = found;
+    f.n_people = people;
+    f.tar = static_cast<double>(found) / static_cast<double>(people);
+    return f;
+  };
+  r.curve = {point(0.05, 30, 50), point(0.2, 40, 50), point(0.08, 25, 50), point(0.6, 45, 50)};
+  EXPECT_DOUBLE_EQ(r.tar_at_fppf(0.1), 0.6);
+  const RateInterval at01 = r.tar_interval_at_fppf(0.1), expected01 = wilson_interval(30, 50);
+  EXPECT_DOUBLE_EQ(at01.low, expected01.low);
+  EXPECT_DOUBLE_EQ(at01.high, expected01.high);
+  EXPECT_LT(at01.low, 0.6);
+  EXPECT_GT(at01.high, 0.6);
+  const RateInterval at05 = r.tar_interval_at_fppf(0.5), expected05 = wilson_interval(40, 50);
+  EXPECT_DOUBLE_EQ(at05.low, expected05.low);
+  EXPECT_DOUBLE_EQ(at05.high, expected05.high);
+  const RateInterval none = r.tar_interval_at_fppf(0.01);  // no point qualifies
+  EXPECT_EQ(none.low, 0.0);
+  EXPECT_EQ(none.high, 1.0);
+}
 
 TEST(ExactCurve, EqualsABruteForceCountAtEveryDistinctScore) {
   std::mt19937_64 rng(5);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "support/test_support.hpp"
@@ -42,6 +43,16 @@ TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
   std::cout << r.out;
   for (const char* file : {"metrics.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
     EXPECT_TRUE(std::filesystem::exists(d + "/report/" + file)) << file;
+  }
+  // summary.md's row ends with the 95 % intervals of TAR at FPPF <= 0.1 and 0.5 over the people.
+  {
+    std::ifstream md(d + "/report/summary.md");
+    std::string header, rule, row;
+    std::getline(md, header);
+    std::getline(md, rule);
+    std::getline(md, row);
+    EXPECT_NE(header.find("| TAR at FPPF <= 0.1 / 0.5: 95 % interval over the people |"), std::string::npos) << header;
+    EXPECT_TRUE(std::regex_search(row, std::regex(R"(\| [01]\.\d\d-[01]\.\d\d / [01]\.\d\d-[01]\.\d\d \|$)"))) << row;
   }
   // Best MOTA over the sweep, from metrics.csv (column 15, table "all").
   std::ifstream metrics(d + "/report/metrics.csv");

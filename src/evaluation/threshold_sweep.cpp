@@ -33,6 +33,15 @@ double SweepResult::tar_at_fppf(double max_fppf) const {
   return tar;
 }
 
+RateInterval SweepResult::tar_interval_at_fppf(double max_fppf) const {
+  const DetectionFigures* best = nullptr;
+  for (const DetectionFigures& f : curve) {
+    if (f.fppf <= max_fppf && (best == nullptr || f.tar > best->tar)) best = &f;
+  }
+  if (best == nullptr) return {};
+  return wilson_interval(best->n_det, best->n_people);
+}
+
 double SweepResult::candidate_recall() const {
   const long people = operating.all.n_people;
   return people > 0 ? static_cast<double>(people - segmentation_errors) / static_cast<double>(people) : 0.0;
@@ -227,11 +236,12 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
     summary << " Without segmentation errors:\n";
     write_table(summary, r, true);
     char line[400];
+    const RateInterval tar01 = r.tar_interval_at_fppf(0.1), tar05 = r.tar_interval_at_fppf(0.5);
     std::snprintf(line, sizeof line,
                   " Best MOTA %.3f at P >= %.2f (MOTP %.1f, %ld mismatches); exact curve: TAR %.3f at FPPF <= 0.1, "
-                  "%.3f at FPPF <= 0.5\n",
+                  "%.3f at FPPF <= 0.5 (95 %% intervals over the %ld people: %.2f-%.2f, %.2f-%.2f)\n",
                   best.mot.mota(), best.probability, best.mot.motp(), best.mot.mismatches, r.tar_at_fppf(0.1),
-                  r.tar_at_fppf(0.5));
+                  r.tar_at_fppf(0.5), r.operating.all.n_people, tar01.low, tar01.high, tar05.low, tar05.high);
     summary << line;
     std::snprintf(line, sizeof line,
                   " At the operating point P >= %.2f: TAR %.3f, FPPF %.3f, MOTA %.3f. Classifier on the %ld + %ld "
@@ -256,8 +266,9 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   // The one-table view: models x TAR at FPPF 0.1, best MOTA, fps.
   AtomicTextFile table((folder / "summary.md").string(), true);
   table.stream() << "| model | TAR at FPPF <= 0.1 | TAR at FPPF <= 0.5 | best MOTA (P >=) | MOTP | candidate recall | "
-                    "candidate AUC | TAR at P >= op: validation / held-out (gap; held-out 95 % interval) | fps |\n"
-                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+                    "candidate AUC | TAR at P >= op: validation / held-out (gap; held-out 95 % interval) | fps | "
+                    "TAR at FPPF <= 0.1 / 0.5: 95 % interval over the people |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const SweepResult& r : results) {
     const SweepRow& best = r.best_mota();
     char validation[128] = "no validation";
@@ -266,11 +277,15 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
                     r.candidates.tar, r.candidates.tar - r.validation->tar, r.candidates.tar_interval.low,
                     r.candidates.tar_interval.high);
     }
-    char row[512];
-    std::snprintf(row, sizeof row, "| %s | %.3f | %.3f | %.3f (%.2f) | %.1f | %.3f (%ld of %ld) | %.4f | %s at %.2f | %.1f |\n",
+    const RateInterval tar01 = r.tar_interval_at_fppf(0.1), tar05 = r.tar_interval_at_fppf(0.5);
+    char row[640];
+    std::snprintf(row, sizeof row,
+                  "| %s | %.3f | %.3f | %.3f (%.2f) | %.1f | %.3f (%ld of %ld) | %.4f | %s at %.2f | %.1f | %.2f-%.2f / "
+                  "%.2f-%.2f |\n",
                   r.model.c_str(), r.tar_at_fppf(0.1), r.tar_at_fppf(0.5), best.mot.mota(), best.probability,
                   best.mot.motp(), r.candidate_recall(), r.operating.all.n_people - r.segmentation_errors,
-                  r.operating.all.n_people, r.candidates.auc, validation, r.operating_probability, r.fps);
+                  r.operating.all.n_people, r.candidates.auc, validation, r.operating_probability, r.fps, tar01.low,
+                  tar01.high, tar05.low, tar05.high);
     table.stream() << row;
   }
   table.commit();

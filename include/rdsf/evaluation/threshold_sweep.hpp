@@ -70,6 +70,10 @@ struct SweepResult {
   const SweepRow& best_mota() const;
   /// Highest TAR on the exact curve with FPPF <= max_fppf; 0 when no point qualifies.
   double tar_at_fppf(double max_fppf) const;
+  /// That TAR's 95 % interval over the people (wilson_interval of the people found at that point): how far
+  /// the figure can move with other people of the same kind; the threshold's own variation (chosen on the
+  /// same frames' false positives) is not in it. {0, 1} when no point qualifies.
+  RateInterval tar_interval_at_fppf(double max_fppf) const;
   /// People with a candidate (IoU >= 0.5) over people.
   double candidate_recall() const;
 };
