@@ -74,6 +74,16 @@ TEST_F(PerfReportQuick, WritesEveryRowWithNumbersAndPrintsTheRatios) {
                               "## Targets", "**Machine:**", "**Load average**"}) {
     EXPECT_NE(md.find(heading), std::string::npos) << heading;
   }
+  // The machine's speed at the start and the end: two positive processor times of the reference loop.
+  std::smatch speed;
+  ASSERT_TRUE(std::regex_search(md, speed, std::regex(R"(\*\*Machine speed:\*\*[^\n]*took ([0-9.]+) ms of processor time at the start and ([0-9.]+) ms at the end)")))
+      << md.substr(0, 1200);
+  EXPECT_GT(std::stod(speed[1].str()), 0.0);
+  EXPECT_GT(std::stod(speed[2].str()), 0.0);
+  std::smatch reads;
+  ASSERT_TRUE(std::regex_search(md, reads, std::regex(R"(streaming reads of 256 MiB on one thread ran at ([0-9.]+) and ([0-9.]+) GB/s)")));
+  EXPECT_GT(std::stod(reads[1].str()), 0.0);
+  EXPECT_GT(std::stod(reads[2].str()), 0.0);
   const std::regex number("[0-9]+(\\.[0-9]+)?");
   const std::vector<std::string> rows = {
       "Segmentation per frame", "Candidate initialisation and filtering per candidate", "RDSF per candidate",

@@ -96,7 +96,13 @@ std::string perf_markdown(const PerfResults& r) {
     << ", all phases in one process on the same data.\n\n"
     << "**Machine:** " << r.cpu_model << ", " << r.cores << " cores, " << num(r.memory_gib, 1)
     << " GiB memory. **Load average** (1 / 5 / 15 min) at the start: " << r.load_start << "; at the end: "
-    << r.load_end << " (the cores are shared with other work, so figures can be lower than on an idle machine).\n\n"
+    << r.load_end << " (the cores are shared with other work, so figures can be lower than on an idle machine). "
+    << "**Machine speed:** a fixed single-thread integer loop (2 * 10^7 dependent steps) took "
+    << num(r.reference_start_ms, 1) << " ms of processor time at the start and " << num(r.reference_end_ms, 1)
+    << " ms at the end; streaming reads of 256 MiB on one thread ran at " << num(r.reference_start_gbps, 1)
+    << " and " << num(r.reference_end_gbps, 1)
+    << " GB/s. The loop follows the clock rate, the reads what neighbours on the host take of the memory "
+       "system; the load average shows neither, so compare two runs' figures only when these agree.\n\n"
     << "**Data:** " << r.frames << " synthetic frames of " << r.width_px << "x" << r.height_px << " with "
     << r.people_min << ".." << r.people_max << " people and registered colour (rdsf::synth::SynthSequence, "
     << num(r.render_ms_per_frame, 1) << " ms per frame to render, not counted below), " << num(d.candidates_per_frame, 1)

@@ -32,11 +32,10 @@
 #include "rdsf/pipeline/parallel_pipeline.hpp"
 #include "memory_peak.hpp"
 #include "report_clock.hpp"
+#include "speed_limits.hpp"
 #include "training_crops.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 #include "rdsf/synth/synth_writer.hpp"
-#include "report_clock.hpp"
-#include "training_crops.hpp"
 
 namespace fs = std::filesystem;
 
@@ -61,13 +60,6 @@ std::string first_line_value(const std::string& path, const std::string& key) {
     return value;
   }
   return {};
-}
-
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a.empty() ? std::string("unknown") : a + " / " + b + " / " + c;
 }
 
 /// Records a phase's memory: construct at its start, call done() at its end.
@@ -150,7 +142,9 @@ void machine(PerfResults& r, const PerfOptions& o) {
   r.cores = static_cast<int>(std::thread::hardware_concurrency());
   const std::string mem = first_line_value("/proc/meminfo", "MemTotal");
   r.memory_gib = mem.empty() ? 0.0 : std::stod(mem) / (1024.0 * 1024.0);
-  r.load_start = load_average();
+  r.load_start = clock::load_average_now();
+  r.reference_start_ms = clock::reference_loop_ms();
+  r.reference_start_gbps = read_bandwidth_gbps(256, 1, 3);
   r.threads = o.threads;
 }
 
@@ -558,7 +552,9 @@ PerfResults run_perf_report(const PerfOptions& options) {
   training_per_round(r, o);
   mining(r, o, work.root);
   labelling(r, o, work.root, model);
-  r.load_end = load_average();
+  r.load_end = clock::load_average_now();
+  r.reference_end_ms = clock::reference_loop_ms();
+  r.reference_end_gbps = read_bandwidth_gbps(256, 1, 3);
   return r;
 }
 

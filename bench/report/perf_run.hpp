@@ -39,6 +39,10 @@ struct PhaseMemory {
 struct PerfResults {
   // Machine and run
   std::string date_utc, mode, cpu_model, load_start, load_end;
+  /// The machine's speed at the start and at the end of the run: clock::reference_loop_ms() (the clock
+  /// rate) and streaming reads of 256 MiB on one thread (GB/s; what neighbours on the host take shows here).
+  double reference_start_ms = 0, reference_end_ms = 0;
+  double reference_start_gbps = 0, reference_end_gbps = 0;
   int cores = 0;
   double memory_gib = 0;
   // Data

@@ -35,6 +35,10 @@ struct SpeedLimits {
   std::string load_start, load_end;
 };
 
+/// Streaming reads of a `mib` MiB buffer (touched before timing) on `threads` threads, the best of
+/// `passes`, in GB/s (1e9 B/s, wall time).
+double read_bandwidth_gbps(double mib, int threads, int passes);
+
 /// Measures the above (progress on stderr).
 SpeedLimits measure_speed_limits(const SpeedLimitOptions& options);
 
