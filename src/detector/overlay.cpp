@@ -1,5 +1,6 @@
 #include "rdsf/detector/overlay.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <opencv2/imgproc.hpp>
@@ -17,6 +18,12 @@ cv::Vec3b layer_colour(int index, int count) {
 }
 
 }  // namespace
+
+cv::Point label_origin(const cv::Rect& box, const cv::Size& text, const cv::Size& image, int above) {
+  const int x = std::max(2, std::min(box.x + 2, image.width - text.width - 4));
+  const int y = std::max(text.height + 4, box.y - above);
+  return {x, y};
+}
 
 cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm) {
   cv::Mat1b scaled;
@@ -56,7 +63,9 @@ cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segment
     } else {
       std::snprintf(text, sizeof text, "#%zu %.1fm", i, c.layer_depth_mm / 1000.0);
     }
-    const cv::Point at(shown.x + 2, std::max(12, shown.y - 4));
+    int baseline = 0;
+    const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.45, 3, &baseline);
+    const cv::Point at = label_origin(shown, size, picture.size(), 4);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 255, 255), 1, cv::LINE_AA);
   }

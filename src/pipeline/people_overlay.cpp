@@ -34,9 +34,9 @@ cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed,
     std::snprintf(text, sizeof text, "person %d  %.2f m walked  P=%.2f", id,
                   person != nullptr ? person->distance_cm / 100.0 : 0.0,
                   i < processed.probabilities.size() ? processed.probabilities[i] : 0.0);
-    const cv::Point at(box.x, std::max(14, box.y - 6));
     int baseline = 0;
     const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.5, 1, &baseline);
+    const cv::Point at = label_origin(box, size, picture.size(), 6);
     cv::rectangle(picture, at + cv::Point(-2, baseline + 2), at + cv::Point(size.width + 2, -size.height - 3), colour,
                   cv::FILLED);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);

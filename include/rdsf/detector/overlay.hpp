@@ -19,6 +19,12 @@ cv::Mat3b render_layers(const DepthFrame& frame, const Segmentation& segmentatio
 /// Depth as a colour map (near = warm), black where there is no reading.
 cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm = 8000);
 
+/// Where a label of size `text` (cv::getTextSize) goes for `box` in an image of size `image`: its baseline
+/// `above` pixels over the box's top (at least the text's height + 4 below the image's top), starting at the
+/// box's left edge, moved left as far as needed so that the whole label stays in the image (a person at the
+/// right border keeps a readable label), never left of x = 2.
+cv::Point label_origin(const cv::Rect& box, const cv::Size& text, const cv::Size& image, int above);
+
 /// render_layers() with each candidate's reported box (`box`: solid), its window (thin), and a label with
 /// its index, layer depth and, when `scores` is given, its score.
 cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segmentation,
