@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+#include <tuple>
+
 #include <opencv2/imgcodecs.hpp>
 
 #include "rdsf/core/error.hpp"
@@ -155,6 +159,58 @@ TEST(CurvePlot, LegendInItsCorner) {
   const cv::Mat3b at_top = draw_plot(axes, curve);
   EXPECT_EQ(changed(at_top, bottom_right), 0.0);
   EXPECT_GT(changed(at_top, top_right), 0.0);
+}
+
+// Operating points that share their label (one probability threshold for every model) are labelled once,
+// in the legend, not eight times on top of each other beside the points; different labels stay at the points.
+TEST(CurvePlot, SharedOperatingLabelOnceInTheLegend) {
+  PlotAxes axes;
+  const auto curves = [](const std::string& a, const std::string& b) {
+    return std::vector<PlotCurve>{{"one", {{0, 0}, {0.1, 0.7}, {1, 1}}, cv::Point2d(0.1, 0.7), a},
+                                  {"two", {{0, 0}, {0.15, 0.75}, {1, 1}}, cv::Point2d(0.15, 0.75), b}};
+  };
+  const cv::Mat3b unlabelled = draw_plot(axes, curves("", ""));
+  const cv::Mat3b shared = draw_plot(axes, curves("P>=0.50", "P>=0.50"));
+  const cv::Mat3b different = draw_plot(axes, curves("P>=0.50", "P>=0.30"));
+  const cv::Rect legend_half(450, 325, 450, 325), points_half(0, 0, 450, 325);
+  const auto changed = [&](const cv::Mat3b& plot, const cv::Rect& area) {
+    return cv::norm(plot(area), unlabelled(area), cv::NORM_L1);
+  };
+  EXPECT_EQ(changed(shared, points_half), 0.0) << "a shared label was drawn at the points";
+  EXPECT_GT(changed(shared, legend_half), 0.0) << "a shared label is missing from the legend";
+  EXPECT_GT(changed(different, points_half), 0.0) << "different labels belong at their points";
+}
+
+// Eight models (the quality report's levers) get eight different colours.
+TEST(CurvePlot, EightCurvesHaveEightColours) {
+  PlotAxes axes;
+  std::vector<PlotCurve> curves;
+  for (int i = 0; i < 8; ++i) {
+    const double y = 0.1 + 0.1 * i;
+    curves.push_back({"m" + std::to_string(i), {{0.05, y}, {0.4, y}}, {}, ""});
+  }
+  const cv::Mat3b plot = draw_plot(axes, curves);
+  const cv::Mat3b empty = draw_plot(axes, {});
+  std::set<std::tuple<int, int, int>> colours;
+  for (int i = 0; i < 8; ++i) {
+    // The middle of curve i's horizontal line, in the left half (the legend is at the bottom right).
+    const cv::Mat3b one = draw_plot(axes, {curves[static_cast<std::size_t>(i)]});
+    cv::Mat1b differs;
+    cv::compare(cv::Mat(one.reshape(1)), cv::Mat(empty.reshape(1)), differs, cv::CMP_NE);
+    cv::Point where(-1, -1);
+    for (int y = 0; y < plot.rows && where.x < 0; ++y) {
+      for (int x = 100; x < 300; ++x) {
+        if (differs(y, 3 * x) || differs(y, 3 * x + 1) || differs(y, 3 * x + 2)) {
+          where = {x, y + 1};  // the line is 2 px thick: its second row is solid
+          break;
+        }
+      }
+    }
+    ASSERT_GE(where.x, 0) << "curve " << i << " not drawn";
+    const cv::Vec3b c = plot(where);
+    colours.insert({c[0], c[1], c[2]});
+  }
+  EXPECT_EQ(colours.size(), 8u);
 }
 
 TEST(DetectionMetrics, HardlyVisiblePeopleAreDontCare) {

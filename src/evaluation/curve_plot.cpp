@@ -9,8 +9,10 @@
 namespace rdsf {
 namespace {
 
-const cv::Scalar kPalette[] = {{200, 90, 20}, {30, 120, 230}, {60, 170, 60}, {40, 40, 200},
-                               {170, 80, 160}, {30, 170, 200}, {90, 90, 90}};
+// Ten colours that stay apart (BGR): blue, orange, green, red, purple, gold, grey, brown, pink, teal; the
+// quality report's eight lever models each get their own.
+const cv::Scalar kPalette[] = {{200, 90, 20},  {30, 120, 230}, {60, 170, 60},  {40, 40, 200},  {170, 80, 160},
+                               {30, 170, 200}, {90, 90, 90},   {40, 80, 140},  {190, 130, 240}, {150, 150, 20}};
 // Curve i's colour (the palette repeats).
 const cv::Scalar& palette(std::size_t i) { return kPalette[i % (sizeof kPalette / sizeof kPalette[0])]; }
 const cv::Scalar kInk(40, 40, 40);
@@ -113,8 +115,21 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
     rotated.copyTo(image(cv::Rect(8, y0, rotated.cols, rotated.rows)));
   }
 
-  // Curves and operating points (each curve's label one line lower than the previous curve's: the points of
-  // similar models lie close together), then the legend on top of them.
+  // Curves and operating points, then the legend on top of them. When every operating point has the same
+  // label (the usual case: one probability threshold for all models), the legend says it once; otherwise
+  // each point has its own, each curve's one line lower than the previous curve's (the points of similar
+  // models lie close together).
+  std::string shared_label;
+  bool labels_differ = false;
+  for (const PlotCurve& curve : curves) {
+    if (!curve.operating_point || curve.operating_label.empty()) continue;
+    if (shared_label.empty()) {
+      shared_label = curve.operating_label;
+    } else if (curve.operating_label != shared_label) {
+      labels_differ = true;
+    }
+  }
+  if (labels_differ) shared_label.clear();
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const PlotCurve& curve = curves[i];
     const cv::Scalar colour = palette(i);
@@ -125,12 +140,13 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
     if (curve.operating_point) {
       const cv::Point p = frame.at(curve.operating_point->x, curve.operating_point->y);
       cv::drawMarker(image, p, colour, cv::MARKER_DIAMOND, 18, 2, cv::LINE_AA);
-      if (!curve.operating_label.empty()) {
+      if (!curve.operating_label.empty() && shared_label.empty()) {
         text(image, curve.operating_label, p + cv::Point(12, 16 * static_cast<int>(i) - 8), 0.45, colour);
       }
     }
   }
-  const int rows = static_cast<int>(curves.size()), box_w = 230, box_h = 22 * rows + 8;
+  const int rows = static_cast<int>(curves.size()) + (shared_label.empty() ? 0 : 1), box_w = 230,
+            box_h = 22 * rows + 8;
   if (rows > 0) {
     const bool left = axes.legend == PlotAxes::Corner::bottom_left;
     const bool bottom = axes.legend != PlotAxes::Corner::top_right;
@@ -138,11 +154,16 @@ cv::Mat3b draw_plot(const PlotAxes& axes, const std::vector<PlotCurve>& curves, 
                        bottom ? frame.area.br().y - box_h - 10 : frame.area.y + 10, box_w, box_h);
     cv::rectangle(image, box, cv::Scalar(255, 255, 255), cv::FILLED);
     cv::rectangle(image, box, cv::Scalar(200, 200, 200), 1);
-    for (int i = 0; i < rows; ++i) {
+    for (int i = 0; i < static_cast<int>(curves.size()); ++i) {
       const cv::Scalar colour = palette(static_cast<std::size_t>(i));
       const int y = box.y + 22 * (i + 1);
       cv::line(image, {box.x + 10, y - 5}, {box.x + 40, y - 5}, colour, 3, cv::LINE_AA);
       text(image, curves[static_cast<std::size_t>(i)].label, {box.x + 48, y}, 0.5, kInk);
+    }
+    if (!shared_label.empty()) {
+      const int y = box.y + 22 * rows;
+      cv::drawMarker(image, {box.x + 25, y - 5}, kInk, cv::MARKER_DIAMOND, 14, 2, cv::LINE_AA);
+      text(image, "operating point, " + shared_label, {box.x + 48, y}, 0.5, kInk);
     }
   }
   return image;
