@@ -84,13 +84,7 @@ const std::vector<rdsf::DepthFrame>& synthetic_frames() {
     p.frames = 48, p.people_min = 1, p.people_max = 4, p.seed = 17, p.rgb = true;
     rdsf::synth::SynthSequence sequence(p);
     std::vector<rdsf::DepthFrame> all;
-    for (int i = 0; i < p.frames; ++i) {
-      const rdsf::synth::SynthFrame f = sequence.frame(i);
-      rdsf::DepthFrame frame;
-      frame.depth_mm = f.depth_mm;
-      frame.bgr = f.bgr;
-      all.push_back(frame);
-    }
+    for (int i = 0; i < p.frames; ++i) all.push_back(sequence.frame(i).depth_frame(p.camera()));
     return all;
   }();
   return made;

@@ -195,17 +195,9 @@ TEST(CandidatesReference, CutCropsSameOnRandomWindows) {
 
 // Synthetic frames with colour (8, 1..4 people) and the real frames of ../shared/realdata when present.
 std::vector<DepthFrame> candidate_frames() {
-  std::vector<DepthFrame> frames;
   synth::SynthParams p;
   p.frames = 16, p.people_min = 1, p.people_max = 4, p.seed = 23, p.rgb = true;
-  synth::SynthSequence sequence(p);
-  for (int i = 0; i < p.frames; ++i) {
-    const synth::SynthFrame f = sequence.frame(i);
-    DepthFrame frame;
-    frame.depth_mm = f.depth_mm;
-    frame.bgr = f.bgr;
-    frames.push_back(frame);
-  }
+  std::vector<DepthFrame> frames = test::synthetic_frames(p);
   if (!test::realdata_dir().empty()) {
     for (const char* group : {"people", "empty"}) {
       auto source = open_frame_source((test::realdata_dir() / group).string());

@@ -37,11 +37,7 @@ Labelled candidates_of(std::uint64_t seed, int frames) {
   Labelled out;
   for (int i = 0; i < frames; ++i) {
     const synth::SynthFrame f = sequence.frame(i);
-    DepthFrame frame;
-    frame.name = f.name;
-    frame.depth_mm = f.depth_mm;
-    frame.camera = params.camera();
-    const FrameAnalysis analysis = core.analyse(frame, true);
+    const FrameAnalysis analysis = core.analyse(f.depth_frame(params.camera()), true);
     for (std::size_t c = 0; c < analysis.candidates.size(); ++c) {
       double best = 0.0;
       for (const synth::PersonTruth& p : f.people) best = std::max(best, iou(analysis.candidates[c].strict_box, p.box));

@@ -396,12 +396,7 @@ Recall detector_recall(bool classic) {
     SynthSequence sequence(p);
     for (int i = 0; i < p.frames; ++i) {
       const SynthFrame f = sequence.frame(i);
-      rdsf::DepthFrame frame;
-      frame.depth_mm = f.depth_mm;
-      frame.index = i;
-      frame.name = f.name;
-      frame.camera = p.camera();
-      const rdsf::FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);
+      const rdsf::FrameAnalysis analysis = core.analyse(f.depth_frame(p.camera()), /*with_features=*/false);
       for (const auto& person : f.people) {
         if (person.visible_fraction < 0.8 || person.distance_mm < 1500 || person.distance_mm > 6000) continue;
         double best = 0;

@@ -48,12 +48,13 @@ std::string pass_range(const PerfResults& r, double fastest_s, double slowest_s)
          num(r.frames / fastest_s, 0) + ")";
 }
 
-// "<separator>median of N runs, slowest-fastest" for a mining line, nothing for one run.
-std::string mining_range(const PerfResults& r, double fastest_s, double slowest_s, const std::string& separator) {
+// "<before>median of N runs, slowest-fastest<after>" for a mining line, nothing for one run.
+std::string mining_range(const PerfResults& r, double fastest_s, double slowest_s, const std::string& before,
+                         const std::string& after) {
   if (r.mining_passes <= 1 || fastest_s <= 0 || slowest_s <= 0) return "";
   const double frames = static_cast<double>(r.mined_frames);
-  return separator + "median of " + std::to_string(r.mining_passes) + " runs, " + num(frames / slowest_s, 1) + "-" +
-         num(frames / fastest_s, 1);
+  return before + "median of " + std::to_string(r.mining_passes) + " runs, " + num(frames / slowest_s, 1) + "-" +
+         num(frames / fastest_s, 1) + after;
 }
 
 struct Derived {
@@ -196,15 +197,12 @@ std::string perf_markdown(const PerfResults& r) {
   m << "## Mining and labelling\n\n| Measure | This run | Target |\n|---|---|---|\n"
     << "| Mining negatives, " << r.threads << " threads (PNG frames with colour) | "
     << num(d.mining_fps, 1) << " fps (" << r.mined_frames << " frames, " << r.mined_candidates << " candidates, "
-    << r.mined_kept << " kept" << mining_range(r, r.mining_wall_min_s, r.mining_wall_max_s, "; ") << ") | "
+    << r.mined_kept << " kept" << mining_range(r, r.mining_wall_min_s, r.mining_wall_max_s, "; ", "") << ") | "
     << num(kTargetMiningFps, 0) << " fps |\n"
     << "| ... the same into a set in memory (/dev/shm: no disk) | "
     << (r.mining_memory_wall_s > 0
             ? num(static_cast<double>(r.mined_frames) / r.mining_memory_wall_s, 1) + " fps" +
-                  [&] {
-                    const std::string range = mining_range(r, r.mining_memory_wall_min_s, r.mining_memory_wall_max_s, " (");
-                    return range.empty() ? range : range + ")";
-                  }()
+                  mining_range(r, r.mining_memory_wall_min_s, r.mining_memory_wall_max_s, " (", ")")
             : std::string("not measured (no /dev/shm)"))
     << " | " << num(kTargetMiningFps, 0) << " fps |\n"
     << "| Labelling: answer to next candidate, mean | " << ms(r.label_mean_ms) << " | " << num(kTargetLabelMs, 0)

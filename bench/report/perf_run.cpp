@@ -74,17 +74,6 @@ class MemoryPhase {
   MemoryMark mark_;
 };
 
-DepthFrame to_depth_frame(const synth::SynthFrame& f, const CameraModel& camera) {
-  DepthFrame frame;
-  frame.depth_mm = f.depth_mm;
-  frame.bgr = f.bgr;
-  frame.index = f.index;
-  frame.name = f.name;
-  frame.timestamp_us = f.index * kFrameIntervalUs;
-  frame.camera = camera;
-  return frame;
-}
-
 synth::SynthParams sequence_params(const PerfOptions& o, int frames, std::uint64_t seed, bool empty) {
   synth::SynthParams p;
   p.frames = frames;
@@ -169,7 +158,7 @@ std::vector<DepthFrame> render_people(PerfResults& r, const PerfOptions& o, cons
     const synth::SynthFrame f = sequence.frame(i);
     render_s += seconds_since(t);
     writer.write(f);
-    frames.push_back(to_depth_frame(f, params.camera()));
+    frames.push_back(f.depth_frame(params.camera()));
     progress.update(i + 1);
   }
   progress.finish(o.frames);
@@ -210,7 +199,7 @@ BoostedModel train_pipeline_model(PerfResults& r, const PerfOptions& o) {
   cli::Progress progress(std::cerr, "frames", o.train_frames);
   for (int i = 0; i < o.train_frames; ++i) {
     const synth::SynthFrame f = sequence.frame(i);
-    const FrameAnalysis analysis = core.analyse(to_depth_frame(f, params.camera()), true);
+    const FrameAnalysis analysis = core.analyse(f.depth_frame(params.camera()), true);
     for (std::size_t c = 0; c < analysis.candidates.size(); ++c) {
       double best = 0.0;
       for (const synth::PersonTruth& p : f.people) best = std::max(best, iou(analysis.candidates[c].strict_box, p.box));

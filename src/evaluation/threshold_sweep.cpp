@@ -25,21 +25,28 @@ const SweepRow& SweepResult::best_mota() const {
   return operating.mot.mota() > rows[best].mot.mota() ? operating : rows[best];
 }
 
-double SweepResult::tar_at_fppf(double max_fppf) const {
-  double tar = 0;
-  for (const DetectionFigures& f : curve) {
-    if (f.fppf <= max_fppf) tar = std::max(tar, f.tar);
-  }
-  return tar;
-}
+namespace {
 
-RateInterval SweepResult::tar_interval_at_fppf(double max_fppf) const {
+// The point of the exact curve with the highest TAR among those with FPPF <= max_fppf (the first of
+// equals); nullptr when none qualifies.
+const DetectionFigures* best_at_fppf(const std::vector<DetectionFigures>& curve, double max_fppf) {
   const DetectionFigures* best = nullptr;
   for (const DetectionFigures& f : curve) {
     if (f.fppf <= max_fppf && (best == nullptr || f.tar > best->tar)) best = &f;
   }
-  if (best == nullptr) return {};
-  return wilson_interval(best->n_det, best->n_people);
+  return best;
+}
+
+}  // namespace
+
+double SweepResult::tar_at_fppf(double max_fppf) const {
+  const DetectionFigures* best = best_at_fppf(curve, max_fppf);
+  return best != nullptr ? best->tar : 0.0;
+}
+
+RateInterval SweepResult::tar_interval_at_fppf(double max_fppf) const {
+  const DetectionFigures* best = best_at_fppf(curve, max_fppf);
+  return best != nullptr ? wilson_interval(best->n_det, best->n_people) : RateInterval{};
 }
 
 double SweepResult::candidate_recall() const {

@@ -80,6 +80,17 @@ const RenderBuffers& SynthSequence::render_ideal(int index) {
   return buffers_;
 }
 
+DepthFrame SynthFrame::depth_frame(const CameraModel& camera) const {
+  DepthFrame frame;
+  frame.depth_mm = depth_mm;
+  frame.bgr = bgr;
+  frame.index = index;
+  frame.name = name;
+  frame.timestamp_us = index * kFrameIntervalUs;
+  frame.camera = camera;
+  return frame;
+}
+
 SynthFrame SynthSequence::frame(int index) {
   const RenderBuffers& buffers = render_ideal(index);
   SynthFrame frame;

@@ -16,17 +16,7 @@ namespace rdsf::test {
 std::vector<DepthFrame> synthetic_frames(const synth::SynthParams& p) {
   synth::SynthSequence sequence(p);
   std::vector<DepthFrame> frames;
-  for (int i = 0; i < p.frames; ++i) {
-    const synth::SynthFrame f = sequence.frame(i);
-    DepthFrame frame;
-    frame.depth_mm = f.depth_mm;
-    frame.bgr = f.bgr;
-    frame.index = i;
-    frame.name = f.name;
-    frame.timestamp_us = i * kFrameIntervalUs;
-    frame.camera = p.camera();
-    frames.push_back(frame);
-  }
+  for (int i = 0; i < p.frames; ++i) frames.push_back(sequence.frame(i).depth_frame(p.camera()));
   return frames;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "rdsf/frame/camera_model.hpp"
+#include "rdsf/frame/depth_frame.hpp"
 #include "rdsf/synth/kinect_sensor.hpp"
 #include "rdsf/synth/people_planner.hpp"
 #include "rdsf/synth/renderer.hpp"
@@ -31,6 +33,10 @@ struct SynthFrame {
   cv::Mat1w depth_mm;  ///< what the sensor delivers, millimetres, 0 = no reading
   cv::Mat3b bgr;       ///< registered colour (empty without rgb)
   std::vector<PersonTruth> people;  ///< ordered by track id
+
+  /// The frame as a frame source reading its recording gives it: depth, colour, index, name, timestamp
+  /// (index x kFrameIntervalUs, as for every image folder) and `camera` (SynthParams::camera()).
+  DepthFrame depth_frame(const CameraModel& camera) const;
 };
 
 class SynthSequence {
