@@ -76,8 +76,9 @@ TEST(BinnedForest, SameBitsAsTheModelOnRandomModels) {
   }
 }
 
-TEST(BinnedForest, SameBitsAsTheShippedModel) {
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v1.yml");
+// The forest over the features a shipped model reads scores random rows with the model's bits.
+void same_bits_as_the_shipped_model(const std::string& path) {
+  const BoostedModel model = BoostedModel::load(path);
   ASSERT_TRUE(BinnedForest::supports(model));
   std::vector<WeakClassifier> weak = model.weak_classifiers();
   const std::vector<int> read = features_read(model);
@@ -93,6 +94,12 @@ TEST(BinnedForest, SameBitsAsTheShippedModel) {
   }
 }
 
+TEST(BinnedForest, SameBitsAsTheShippedModels) {
+  for (const char* version : {"v1", "v2"}) {
+    SCOPED_TRACE(version);
+    same_bits_as_the_shipped_model(std::string(RDSF_SOURCE_DIR) + "/models/people/" + version + ".yml");
+  }
+}
 TEST(BinnedForest, RefusesStumpsAndFeaturesOutsideTheRow) {
   BoostedModel model = random_model(50, BinScheme{}, 10, 3);
   EXPECT_THROW(BinnedForest(model, 20), Error);

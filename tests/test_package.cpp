@@ -29,6 +29,7 @@ TEST(ShippedModels, BuildTreeProgramsUseTheSourceTreeModels) {
   EXPECT_EQ(fs::path(rdsf::shipped_models_dir()), expected);
   EXPECT_EQ(rdsf::shipped_data_models_dir(), rdsf::shipped_models_dir());
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v1.yml"));
+  EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v2.yml"));
 }
 
 TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
@@ -38,7 +39,7 @@ TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
   std::string resolved;
   EXPECT_NO_THROW(resolved = rdsf::resolve_model(rdsf::kDefaultModelName));
   fs::current_path(before);
-  EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / rdsf::kDefaultModelName / "v1.yml");
+  EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / rdsf::kDefaultModelName / "v2.yml");  // the newest
 }
 
 #if !RDSF_WITH_OPENNI

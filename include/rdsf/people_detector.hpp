@@ -3,7 +3,7 @@
 // ROS 2 node). Built from a model and parameters, it runs the whole system on each frame:
 //   frame -> candidates -> RDSF -> H(x), P(person) -> person when P >= threshold -> tracking -> Detection
 //
-//   rdsf::PeopleDetector detector("models/people/v1.yml");   // an explicit file: no lookup, no global state
+//   rdsf::PeopleDetector detector("models/people/v2.yml");   // an explicit file: no lookup, no global state
 //   for (;;) { rdsf::DepthFrame frame = ...; for (const rdsf::Detection& d : detector.detect(frame)) ...; }
 //
 // Threading contract: detect() keeps the tracker's state, so call it from one thread at a time with the

@@ -1,6 +1,6 @@
 #pragma once
 // Where the files shipped with the workbench are: the default model and the training recipes (the source
-// tree's models/: people/v1.yml, recipes/*.yml), for the copy of the library that is running. In order:
+// tree's models/: people/v1.yml and v2.yml, recipes/*.yml), for the copy of the library that is running. In order:
 //   1. installed: <folder of the binary holding librdsf>/<path from LIBDIR to DATADIR/rdsf/models>, when
 //      that folder exists (the shared library in LIBDIR; with a static librdsf the program in BINDIR), so
 //      an installed tree may be moved to another prefix (a .deb installs under /usr);
