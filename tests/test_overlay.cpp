@@ -1,5 +1,6 @@
 // Labels of the detection pictures stay readable: a box at the right border moves its label left so that
-// the whole text is in the image, a box at the top puts it below the image's top edge.
+// the whole text is in the image, a box at the top puts it below the image's top edge, and a label that
+// would cover another moves down a line.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +26,29 @@ TEST(Overlay, LabelStaysInsideTheImage) {
   EXPECT_EQ(top.y, text.height + 4);
   // A text wider than the image starts at x = 2.
   EXPECT_EQ(rdsf::label_origin(cv::Rect(300, 200, 50, 50), cv::Size(700, 10), image, 6).x, 2);
+}
+
+// Two boxes side by side at the same height with labels longer than the first box: the second label moves
+// one line down, clear of the first; a third box elsewhere keeps label_origin()'s place; with every line
+// taken down to the image's bottom, a label stays where label_origin() puts it.
+TEST(Overlay, LabelsDoNotCoverEachOther) {
+  const cv::Size image(640, 480), text(200, 10);
+  const int baseline = 4;
+  rdsf::LabelPlacer labels(image);
+  const cv::Rect a(100, 200, 80, 200), b(190, 200, 80, 200);
+  const cv::Point first = labels.place(a, text, baseline, 6);
+  EXPECT_EQ(first, rdsf::label_origin(a, text, image, 6));
+  const cv::Point second = labels.place(b, text, baseline, 6);
+  const cv::Rect one = rdsf::LabelPlacer::area(first, text, baseline), two = rdsf::LabelPlacer::area(second, text, baseline);
+  EXPECT_EQ((one & two).area(), 0) << one << " " << two;
+  EXPECT_EQ(second.x, rdsf::label_origin(b, text, image, 6).x);
+  EXPECT_EQ(second.y, first.y + text.height + baseline + 5);
+  EXPECT_EQ(labels.place(cv::Rect(500, 100, 60, 60), text, baseline, 6), rdsf::label_origin(cv::Rect(500, 100, 60, 60), text, image, 6));
+  // A short image: no free line below, so the label keeps its first place.
+  rdsf::LabelPlacer tight(cv::Size(640, 40));
+  const cv::Rect low(100, 30, 80, 10);
+  const cv::Point p1 = tight.place(low, text, baseline, 6), p2 = tight.place(low, text, baseline, 6);
+  EXPECT_EQ(p1, p2);
 }
 
 // Drawn: a candidate at the right border gets its whole label in the picture (the label's yellow pixels

@@ -25,6 +25,23 @@ cv::Point label_origin(const cv::Rect& box, const cv::Size& text, const cv::Size
   return {x, y};
 }
 
+cv::Rect LabelPlacer::area(cv::Point origin, const cv::Size& text, int baseline) {
+  return {origin.x - 2, origin.y - text.height - 3, text.width + 4, text.height + baseline + 5};
+}
+
+cv::Point LabelPlacer::place(const cv::Rect& box, const cv::Size& text, int baseline, int above) {
+  const cv::Point first = label_origin(box, text, image_, above);
+  const auto free = [&](cv::Point at) {
+    const cv::Rect mine = area(at, text, baseline);
+    return std::none_of(placed_.begin(), placed_.end(), [&](const cv::Rect& r) { return (r & mine).area() > 0; });
+  };
+  cv::Point at = first;
+  while (!free(at) && at.y + text.height + 2 * baseline + 7 <= image_.height) at.y += text.height + baseline + 5;
+  if (!free(at)) at = first;
+  placed_.push_back(area(at, text, baseline));
+  return at;
+}
+
 cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm) {
   cv::Mat1b scaled;
   depth_mm.convertTo(scaled, CV_8U, -255.0 / max_depth_mm, 255.0);
@@ -52,6 +69,7 @@ cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segment
                             const std::vector<Candidate>& candidates, const std::vector<double>* scores,
                             BoxKind box) {
   cv::Mat3b picture = render_layers(frame, segmentation);
+  LabelPlacer labels(picture.size());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     cv::rectangle(picture, c.window, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
@@ -65,7 +83,7 @@ cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segment
     }
     int baseline = 0;
     const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.45, 3, &baseline);
-    const cv::Point at = label_origin(shown, size, picture.size(), 4);
+    const cv::Point at = labels.place(shown, size, baseline, 4);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 255, 255), 1, cv::LINE_AA);
   }

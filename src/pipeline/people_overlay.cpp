@@ -24,6 +24,7 @@ cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed,
                   cv::Scalar(200, 200, 200), 1, cv::LINE_AA);
     }
   }
+  LabelPlacer labels(picture.size());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const int id = processed.person[i];
     if (id == 0) continue;
@@ -36,7 +37,7 @@ cv::Mat3b render_people(const DepthFrame& frame, const PipelineFrame& processed,
                   i < processed.probabilities.size() ? processed.probabilities[i] : 0.0);
     int baseline = 0;
     const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.5, 1, &baseline);
-    const cv::Point at = label_origin(box, size, picture.size(), 6);
+    const cv::Point at = labels.place(box, size, baseline, 6);
     cv::rectangle(picture, at + cv::Point(-2, baseline + 2), at + cv::Point(size.width + 2, -size.height - 3), colour,
                   cv::FILLED);
     cv::putText(picture, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);

@@ -25,6 +25,23 @@ cv::Mat3b colourise_depth(const cv::Mat1w& depth_mm, int max_depth_mm = 8000);
 /// right border keeps a readable label), never left of x = 2.
 cv::Point label_origin(const cv::Rect& box, const cv::Size& text, const cv::Size& image, int above);
 
+/// Labels that do not cover each other, for one picture: place() puts a label where label_origin() does and,
+/// while it would overlap a label placed before, one line lower (its height and baseline + 5 pixels), as
+/// long as it stays in the image; where no line is free it stays at label_origin()'s place. A label's
+/// rectangle is its text with 2 pixels each side, 3 above and baseline + 2 below the origin.
+class LabelPlacer {
+ public:
+  explicit LabelPlacer(cv::Size image) : image_(image) {}
+  /// The origin (cv::putText's bottom-left) of a label of size `text` and `baseline` for `box`.
+  cv::Point place(const cv::Rect& box, const cv::Size& text, int baseline, int above);
+  /// The rectangle a label of size `text` and `baseline` covers at `origin`.
+  static cv::Rect area(cv::Point origin, const cv::Size& text, int baseline);
+
+ private:
+  cv::Size image_;
+  std::vector<cv::Rect> placed_;
+};
+
 /// render_layers() with each candidate's reported box (`box`: solid), its window (thin), and a label with
 /// its index, layer depth and, when `scores` is given, its score.
 cv::Mat3b render_candidates(const DepthFrame& frame, const Segmentation& segmentation,
