@@ -35,8 +35,9 @@ cv::Point LabelPlacer::place(const cv::Rect& box, const cv::Size& text, int base
     const cv::Rect mine = area(at, text, baseline);
     return std::none_of(placed_.begin(), placed_.end(), [&](const cv::Rect& r) { return (r & mine).area() > 0; });
   };
+  const cv::Point line(0, text.height + baseline + 5);  // one line lower: the label's own height
   cv::Point at = first;
-  while (!free(at) && at.y + text.height + 2 * baseline + 7 <= image_.height) at.y += text.height + baseline + 5;
+  while (!free(at) && area(at + line, text, baseline).br().y <= image_.height) at += line;
   if (!free(at)) at = first;
   placed_.push_back(area(at, text, baseline));
   return at;
