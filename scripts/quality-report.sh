@@ -9,6 +9,8 @@
 #      in turn (thesis baseline, group validation + calibration, regularisation, trees, augmentation,
 #      iterated hard-negative bootstrapping), each evaluated on the held-out sequence and on real frames
 #   4. the recipes table: the four recipes with the chosen defaults, evaluated the same way
+#   5. the shipped default models (models/people/v*.yml, trained by scripts/train-default-model.sh on their
+#      own synthetic rooms), evaluated the same way (whole runs only)
 # Each evaluation prints one row per model: TAR at FPPF <= 0.1 and <= 0.5 (exact curve), best MOTA,
 # candidate recall, the classifier's AUC on the candidates, and the gap between the TAR the model file's
 # validation predicts at P(person) >= 0.5 and the TAR measured on the held-out candidates.
@@ -238,6 +240,13 @@ if [ "$only" != "levers" ]; then
   step "evaluate the recipes"
   evaluate "$run/recipes" tree tree2 hugeTree treeLast
   table_of "$run/recipes" "The thesis's recipes (scale 0.3) with the workbench's defaults" >> "$report"
+fi
+
+if [ -z "$only" ]; then
+  step "evaluate the shipped default models"
+  shipped=(models/people/v*.yml)
+  evaluate "$run/shipped" "${shipped[@]}"
+  table_of "$run/shipped" "The shipped default models (scripts/train-default-model.sh: their own synthetic rooms, seed 11)" >> "$report"
 fi
 
 cat "$report"
