@@ -48,6 +48,7 @@ void apply_thesis_preset(po::variables_map& values) {
   set("split-valley", c.split_valley_cm);
   set("split-step", c.split_step_cm);
   set("split-head-drop", c.split_head_drop_cm);
+  set("fit-across-head-cut", c.fit_across_head_cut);
   set("split-keep-whole", c.split_keep_whole);
   set("box", std::string("strict"));
 }
@@ -241,6 +242,9 @@ po::options_description detector_options(DetectorParams& p) {
        "... in layers nearer than this (mm)")
       ("split-head-keep-whole", po::value(&c.split_head_keep_whole)->default_value(c.split_head_keep_whole),
        "an object split between heads stays a candidate besides its pieces")
+      ("fit-across-head-cut", po::value(&c.fit_across_head_cut)->default_value(c.fit_across_head_cut),
+       "... the pieces' fitted boxes reach across the cut over an arm held out to the other's passing columns; "
+       "0 = each side of the cut only")
       ("min-part-width", po::value(&c.min_part_width_cm)->default_value(c.min_part_width_cm),
        "the narrowest piece a split leaves (cm)")
       ("split-keep-whole", po::value(&c.split_keep_whole)->default_value(c.split_keep_whole),

@@ -180,6 +180,34 @@ TEST(CandidateShapes, PeopleOverlappingAtOneDepthAreCutBetweenTheirHeads) {
   EXPECT_EQ(at_depth(frame, 2000, far).size(), 1u);
 }
 
+TEST(CandidateShapes, PiecesCutBetweenHeadsFitAcrossTheCutOverAnArmHeldOut) {
+  // Two people 37 cm wide at 2 m, 60 px apart, the right one holding an arm out (23 cm) to the left one's
+  // side: joined into one object (the fitted extents touch, 97 cm together), cut between the heads in
+  // the middle of the arm (the lowest point between them).
+  DepthFrame frame = test::wall_frame(4000);
+  paint_person(frame, 150, 96);
+  paint_person(frame, 306, 96);
+  test::paint(frame, {246, 200, 60, 20}, 2000);
+  const auto found = at_depth(frame, 2000);
+  ASSERT_EQ(found.size(), 2u);
+  ASSERT_TRUE(found[0].part && found[1].part);
+  // Each piece reaches over the whole arm up to the other's body: the arm is either's.
+  EXPECT_EQ(found[0].fitted_box, cv::Rect(150, 100, 156, 360));
+  EXPECT_EQ(found[1].fitted_box, cv::Rect(246, 100, 156, 360));
+  const cv::Rect right_with_arm(246, 100, 156, 360);
+  DetectorParams at_cut;  // each piece within its side of the cut
+  at_cut.candidates.fit_across_head_cut = false;
+  const auto cut = at_depth(frame, 2000, at_cut);
+  ASSERT_EQ(cut.size(), 2u);
+  EXPECT_EQ(cut[0].fitted_box.br().x, cut[1].fitted_box.x);  // they meet at the cut, inside the arm
+  EXPECT_GT(cut[1].fitted_box.x, 246 + 10);
+  EXPECT_LT(cut[1].fitted_box.x, 306 - 10);
+  EXPECT_LT(iou(cut[1].fitted_box, right_with_arm), iou(found[1].fitted_box, right_with_arm));
+  // Crops and strict boxes do not depend on it.
+  EXPECT_EQ(cut[1].strict_box, found[1].strict_box);
+  EXPECT_EQ(cv::norm(cut[1].depth_crop, found[1].depth_crop, cv::NORM_INF), 0);
+}
+
 TEST(CandidateShapes, ARaisedHandIsNoHead) {
   DepthFrame frame = test::wall_frame(4000);
   paint_person(frame, 280, 200);                  // head 15 cm wide on columns 360-399
@@ -271,6 +299,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_EQ(t.candidates.narrow_fitted_width_cm, 0);
   EXPECT_EQ(t.candidates.split_depth_jump_mm + t.candidates.split_valley_cm + t.candidates.split_step_cm, 0);
   EXPECT_EQ(t.candidates.split_head_drop_cm, 0);
+  EXPECT_FALSE(t.candidates.fit_across_head_cut);
   EXPECT_EQ(t.reported_box, BoxKind::strict);
   EXPECT_EQ(DetectorParams().reported_box, BoxKind::fitted);
 }

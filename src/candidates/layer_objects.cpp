@@ -565,7 +565,8 @@ class ObjectShaper {
     if (depth > 4) return;
     const int min_piece = std::max(1, px(params_.min_part_width_cm));
     int c = split_heads_enabled() ? cut_heads(whole, min_piece) : -1;
-    if (by_heads != nullptr) *by_heads = c >= 0;
+    const bool heads = c >= 0;
+    if (by_heads != nullptr) *by_heads = heads;
     if (c < 0 && split_wide_enabled() && cm(whole.fit_last - whole.fit_first + 1) > params_.max_person_width_cm) {
       c = cut(whole, min_piece);
     }
@@ -579,7 +580,13 @@ class ObjectShaper {
       }
       if (first < 0) continue;
       LayerObject piece = span(first, last);
-      fit(piece, lo, hi);
+      // Between heads the columns around the cut may hold an arm either person holds out: with
+      // fit_across_head_cut each piece reaches over them up to the other piece's passing columns.
+      if (heads && params_.fit_across_head_cut) {
+        fit(piece, whole.fit_first, whole.fit_last);
+      } else {
+        fit(piece, lo, hi);
+      }
       piece.part = true;
       piece.object = whole.object;
       if (!wide_enough(piece)) continue;

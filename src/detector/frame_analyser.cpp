@@ -31,6 +31,7 @@ DetectorParams thesis_params(DetectorParams params) {
   c.split_valley_cm = 0;
   c.split_step_cm = 0;
   c.split_head_drop_cm = 0;
+  c.fit_across_head_cut = false;
   c.split_keep_whole = false;
   return params;
 }

@@ -13,7 +13,8 @@
 //      together at least narrow_passing_width_cm);
 //   3. splitting: an object of any width with two heads on top of its profile (the highest pixel per
 //      column) is cut between them at the lowest point (people overlapping in the image at one depth:
-//      split_head_drop_cm; the whole stays one too, split_head_keep_whole); else an object wider than a
+//      split_head_drop_cm; the whole stays one too, split_head_keep_whole; each piece's fitted extent
+//      reaches across the cut to the other's passing columns, fit_across_head_cut); else an object wider than a
 //      person is cut where the layer's depth jumps between neighbouring columns (split_depth_jump_mm), at
 //      deep valleys of its column-height profile (split_valley_cm) or at steps (split_step_cm); the pieces
 //      become objects, and the whole stays one too when split_keep_whole is set;
