@@ -30,6 +30,7 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
 USAGE
 }
 out=out/default-model install=0 force=0 quick=0
+target=models/people/v2.yml  # the file this script trains and installs
 while (($#)); do
   case "$1" in
     --out) out="$2"; shift 2 ;;
@@ -41,8 +42,8 @@ while (($#)); do
   esac
 done
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
-if ((install && !force)) && [ -e models/people/v2.yml ]; then
-  echo "train-default-model: models/people/v2.yml exists (give --force to replace it)" >&2
+if ((install && !force)) && [ -e "$target" ]; then
+  echo "train-default-model: $target exists (give --force to replace it)" >&2
   exit 1
 fi
 
@@ -75,7 +76,7 @@ train_once() {  # work folder -> prints the model path
     --neg "$w/sets/negatives" "$w/sets/people" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
     --group-frames "$group_frames" \
     --threads 2 >&2
-  echo "$w/models/people/v2.yml"
+  echo "$w/$target"
 }
 
 model=$(train_once "$out/a") || exit 1
@@ -94,8 +95,8 @@ fi
 echo "train-default-model: $model ($(wc -c <"$model") bytes)"
 if ((install)); then
   mkdir -p models/people
-  cp "$model" models/people/v2.yml.tmp
-  sync models/people/v2.yml.tmp
-  mv models/people/v2.yml.tmp models/people/v2.yml
-  echo "train-default-model: installed models/people/v2.yml"
+  cp "$model" "$target.tmp"
+  sync "$target.tmp"
+  mv "$target.tmp" "$target"
+  echo "train-default-model: installed $target"
 fi
