@@ -35,7 +35,7 @@ cv::Point LabelPlacer::place(const cv::Rect& box, const cv::Size& text, int base
     const cv::Rect mine = area(at, text, baseline);
     return std::none_of(placed_.begin(), placed_.end(), [&](const cv::Rect& r) { return (r & mine).area() > 0; });
   };
-  const cv::Point line(0, text.height + baseline + 5);  // one line lower: the label's own height
+  const cv::Point line(0, area(first, text, baseline).height);  // one line lower: the label's own height
   cv::Point at = first;
   while (!free(at) && area(at + line, text, baseline).br().y <= image_.height) at += line;
   if (!free(at)) at = first;
