@@ -40,6 +40,7 @@ void apply_thesis_preset(po::variables_map& values) {
   set("fit-reach", c.fit_reach_cm);
   set("fit-depth-step", c.fit_depth_step_mm);
   set("fit-occlusion-gap", c.fit_occlusion_gap_cm);
+  set("fit-min-width-ratio", c.fit_min_width_ratio);
   set("join-pieces", c.join_pieces);
   set("max-object-width", c.max_object_width_cm);
   set("min-fitted-width", c.min_fitted_width_cm);
@@ -202,6 +203,10 @@ po::options_description detector_options(DetectorParams& p) {
        "fitted box: a piece's mean depth within this (mm) of its neighbour's; 0 = any")
       ("fit-occlusion-gap", po::value(&c.fit_occlusion_gap_cm)->default_value(c.fit_occlusion_gap_cm),
        "fitted box: ... also across this much (cm) of nearer things in front (an arm behind a nearer person); 0 = off")
+      ("fit-min-width-ratio",
+       po::value(&c.fit_min_width_ratio)->default_value(c.fit_min_width_ratio, shortest_text(c.fit_min_width_ratio)),
+       "fitted box: at least this fraction of its height wide, widened about its centre (limbs swung out of the "
+       "layer); 0 = the layer's extent alone")
       ("join-pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
        "objects whose fitted extents touch are one when no wider than --max-person-width; 0 = thesis")
       ("join-narrow-layers-below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
         ("out", po::value(&o.out_set)->required(), "sample set to append to (created when missing)")
         ("model", po::value(&o.model), "show each candidate's score H(x) with this model (file, NAME or NAME/vN)")
         ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
-        ("accept", po::value(&o.session.accept_probability)->default_value(o.session.accept_probability),
+        ("accept", po::value(&o.session.accept_probability)
+                      ->default_value(o.session.accept_probability, rdsf::cli::shortest_text(o.session.accept_probability)),
          "with --model: candidates with P(person) >= this are answered y by the model, never shown")
         ("reject", po::value(&o.session.reject_probability)->default_value(o.session.reject_probability),
          "with --model: candidates with P(person) <= this are answered n by the model, never shown")

@@ -11,7 +11,15 @@ using namespace rdsf;
 
 namespace {
 
-std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = {},
+// The defaults with the fitted box at the layer's extent alone (fit_min_width_ratio 0): most tests here
+// check that extent; FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight checks the widening on top of it.
+DetectorParams extent() {
+  DetectorParams p;
+  p.candidates.fit_min_width_ratio = 0;
+  return p;
+}
+
+std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = extent(),
                                 double tolerance_mm = 30) {
   std::vector<Candidate> found;
   for (const Candidate& c : FrameAnalyser(params).analyse(frame, false).candidates) {
@@ -34,7 +42,7 @@ void paint_person(DepthFrame& frame, int left, int body_px, int depth_mm = 2000)
 
 // The wide-object cuts alone (heads off).
 DetectorParams splitting() {
-  DetectorParams p;
+  DetectorParams p = extent();
   p.candidates.split_head_drop_cm = 0;
   p.candidates.split_valley_cm = 15;
   p.candidates.split_step_cm = 30;
@@ -43,7 +51,7 @@ DetectorParams splitting() {
 }
 
 DetectorParams splitting_off() {
-  DetectorParams p;
+  DetectorParams p = extent();
   p.candidates.split_head_drop_cm = 0;
   return p;
 }
@@ -54,7 +62,7 @@ TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
   DepthFrame frame = test::wall_frame(4000);
   const cv::Rect person(300, 60, 60, 400);  // 23 cm x 152 cm at 2 m: side-on
   test::paint(frame, person, 2000);
-  const auto found = at_depth(frame, 2000);
+  const auto found = at_depth(frame, 2000);  // the layer's extent alone: no minimum width for the box
   ASSERT_EQ(found.size(), 1u);
   const cv::Rect& fitted = found[0].fitted_box;
   EXPECT_LE(std::abs(fitted.x - person.x), person.width / 10);
@@ -65,6 +73,32 @@ TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
   EXPECT_EQ(found[0].strict_box, cv::Rect(230, 60, 200, 400));  // the crop's box is unchanged
 }
 
+TEST(CandidateShapes, FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight) {
+  // The same slab of 0.15 of its height, and one at the left border: by default each box is widened about
+  // its centre to 0.3 of its height (clipped to the image); crops, strict boxes and windows do not change.
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 60, 60, 400}, 2000);
+  test::paint(frame, {0, 60, 40, 400}, 2000);  // cut by the left border
+  const auto widened = at_depth(frame, 2000, DetectorParams()), narrow = at_depth(frame, 2000);
+  ASSERT_EQ(widened.size(), 2u);
+  ASSERT_EQ(narrow.size(), 2u);
+  EXPECT_EQ(narrow[0].fitted_box, cv::Rect(0, 60, 40, 400));
+  EXPECT_EQ(widened[0].fitted_box, cv::Rect(0, 60, 80, 400));  // centre 20, 120 wide, clipped at 0
+  EXPECT_EQ(narrow[1].fitted_box, cv::Rect(300, 60, 60, 400));
+  EXPECT_EQ(widened[1].fitted_box, cv::Rect(270, 60, 120, 400));  // centre 330, 0.3 x 400 = 120 wide
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(widened[i].extent_box, narrow[i].fitted_box);  // labelling by overlap uses the extent
+    EXPECT_EQ(labelling_box(widened[i], BoxKind::fitted), narrow[i].fitted_box);
+    EXPECT_EQ(widened[i].strict_box, narrow[i].strict_box);
+    EXPECT_EQ(widened[i].window, narrow[i].window);
+    EXPECT_EQ(cv::norm(widened[i].depth_crop, narrow[i].depth_crop, cv::NORM_INF), 0);
+  }
+  // A box already wider than the ratio keeps its extent.
+  DetectorParams wide;  // the defaults but a ratio of 0.1
+  wide.candidates.fit_min_width_ratio = 0.1;
+  EXPECT_EQ(at_depth(frame, 2000, wide)[1].fitted_box, cv::Rect(300, 60, 60, 400));
+}
+
 TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
   DepthFrame frame = test::wall_frame(4000);
   test::paint(frame, {300, 100, 60, 360}, 2000);  // body
@@ -72,7 +106,7 @@ TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
   const auto found = at_depth(frame, 2000);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(230, 100, 130, 360));
-  DetectorParams no_reach;
+  DetectorParams no_reach = extent();
   no_reach.candidates.fit_reach_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, no_reach)[0].fitted_box, cv::Rect(300, 100, 60, 360));
 }
@@ -84,7 +118,7 @@ TEST(CandidateShapes, FittedBoxReachesAnArmBehindSomethingNearer) {
   test::paint(frame, {300, 100, 60, 360}, 3000);  // body
   test::paint(frame, {360, 160, 90, 20}, 3000);   // the arm
   test::paint(frame, {370, 40, 20, 440}, 1500);   // the post, in front of the arm's columns 370-389
-  DetectorParams on;
+  DetectorParams on = extent();
   on.candidates.fit_occlusion_gap_cm = 15;
   const auto found = at_depth(frame, 3000, on);
   ASSERT_EQ(found.size(), 1u);
@@ -109,7 +143,7 @@ TEST(CandidateShapes, FittedBoxDoesNotJumpASmallNearerThingToAnotherObject) {
     test::paint(frame, {360, post_top, 20, 480 - post_top}, 1500);
     return frame;
   };
-  DetectorParams on;
+  DetectorParams on = extent();
   on.candidates.fit_occlusion_gap_cm = 15;
   const auto big = at_depth(scene(40), 3000, on);
   ASSERT_EQ(big.size(), 1u);
@@ -167,15 +201,15 @@ TEST(CandidateShapes, PeopleOverlappingAtOneDepthAreCutBetweenTheirHeads) {
   EXPECT_TRUE(found[0].part && found[1].part);
   EXPECT_GE(best_iou(found, left, BoxKind::fitted), 0.8);
   EXPECT_GE(best_iou(found, right, BoxKind::fitted), 0.8);
-  DetectorParams keep;
+  DetectorParams keep = extent();
   keep.candidates.split_head_keep_whole = true;
   const auto with_whole = at_depth(frame, 2000, keep);
   ASSERT_EQ(with_whole.size(), 3u);
   EXPECT_GE(best_iou(with_whole, both, BoxKind::fitted), 0.95);
-  DetectorParams shallow;  // shoulders less than 25 cm below the heads: no heads
+  DetectorParams shallow = extent();  // shoulders less than 25 cm below the heads: no heads
   shallow.candidates.split_head_drop_cm = 25;
   EXPECT_EQ(at_depth(frame, 2000, shallow).size(), 1u);
-  DetectorParams far;  // heads only in layers nearer than split_head_layers_below
+  DetectorParams far = extent();  // heads only in layers nearer than split_head_layers_below
   far.candidates.split_head_layers_below_mm = 2000;
   EXPECT_EQ(at_depth(frame, 2000, far).size(), 1u);
 }
@@ -195,7 +229,7 @@ TEST(CandidateShapes, PiecesCutBetweenHeadsFitAcrossTheCutOverAnArmHeldOut) {
   EXPECT_EQ(found[0].fitted_box, cv::Rect(150, 100, 156, 360));
   EXPECT_EQ(found[1].fitted_box, cv::Rect(246, 100, 156, 360));
   const cv::Rect right_with_arm(246, 100, 156, 360);
-  DetectorParams at_cut;  // each piece within its side of the cut
+  DetectorParams at_cut = extent();  // each piece within its side of the cut
   at_cut.candidates.fit_across_head_cut = false;
   const auto cut = at_depth(frame, 2000, at_cut);
   ASSERT_EQ(cut.size(), 2u);
@@ -215,7 +249,7 @@ TEST(CandidateShapes, ARaisedHandIsNoHead) {
   const auto found = at_depth(frame, 2000);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(280, 90, 200, 370));
-  DetectorParams any_width;  // without the narrowest head top, the hand is a second head
+  DetectorParams any_width = extent();  // without the narrowest head top, the hand is a second head
   any_width.candidates.split_head_min_width_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, any_width).size(), 2u);
 }
@@ -280,7 +314,7 @@ TEST(CandidateShapes, NarrowPiecesAreNotCandidatesUnlessCutByTheBorder) {
   DepthFrame frame = test::wall_frame(4000);
   test::paint(frame, {300, 60, 30, 400}, 2000);  // 11 cm wide: a post, not a person
   EXPECT_TRUE(at_depth(frame, 2000).empty());
-  DetectorParams off;
+  DetectorParams off = extent();
   off.candidates.min_fitted_width_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, off).size(), 1u);
 }
@@ -293,6 +327,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_FALSE(t.candidates.height_at_column_depth);
   EXPECT_EQ(t.candidates.fit_reach_cm, 0);
   EXPECT_EQ(t.candidates.fit_occlusion_gap_cm, 0);
+  EXPECT_EQ(t.candidates.fit_min_width_ratio, 0);
   EXPECT_FALSE(t.candidates.join_pieces);
   EXPECT_EQ(t.candidates.max_object_width_cm, 0);
   EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);

@@ -57,7 +57,8 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = read_file(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "frame,candidate,x,y,w,h,depth_mm,score");
-  EXPECT_NE(csv.find("scene,0,300,100,40,360,2000,\n"), std::string::npos) << csv;  // the fitted box
+  // The fitted box: the slab's extent (300, 40 wide) widened about its centre to 0.3 of its height.
+  EXPECT_NE(csv.find("scene,0,266,100,108,360,2000,\n"), std::string::npos) << csv;
   EXPECT_EQ(count_lines(csv), 1 + 3);  // header, the person, two wall pieces
   const cv::Mat picture = cv::imread(dir / "pics/scene.detections.png");
   ASSERT_FALSE(picture.empty());
@@ -92,7 +93,9 @@ TEST(DetectProgram, BoxOptionAndThesisPreset) {
   EXPECT_NE(read_file(dir / "thesis.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
   // An explicit option wins over the preset.
   ASSERT_EQ(test::run(base + test::quote(dir / "mixed.csv") + " --thesis --box fitted").exit_code, 0);
-  EXPECT_NE(read_file(dir / "mixed.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);
+  EXPECT_NE(read_file(dir / "mixed.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);  // no widening
+  ASSERT_EQ(test::run(base + test::quote(dir / "extent.csv") + " --fit-min-width-ratio 0").exit_code, 0);
+  EXPECT_NE(read_file(dir / "extent.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);
   EXPECT_EQ(test::run(base + test::quote(dir / "bad.csv") + " --box tight").exit_code, 2);
 }
 
@@ -100,8 +103,9 @@ TEST(DetectProgram, TruthWithoutAModelCountsThePeopleWithACandidate) {
   test::TempDir dir;
   write_scene(dir);
   std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\nscene,1,300,100,40,360\n";
+  // The scene's person is a slab of 0.11 of its height: counted by its extent (no widened fitted box).
   const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --truth " +
-                                      test::quote(dir / "boxes.csv"));
+                                      test::quote(dir / "boxes.csv") + " --fit-min-width-ratio 0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("1 of 1 people have a candidate (fitted box IoU >= 0.5), 0 without; strict box: 0"),
             std::string::npos)
@@ -114,8 +118,9 @@ TEST(DetectProgram, PeopleWithoutACandidateAreCountedByTheNearestCandidatesShape
   // The scene's person, a box where nothing is (none) and one half as wide as the candidate (wide).
   std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\nscene,1,300,100,40,360\nscene,2,20,20,40,100\n"
                                       "scene,3,300,100,19,360\n";
+  // The scene's person is a slab of 0.11 of its height: counted by its extent (no widened fitted box).
   const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --truth " +
-                                      test::quote(dir / "boxes.csv"));
+                                      test::quote(dir / "boxes.csv") + " --fit-min-width-ratio 0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("1 of 3 people have a candidate (fitted box IoU >= 0.5), 2 without"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("without a candidate, by the nearest candidate's fitted box: 1 none, 1 wide"), std::string::npos)

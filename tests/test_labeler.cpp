@@ -170,6 +170,25 @@ TEST(Labeler, AssistedModeAgreesWithGroundTruth) {
   EXPECT_NE(labelled.err.find("; 0 left unanswered"), std::string::npos) << labelled.err;
 }
 
+TEST(Labeler, TruthLabelsByTheExtentNotTheWidenedFittedBox) {
+  // Each frame's person is a slab 40 px wide: its fitted box is widened to 0.3 of its height (108 and 114
+  // px, IoU 0.37 and 0.35 with the truth), its extent is the truth. Labelling by overlap uses the extent,
+  // so both are positives and the walls negatives, whatever fit_min_width_ratio says.
+  test::TempDir dir;
+  write_two_frames(dir);
+  std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\na,1,300,100,40,360\nb,1,200,80,40,380\n";
+  for (const char* ratio : {"0.3", "0"}) {
+    const std::string set = std::string("set-") + ratio;
+    const test::RunResult r = test::run(label() + " --source " + test::quote(dir / "frames") + " --out " +
+                                        test::quote(dir / set) + " --truth " + test::quote(dir / "boxes.csv") +
+                                        " --answers /dev/null --keep-rejected --fit-min-width-ratio " + ratio);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const SampleSet labelled = SampleSet::open_read(dir / set);
+    EXPECT_EQ(labelled.count(1), 2u) << ratio;
+    EXPECT_EQ(labelled.count(0), 4u) << ratio;
+  }
+}
+
 TEST(Labeler, AnswersRunningOutLeaveUncertainCandidatesAndComplete) {
   test::TempDir dir;
   write_two_frames(dir);

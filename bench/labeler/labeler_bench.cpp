@@ -39,7 +39,7 @@ void add_recording(const std::string& dir, const FrameAnalyser& analyser, Pool& 
       double best = 0, ignored = 0;
       for (const TruthBox& person : truth.in(frame.name)) {
         double& to = person.ignored ? ignored : best;
-        to = std::max(to, iou(reported_box(a.candidates[i], analyser.params().reported_box), person.box));
+        to = std::max(to, iou(labelling_box(a.candidates[i], analyser.params().reported_box), person.box));
       }
       int label = -1;
       if (best >= 0.5) label = 1;

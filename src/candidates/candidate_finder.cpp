@@ -66,6 +66,16 @@ void sample_window(const DepthFrame& frame, const cv::Mat1b& labels, int layer, 
   }
 }
 
+// `box` widened about its centre to lround(ratio * height) columns when narrower (fit_min_width_ratio;
+// the caller clips it to the image); unchanged when ratio <= 0 or it is wide enough.
+cv::Rect at_least_wide(cv::Rect box, double ratio) {
+  const int wanted = static_cast<int>(std::lround(ratio * box.height));
+  if (ratio <= 0 || box.width >= wanted) return box;
+  box.x = static_cast<int>(std::lround(box.x + box.width / 2.0 - wanted / 2.0));
+  box.width = wanted;
+  return box;
+}
+
 }  // namespace
 
 void cut_crops(const DepthFrame& frame, const cv::Mat1b& labels, int layer, const cv::Rect& window,
@@ -120,9 +130,10 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       const int box_width = std::max(1, static_cast<int>(std::lround(box_height / 2.0)));
       const cv::Rect strict(object.highest - box_width / 2, top, box_width, box_height);
       candidate.strict_box = strict & image;
-      candidate.fitted_box =
-          cv::Rect(object.fit_first, object.fit_top, object.fit_last - object.fit_first + 1, bottom - object.fit_top + 1) &
-          image;
+      const cv::Rect extent(object.fit_first, object.fit_top, object.fit_last - object.fit_first + 1,
+                            bottom - object.fit_top + 1);
+      candidate.extent_box = extent & image;
+      candidate.fitted_box = at_least_wide(extent, params.fit_min_width_ratio) & image;
       const double cx = strict.x + strict.width / 2.0;
       const double cy = strict.y + strict.height / 2.0;
       const int window_width = std::max(1, static_cast<int>(std::lround(strict.width * params.window_scale)));

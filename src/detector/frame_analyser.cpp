@@ -23,6 +23,7 @@ DetectorParams thesis_params(DetectorParams params) {
   c.height_at_column_depth = false;
   c.fit_reach_cm = 0;
   c.fit_occlusion_gap_cm = 0;
+  c.fit_min_width_ratio = 0;
   c.join_pieces = false;
   c.max_object_width_cm = 0;
   c.min_fitted_width_cm = 0;

@@ -115,7 +115,7 @@ void LabelingSession::analyse_loaded(LoadedFrame& loaded) const {
     double best = 0, ignored = 0;
     for (const TruthBox& person : truth_->in(loaded.frame.name)) {
       double& to = person.ignored ? ignored : best;
-      to = std::max(to, iou(reported_box(c, config_.detector.reported_box), person.box));
+      to = std::max(to, iou(labelling_box(c, config_.detector.reported_box), person.box));
     }
     loaded.truth_iou.push_back(best);
     loaded.ignored_iou.push_back(ignored);

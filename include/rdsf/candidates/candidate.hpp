@@ -8,10 +8,14 @@ struct Candidate {
   /// The "strict box": height from the highest to the lowest point of the object, width = height / 2,
   /// centred on the column of the highest point; clipped to the image. Pixels.
   cv::Rect strict_box;
-  /// The "fitted box": the real extent of the object's pixels, left to right over the columns that pass
-  /// threshold_height, top to bottom from the highest to the lowest point (the strict box's rows); inside
-  /// the image. What detections report by default (BoxKind::fitted); the strict box and window stay what
-  /// the crop is cut from.
+  /// The object's extent: left to right over the columns that pass threshold_height and the pieces
+  /// attached to them (CandidateParams::fit_*), top to bottom from the highest to the lowest point (the
+  /// strict box's rows); inside the image. Labelling by overlap with true boxes uses it (labelling_box()):
+  /// a candidate is a positive when the layer's pixels, which its crop shows, are mostly the person.
+  cv::Rect extent_box;
+  /// The "fitted box": extent_box widened about its centre to CandidateParams::fit_min_width_ratio of its
+  /// height when narrower (a person's limbs swung out of the layer), clipped to the image. What detections
+  /// report by default (BoxKind::fitted); the strict box and window stay what the crop is cut from.
   cv::Rect fitted_box;
   /// The strict box enlarged by window_scale about its centre, before clipping (may leave the image).
   cv::Rect window_unclipped;
@@ -41,6 +45,13 @@ enum class BoxKind {
 
 inline const cv::Rect& reported_box(const Candidate& candidate, BoxKind kind) {
   return kind == BoxKind::strict ? candidate.strict_box : candidate.fitted_box;
+}
+
+/// The box a candidate is labelled by (its overlap with true boxes): the strict box with BoxKind::strict,
+/// else its extent (Candidate::extent_box), not the fitted box's widening, so that what labels the
+/// training crops does not change with fit_min_width_ratio (docs/candidates.md).
+inline const cv::Rect& labelling_box(const Candidate& candidate, BoxKind kind) {
+  return kind == BoxKind::strict ? candidate.strict_box : candidate.extent_box;
 }
 
 }  // namespace rdsf

@@ -54,6 +54,14 @@ struct CandidateParams {
   /// measured the 16 held-out rooms' candidate recall 0.829 -> 0.876 but detection figures no better there
   /// and the real frames' lower (lever models' TAR at FPPF <= 0.5 0.895 -> 0.854; docs/candidates.md).
   double fit_occlusion_gap_cm = 0.0;
+  /// Fitted box: at least this fraction of its height wide, widened about its centre (and clipped to the
+  /// image) when narrower. A walking person swings the limbs out of the body's depth layer (the stride's
+  /// trailing leg behind, the arm swung forward in front), so the layer's pixels alone can be half the
+  /// person's width; nearly every person's tight box is wider than 0.3 of its height (the real frames'
+  /// narrowest 3 of 49 are 0.21-0.25, which 0.3 still matches at IoU >= 0.7). Only reported boxes change:
+  /// never crops, scores or labelling by overlap with true boxes (Candidate::extent_box). 0: the layer's extent alone (the fifth wave); 0.3 measured by the quality
+  /// report (docs/candidates.md, "A person's width from their height").
+  double fit_min_width_ratio = 0.3;
   /// Joining pieces: neighbouring objects of a layer whose fitted extents touch are one object when
   /// together no wider than max_person_width_cm (a person whose torso columns fail threshold_height
   /// because the legs part below). false: the thesis's objects.
