@@ -71,6 +71,11 @@ TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
   EXPECT_LE(std::abs(fitted.height - person.height), person.height / 10);
   EXPECT_LT(iou(found[0].strict_box, person), 0.5);  // height/2 wide: the thesis's box cannot match
   EXPECT_EQ(found[0].strict_box, cv::Rect(230, 60, 200, 400));  // the crop's box is unchanged
+  // With the defaults the extent is the same; the reported box is widened to 0.3 of the height.
+  const auto by_default = at_depth(frame, 2000, DetectorParams());
+  ASSERT_EQ(by_default.size(), 1u);
+  EXPECT_EQ(by_default[0].extent_box, fitted);
+  EXPECT_EQ(by_default[0].fitted_box.width, 120);
 }
 
 TEST(CandidateShapes, FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight) {
