@@ -44,6 +44,22 @@ TEST(GroundTruth, BadLinesAreNamed) {
             "boxes.csv: line 2: visible_fraction is not a number in [0, 1]: '1.5'");
 }
 
+TEST(GroundTruth, OverlapWithCountedAndIgnoredPeopleApart) {
+  std::vector<TruthBox> people(3);
+  people[0].box = {0, 0, 100, 100};
+  people[1].box = {0, 0, 100, 50};  // the box looked at below: IoU 1
+  people[2].box = {0, 0, 100, 100};
+  people[2].ignored = true;
+  const TruthOverlap half = truth_overlap({0, 0, 100, 50}, {people[0], people[2]});
+  EXPECT_DOUBLE_EQ(half.counted, 0.5);
+  EXPECT_DOUBLE_EQ(half.ignored, 0.5);
+  EXPECT_DOUBLE_EQ(truth_overlap({0, 0, 100, 50}, people).counted, 1.0);  // the best of the counted ones
+  const TruthOverlap apart = truth_overlap({300, 300, 10, 10}, people);
+  EXPECT_EQ(apart.counted, 0);
+  EXPECT_EQ(apart.ignored, 0);
+  EXPECT_EQ(truth_overlap({0, 0, 10, 10}, {}).counted, 0);
+}
+
 TEST(DetectionMetrics, ThesisFarDefinition) {
   DetectionFigures f;
   f.n_frames = 608;

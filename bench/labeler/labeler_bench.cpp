@@ -36,14 +36,11 @@ void add_recording(const std::string& dir, const FrameAnalyser& analyser, Pool& 
     ++pool.frames;
     const FrameAnalysis a = analyser.analyse(frame, /*with_features=*/true);
     for (std::size_t i = 0; i < a.candidates.size(); ++i) {
-      double best = 0, ignored = 0;
-      for (const TruthBox& person : truth.in(frame.name)) {
-        double& to = person.ignored ? ignored : best;
-        to = std::max(to, iou(labelling_box(a.candidates[i], analyser.params().reported_box), person.box));
-      }
+      const TruthOverlap overlap =
+          truth_overlap(labelling_box(a.candidates[i], analyser.params().reported_box), truth.in(frame.name));
       int label = -1;
-      if (best >= 0.5) label = 1;
-      if (best < 0.3 && ignored < 0.3) label = 0;
+      if (overlap.counted >= 0.5) label = 1;
+      if (overlap.counted < 0.3 && overlap.ignored < 0.3) label = 0;
       if (label < 0) continue;
       pool.rows.push_back(a.features.row(static_cast<int>(i)));
       pool.labels.push_back(label);

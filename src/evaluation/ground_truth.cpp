@@ -1,10 +1,12 @@
 #include "rdsf/evaluation/ground_truth.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
@@ -51,6 +53,15 @@ const std::vector<TruthBox>& GroundTruth::in(const std::string& frame) const {
   static const std::vector<TruthBox> none;
   const auto it = frames.find(frame);
   return it == frames.end() ? none : it->second;
+}
+
+TruthOverlap truth_overlap(const cv::Rect& box, const std::vector<TruthBox>& people) {
+  TruthOverlap overlap;
+  for (const TruthBox& person : people) {
+    double& best = person.ignored ? overlap.ignored : overlap.counted;
+    best = std::max(best, iou(box, person.box));
+  }
+  return overlap;
 }
 
 std::size_t ignore_hardly_visible(GroundTruth& truth, double min_visible_fraction) {

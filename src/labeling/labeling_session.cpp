@@ -112,13 +112,10 @@ void LabelingSession::analyse_loaded(LoadedFrame& loaded) const {
   score(loaded);
   if (truth_ == nullptr) return;
   for (const Candidate& c : loaded.analysis.candidates) {
-    double best = 0, ignored = 0;
-    for (const TruthBox& person : truth_->in(loaded.frame.name)) {
-      double& to = person.ignored ? ignored : best;
-      to = std::max(to, iou(labelling_box(c, config_.detector.reported_box), person.box));
-    }
-    loaded.truth_iou.push_back(best);
-    loaded.ignored_iou.push_back(ignored);
+    const TruthOverlap overlap =
+        truth_overlap(labelling_box(c, config_.detector.reported_box), truth_->in(loaded.frame.name));
+    loaded.truth_iou.push_back(overlap.counted);
+    loaded.ignored_iou.push_back(overlap.ignored);
   }
 }
 

@@ -27,6 +27,15 @@ struct GroundTruth {
   const std::vector<TruthBox>& in(const std::string& frame) const;
 };
 
+/// How much a box overlaps the people of a frame: the best IoU with a counted person and with an ignored
+/// ("don't care") one, 0 where there is none. Labelling by overlap reads both (a candidate is a person at
+/// counted >= 0.5, not one when both are below the uncertain band).
+struct TruthOverlap {
+  double counted = 0;
+  double ignored = 0;
+};
+TruthOverlap truth_overlap(const cv::Rect& box, const std::vector<TruthBox>& people);
+
 /// Marks people whose visible_fraction is below `min_visible_fraction` as ignored; returns how many.
 std::size_t ignore_hardly_visible(GroundTruth& truth, double min_visible_fraction);
 
