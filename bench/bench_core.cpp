@@ -17,7 +17,7 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
 #include "rdsf/synth/synth_sequence.hpp"

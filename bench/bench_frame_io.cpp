@@ -23,7 +23,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_png.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_decoder.hpp"

@@ -8,7 +8,7 @@
 
 #include <boost/program_options.hpp>
 
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "rdsf/frame/camera_model.hpp"
 

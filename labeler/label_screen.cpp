@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "gui/screen_text.hpp"
-#include "rdsf/detector/overlay.hpp"
+#include "rdsf/analysis/overlay.hpp"
 #include "label_keys.hpp"
 
 namespace rdsf {

@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "gui/screen_text.hpp"
-#include "rdsf/detector/overlay.hpp"
+#include "rdsf/analysis/overlay.hpp"
 #include "review_keys.hpp"
 
 namespace rdsf {

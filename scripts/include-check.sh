@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # The library's folders in the order of the flow; each may include the ones before it.
-flow="core frame segmentation candidates features detector classifier tracking evaluation pipeline dataset labeling"
+flow="core frame segmentation candidates features analysis classifier tracking evaluation pipeline dataset labeling"
 # Beside the flow: what they may include.
 declare -A beside=([synth]="core frame")
 programs="detector synth miner labeler trainer recorder bench"

@@ -10,7 +10,7 @@
 
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
-#include "rdsf/detector/overlay.hpp"
+#include "rdsf/analysis/overlay.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/depth_png.hpp"
 

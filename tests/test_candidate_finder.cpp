@@ -2,7 +2,7 @@
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/column_heights.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "rdsf/candidates/candidate_finder.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "support/depth_scenes.hpp"
 
 using namespace rdsf;

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "rdsf/core/stable_hash.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 

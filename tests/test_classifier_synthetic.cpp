@@ -8,7 +8,7 @@
 
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
 namespace rdsf {

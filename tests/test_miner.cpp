@@ -15,7 +15,7 @@
 #include "rdsf/dataset/negative_miner.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "rdsf/candidates/candidate_finder.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "support/depth_scenes.hpp"
 
 using namespace rdsf;

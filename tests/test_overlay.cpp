@@ -8,7 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "rdsf/detector/overlay.hpp"
+#include "rdsf/analysis/overlay.hpp"
 
 namespace {
 

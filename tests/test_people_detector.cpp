@@ -7,7 +7,7 @@
 
 #include "rdsf/classifier/model_file.hpp"
 #include "rdsf/core/error.hpp"
-#include "rdsf/people_detector.hpp"
+#include "rdsf/pipeline/people_detector.hpp"
 #include "rdsf/pipeline/parallel_pipeline.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 #include "support/depth_scenes.hpp"

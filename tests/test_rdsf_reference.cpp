@@ -7,7 +7,7 @@
 #include <cstring>
 #include <random>
 
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 

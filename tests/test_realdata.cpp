@@ -11,10 +11,10 @@
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/classifier/model_registry.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/evaluation/detection_metrics.hpp"
 #include "rdsf/frame/frame_source.hpp"
-#include "rdsf/people_detector.hpp"
+#include "rdsf/pipeline/people_detector.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;

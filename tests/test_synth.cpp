@@ -11,7 +11,7 @@
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/core/stable_hash.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/synth/depth_statistics.hpp"
 #include "rdsf/synth/kinect_sensor.hpp"
 #include "rdsf/synth/people_planner.hpp"

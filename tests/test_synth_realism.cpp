@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_png.hpp"
 #include "support/test_support.hpp"
 #include "rdsf/synth/depth_statistics.hpp"

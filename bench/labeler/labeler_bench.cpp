@@ -11,7 +11,7 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/classifier/seeded_sampling.hpp"
 #include "rdsf/core/error.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/active_learning.hpp"

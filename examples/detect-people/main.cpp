@@ -8,7 +8,7 @@
 
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/frame/frame_source.hpp"
-#include "rdsf/people_detector.hpp"
+#include "rdsf/pipeline/people_detector.hpp"
 #include "rdsf/version.hpp"
 
 int main(int argc, char** argv) {

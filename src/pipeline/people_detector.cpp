@@ -1,4 +1,4 @@
-#include "rdsf/people_detector.hpp"
+#include "rdsf/pipeline/people_detector.hpp"
 
 #include "rdsf/classifier/model_file.hpp"
 

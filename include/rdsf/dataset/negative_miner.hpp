@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/camera_model.hpp"
 
 namespace rdsf {

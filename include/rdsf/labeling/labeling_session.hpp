@@ -30,7 +30,7 @@
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"

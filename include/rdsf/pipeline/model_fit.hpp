@@ -8,7 +8,7 @@
 #include <string>
 
 #include "rdsf/classifier/boosted_model.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 
 namespace rdsf {
 

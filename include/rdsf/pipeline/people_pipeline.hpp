@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "rdsf/classifier/boosted_model.hpp"
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_frame.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/tracking/tracker.hpp"

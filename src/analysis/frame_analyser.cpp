@@ -1,4 +1,4 @@
-#include "rdsf/detector/frame_analyser.hpp"
+#include "rdsf/analysis/frame_analyser.hpp"
 
 #include <chrono>
 

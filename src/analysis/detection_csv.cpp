@@ -1,4 +1,4 @@
-#include "rdsf/detector/detection_csv.hpp"
+#include "rdsf/analysis/detection_csv.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "rdsf/detector/overlay.hpp"
+#include "rdsf/analysis/overlay.hpp"
 
 #include <algorithm>
 #include <cstdio>
