@@ -1,4 +1,4 @@
-// Speed of the detector core's stages on one core, on the real frames of ../shared/realdata when present
+// Speed of the frame analyser's stages on one core, on the real frames of ../shared/realdata when present
 // (else a hand-built scene). Targets (issue 2): segmentation < 10 ms per 640x480 frame (thesis 200-320 ms),
 // candidate shaping < 1 ms per candidate (thesis 10 ms), RDSF < 100 us per candidate (thesis ~16 ms with the
 // classifier). Issue 17: a 100-round model scored from only the features it reads < 5 us per candidate
@@ -107,9 +107,9 @@ BENCHMARK(BM_SegmentationSynthetic)->Unit(benchmark::kMillisecond);
 const std::vector<cv::Mat1w>& crops() {
   static const std::vector<cv::Mat1w> all = [] {
     std::vector<cv::Mat1w> out;
-    const rdsf::FrameAnalyser core;
+    const rdsf::FrameAnalyser analyser;
     for (const auto& frame : frames()) {
-      for (const auto& c : core.analyse(frame, false).candidates) out.push_back(c.depth_crop);
+      for (const auto& c : analyser.analyse(frame, false).candidates) out.push_back(c.depth_crop);
     }
     return out;
   }();
@@ -183,9 +183,9 @@ void BM_ScoreModelFeaturesOnly(benchmark::State& state) {
 BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 void BM_WholeCoreFrame(benchmark::State& state) {
-  const rdsf::FrameAnalyser core;
+  const rdsf::FrameAnalyser analyser;
   std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(core.analyse(frames()[i++ % frames().size()], true));
+  for (auto _ : state) benchmark::DoNotOptimize(analyser.analyse(frames()[i++ % frames().size()], true));
 }
 BENCHMARK(BM_WholeCoreFrame)->Unit(benchmark::kMillisecond);
 

@@ -126,10 +126,10 @@ const std::vector<CropPair>& sample_crops() {
     const auto empty = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/empty";
     auto source = rdsf::open_frame_source(std::filesystem::is_directory(empty) ? empty.string() : files().dir.string());
     std::vector<CropPair> out;
-    const rdsf::FrameAnalyser core;
+    const rdsf::FrameAnalyser analyser;
     rdsf::DepthFrame frame;
     while (source->next(frame)) {
-      for (const auto& c : core.analyse(frame, false).candidates) out.push_back({c.depth_crop.clone(), c.colour_crop.clone()});
+      for (const auto& c : analyser.analyse(frame, false).candidates) out.push_back({c.depth_crop.clone(), c.colour_crop.clone()});
     }
     return out;
   }();

@@ -26,7 +26,7 @@ const char* const kNamingNote =
 void apply_thesis_preset(po::variables_map& values) {
   const auto it = values.find("thesis");
   if (it == values.end() || !it->second.as<bool>()) return;
-  const DetectorParams thesis = thesis_params();
+  const AnalyserParams thesis = thesis_params();
   const CandidateParams& c = thesis.candidates;
   auto set = [&values](const char* name, const boost::any& value) {
     const auto option = values.find(name);
@@ -148,7 +148,7 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
   return true;
 }
 
-po::options_description detector_options(DetectorParams& p) {
+po::options_description analyser_options(AnalyserParams& p) {
   po::options_description segmentation("Segmentation (depth layers)");
   auto& s = p.segmentation;
   segmentation.add_options()

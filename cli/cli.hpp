@@ -1,6 +1,6 @@
 #pragma once
 // What every program shares on the command line: option parsing with --help (every default shown) and
-// --config FILE (INI; the command line wins), the detector-core options declared once, and the top-level
+// --config FILE (INI; the command line wins), the frame analyser's options declared once, and the top-level
 // error handling that turns any failure into one line and a non-zero exit.
 #include <functional>
 #include <string>
@@ -43,8 +43,8 @@ std::string shortest_text(double value);
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional = nullptr);
 
-/// Options of the detector core (segmentation, candidates), bound to `params`, with the thesis's names.
-po::options_description detector_options(DetectorParams& params);
+/// Options of the frame analyser (segmentation, candidates), bound to `params`, with the thesis's names.
+po::options_description analyser_options(AnalyserParams& params);
 
 /// --feature-spec NAME[:key=value,...] bound to `spec` (part of detector_options; rdsf-train adds it alone).
 /// A name or parameter that is not known is a UsageError.

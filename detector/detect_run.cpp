@@ -33,7 +33,7 @@
 namespace rdsf {
 namespace {
 
-void print_times(const PipelineTimes& t, std::int64_t frames, std::int64_t candidates, double wall_s) {
+void print_times(const StageTimes& t, std::int64_t frames, std::int64_t candidates, double wall_s) {
   const double n = static_cast<double>(std::max<std::int64_t>(1, frames));
   std::fprintf(stderr,
                "rdsf-detect: %lld frames, %.2f candidates per frame, %.1f frames/s overall\n"
@@ -132,7 +132,7 @@ int run_detect(const DetectOptions& o) {
     throw cli::UsageError("--truth with a --model needs --report-dir DIR for the evaluation report");
   }
   if (!o.report_dir.empty() && !evaluate) throw cli::UsageError("--report-dir needs --truth boxes.csv");
-  const BoxKind box = o.pipeline.detector.reported_box;
+  const BoxKind box = o.pipeline.analyser.reported_box;
   if (!o.report_dir.empty() && o.models.empty()) throw cli::UsageError("--report-dir needs at least one --model to evaluate");
   if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate && !o.live) {
     throw cli::UsageError("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
@@ -147,7 +147,7 @@ int run_detect(const DetectOptions& o) {
   PipelineParams pipeline_params = o.pipeline;
   // The detector computes the first model's feature spec unless --feature-spec names one (then they must
   // agree: PeoplePipeline refuses otherwise). Further models score the same crops in their own specs.
-  if (!models.empty() && !o.feature_spec_given) pipeline_params.detector.features = models.front().feature_spec();
+  if (!models.empty() && !o.feature_spec_given) pipeline_params.analyser.features = models.front().feature_spec();
   // The evaluation sweeps tracking over every candidate's colour histogram, not only the detections'.
   pipeline_params.colour_crops_of_all = evaluate;
   std::vector<ModelScorer> scorers;
@@ -178,7 +178,7 @@ int run_detect(const DetectOptions& o) {
   std::vector<std::vector<EvaluatedFrame>> evaluated(models.size());
   cli::Progress progress(std::cerr, "frames", source->frame_count());
   std::int64_t frames = 0, candidates = 0, detections = 0;
-  PipelineTimes total;
+  StageTimes total;
   // Each frame after tracking, in frame order, one at a time (on this thread, or a live worker).
   auto handle = [&](const DepthFrame& frame, const PipelineFrame& processed) {
     total += processed.times;

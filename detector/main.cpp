@@ -51,12 +51,12 @@ int main(int argc, char** argv) {
         ("fps", po::value(&o.fps)->default_value(o.fps),
          "--live with a source that is not a device (folder, .oni): deliver its frames at this rate");
     options.add(rdsf::cli::camera_options(o.camera, calibration));
-    options.add(rdsf::cli::detector_options(o.pipeline.detector));
+    options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-detect", "--source SRC [--model M] [--out FILE.csv] [--save-dir DIR] [--truth boxes.csv --report-dir DIR]",
-        "Runs the detector core on every frame of SRC. Without a model every candidate is reported unscored;\n"
+        "Runs the frame analyser on every frame of SRC. Without a model every candidate is reported unscored;\n"
         "with one, candidates are scored (H(x) and the calibrated P(person)), those with P >= --threshold are\n"
         "people, and people are tracked. With --truth, every --model is evaluated: exact ROC and DET curves,\n"
         "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};

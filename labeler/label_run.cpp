@@ -104,13 +104,13 @@ int run_label(const LabelOptions& o) {
     model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
     // Checked before the set is opened or created, so that a wrong model changes nothing.
     const bool exists = std::filesystem::exists(std::filesystem::path(o.out_set) / "manifest.yml");
-    const FeatureSpec set_spec = exists ? SampleSet::open_read(o.out_set).feature_spec() : o.session.detector.features;
+    const FeatureSpec set_spec = exists ? SampleSet::open_read(o.out_set).feature_spec() : o.session.analyser.features;
     if (!(model->feature_spec() == set_spec)) {
       fail(model->path(), "the model reads feature spec " + model->feature_spec().hash() + ", the sample set " +
                               o.out_set + (exists ? " holds " : " would hold ") + set_spec.hash() +
                               ": give a model trained on the set's features");
     }
-    const std::string misfit = model_fit_problem(*model, o.session.detector);  // crops cut the same way
+    const std::string misfit = model_fit_problem(*model, o.session.analyser);  // crops cut the same way
     if (!misfit.empty()) fail(model->path(), misfit);
   }
   std::unique_ptr<GroundTruth> truth;
@@ -129,8 +129,8 @@ int run_label(const LabelOptions& o) {
         [](char c) { return label_keys::from_key_code(static_cast<unsigned char>(c)); }, "y n s u q");
   }
 
-  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.detector.features, o.session.camera,
-                                                           "rdsf-label", crop_provenance(o.session.detector.candidates));
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.analyser.features, o.session.camera,
+                                                           "rdsf-label", crop_provenance(o.session.analyser.candidates));
   for (const std::string& repair : writer.repairs()) {  // what a crash left: torn rows, orphan or unusable crops
     std::cerr << "rdsf-label: " << writer.dir() << ": repaired " << repair << "\n";
   }

@@ -1,4 +1,4 @@
-// rdsf-label: a person confirms the detector core's candidates one by one (y / n / skip / undo / quit);
+// rdsf-label: a person confirms the frame analyser's candidates one by one (y / n / skip / undo / quit);
 // every answer is stored before the next candidate appears, and a rerun resumes where it stopped.
 #include <sstream>
 
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
         ("answers", po::value(&o.answers), "headless: read keys from this file (- = stdin) instead of a window")
         ("keep-rejected", po::bool_switch(&o.session.keep_rejected), "store 'n' answers as negatives (label 0)");
     options.add(rdsf::cli::camera_options(o.session.camera, calibration));
-    options.add(rdsf::cli::detector_options(o.session.detector));
+    options.add(rdsf::cli::analyser_options(o.session.analyser));
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-label", "--source SRC... --out SET [--model M [--accept P --reject P] [--ask uncertain]] [--loop [--batch N]]\n"

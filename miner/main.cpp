@@ -33,13 +33,13 @@ int main(int argc, char** argv) {
         ("merge", po::value(&o.merge)->multitoken(),
          "merge mode: append these sample sets to --out (feature specs must match; duplicates skipped)");
     options.add(rdsf::cli::camera_options(o.mine.camera, calibration));
-    options.add(rdsf::cli::detector_options(o.mine.detector));
+    options.add(rdsf::cli::analyser_options(o.mine.analyser));
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-mine",
         "--source SRC... --out SET [--model M --min-score T] [--stride N] [--max N] [--shard i/n]\n"
         "       rdsf-mine --merge SET1 SET2 ... --out SET",
-        "Runs the detector core on people-free frames and appends every candidate to the sample set SET as a\n"
+        "Runs the frame analyser on people-free frames and appends every candidate to the sample set SET as a\n"
         "negative (label 0, origin miner); with --model only the candidates the model scores at or above\n"
         "--min-score (its false positives). Exact duplicates are skipped, so a run killed midway continues\n"
         "when started again with the same options. --merge joins sample sets, e.g. shard outputs."};

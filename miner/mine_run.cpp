@@ -66,7 +66,7 @@ int run_mine(MineOptions& o) {
   std::optional<BoostedModel> model;
   if (!o.model.empty()) {
     model = BoostedModel::load(o.model, o.models_dir);
-    check_model_fits(*model, p.detector);
+    check_model_fits(*model, p.analyser);
     const BoostedModel& m = *model;
     const ModelScorer scorer(m);  // only the features the model reads
     p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
@@ -77,8 +77,8 @@ int run_mine(MineOptions& o) {
   }
 
   NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
-  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.detector.features, p.camera, "rdsf-mine",
-                                                           crop_provenance(p.detector.candidates));
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.analyser.features, p.camera, "rdsf-mine",
+                                                           crop_provenance(p.analyser.candidates));
   report_open(writer, "rdsf-mine");
   std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
             << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";

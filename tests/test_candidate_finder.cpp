@@ -11,7 +11,7 @@ using namespace rdsf;
 
 namespace {
 
-FrameAnalysis analyse(const DepthFrame& frame, DetectorParams params = {}) {
+FrameAnalysis analyse(const DepthFrame& frame, AnalyserParams params = {}) {
   return FrameAnalyser(params).analyse(frame, false);
 }
 
@@ -143,8 +143,8 @@ TEST(CandidateFinder, StrictAndRelaxedThresholdHeight) {
   DepthFrame frame = test::wall_frame(4000);
   const int rows = static_cast<int>(70.0 * 10.0 * 525.0 / 2000.0) + 1;
   test::paint(frame, {300, 470 - rows, 60, rows}, 2000);
-  DetectorParams strict;
-  DetectorParams relaxed;
+  AnalyserParams strict;
+  AnalyserParams relaxed;
   relaxed.candidates.mode = HeightMode::relaxed;
   EXPECT_EQ(find_at_depth(analyse(frame, strict).candidates, 2000, 330), nullptr);
   EXPECT_NE(find_at_depth(analyse(frame, relaxed).candidates, 2000, 330), nullptr);
@@ -176,11 +176,11 @@ TEST(CandidateFinder, ColourCropCutLaterIsTheSame) {
   p.people_max = 4;
   p.rgb = true;
   p.clip_frames = 3;
-  const FrameAnalyser core;
+  const FrameAnalyser analyser;
   int candidates = 0, crossing_border = 0;
   for (const DepthFrame& frame : test::synthetic_frames(p)) {
-    const FrameAnalysis now = core.analyse(frame, false, CropColour::cut);
-    FrameAnalysis later = core.analyse(frame, false, CropColour::later);
+    const FrameAnalysis now = analyser.analyse(frame, false, CropColour::cut);
+    FrameAnalysis later = analyser.analyse(frame, false, CropColour::later);
     ASSERT_EQ(now.candidates.size(), later.candidates.size());
     for (std::size_t c = 0; c < now.candidates.size(); ++c) {
       Candidate& x = later.candidates[c];
@@ -199,7 +199,7 @@ TEST(CandidateFinder, ColourCropCutLaterIsTheSame) {
   // Without colour in the frame there is none to cut.
   DepthFrame grey = test::wall_frame(4000);
   test::paint(grey, {300, 100, 40, 360}, 2000);
-  FrameAnalysis a = core.analyse(grey, false, CropColour::later);
+  FrameAnalysis a = analyser.analyse(grey, false, CropColour::later);
   ASSERT_FALSE(a.candidates.empty());
   cut_colour_crop(grey, a.segmentation.labels, a.candidates[0]);
   EXPECT_TRUE(a.candidates[0].colour_crop.empty());

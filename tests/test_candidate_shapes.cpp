@@ -13,13 +13,13 @@ namespace {
 
 // The defaults with the fitted box at the layer's extent alone (fit_min_width_ratio 0): most tests here
 // check that extent; FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight checks the widening on top of it.
-DetectorParams extent() {
-  DetectorParams p;
+AnalyserParams extent() {
+  AnalyserParams p;
   p.candidates.fit_min_width_ratio = 0;
   return p;
 }
 
-std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = extent(),
+std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, AnalyserParams params = extent(),
                                 double tolerance_mm = 30) {
   std::vector<Candidate> found;
   for (const Candidate& c : FrameAnalyser(params).analyse(frame, false).candidates) {
@@ -41,8 +41,8 @@ void paint_person(DepthFrame& frame, int left, int body_px, int depth_mm = 2000)
 }
 
 // The wide-object cuts alone (heads off).
-DetectorParams splitting() {
-  DetectorParams p = extent();
+AnalyserParams splitting() {
+  AnalyserParams p = extent();
   p.candidates.split_head_drop_cm = 0;
   p.candidates.split_valley_cm = 15;
   p.candidates.split_step_cm = 30;
@@ -50,8 +50,8 @@ DetectorParams splitting() {
   return p;
 }
 
-DetectorParams splitting_off() {
-  DetectorParams p = extent();
+AnalyserParams splitting_off() {
+  AnalyserParams p = extent();
   p.candidates.split_head_drop_cm = 0;
   return p;
 }
@@ -72,7 +72,7 @@ TEST(CandidateShapes, SideOnPersonGetsAFittedBoxWithinTenPercent) {
   EXPECT_LT(iou(found[0].strict_box, person), 0.5);  // height/2 wide: the thesis's box cannot match
   EXPECT_EQ(found[0].strict_box, cv::Rect(230, 60, 200, 400));  // the crop's box is unchanged
   // With the defaults the extent is the same; the reported box is widened to 0.3 of the height.
-  const auto by_default = at_depth(frame, 2000, DetectorParams());
+  const auto by_default = at_depth(frame, 2000, AnalyserParams());
   ASSERT_EQ(by_default.size(), 1u);
   EXPECT_EQ(by_default[0].extent_box, fitted);
   EXPECT_EQ(by_default[0].fitted_box.width, 120);
@@ -84,7 +84,7 @@ TEST(CandidateShapes, FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight) {
   DepthFrame frame = test::wall_frame(4000);
   test::paint(frame, {300, 60, 60, 400}, 2000);
   test::paint(frame, {0, 60, 40, 400}, 2000);  // cut by the left border
-  const auto widened = at_depth(frame, 2000, DetectorParams()), narrow = at_depth(frame, 2000);
+  const auto widened = at_depth(frame, 2000, AnalyserParams()), narrow = at_depth(frame, 2000);
   ASSERT_EQ(widened.size(), 2u);
   ASSERT_EQ(narrow.size(), 2u);
   EXPECT_EQ(narrow[0].fitted_box, cv::Rect(0, 60, 40, 400));
@@ -99,7 +99,7 @@ TEST(CandidateShapes, FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight) {
     EXPECT_EQ(cv::norm(widened[i].depth_crop, narrow[i].depth_crop, cv::NORM_INF), 0);
   }
   // A box already wider than the ratio keeps its extent.
-  DetectorParams wide;  // the defaults but a ratio of 0.1
+  AnalyserParams wide;  // the defaults but a ratio of 0.1
   wide.candidates.fit_min_width_ratio = 0.1;
   EXPECT_EQ(at_depth(frame, 2000, wide)[1].fitted_box, cv::Rect(300, 60, 60, 400));
 }
@@ -111,7 +111,7 @@ TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
   const auto found = at_depth(frame, 2000);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(230, 100, 130, 360));
-  DetectorParams no_reach = extent();
+  AnalyserParams no_reach = extent();
   no_reach.candidates.fit_reach_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, no_reach)[0].fitted_box, cv::Rect(300, 100, 60, 360));
 }
@@ -123,7 +123,7 @@ TEST(CandidateShapes, FittedBoxReachesAnArmBehindSomethingNearer) {
   test::paint(frame, {300, 100, 60, 360}, 3000);  // body
   test::paint(frame, {360, 160, 90, 20}, 3000);   // the arm
   test::paint(frame, {370, 40, 20, 440}, 1500);   // the post, in front of the arm's columns 370-389
-  DetectorParams on = extent();
+  AnalyserParams on = extent();
   on.candidates.fit_occlusion_gap_cm = 15;
   const auto found = at_depth(frame, 3000, on);
   ASSERT_EQ(found.size(), 1u);
@@ -148,7 +148,7 @@ TEST(CandidateShapes, FittedBoxDoesNotJumpASmallNearerThingToAnotherObject) {
     test::paint(frame, {360, post_top, 20, 480 - post_top}, 1500);
     return frame;
   };
-  DetectorParams on = extent();
+  AnalyserParams on = extent();
   on.candidates.fit_occlusion_gap_cm = 15;
   const auto big = at_depth(scene(40), 3000, on);
   ASSERT_EQ(big.size(), 1u);
@@ -186,7 +186,7 @@ TEST(CandidateShapes, TwoPeopleSideBySideAtOneDepthGiveTwoCandidates) {
   EXPECT_TRUE(split[0].part && split[1].part);
   EXPECT_GE(best_iou(split, left, BoxKind::fitted), 0.8);
   EXPECT_GE(best_iou(split, right, BoxKind::fitted), 0.8);
-  DetectorParams both = splitting();
+  AnalyserParams both = splitting();
   both.candidates.split_keep_whole = true;
   EXPECT_EQ(at_depth(frame, 2000, both).size(), 3u);
 }
@@ -206,15 +206,15 @@ TEST(CandidateShapes, PeopleOverlappingAtOneDepthAreCutBetweenTheirHeads) {
   EXPECT_TRUE(found[0].part && found[1].part);
   EXPECT_GE(best_iou(found, left, BoxKind::fitted), 0.8);
   EXPECT_GE(best_iou(found, right, BoxKind::fitted), 0.8);
-  DetectorParams keep = extent();
+  AnalyserParams keep = extent();
   keep.candidates.split_head_keep_whole = true;
   const auto with_whole = at_depth(frame, 2000, keep);
   ASSERT_EQ(with_whole.size(), 3u);
   EXPECT_GE(best_iou(with_whole, both, BoxKind::fitted), 0.95);
-  DetectorParams shallow = extent();  // shoulders less than 25 cm below the heads: no heads
+  AnalyserParams shallow = extent();  // shoulders less than 25 cm below the heads: no heads
   shallow.candidates.split_head_drop_cm = 25;
   EXPECT_EQ(at_depth(frame, 2000, shallow).size(), 1u);
-  DetectorParams far = extent();  // heads only in layers nearer than split_head_layers_below
+  AnalyserParams far = extent();  // heads only in layers nearer than split_head_layers_below
   far.candidates.split_head_layers_below_mm = 2000;
   EXPECT_EQ(at_depth(frame, 2000, far).size(), 1u);
 }
@@ -234,7 +234,7 @@ TEST(CandidateShapes, PiecesCutBetweenHeadsFitAcrossTheCutOverAnArmHeldOut) {
   const cv::Rect right_with_arm(246, 100, 156, 360);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(150, 100, 156, 360));
   EXPECT_EQ(found[1].fitted_box, right_with_arm);
-  DetectorParams at_cut = extent();  // each piece within its side of the cut
+  AnalyserParams at_cut = extent();  // each piece within its side of the cut
   at_cut.candidates.fit_across_head_cut = false;
   const auto cut = at_depth(frame, 2000, at_cut);
   ASSERT_EQ(cut.size(), 2u);
@@ -254,7 +254,7 @@ TEST(CandidateShapes, ARaisedHandIsNoHead) {
   const auto found = at_depth(frame, 2000);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(280, 90, 200, 370));
-  DetectorParams any_width = extent();  // without the narrowest head top, the hand is a second head
+  AnalyserParams any_width = extent();  // without the narrowest head top, the hand is a second head
   any_width.candidates.split_head_min_width_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, any_width).size(), 2u);
 }
@@ -319,13 +319,13 @@ TEST(CandidateShapes, NarrowPiecesAreNotCandidatesUnlessCutByTheBorder) {
   DepthFrame frame = test::wall_frame(4000);
   test::paint(frame, {300, 60, 30, 400}, 2000);  // 11 cm wide: a post, not a person
   EXPECT_TRUE(at_depth(frame, 2000).empty());
-  DetectorParams off = extent();
+  AnalyserParams off = extent();
   off.candidates.min_fitted_width_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, off).size(), 1u);
 }
 
 TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
-  const DetectorParams t = thesis_params();
+  const AnalyserParams t = thesis_params();
   EXPECT_FALSE(t.segmentation.left_border_jump);
   EXPECT_EQ(t.candidates.occlusion_gap_cm, 0);
   EXPECT_EQ(t.candidates.floor_tolerance_mm, 0);
@@ -341,5 +341,5 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_EQ(t.candidates.split_head_drop_cm, 0);
   EXPECT_FALSE(t.candidates.fit_across_head_cut);
   EXPECT_EQ(t.reported_box, BoxKind::strict);
-  EXPECT_EQ(DetectorParams().reported_box, BoxKind::fitted);
+  EXPECT_EQ(AnalyserParams().reported_box, BoxKind::fitted);
 }

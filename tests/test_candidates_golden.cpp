@@ -22,14 +22,14 @@ std::string mat_hash(const cv::Mat& m) {
   return to_hex16(fnv1a64(std::string_view(reinterpret_cast<const char*>(c.data), c.total() * c.elemSize())));
 }
 
-std::vector<std::string> candidate_lines(const std::string& folder, const DetectorParams& params) {
-  const FrameAnalyser core(params);
+std::vector<std::string> candidate_lines(const std::string& folder, const AnalyserParams& params) {
+  const FrameAnalyser analyser(params);
   auto source = open_frame_source((test::realdata_dir() / folder).string());
   std::vector<std::string> lines;
   DepthFrame f;
   char line[512];
   while (source->next(f)) {
-    const FrameAnalysis a = core.analyse(f, false);
+    const FrameAnalysis a = analyser.analyse(f, false);
     for (std::size_t i = 0; i < a.candidates.size(); ++i) {
       const Candidate& c = a.candidates[i];
       std::snprintf(line, sizeof line, "%s,%zu,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%d,%s,%s", f.name.c_str(), i,
@@ -57,9 +57,9 @@ void expect_same(const std::vector<std::string>& found, const std::vector<std::s
 }
 
 // thesis_params() with the departures main had switched on.
-DetectorParams todays_departures_only() {
-  const DetectorParams defaults;
-  DetectorParams p = thesis_params();
+AnalyserParams todays_departures_only() {
+  const AnalyserParams defaults;
+  AnalyserParams p = thesis_params();
   p.segmentation.left_border_jump = defaults.segmentation.left_border_jump;
   p.candidates.occlusion_gap_cm = defaults.candidates.occlusion_gap_cm;
   p.candidates.floor_tolerance_mm = defaults.candidates.floor_tolerance_mm;
@@ -82,5 +82,5 @@ TEST(CandidatesGolden, TodaysDeparturesAloneReproduceMainsDefaults) {
 
 TEST(CandidatesGolden, DefaultsDepartFromTheThesis) {
   RDSF_REQUIRE_REALDATA();
-  EXPECT_NE(candidate_lines("people", DetectorParams{}), golden("candidates-main-people.csv"));
+  EXPECT_NE(candidate_lines("people", AnalyserParams{}), golden("candidates-main-people.csv"));
 }

@@ -1,5 +1,5 @@
 // A model trained on candidates of one synthetic recording scores the people of another (held-out seed)
-// above everything else: AUC >= 0.95. Candidates come from the detector core; a candidate is a person when
+// above everything else: AUC >= 0.95. Candidates come from the frame analyser; a candidate is a person when
 // its strict box overlaps a ground-truth person box (intersection over union >= 0.5), not a person when it
 // overlaps none by more than 0.2 (the ambiguous ones in between are left out).
 #include <gtest/gtest.h>
@@ -33,11 +33,11 @@ Labelled candidates_of(std::uint64_t seed, int frames) {
   params.people_min = 1;
   params.people_max = 3;
   synth::SynthSequence sequence(params);
-  const FrameAnalyser core;
+  const FrameAnalyser analyser;
   Labelled out;
   for (int i = 0; i < frames; ++i) {
     const synth::SynthFrame f = sequence.frame(i);
-    const FrameAnalysis analysis = core.analyse(f.depth_frame(params.camera()), true);
+    const FrameAnalysis analysis = analyser.analyse(f.depth_frame(params.camera()), true);
     for (std::size_t c = 0; c < analysis.candidates.size(); ++c) {
       double best = 0.0;
       for (const synth::PersonTruth& p : f.people) best = std::max(best, iou(analysis.candidates[c].strict_box, p.box));

@@ -107,7 +107,7 @@ TEST(CropProvenance, ModelFileRoundTripKeepsTheCut) {
 
 TEST(CropProvenance, ModelRefusesADetectorThatCutsOtherwise) {
   const BoostedModel model = BoostedModel::load(reference_path("rdsf-model-v3-crops.yml"));
-  DetectorParams detector;
+  AnalyserParams detector;
   EXPECT_EQ(model_fit_problem(model, detector), "");
   detector.candidates.window_scale = 1.5;
   const std::string problem = model_fit_problem(model, detector);
@@ -118,7 +118,7 @@ TEST(CropProvenance, ModelRefusesADetectorThatCutsOtherwise) {
   // No record: not checked.
   EXPECT_EQ(model_fit_problem(BoostedModel::load(reference_path("rdsf-model-v2-tree.yml")), detector), "");
   // The feature spec is checked first, in the same place.
-  DetectorParams rect;
+  AnalyserParams rect;
   rect.features = FeatureSpec::parse("rdsf-rect");
   EXPECT_NE(model_fit_problem(model, rect).find("model feature spec"), std::string::npos);
 }

@@ -108,7 +108,7 @@ SetDigest mine_into(const std::string& dir, const std::string& source, int threa
   params.sources = {source};
   params.threads = threads;
   params.sync_every_frames = sync_every;
-  params.detector.candidates.join_narrow_passing = join_narrow_passing;
+  params.analyser.candidates.join_narrow_passing = join_narrow_passing;
   params.crop_png = crop_png;
   std::vector<std::int64_t> reported;
   rdsf::mine_negatives(params, writer, [&](const rdsf::MineStats& s) {

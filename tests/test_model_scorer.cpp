@@ -119,7 +119,7 @@ TEST(ModelScorer, PipelineRefusesAModelOfAnotherSpecNamingBoth) {
   EXPECT_NE(message.find("rdsf-rect/1"), std::string::npos) << message;
   EXPECT_NE(message.find("rdsf/1"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos);
-  params.detector.features = FeatureSpec::rect();
+  params.analyser.features = FeatureSpec::rect();
   EXPECT_NO_THROW(PeoplePipeline(params, &rect_model));
 }
 

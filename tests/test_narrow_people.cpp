@@ -15,13 +15,13 @@ using namespace rdsf;
 namespace {
 
 // The rule is off by default (narrow_fitted_width_cm = 0, see candidate_params.hpp); these tests turn it on.
-DetectorParams narrow_on() {
-  DetectorParams p;
+AnalyserParams narrow_on() {
+  AnalyserParams p;
   p.candidates.narrow_fitted_width_cm = 20;
   return p;
 }
 
-std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, DetectorParams params = narrow_on()) {
+std::vector<Candidate> at_depth(const DepthFrame& frame, double depth_mm, AnalyserParams params = narrow_on()) {
   std::vector<Candidate> found;
   for (const Candidate& c : FrameAnalyser(params).analyse(frame, false).candidates) {
     if (std::abs(c.layer_depth_mm - depth_mm) < 30) found.push_back(c);
@@ -51,10 +51,10 @@ TEST(NarrowPeople, PersonWhosePassingColumnsAreNarrowerThanMinWidthIsACandidate)
   EXPECT_GE(iou(found[0].extent_box, person), 0.9);  // its extent (the fitted box widens it to 0.3 of its height)
   EXPECT_LT(found[0].width_cm, 10.0);  // its passing columns: narrower than min_width_cm
   // Off (the default, and in the thesis preset): the thesis's min_width_cm drops it.
-  DetectorParams off = narrow_on();
+  AnalyserParams off = narrow_on();
   off.candidates.narrow_fitted_width_cm = 0;
   EXPECT_TRUE(at_depth(frame, 3000, off).empty());
-  EXPECT_TRUE(at_depth(frame, 3000, DetectorParams{}).empty());
+  EXPECT_TRUE(at_depth(frame, 3000, AnalyserParams{}).empty());
   EXPECT_TRUE(at_depth(frame, 3000, thesis_params()).empty());
   EXPECT_EQ(thesis_params().candidates.narrow_fitted_width_cm, 0);
 }
@@ -81,7 +81,7 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
   DepthFrame chair = test::wall_frame(5000);
   test::paint(chair, {300, 300, 70, 40}, 3000);   // seat and back, 23 cm
   test::paint(chair, {328, 340, 14, 100}, 3000);  // the leg, 57 cm
-  DetectorParams relaxed = narrow_on();
+  AnalyserParams relaxed = narrow_on();
   relaxed.candidates.mode = HeightMode::relaxed;
   EXPECT_TRUE(at_depth(chair, 3000, relaxed).empty());
   relaxed.candidates.narrow_min_height_cm = 0;
@@ -89,7 +89,7 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
   // The person beyond narrow_layers_below_mm (5 m) is not kept.
   DepthFrame far = test::wall_frame(7000);
   paint_narrow_person(far, 160, 5500);
-  DetectorParams strict = narrow_on();
+  AnalyserParams strict = narrow_on();
   EXPECT_TRUE(at_depth(far, 5500, strict).empty());
   strict.candidates.narrow_layers_below_mm = 6000;
   EXPECT_EQ(at_depth(far, 5500, strict).size(), 1u);
@@ -98,10 +98,10 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
 TEST(NarrowPeople, NarrowPassingColumnsMustBeWideEnoughAndTheBodyAPersonsWidth) {
   DepthFrame frame = test::wall_frame(5000);
   paint_narrow_person(frame, 160);
-  DetectorParams wider_body = narrow_on();
+  AnalyserParams wider_body = narrow_on();
   wider_body.candidates.narrow_fitted_width_cm = 45;  // the body is 40 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_body).empty());
-  DetectorParams wider_legs = narrow_on();
+  AnalyserParams wider_legs = narrow_on();
   wider_legs.candidates.narrow_passing_width_cm = 9;  // the legs are 8 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_legs).empty());
 }
@@ -112,10 +112,10 @@ TEST(NarrowPeople, JoinNarrowPassingJoinsLegsButNotTheSlatsOfAChairBack) {
   DepthFrame chair = test::wall_frame(4000);
   test::paint(chair, {298, 200, 70, 20}, 1400);
   for (int x : {300, 330, 362}) test::paint(chair, {x, 220, 3, 230}, 1400);
-  DetectorParams any;
+  AnalyserParams any;
   any.candidates.join_narrow_passing = false;
   EXPECT_EQ(at_depth(chair, 1400, any).size(), 1u);  // joined: 17 cm over its passing columns
-  const DetectorParams passing;  // join_narrow_passing: 2.4 cm of passing columns, below 5 cm
+  const AnalyserParams passing;  // join_narrow_passing: 2.4 cm of passing columns, below 5 cm
   EXPECT_TRUE(at_depth(chair, 1400, passing).empty());
   // Two legs of 20 px (5.3 cm) under a torso 48 cm high (failing 50 cm alone) still join into one person.
   DepthFrame legs = test::wall_frame(4000);

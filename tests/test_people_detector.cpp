@@ -26,7 +26,7 @@ std::string reference_model(const std::string& name = "rdsf-model-v2-tree.yml") 
 PipelineParams everyone_params() {
   PipelineParams params;
   params.score_threshold = -std::numeric_limits<double>::infinity();
-  params.detector.reported_box = BoxKind::strict;
+  params.analyser.reported_box = BoxKind::strict;
   return params;
 }
 
@@ -129,7 +129,7 @@ TEST(PeopleDetector, BadInputIsOneLineError) {
 
   // A model of another feature spec than the detector's: named both, adopting the model's spec works.
   PipelineParams rect;
-  rect.detector.features = FeatureSpec::rect();
+  rect.analyser.features = FeatureSpec::rect();
   message = test::error_message([&] { PeopleDetector d(reference_model(), rect); });
   EXPECT_NE(message.find("rdsf-rect/1"), std::string::npos) << message;
   EXPECT_NE(message.find("rdsf-model-v2-tree.yml"), std::string::npos) << message;

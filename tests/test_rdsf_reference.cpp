@@ -71,7 +71,7 @@ TEST(RdsfReference, SameBitsOnSyntheticCandidates) {
   p.people_max = 4;
   p.seed = 9;
   synth::SynthSequence sequence(p);
-  const FrameAnalyser analyser{DetectorParams{}};
+  const FrameAnalyser analyser{AnalyserParams{}};
   int crops = 0;
   for (int i = 0; i < 3; ++i) {
     DepthFrame frame;

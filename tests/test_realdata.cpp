@@ -1,4 +1,4 @@
-// The detector core on the real Kinect frames of ../shared/realdata: recall of the candidates against the
+// The frame analyser on the real Kinect frames of ../shared/realdata: recall of the candidates against the
 // people in boxes.csv, per frame group, the number of candidates in people-free rooms, and what the shipped
 // default model finds there.
 #include <gtest/gtest.h>
@@ -48,20 +48,20 @@ TEST(RealData, CandidatesCoverAtLeast47OfThe49People) {
   RDSF_REQUIRE_REALDATA();
   const auto truth = read_boxes(test::realdata_dir() / "people" / "boxes.csv");
   ASSERT_FALSE(truth.empty());
-  const FrameAnalyser core;
+  const FrameAnalyser analyser;
   auto source = open_frame_source((test::realdata_dir() / "people").string());
   std::map<std::string, std::pair<int, int>> per_group;  // group -> (found, people)
   int found = 0, found_strict = 0, people = 0;
   DepthFrame frame;
   while (source->next(frame)) {
-    const FrameAnalysis analysis = core.analyse(frame, false);
+    const FrameAnalysis analysis = analyser.analyse(frame, false);
     const std::string group = frame.name.substr(0, frame.name.find('_'));
     const auto it = truth.find(frame.name);
     if (it == truth.end()) continue;
     for (const cv::Rect& person : it->second) {
       double best = 0, best_strict = 0;
       for (const Candidate& c : analysis.candidates) {
-        best = std::max(best, iou(person, reported_box(c, core.params().reported_box)));
+        best = std::max(best, iou(person, reported_box(c, analyser.params().reported_box)));
         best_strict = std::max(best_strict, iou(person, c.strict_box));
       }
       const bool hit = best >= 0.5;
@@ -86,13 +86,13 @@ TEST(RealData, CandidatesCoverAtLeast47OfThe49People) {
 
 TEST(RealData, CandidatesPerFrameInEmptyRooms) {
   RDSF_REQUIRE_REALDATA();
-  const FrameAnalyser core;
+  const FrameAnalyser analyser;
   auto source = open_frame_source((test::realdata_dir() / "empty").string());
   DepthFrame frame;
   int frames = 0;
   std::size_t total = 0;
   while (source->next(frame)) {
-    const FrameAnalysis analysis = core.analyse(frame);
+    const FrameAnalysis analysis = analyser.analyse(frame);
     std::cout << "  " << frame.name << ": " << analysis.candidates.size() << " candidates, "
               << analysis.segmentation.layers.size() << " layers\n";
     // Every candidate is a valid 64x128 sample with 8128 features.

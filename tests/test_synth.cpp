@@ -1,5 +1,5 @@
 // The synthetic Kinect generator as a library: its random numbers, determinism, ground-truth boxes, the
-// --empty rooms, smooth tracks, the sensor's range and quantisation, and that the detector core finds
+// --empty rooms, smooth tracks, the sensor's range and quantisation, and that the frame analyser finds
 // the people it renders.
 #include <gtest/gtest.h>
 
@@ -371,7 +371,7 @@ TEST(SynthPeople, CarriedThingsAndClothesBelongToThePerson) {
   EXPECT_LT(top(bending), 1.45);
 }
 
-// The detector core must find the people the generator renders: people with visible_fraction >= 0.8 at
+// The frame analyser must find the people the generator renders: people with visible_fraction >= 0.8 at
 // 1.5-6 m need a candidate whose strict box has IoU >= 0.5 with their box. The strict box is
 // height x height/2 (the thesis's), so a person seen from the side (box narrower than 0.26 x its height)
 // cannot reach IoU 0.5 even when found exactly; they are counted apart too. Four seeds, 690 frames, so
@@ -383,7 +383,7 @@ struct Recall {
 };
 
 Recall detector_recall(bool classic) {
-  const rdsf::FrameAnalyser core;
+  const rdsf::FrameAnalyser analyser;
   Recall r;
   for (const std::uint64_t seed : {2024, 11, 12, 13}) {
     SynthParams p;
@@ -396,7 +396,7 @@ Recall detector_recall(bool classic) {
     SynthSequence sequence(p);
     for (int i = 0; i < p.frames; ++i) {
       const SynthFrame f = sequence.frame(i);
-      const rdsf::FrameAnalysis analysis = core.analyse(f.depth_frame(p.camera()), /*with_features=*/false);
+      const rdsf::FrameAnalysis analysis = analyser.analyse(f.depth_frame(p.camera()), /*with_features=*/false);
       for (const auto& person : f.people) {
         if (person.visible_fraction < 0.8 || person.distance_mm < 1500 || person.distance_mm > 6000) continue;
         double best = 0;
@@ -413,7 +413,7 @@ Recall detector_recall(bool classic) {
     }
   }
   std::printf(
-      "detector core on synthetic frames (%s): %d of %d people found (recall %.3f); without side-on people "
+      "frame analyser on synthetic frames (%s): %d of %d people found (recall %.3f); without side-on people "
       "%d of %d (recall %.3f)\n",
       classic ? "--classic" : "default variety", r.found, r.eligible, r.recall(), r.upright_found, r.upright,
       r.upright_recall());
@@ -431,7 +431,7 @@ TEST(SynthDetector, FrameAnalyserFindsRenderedPeopleClassic) {
 }
 
 // With the default variety (sitting, bending, arms out, coats, bags and boxes, pairs side by side, clutter
-// beside people, 8-bit captures) the detector core misses more: these are the hard cases of real labs.
+// beside people, 8-bit captures) the frame analyser misses more: these are the hard cases of real labs.
 TEST(SynthDetector, FrameAnalyserFindsRenderedPeople) {
   const Recall r = detector_recall(/*classic=*/false);
   // Measured: 353 of 445 (0.793); without side-on people 352 of 420 (0.838).

@@ -8,7 +8,7 @@
 //                           (jump > 300 mm and > 10%) that pass through missing readings
 //   hole runs along rows    mean 5.7 per row, 0.09 of them 1 px (printed, not checked: the synthetic
 //                           frames have 18.4, 0.26 specks; docs/rdsf-synth.md)
-// and what the detector core (default DetectorParams) makes of them: the candidates per frame and the
+// and what the frame analyser (default AnalyserParams) makes of them: the candidates per frame and the
 // distribution of their sizes, measured on the 46 frames of ../shared/realdata/people (49 people):
 //   candidates per frame    mean 5.72, quartiles 4..7
 //   strict-box height       quartiles 200 / 320 / 349 px
@@ -148,7 +148,7 @@ TEST(SynthRealism, HoleRunsOfAKnownImage) {
   EXPECT_DOUBLE_EQ(rdsf::synth::depth_statistics(cv::Mat1w(3, 3, static_cast<std::uint16_t>(900))).single_pixel_hole_share, 0.0);
 }
 
-// ---- candidates of the detector core ----
+// ---- candidates of the frame analyser ----
 
 struct CandidateSummary {
   int frames = 0;
@@ -166,14 +166,14 @@ double quantile(std::vector<double> values, double q) {
 }
 
 CandidateSummary summarise_candidates(const std::vector<cv::Mat1w>& depths) {
-  const rdsf::FrameAnalyser core;
+  const rdsf::FrameAnalyser analyser;
   std::vector<double> counts, heights_px, heights_cm, depths_mm;
   for (std::size_t i = 0; i < depths.size(); ++i) {
     rdsf::DepthFrame frame;
     frame.depth_mm = depths[i];
     frame.index = static_cast<std::int64_t>(i);
     frame.camera = rdsf::CameraModel::kinect_v1().scaled_to(depths[i].cols, depths[i].rows);
-    const rdsf::FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);
+    const rdsf::FrameAnalysis analysis = analyser.analyse(frame, /*with_features=*/false);
     counts.push_back(static_cast<double>(analysis.candidates.size()));
     for (const auto& c : analysis.candidates) {
       heights_px.push_back(c.strict_box.height);
@@ -232,7 +232,7 @@ void expect_like_real(const CandidateSummary& s) {
   EXPECT_NEAR(s.height_cm_q75, r.height_cm_q75, 0.25 * r.height_cm_q75) << "object height, upper quartile";
 }
 
-// Synthetic frames with 1-3 people (the real frames have 1-2) must give the detector core about as many
+// Synthetic frames with 1-3 people (the real frames have 1-2) must give the frame analyser about as many
 // candidates per frame as the real frames, of about the same sizes.
 TEST(SynthRealism, CandidatesMatchRealKinectFrames) {
   rdsf::synth::SynthParams p;

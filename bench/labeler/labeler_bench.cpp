@@ -171,7 +171,7 @@ std::string percent(double v) {
 
 int run_labeler_bench(const LabelerBenchOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  const FrameAnalyser analyser{DetectorParams{}};
+  const FrameAnalyser analyser{AnalyserParams{}};
   const Pool pool = load(o.train, analyser);
   const Pool test = load(o.test, analyser);
   LoopTrainingParams params;

@@ -191,7 +191,7 @@ BoostedModel train_pipeline_model(PerfResults& r, const PerfOptions& o) {
   MemoryPhase memory(r, "train the pipeline's model (synthetic candidates)");
   const synth::SynthParams params = sequence_params(o, o.train_frames, 202, false);
   synth::SynthSequence sequence(params);
-  const FrameAnalyser core;
+  const FrameAnalyser analyser;
   cv::Mat1f rows;
   std::vector<int> labels;
   say("labelling the candidates of " + std::to_string(o.train_frames) +
@@ -199,7 +199,7 @@ BoostedModel train_pipeline_model(PerfResults& r, const PerfOptions& o) {
   cli::Progress progress(std::cerr, "frames", o.train_frames);
   for (int i = 0; i < o.train_frames; ++i) {
     const synth::SynthFrame f = sequence.frame(i);
-    const FrameAnalysis analysis = core.analyse(f.depth_frame(params.camera()), true);
+    const FrameAnalysis analysis = analyser.analyse(f.depth_frame(params.camera()), true);
     for (std::size_t c = 0; c < analysis.candidates.size(); ++c) {
       double best = 0.0;
       for (const synth::PersonTruth& p : f.people) best = std::max(best, iou(analysis.candidates[c].strict_box, p.box));
@@ -252,13 +252,13 @@ std::vector<std::vector<int>> whole_system_one_thread(PerfResults& r, const Perf
       std::to_string(r.whole_passes) + " passes");
   std::vector<std::vector<int>> person;
   std::vector<double> walls;
-  std::vector<PipelineTimes> stages;
+  std::vector<StageTimes> stages;
   cli::Progress progress(std::cerr, "frames", static_cast<std::int64_t>(frames.size()) * r.whole_passes);
   std::int64_t done = 0;
   for (int pass = 0; pass < r.whole_passes; ++pass) {
     PeoplePipeline pipeline(PipelineParams{}, &model);
     double wall = 0;
-    PipelineTimes stage;
+    StageTimes stage;
     for (const DepthFrame& frame : frames) {
       const Clock::time_point t = Clock::now();
       const PipelineFrame out = pipeline.process(frame);

@@ -54,7 +54,7 @@ struct PerfResults {
   // Each whole-system line runs `whole_passes` times over the frames (a fresh pipeline each time): the
   // median pass is reported, with the fastest and slowest beside it.
   int whole_passes = 1;
-  PipelineTimes stage_ms;          ///< sums over all frames (the median pass)
+  StageTimes stage_ms;          ///< sums over all frames (the median pass)
   double pipeline_wall_s = 0;      ///< wall time of all process() calls (the median pass)
   double pipeline_wall_min_s = 0, pipeline_wall_max_s = 0;
   long long candidates = 0, detections = 0;

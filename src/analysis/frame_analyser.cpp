@@ -6,15 +6,7 @@
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
-namespace {
-
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
-
-DetectorParams thesis_params(DetectorParams params) {
+AnalyserParams thesis_params(AnalyserParams params) {
   params.segmentation.left_border_jump = false;
   params.reported_box = BoxKind::strict;
   CandidateParams& c = params.candidates;
@@ -37,7 +29,7 @@ DetectorParams thesis_params(DetectorParams params) {
   return params;
 }
 
-FrameAnalyser::FrameAnalyser(DetectorParams params) : params_(params), extractor_(params.features) {}
+FrameAnalyser::FrameAnalyser(AnalyserParams params) : params_(params), extractor_(params.features) {}
 
 FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features, CropColour colour) const {
   if (frame.depth_mm.empty()) throw Error("frame " + frame.name + ": empty depth image");

@@ -122,10 +122,10 @@ class FrameFeeder {
 
 namespace {
 
-FrameResult analyse_frame(const FrameAnalyser& core, const MineParams& params, const std::string& source,
+FrameResult analyse_frame(const FrameAnalyser& analyser, const MineParams& params, const std::string& source,
                           const DepthFrame& frame) {
   const bool hard = static_cast<bool>(params.scorer);
-  const FrameAnalysis analysis = core.analyse(frame, /*with_features=*/false);  // the scorer computes its own
+  const FrameAnalysis analysis = analyser.analyse(frame, /*with_features=*/false);  // the scorer computes its own
   FrameResult result;
   result.items.resize(analysis.candidates.size());
   for (std::size_t i = 0; i < analysis.candidates.size(); ++i) {
@@ -199,10 +199,10 @@ MineStats mine_negatives(const MineParams& params, SampleSetWriter& out,
 
 MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(const MineStats&)>& on_frame) {
   const MineParams& params = params_;
-  const FrameAnalyser core(params.detector);
-  if (core.params().features != out.manifest().feature_spec) {
+  const FrameAnalyser analyser(params.analyser);
+  if (analyser.params().features != out.manifest().feature_spec) {
     fail(out.dir(), feature_spec_mismatch("sample set feature spec", out.manifest().feature_spec,
-                                          "the detector's", core.params().features));
+                                          "the detector's", analyser.params().features));
   }
   const int workers = resolve_thread_count(params.threads);
 
@@ -237,7 +237,7 @@ MineStats NegativeMiner::run(SampleSetWriter& out, const std::function<void(cons
       ordered_map<FrameFeeder::Job>(
           workers, 4 * static_cast<std::size_t>(workers),
           [&](FrameFeeder::Job& job) { return feeder.claim(job); },
-          [&](FrameFeeder::Job& job) { return analyse_frame(core, params, name, feeder.load(job)); },
+          [&](FrameFeeder::Job& job) { return analyse_frame(analyser, params, name, feeder.load(job)); },
           [&](FrameResult result) {
             for (MinedCandidate& m : result.items) {
               ++stats.candidates;

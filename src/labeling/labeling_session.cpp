@@ -43,7 +43,7 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
       model_(model),
       progress_(std::move(progress)),
       truth_(truth),
-      core_(config_.detector),
+      analyser_(config_.analyser),
       journal_((std::filesystem::path(writer.dir()) / "labeler-answers.tsv").string()) {
   if (config_.sources.empty()) throw Error("no --source given");
   if (!(config_.reject_probability >= 0 && config_.reject_probability <= config_.accept_probability &&
@@ -60,7 +60,7 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
   for (const SampleRecord& r : writer_.records()) ids.insert(r.id);
   journal_.finish_interrupted_undos([&ids](std::int64_t id) { return ids.count(id) != 0; });
   if (model_ != nullptr) {
-    check_model_fits(*model_, config_.detector);  // the same crops as the detector cuts (model_fit.hpp)
+    check_model_fits(*model_, config_.analyser);  // the same crops as the detector cuts (model_fit.hpp)
     scorer_.emplace(*model_);
   }
   // Open every source now, so that a bad one is reported before the first question.
@@ -108,12 +108,12 @@ std::shared_ptr<LoadedFrame> LabelingSession::read_next() {
 }
 
 void LabelingSession::analyse_loaded(LoadedFrame& loaded) const {
-  loaded.analysis = core_.analyse(loaded.frame, /*with_features=*/false);
+  loaded.analysis = analyser_.analyse(loaded.frame, /*with_features=*/false);
   score(loaded);
   if (truth_ == nullptr) return;
   for (const Candidate& c : loaded.analysis.candidates) {
     const TruthOverlap overlap =
-        truth_overlap(labelling_box(c, config_.detector.reported_box), truth_->in(loaded.frame.name));
+        truth_overlap(labelling_box(c, config_.analyser.reported_box), truth_->in(loaded.frame.name));
     loaded.truth_iou.push_back(overlap.counted);
     loaded.ignored_iou.push_back(overlap.ignored);
   }

@@ -6,7 +6,7 @@
 
 namespace rdsf {
 
-std::string model_fit_problem(const BoostedModel& model, const DetectorParams& detector) {
+std::string model_fit_problem(const BoostedModel& model, const AnalyserParams& detector) {
   if (model.feature_spec() != detector.features) {
     return feature_spec_mismatch("model feature spec", model.feature_spec(), "the detector's", detector.features);
   }
@@ -15,7 +15,7 @@ std::string model_fit_problem(const BoostedModel& model, const DetectorParams& d
   return crops.empty() ? "" : "crops cut differently: " + crops;
 }
 
-void check_model_fits(const BoostedModel& model, const DetectorParams& detector) {
+void check_model_fits(const BoostedModel& model, const AnalyserParams& detector) {
   const std::string problem = model_fit_problem(model, detector);
   if (!problem.empty()) fail(model.path().empty() ? model.name() : model.path(), problem);
 }

@@ -12,7 +12,7 @@ PeopleDetector::PeopleDetector(BoostedModel model, PipelineParams params)
       pipeline_(std::make_unique<PeoplePipeline>(std::move(params), model_.get())) {}
 
 PipelineParams PeopleDetector::params_for(const BoostedModel& model, PipelineParams params) {
-  params.detector.features = model.feature_spec();
+  params.analyser.features = model.feature_spec();
   return params;
 }
 
@@ -20,7 +20,7 @@ std::vector<Detection> PeopleDetector::detect(const DepthFrame& frame) { return 
 
 std::vector<Detection> PeopleDetector::detections(const DepthFrame& frame, const PipelineFrame& result) const {
   std::vector<Detection> out;
-  const BoxKind box = pipeline_->params().detector.reported_box;
+  const BoxKind box = pipeline_->params().analyser.reported_box;
   for (std::size_t i = 0; i < result.person.size(); ++i) {
     if (result.person[i] == 0) continue;
     const TrackedPerson* person = pipeline_->tracker().person(result.person[i]);

@@ -7,27 +7,10 @@
 #include "rdsf/pipeline/model_fit.hpp"
 
 namespace rdsf {
-namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
-
-PipelineTimes& PipelineTimes::operator+=(const PipelineTimes& o) {
-  segmentation_ms += o.segmentation_ms;
-  candidates_ms += o.candidates_ms;
-  features_ms += o.features_ms;
-  classifier_ms += o.classifier_ms;
-  tracking_ms += o.tracking_ms;
-  return *this;
-}
-
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
-    : params_(params), model_(model), core_(params.detector), tracker_(params.tracking) {
+    : params_(params), model_(model), analyser_(params.analyser), tracker_(params.tracking) {
   if (model_ == nullptr) return;
-  check_model_fits(*model_, params_.detector);
+  check_model_fits(*model_, params_.analyser);
   scorer_.emplace(*model_);
 }
 
@@ -46,10 +29,8 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   }
   PipelineFrame out;
   const bool full = model_ != nullptr && params_.full_feature_vector;
-  out.analysis = core_.analyse(frame, full, params_.colour_crops_of_all ? CropColour::cut : CropColour::later);
-  out.times.segmentation_ms = out.analysis.times.segmentation_ms;
-  out.times.candidates_ms = out.analysis.times.candidates_ms;
-  out.times.features_ms = out.analysis.times.features_ms;
+  out.analysis = analyser_.analyse(frame, full, params_.colour_crops_of_all ? CropColour::cut : CropColour::later);
+  out.times = out.analysis.times;
   const std::size_t n = out.analysis.candidates.size();
   out.person.assign(n, 0);
   if (model_ == nullptr) return out;
@@ -62,7 +43,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     for (std::size_t i = 0; i < n; ++i) {
       scorer_->features().compute(out.analysis.candidates[i].depth_crop, out.model_features[static_cast<int>(i)]);
     }
-    out.times.features_ms = ms_since(start);
+    out.times.features_ms = milliseconds_since(start);
     start = std::chrono::steady_clock::now();
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
@@ -71,7 +52,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   std::vector<CandidateKin> kin;
   for (const Candidate& c : out.analysis.candidates) kin.push_back(params_.suppress_duplicates ? kin_of(c) : CandidateKin{});
   out.duplicate = duplicate_candidates(kin, out.scores);
-  out.times.classifier_ms = ms_since(start);
+  out.times.classifier_ms = milliseconds_since(start);
 
   start = std::chrono::steady_clock::now();
   const double threshold = params_.score_threshold_for(*model_);
@@ -82,7 +63,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     if (!params_.colour_crops_of_all) cut_colour_crop(frame, out.analysis.segmentation.labels, c);
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
   }
-  out.times.tracking_ms = ms_since(start);
+  out.times.tracking_ms = milliseconds_since(start);
   return out;
 }
 
@@ -95,12 +76,12 @@ void PeoplePipeline::track(const DepthFrame& frame, PipelineFrame& out) {
   for (std::size_t i = 0; i < out.scores.size(); ++i) {
     if (out.scores[i] < threshold || out.duplicate[i] != 0) continue;
     const Candidate& c = out.analysis.candidates[i];
-    detections.push_back({reported_box(c, params_.detector.reported_box), c.layer_depth_mm, out.histograms[i]});
+    detections.push_back({reported_box(c, params_.analyser.reported_box), c.layer_depth_mm, out.histograms[i]});
     which.push_back(i);
   }
   const std::vector<int> ids = tracker_.update(detections, frame.camera, frame.index);
   for (std::size_t k = 0; k < which.size(); ++k) out.person[which[k]] = ids[k];
-  out.times.tracking_ms += ms_since(start);
+  out.times.tracking_ms += milliseconds_since(start);
 }
 
 }  // namespace rdsf

@@ -1,5 +1,5 @@
 #pragma once
-// The frame analyser shared by every program (the thesis's detector core before the classifier): it makes
+// The frame analyser shared by every program (the thesis's frame analyser before the classifier): it makes
 // candidates and their features, not detections (those come from PeoplePipeline):
 //   depth frame -> segmentation (depth layers) -> candidates (boxes, 64x128 crops) -> RDSF features
 // Classification and tracking build on its output.
@@ -9,6 +9,7 @@
 
 #include "rdsf/candidates/candidate.hpp"
 #include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/analysis/stage_times.hpp"
 #include "rdsf/candidates/candidate_params.hpp"
 #include "rdsf/features/feature_spec.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
@@ -18,7 +19,7 @@
 
 namespace rdsf {
 
-struct DetectorParams {
+struct AnalyserParams {
   SegmentationParams segmentation;
   CandidateParams candidates;
   FeatureSpec features;
@@ -27,30 +28,23 @@ struct DetectorParams {
   BoxKind reported_box = BoxKind::fitted;
 };
 
-/// `params` with every departure from the thesis turned off (docs/detector-core.md, "Departures from the thesis"): no
+/// `params` with every departure from the thesis turned off (docs/frame-analyser.md, "Departures from the thesis"): no
 /// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no
 /// splitting. Everything else (the thesis's own parameters) is kept.
-DetectorParams thesis_params(DetectorParams params = {});
-
-/// Wall-clock time of each stage for one frame, in milliseconds.
-struct StageTimes {
-  double segmentation_ms = 0;
-  double candidates_ms = 0;
-  double features_ms = 0;
-};
+AnalyserParams thesis_params(AnalyserParams params = {});
 
 struct FrameAnalysis {
   Segmentation segmentation;
   std::vector<Candidate> candidates;
   cv::Mat1f features;  ///< one row of RDSF values per candidate (empty when not asked for)
-  StageTimes times;
+  StageTimes times;  ///< segmentation, candidates and features (the classifier and tracking stay 0)
 };
 
 class FrameAnalyser {
  public:
-  explicit FrameAnalyser(DetectorParams params = {});
+  explicit FrameAnalyser(AnalyserParams params = {});
 
-  const DetectorParams& params() const { return params_; }
+  const AnalyserParams& params() const { return params_; }
   const RdsfExtractor& extractor() const { return extractor_; }
 
   /// Segments the frame and shapes its candidates; with `with_features`, also computes their RDSF. With
@@ -62,7 +56,7 @@ class FrameAnalyser {
   cv::Mat1f features(const std::vector<Candidate>& candidates) const;
 
  private:
-  DetectorParams params_;
+  AnalyserParams params_;
   RdsfExtractor extractor_;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Step 2 of the detector core: the upright objects of each depth layer that are tall and wide enough in
+// Step 2 of the frame analyser: the upright objects of each depth layer that are tall and wide enough in
 // real centimetres, as candidates with their boxes and 64x128 crops.
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Mining negatives: runs the detector core on people-free frames and appends every candidate to a sample
+// Mining negatives: runs the frame analyser on people-free frames and appends every candidate to a sample
 // set as a negative (label 0, origin "miner"), or in hard-negative mode only those a model scores at or
 // above a threshold (its false positives, as in the bootstrapping of opencv_traincascade).
 //
@@ -35,7 +35,7 @@ struct MineParams {
   /// command mines them again (duplicates are skipped). 1 flushes after every frame (before issue 17).
   int sync_every_frames = 16;
   CameraModel camera;
-  DetectorParams detector;
+  AnalyserParams analyser;
   /// Hard-negative mode when set: the score H(x) of one candidate's masked depth crop (called from the
   /// worker threads); candidates below min_score are dropped.
   std::function<double(const cv::Mat1w&)> scorer;

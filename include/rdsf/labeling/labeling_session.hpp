@@ -75,7 +75,7 @@ struct LabelingConfig {
   /// The truth is the person (benchmarks): it answers only the candidates presented (as a human answer,
   /// see oracle_key()) instead of the sure ones silently.
   bool truth_is_oracle = false;
-  DetectorParams detector;
+  AnalyserParams analyser;
   CameraModel camera;
 };
 
@@ -178,7 +178,7 @@ class LabelingSession {
   ScoringProgress progress_;
   std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
   const GroundTruth* truth_;
-  FrameAnalyser core_;
+  FrameAnalyser analyser_;
   AnswerJournal journal_;
   std::size_t source_index_ = 0;
   std::unique_ptr<FrameSource> source_;

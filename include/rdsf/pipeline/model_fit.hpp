@@ -13,9 +13,9 @@
 namespace rdsf {
 
 /// Empty when `model` fits `detector`; else one line saying what differs, with both values.
-std::string model_fit_problem(const BoostedModel& model, const DetectorParams& detector);
+std::string model_fit_problem(const BoostedModel& model, const AnalyserParams& detector);
 
 /// Throws Error naming the model file (or name) and what differs.
-void check_model_fits(const BoostedModel& model, const DetectorParams& detector);
+void check_model_fits(const BoostedModel& model, const AnalyserParams& detector);
 
 }  // namespace rdsf

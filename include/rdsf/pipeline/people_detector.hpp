@@ -13,7 +13,7 @@
 // three give the same detections for the same frames (the parallel one bit for bit).
 //
 // Bad input throws rdsf::Error with one line: a model file that cannot be read, a model whose feature spec
-// differs from params.detector.features (use params_for(model) to adopt the model's), a frame whose depth
+// differs from params.analyser.features (use params_for(model) to adopt the model's), a frame whose depth
 // image is empty or not of its camera model's size.
 #include <memory>
 #include <string>
@@ -29,7 +29,7 @@ namespace rdsf {
 
 /// One person found in a frame.
 struct Detection {
-  cv::Rect box;                  ///< pixels: the reported box (params.detector.reported_box, fitted by default)
+  cv::Rect box;                  ///< pixels: the reported box (params.analyser.reported_box, fitted by default)
   double score = 0;              ///< H(x), the boosted score
   double probability = 0;        ///< P(person), the model's calibration of the score
   int track_id = 0;              ///< tracked person, 1, 2, ... in order of first sight, kept across frames

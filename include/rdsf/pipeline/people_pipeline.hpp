@@ -18,7 +18,7 @@
 namespace rdsf {
 
 struct PipelineParams {
-  DetectorParams detector;
+  AnalyserParams analyser;
   TrackingParams tracking;
   /// A candidate is a person when P(person) >= this (the model's calibrated probability).
   double probability_threshold = 0.5;
@@ -40,17 +40,6 @@ struct PipelineParams {
   bool colour_crops_of_all = false;
 };
 
-/// Milliseconds per stage for one frame (the thesis's timing chapter, without "showing").
-struct PipelineTimes {
-  double segmentation_ms = 0;
-  double candidates_ms = 0;     ///< candidate initialisation and filtering (column scan, boxes, crops)
-  double features_ms = 0;       ///< RDSF of every candidate
-  double classifier_ms = 0;
-  double tracking_ms = 0;       ///< colour histograms (and the detections' colour crops) and matching
-  double total_ms() const { return segmentation_ms + candidates_ms + features_ms + classifier_ms + tracking_ms; }
-  PipelineTimes& operator+=(const PipelineTimes& o);
-};
-
 struct PipelineFrame {
   FrameAnalysis analysis;                 ///< layers, candidates (features only with full_feature_vector)
   cv::Mat1f model_features;               ///< per candidate the features the model reads (ModelScorer order)
@@ -59,7 +48,7 @@ struct PipelineFrame {
   std::vector<char> duplicate;            ///< per candidate: 1 when a duplicate, never a detection (with a model)
   std::vector<ColourHistogram> histograms;///< per candidate (empty histograms without colour)
   std::vector<int> person;                ///< per candidate: tracked person id, 0 when not a detection
-  PipelineTimes times;
+  StageTimes times;
 };
 
 class PeoplePipeline {
@@ -87,7 +76,7 @@ class PeoplePipeline {
   PipelineParams params_;
   const BoostedModel* model_;
   std::optional<ModelScorer> scorer_;
-  FrameAnalyser core_;
+  FrameAnalyser analyser_;
   Tracker tracker_;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // Parameters of the depth segmentation (thesis names). The thesis does not publish its values; these
 // defaults were chosen on ../shared/realdata (people found, layers that separate a person from the wall
-// behind) and are documented in docs/detector-core.md.
+// behind) and are documented in docs/frame-analyser.md.
 
 namespace rdsf {
 
