@@ -21,37 +21,18 @@ const char* const kNamingNote =
     "Option names are kebab-case with British spelling. The thesis's snake_case names are aliases (--row_step\n"
     "is --row-step, also in --config files), and so is --color for --colour.";
 
-// --thesis: every departure option not given explicitly takes the thesis's value (thesis_params()).
-// Applied to the parsed values before po::notify stores them, so explicit options still win.
+// --thesis: every departure option not given explicitly takes the thesis's value (the rows of
+// analyser_parameters() that declare one). Applied to the parsed values before po::notify stores them, so
+// explicit options still win.
 void apply_thesis_preset(po::variables_map& values) {
   const auto it = values.find("thesis");
   if (it == values.end() || !it->second.as<bool>()) return;
-  const AnalyserParams thesis = thesis_params();
-  const CandidateParams& c = thesis.candidates;
-  auto set = [&values](const char* name, const boost::any& value) {
-    const auto option = values.find(name);
-    // In place: the entry keeps its link to the bound variable, which po::notify then stores.
-    if (option != values.end() && option->second.defaulted()) option->second.value() = value;
-  };
-  set("left-border-jump", thesis.segmentation.left_border_jump);
-  set("occlusion-gap", c.occlusion_gap_cm);
-  set("floor-tolerance", c.floor_tolerance_mm);
-  set("height-at-column-depth", c.height_at_column_depth);
-  set("fit-reach", c.fit_reach_cm);
-  set("fit-depth-step", c.fit_depth_step_mm);
-  set("fit-occlusion-gap", c.fit_occlusion_gap_cm);
-  set("fit-min-width-ratio", c.fit_min_width_ratio);
-  set("join-pieces", c.join_pieces);
-  set("max-object-width", c.max_object_width_cm);
-  set("min-fitted-width", c.min_fitted_width_cm);
-  set("narrow-fitted-width", c.narrow_fitted_width_cm);
-  set("split-depth-jump", c.split_depth_jump_mm);
-  set("split-valley", c.split_valley_cm);
-  set("split-step", c.split_step_cm);
-  set("split-head-drop", c.split_head_drop_cm);
-  set("fit-across-head-cut", c.fit_across_head_cut);
-  set("split-keep-whole", c.split_keep_whole);
-  set("box", std::string("strict"));
+  for (const Parameter<AnalyserParams>& row : analyser_parameters()) {
+    const auto option = values.find(row.name);
+    // In place: the entry keeps its link to its notifier, which po::notify then calls with this value.
+    if (!row.thesis || option == values.end() || !option->second.defaulted()) continue;
+    option->second.value() = std::visit([](const auto& v) { return boost::any(v); }, *row.thesis);
+  }
 }
 
 // Spellings accepted besides the canonical ones (which are kebab-case and British).
@@ -149,113 +130,14 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
 }
 
 po::options_description analyser_options(AnalyserParams& p) {
+  const ParameterTable<AnalyserParams>& rows = analyser_parameters();
+  const std::size_t segmentation_rows = segmentation_parameters().size();
   po::options_description segmentation("Segmentation (depth layers)");
-  auto& s = p.segmentation;
-  segmentation.add_options()
-      ("row-step", po::value(&s.row_step)->default_value(s.row_step), "scan every N-th row for depth jumps")
-      ("depth-threshold", po::value(&s.depth_threshold_mm)->default_value(s.depth_threshold_mm),
-       "a depth jump larger than this (mm) starts a depth candidate")
-      ("n", po::value(&s.n)->default_value(s.n), "pixels after the jump that must stay within --range-threshold")
-      ("range-threshold", po::value(&s.range_threshold_mm)->default_value(s.range_threshold_mm),
-       "tolerance (mm) of the n pixels after a jump")
-      ("candidate-threshold", po::value(&s.candidate_threshold_mm)->default_value(s.candidate_threshold_mm),
-       "sorted depth candidates are averaged in runs spanning at most this (mm)")
-      ("kmeans-iterations", po::value(&s.max_iterations)->default_value(s.max_iterations),
-       "upper bound of k-means iterations")
-      ("left-border-jump", po::value(&s.left_border_jump)->default_value(s.left_border_jump),
-       "the left image border counts as a depth jump; 0 = thesis");
+  add_table_options(segmentation, ParameterTable<AnalyserParams>(rows.begin(), rows.begin() + segmentation_rows), p);
   po::options_description candidates("Candidates (shape)");
-  auto& c = p.candidates;
-  candidates.add_options()
-      ("k", po::value(&c.k)->default_value(c.k), "gap tolerance (pixels) inside a column's run")
-      ("relaxed", po::bool_switch()->notifier([&c](bool on) { if (on) c.mode = HeightMode::relaxed; }),
-       "relaxed threshold_height: near_height everywhere (default strict)")
-      ("near-height", po::value(&c.near_height_cm)->default_value(c.near_height_cm),
-       "threshold_height (cm) for near layers and in relaxed mode")
-      ("far-height", po::value(&c.far_height_cm)->default_value(c.far_height_cm),
-       "threshold_height (cm) for far layers in strict mode")
-      ("near-far-boundary", po::value(&c.near_far_boundary_mm)->default_value(c.near_far_boundary_mm),
-       "layers nearer than this (mm) are near")
-      ("column-gap", po::value(&c.column_gap)->default_value(c.column_gap),
-       "gap tolerance (columns) when joining columns into an object")
-      ("min-width", po::value(&c.min_width_cm)->default_value(c.min_width_cm),
-       "minimum real width (cm) of a candidate")
-      ("occlusion-gap", po::value(&c.occlusion_gap_cm)->default_value(c.occlusion_gap_cm),
-       "a column's run goes on across nearer things up to this height (cm); 0 = thesis")
-      ("floor-tolerance", po::value(&c.floor_tolerance_mm)->default_value(c.floor_tolerance_mm),
-       "cut bottom rows nearer than the object's median depth by more than this (mm): floor; 0 = thesis")
-      ("window-scale", po::value(&c.window_scale)->default_value(c.window_scale),
-       "window = strict box enlarged by this factor")
-      ("box", po::value<std::string>()->default_value(p.reported_box == BoxKind::strict ? "strict" : "fitted")
-                  ->notifier([&p](const std::string& box) {
-                    if (box != "fitted" && box != "strict") throw UsageError("--box: fitted or strict, got '" + box + "'");
-                    p.reported_box = box == "strict" ? BoxKind::strict : BoxKind::fitted;
-                  }),
-       "the box detections report and assisted labelling matches (CSV, pictures, tracking, evaluation): fitted "
-       "(the object's extent) or strict (the thesis's height x height/2)")
-      ("height-at-column-depth", po::value(&c.height_at_column_depth)->default_value(c.height_at_column_depth),
-       "a column failing threshold_height at the layer's mean depth is measured at its own; 0 = thesis")
-      ("column-depth-layers-below", po::value(&c.column_depth_layers_below_mm)->default_value(c.column_depth_layers_below_mm),
-       "... in layers nearer than this (mm) only")
-      ("fit-reach", po::value(&c.fit_reach_cm)->default_value(c.fit_reach_cm),
-       "fitted box: reach (cm) over attached pieces (arms) each side; 0 = passing columns only")
-      ("fit-depth-step", po::value(&c.fit_depth_step_mm)->default_value(c.fit_depth_step_mm),
-       "fitted box: a piece's mean depth within this (mm) of its neighbour's; 0 = any")
-      ("fit-occlusion-gap", po::value(&c.fit_occlusion_gap_cm)->default_value(c.fit_occlusion_gap_cm),
-       "fitted box: ... also across this much (cm) of nearer things in front (an arm behind a nearer person); 0 = off")
-      ("fit-min-width-ratio",
-       po::value(&c.fit_min_width_ratio)->default_value(c.fit_min_width_ratio, shortest_text(c.fit_min_width_ratio)),
-       "fitted box: at least this fraction of its height wide, widened about its centre (limbs swung out of the "
-       "layer); 0 = the layer's extent alone")
-      ("join-pieces", po::value(&c.join_pieces)->default_value(c.join_pieces),
-       "objects whose fitted extents touch are one when no wider than --max-person-width; 0 = thesis")
-      ("join-narrow-layers-below", po::value(&c.join_narrow_layers_below_mm)->default_value(c.join_narrow_layers_below_mm),
-       "pieces each narrower than --min-width join only in layers nearer than this (mm)")
-      ("join-narrow-passing", po::value(&c.join_narrow_passing)->default_value(c.join_narrow_passing),
-       "... and only when their passing columns alone are together at least --narrow-passing-width wide")
-      ("narrow-fitted-width", po::value(&c.narrow_fitted_width_cm)->default_value(c.narrow_fitted_width_cm),
-       "objects narrower than --min-width are candidates when their fitted box is this wide (cm), they are person-"
-       "tall, near and have a background above their top (20 turns it on); 0 = off, the thesis")
-      ("narrow-passing-width", po::value(&c.narrow_passing_width_cm)->default_value(c.narrow_passing_width_cm),
-       "... and their passing columns at least this wide (cm)")
-      ("narrow-layers-below", po::value(&c.narrow_layers_below_mm)->default_value(c.narrow_layers_below_mm),
-       "... in layers nearer than this (mm)")
-      ("narrow-min-height", po::value(&c.narrow_min_height_cm)->default_value(c.narrow_min_height_cm),
-       "... at least this tall (cm)")
-      ("narrow-clear-above", po::value(&c.narrow_clear_above_cm)->default_value(c.narrow_clear_above_cm),
-       "... with other layers over half of this band (cm) above their top")
-      ("min-fitted-width", po::value(&c.min_fitted_width_cm)->default_value(c.min_fitted_width_cm),
-       "objects whose fitted box is narrower than this (cm) are not candidates (border objects exempt); 0 = thesis")
-      ("max-object-width", po::value(&c.max_object_width_cm)->default_value(c.max_object_width_cm),
-       "objects wider than this (cm) are walls, not candidates; 0 = thesis (no limit)")
-      ("max-person-width", po::value(&c.max_person_width_cm)->default_value(c.max_person_width_cm),
-       "the widest person (cm): wider objects are tried for splitting by depth jumps, valleys and steps, narrower pieces joined")
-      ("split-depth-jump", po::value(&c.split_depth_jump_mm)->default_value(c.split_depth_jump_mm),
-       "split a wide object where its column depth jumps by more than this (mm); 0 = off")
-      ("split-valley", po::value(&c.split_valley_cm)->default_value(c.split_valley_cm),
-       "... or at a valley of its height profile this deep (cm); 0 = off")
-      ("split-step", po::value(&c.split_step_cm)->default_value(c.split_step_cm),
-       "... or at a step of its height profile this high (cm); 0 = off")
-      ("split-head-drop", po::value(&c.split_head_drop_cm)->default_value(c.split_head_drop_cm),
-       "split an object of any width between two heads (tops of its height profile with shoulders at least this "
-       "far below, cm: people overlapping at one depth); 0 = off, the thesis")
-      ("split-head-width", po::value(&c.split_head_width_cm)->default_value(c.split_head_width_cm),
-       "... a head's top (within 5 cm of its height) at most this wide (cm)")
-      ("split-head-min-width", po::value(&c.split_head_min_width_cm)->default_value(c.split_head_min_width_cm),
-       "... and at least this wide (cm; a raised hand is narrower)")
-      ("split-head-layers-below", po::value(&c.split_head_layers_below_mm)->default_value(c.split_head_layers_below_mm),
-       "... in layers nearer than this (mm)")
-      ("split-head-keep-whole", po::value(&c.split_head_keep_whole)->default_value(c.split_head_keep_whole),
-       "an object split between heads stays a candidate besides its pieces")
-      ("fit-across-head-cut", po::value(&c.fit_across_head_cut)->default_value(c.fit_across_head_cut),
-       "... the pieces' fitted boxes reach across the cut over an arm held out to the other's passing columns; "
-       "0 = each side of the cut only")
-      ("min-part-width", po::value(&c.min_part_width_cm)->default_value(c.min_part_width_cm),
-       "the narrowest piece a split leaves (cm)")
-      ("split-keep-whole", po::value(&c.split_keep_whole)->default_value(c.split_keep_whole),
-       "a split object stays a candidate besides its pieces")
-      ("thesis", po::bool_switch(),
-       "the thesis's exact behaviour: every departure off (options given explicitly still win)");
+  add_table_options(candidates, ParameterTable<AnalyserParams>(rows.begin() + segmentation_rows, rows.end()), p);
+  candidates.add_options()("thesis", po::bool_switch(),
+                           "the thesis's exact behaviour: every departure off (options given explicitly still win)");
   po::options_description all;
   all.add(segmentation).add(candidates).add(feature_spec_options(p.features));
   return all;

@@ -4,11 +4,16 @@
 // error handling that turns any failure into one line and a non-zero exit.
 #include <functional>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <boost/program_options.hpp>
 
 #include "rdsf/analysis/frame_analyser.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "rdsf/frame/camera_model.hpp"
 
@@ -43,7 +48,24 @@ std::string shortest_text(double value);
 bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
            po::variables_map& values, const po::positional_options_description* positional = nullptr);
 
-/// Options of the frame analyser (segmentation, candidates), bound to `params`, with the thesis's names.
+/// The options of a parameter table's rows (core/parameter_table.hpp), bound to `params`: each row's name,
+/// its help with the default `params` holds now, its type; a value the row's check refuses is a UsageError
+/// ("--row-step must be at least 1"). Switch rows are flags without a value.
+template <typename Params>
+void add_table_options(po::options_description& group, const ParameterTable<Params>& table, Params& params);
+
+/// The same rows as overrides: a row's value is appended to `given` only when given (command line or
+/// --config); --help shows "Default X" from `defaults` (a recipe may set its own).
+template <typename Params>
+void add_override_options(po::options_description& group, const ParameterTable<Params>& table,
+                          const Params& defaults, std::vector<std::pair<std::string, ParameterValue>>& given);
+
+/// Sets `given` (from add_override_options) on `params` through `table`'s rows.
+template <typename Params>
+void apply_overrides(const ParameterTable<Params>& table, Params& params,
+                     const std::vector<std::pair<std::string, ParameterValue>>& given);
+
+/// Options of the frame analyser (segmentation, candidates: analyser_parameters()), bound to `params`.
 po::options_description analyser_options(AnalyserParams& params);
 
 /// --feature-spec NAME[:key=value,...] bound to `spec` (part of detector_options; rdsf-train adds it alone).
@@ -64,5 +86,80 @@ void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibrat
 /// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
 /// (0 success, 1 error, 2 usage error). An AlreadyExists error gets "(pass --force to replace it)".
 int run(const std::string& program_name, const std::function<int()>& body);
+
+// ---- templates ----
+
+namespace detail {
+
+/// A row's setter as a UsageError: "--name must be ..." instead of "name must be ...".
+template <typename Params>
+void set_as_option(const Parameter<Params>& row, Params& params, const ParameterValue& value) {
+  try {
+    row.set(params, value);
+  } catch (const Error& e) {
+    std::string message = e.what();
+    const std::string named = row.name + " ";
+    if (message.rfind(named, 0) == 0) message = message.substr(named.size());
+    throw UsageError("--" + row.name + " " + message);
+  }
+}
+
+/// Calls `make(T{})` with T the C++ type of `value`'s alternative.
+template <typename Make>
+auto with_type_of(const ParameterValue& value, Make&& make) {
+  return std::visit([&](const auto& v) { return make(v); }, value);
+}
+
+}  // namespace detail
+
+template <typename Params>
+void add_table_options(po::options_description& group, const ParameterTable<Params>& table, Params& params) {
+  for (const Parameter<Params>& row : table) {
+    if (row.is_switch) {
+      group.add_options()(row.name.c_str(), po::bool_switch()->notifier([&params, row](bool on) {
+        if (on) detail::set_as_option(row, params, true);
+      }), row.help.c_str());
+      continue;
+    }
+    detail::with_type_of(row.get(params), [&](const auto& now) {
+      using T = std::decay_t<decltype(now)>;
+      group.add_options()(row.name.c_str(),
+                          po::value<T>()->default_value(now, parameter_text(now))->notifier([&params, row](const T& v) {
+                            detail::set_as_option(row, params, v);
+                          }),
+                          row.help.c_str());
+      return 0;
+    });
+  }
+}
+
+template <typename Params>
+void add_override_options(po::options_description& group, const ParameterTable<Params>& table,
+                          const Params& defaults, std::vector<std::pair<std::string, ParameterValue>>& given) {
+  for (const Parameter<Params>& row : table) {
+    const std::string help = row.help + ". Default " + (row.is_switch ? std::string("off") : parameter_text(row.get(defaults)));
+    if (row.is_switch) {
+      group.add_options()(row.name.c_str(), po::bool_switch()->notifier([&given, name = row.name](bool on) {
+        if (on) given.emplace_back(name, true);
+      }), help.c_str());
+      continue;
+    }
+    detail::with_type_of(row.get(defaults), [&](const auto& like) {
+      using T = std::decay_t<decltype(like)>;
+      group.add_options()(row.name.c_str(), po::value<T>()->notifier([&given, name = row.name](const T& v) {
+        given.emplace_back(name, v);
+      }), help.c_str());
+      return 0;
+    });
+  }
+}
+
+template <typename Params>
+void apply_overrides(const ParameterTable<Params>& table, Params& params,
+                     const std::vector<std::pair<std::string, ParameterValue>>& given) {
+  for (const auto& [name, value] : given) {
+    if (const Parameter<Params>* row = find_parameter(table, name)) detail::set_as_option(*row, params, value);
+  }
+}
 
 }  // namespace rdsf::cli

@@ -210,8 +210,8 @@ TEST_F(TrainerProgram, BadCommandLinesFailWithOneLine) {
   EXPECT_NE(name.err.find("--name"), std::string::npos) << name.err;
   const test::RunResult backend =
       train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name x --backend gpu");
-  EXPECT_EQ(backend.exit_code, 1);
-  EXPECT_NE(backend.err.find("backend 'gpu'"), std::string::npos) << backend.err;
+  EXPECT_EQ(backend.exit_code, 2);  // a value the option's row refuses: a wrong command line
+  EXPECT_NE(backend.err.find("--backend 'gpu' is not known"), std::string::npos) << backend.err;
   const test::RunResult set = train("--pos " + test::quote(dir / "nope") + " --neg " + test::quote(negatives) + " --name x");
   EXPECT_EQ(set.exit_code, 1);
   EXPECT_NE(set.err.find("nope"), std::string::npos) << set.err;
@@ -293,12 +293,13 @@ TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
   EXPECT_EQ(copies.exit_code, 1);
   EXPECT_NE(copies.err.find("need shift, scale or occlusion"), std::string::npos) << copies.err;
   const test::RunResult depth = train(sets + "--depth 7");
-  EXPECT_EQ(depth.exit_code, 1);
-  EXPECT_NE(depth.err.find("depth must be"), std::string::npos) << depth.err;
+  EXPECT_EQ(depth.exit_code, 2);  // the options' rows check their values: usage errors
+  EXPECT_NE(depth.err.find("--depth must be in [1, 4]"), std::string::npos) << depth.err;
   const test::RunResult rate = train(sets + "--learning-rate 1.5");
-  EXPECT_EQ(rate.exit_code, 1);
+  EXPECT_EQ(rate.exit_code, 2);
+  EXPECT_NE(rate.err.find("--learning-rate must be in (0, 1]"), std::string::npos) << rate.err;
   const test::RunResult calibration = train(sets + "--calibration magic");
-  EXPECT_EQ(calibration.exit_code, 1);
+  EXPECT_EQ(calibration.exit_code, 2);
   EXPECT_NE(calibration.err.find("'magic' is not known"), std::string::npos) << calibration.err;
   for (const test::RunResult* r : {&shared, &augment, &copies, &depth, &rate, &calibration}) {
     // One error line, and it is the last thing printed.

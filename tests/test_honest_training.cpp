@@ -430,7 +430,7 @@ TEST(HonestTraining, GroupValidationCalibratesAndSavesFormatTwo) {
   EXPECT_NE(message_of([&] { validate_training_params(wrong); }).find("'isotonic' is not known"), std::string::npos);
   wrong = p;
   wrong.learning_rate = 0.0;
-  EXPECT_NE(message_of([&] { validate_training_params(wrong); }).find("learning rate"), std::string::npos);
+  EXPECT_NE(message_of([&] { validate_training_params(wrong); }).find("learning-rate must be in (0, 1]"), std::string::npos);
 }
 
 // K-fold by group: every original row is validated once, by a model that never saw its group; the final

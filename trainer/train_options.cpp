@@ -33,32 +33,10 @@ po::options_description train_options(TrainOptions& o) {
        "continue training MODEL (file, NAME or NAME/vN, e.g. the shipped 'people') on the given sets: --rounds "
        "more weak classifiers after its own, its bins; the new model holds both. Default: none (from nothing)");
   po::options_description how("Boosting (default: the recipe's value, else the one shown)");
+  cli::add_override_options(how, boost_training_parameters(), BoostTrainingParams{}, o.boosting);
   how.add_options()
-      ("backend", optional_into(o.backend), "native (Real AdaBoost, look-up tables) or opencv (cv::ml::Boost REAL stumps). Default native")
-      ("rounds", optional_into(o.rounds), "boosting rounds. Default 100")
-      ("bins", optional_into(o.bins), "native: bins per feature over [0, 1] (2-256). Default 64")
-      ("seed", optional_into(o.seed), "seed of the subsets and the validation split. Default 1")
-      ("validation-fraction", optional_into(o.validation_fraction),
-       "fraction of each class held out for validation (0 = none). Default 0.2")
-      ("weight-trim", optional_into(o.weight_trim),
-       "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05). Default 0")
-      ("early-stopping", optional_into(o.early_stopping),
-       "stop after this many rounds without a better validation AUC, keep the best (0 = off). Default 0")
-      ("report-every", optional_into(o.report_every), "rounds between the figures kept in the model file. Default 10")
-      ("depth", optional_into(o.depth),
-       "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees). Default 2")
-      ("learning-rate", optional_into(o.learning_rate), "native: shrinkage of every response, in (0, 1]. Default 0.5")
-      ("histogram-subtraction", po::bool_switch(&o.histogram_subtraction),
-       "native trees: count one child of two, the other is parent - sibling (faster; ties may break otherwise). Default off")
       ("thesis", po::bool_switch(&o.thesis),
        "the thesis's weak learners: depth 1, learning rate 1, no augmentation (options given explicitly still win)")
-      ("smoothing", optional_into(o.smoothing), "native: eps of the responses (0 = 1 / training samples). Default 0")
-      ("calibration", optional_into(o.calibration),
-       "platt (fit P(person) on the validation samples) or none (P = 1 / (1 + exp(-2 H))). Default platt")
-      ("folds", optional_into(o.folds),
-       "K-fold validation by group (2-20): K models on K-1 folds of whole groups give the validation figures and "
-       "calibration of the final model, trained on all samples (0 = one held-out fraction; early stopping and "
-       "separate validation sets use one held-out split). Default 5")
       ("group-frames", po::value(&o.group_frames)->default_value(o.group_frames),
        "validation groups: a recording's frames in blocks of this many (consecutive frames never split); "
        "0 = split by sample (dishonest: near-identical crops on both sides; only for comparison)")

@@ -36,24 +36,8 @@ Recipe effective_recipe(const TrainOptions& o) {
   if (o.positives) r.positives = *o.positives;
   if (o.negatives) r.negatives = *o.negatives;
   BoostTrainingParams& p = r.params;
-  if (o.rounds) p.rounds = *o.rounds;
-  if (o.bins) p.bins.count = *o.bins;
-  if (o.early_stopping) p.early_stopping = *o.early_stopping;
-  if (o.report_every) p.report_every = *o.report_every;
-  if (o.backend) p.backend = *o.backend;
-  if (o.seed) p.seed = *o.seed;
-  if (o.validation_fraction) p.validation_fraction = *o.validation_fraction;
-  if (o.weight_trim) p.weight_trim = *o.weight_trim;
-  if (o.thesis) {
-    p.depth = 1;
-    p.learning_rate = 1.0;
-  }
-  if (o.depth) p.depth = *o.depth;
-  if (o.folds) p.folds = *o.folds;
-  if (o.learning_rate) p.learning_rate = *o.learning_rate;
-  if (o.smoothing) p.smoothing = *o.smoothing;
-  if (o.histogram_subtraction) p.histogram_subtraction = true;
-  if (o.calibration) p.calibration = *o.calibration;
+  if (o.thesis) p = with_thesis_values(boost_training_parameters(), p);
+  cli::apply_overrides(boost_training_parameters(), p, o.boosting);
   p.threads = o.threads;
   validate_training_params(p);
   if (r.pos_sets.empty() || r.neg_sets.empty()) {
@@ -121,8 +105,9 @@ int run_train(const TrainOptions& o) {
   std::optional<BoostedModel> init;
   if (!o.init.empty()) {
     init = BoostedModel::load(o.init, o.models_dir);
-    if (o.bins && *o.bins != init->bins().count) {
-      throw cli::UsageError("--bins " + std::to_string(*o.bins) + " differs from the --init model's " +
+    const bool bins_given = std::any_of(o.boosting.begin(), o.boosting.end(), [](const auto& g) { return g.first == "bins"; });
+    if (bins_given && recipe.params.bins.count != init->bins().count) {
+      throw cli::UsageError("--bins " + std::to_string(recipe.params.bins.count) + " differs from the --init model's " +
                             std::to_string(init->bins().count) + " (continued training keeps its bins)");
     }
   }

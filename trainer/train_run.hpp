@@ -4,6 +4,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rdsf/classifier/boost_training.hpp"
@@ -16,15 +17,9 @@ struct TrainOptions {
   std::optional<std::size_t> positives, negatives;  ///< override the recipe; 0 = all
   std::string name;  ///< model name; default the recipe's name
   std::string models_dir = "models";
-  // Overrides of the recipe's (or the defaults') boosting parameters.
-  std::optional<int> rounds, bins, early_stopping, report_every;
-  std::optional<std::string> backend;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> validation_fraction, weight_trim;
-  std::optional<int> depth, folds;
-  std::optional<double> learning_rate, smoothing;
-  std::optional<std::string> calibration;
-  bool histogram_subtraction = false;  ///< --histogram-subtraction
+  /// Boosting parameters given on the command line (rows of boost_training_parameters(), in the order
+  /// given): they override the recipe's (or the defaults').
+  std::vector<std::pair<std::string, ParameterValue>> boosting;
   int group_frames = 30;        ///< frames per validation group block
   std::string group_by = "recording-block";  ///< recording-block, block or recording
   std::string augment = "mirror";  ///< mirror,shift,scale,occlusion or off (chosen by the quality report)

@@ -175,8 +175,8 @@ int run_labeler_bench(const LabelerBenchOptions& o) {
   const Pool pool = load(o.train, analyser);
   const Pool test = load(o.test, analyser);
   LoopTrainingParams params;
-  params.threads = o.threads;
-  params.seed = o.seed;
+  params.boost.threads = o.threads;
+  params.boost.seed = o.seed;
 
   const std::optional<BoostedModel> all = train_loop_model(pool.rows, pool.labels, pool.origins, FeatureSpec{}, params);
   if (!all) throw Error("the --train recordings give too few persons or not-persons to train on");

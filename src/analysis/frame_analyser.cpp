@@ -6,28 +6,27 @@
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
-AnalyserParams thesis_params(AnalyserParams params) {
-  params.segmentation.left_border_jump = false;
-  params.reported_box = BoxKind::strict;
-  CandidateParams& c = params.candidates;
-  c.occlusion_gap_cm = 0;
-  c.floor_tolerance_mm = 0;
-  c.height_at_column_depth = false;
-  c.fit_reach_cm = 0;
-  c.fit_occlusion_gap_cm = 0;
-  c.fit_min_width_ratio = 0;
-  c.join_pieces = false;
-  c.max_object_width_cm = 0;
-  c.min_fitted_width_cm = 0;
-  c.narrow_fitted_width_cm = 0;
-  c.split_depth_jump_mm = 0;
-  c.split_valley_cm = 0;
-  c.split_step_cm = 0;
-  c.split_head_drop_cm = 0;
-  c.fit_across_head_cut = false;
-  c.split_keep_whole = false;
-  return params;
+const ParameterTable<AnalyserParams>& analyser_parameters() {
+  using P = AnalyserParams;
+  static const ParameterTable<P> table = [] {
+    ParameterTable<P> t = joined(nested(segmentation_parameters(), &P::segmentation),
+                                 nested(candidate_parameters(), &P::candidates));
+    t.push_back(computed_parameter<P, std::string>(
+        "box",
+        "the box detections report and assisted labelling matches (CSV, pictures, tracking, evaluation): fitted "
+        "(the object's extent) or strict (the thesis's height x height/2)",
+        [](const P& p) { return std::string(p.reported_box == BoxKind::strict ? "strict" : "fitted"); },
+        [](P& p, const std::string& box) {
+          if (box != "fitted" && box != "strict") refuse_parameter("box", "is fitted or strict, not '" + box + "'");
+          p.reported_box = box == "strict" ? BoxKind::strict : BoxKind::fitted;
+        },
+        std::string("strict")));
+    return t;
+  }();
+  return table;
 }
+
+AnalyserParams thesis_params(AnalyserParams params) { return with_thesis_values(analyser_parameters(), params); }
 
 FrameAnalyser::FrameAnalyser(AnalyserParams params) : params_(params), extractor_(params.features) {}
 

@@ -402,23 +402,9 @@ void record_validation(BoostedModel& model, ValidationFigures& figures, const st
 }
 
 void validate_training_params(const BoostTrainingParams& p) {
-  if (p.backend == BoostBackend::unknown) {
-    throw Error("backend '" + p.backend.name() + "' is not known (native or opencv)");
-  }
-  if (p.rounds < 1) throw Error("rounds must be at least 1 (" + std::to_string(p.rounds) + " given)");
+  BoostTrainingParams checked = p;
+  for (const Parameter<BoostTrainingParams>& row : boost_training_parameters()) row.set(checked, row.get(p));
   p.bins.validate();
-  if (!(p.weight_trim >= 0.0 && p.weight_trim < 1.0)) throw Error("weight trim must be in [0, 1)");
-  if (!(p.validation_fraction >= 0.0 && p.validation_fraction < 1.0)) {
-    throw Error("validation fraction must be in [0, 1)");
-  }
-  if (p.report_every < 1) throw Error("report-every must be at least 1");
-  if (p.early_stopping < 0) throw Error("early stopping must be 0 (off) or a number of rounds");
-  if (p.depth < 1 || p.depth > 4) throw Error("depth must be 1 (one look-up table) to 4 (" + std::to_string(p.depth) + " given)");
-  if (!(p.learning_rate > 0.0 && p.learning_rate <= 1.0)) throw Error("learning rate must be in (0, 1]");
-  if (p.folds < 0 || p.folds == 1 || p.folds > 20) throw Error("folds must be 0 (off) or 2-20");
-  if (p.calibration != "platt" && p.calibration != "none") {
-    throw Error("calibration '" + p.calibration + "' is not known (platt or none)");
-  }
   p.feature_spec.validate();
   if (!p.init.empty()) {
     if (p.backend != BoostBackend::native) throw Error("continued training (--init) needs the native backend");

@@ -51,23 +51,9 @@ Recipe parse_recipe(const std::string& text, const std::string& path) {
     r.neg_sets = y.text_list(root, "neg_sets");
     r.validation_pos_sets = y.text_list(root, "validation_pos_sets");
     r.validation_neg_sets = y.text_list(root, "validation_neg_sets");
-    BoostTrainingParams& p = r.params;
-    p.rounds = y.integer_or(root, "rounds", p.rounds);
-    p.backend = y.text_or(root, "backend", p.backend.name());
-    const int seed = y.integer_or(root, "seed", static_cast<int>(p.seed));
-    if (seed < 0) y.bad("'seed' must not be negative");
-    p.seed = static_cast<std::uint64_t>(seed);
-    p.bins.count = y.integer_or(root, "bins", p.bins.count);
-    p.validation_fraction = y.real_or(root, "validation_fraction", p.validation_fraction);
-    p.weight_trim = y.real_or(root, "weight_trim", p.weight_trim);
-    p.early_stopping = y.integer_or(root, "early_stopping", p.early_stopping);
-    p.report_every = y.integer_or(root, "report_every", p.report_every);
-    p.depth = y.integer_or(root, "depth", p.depth);
-    p.folds = y.integer_or(root, "folds", p.folds);
-    p.learning_rate = y.real_or(root, "learning_rate", p.learning_rate);
-    p.calibration = y.text_or(root, "calibration", p.calibration);
+    y.read_parameters(root, boost_training_parameters(), r.params);
     try {
-      validate_training_params(p);
+      validate_training_params(r.params);
     } catch (const Error& e) {
       y.bad(e.what());
     }

@@ -19,20 +19,20 @@ std::vector<std::size_t> most_uncertain_first(const std::vector<double>& probabi
   return order;
 }
 
+BoostTrainingParams loop_boosting() {
+  BoostTrainingParams p;
+  p.rounds = 60;
+  p.folds = 0;
+  return p;
+}
+
 std::optional<BoostedModel> train_loop_model(const cv::Mat1f& rows, const std::vector<int>& labels,
                                              const std::vector<SampleOrigin>& origins, const FeatureSpec& spec,
                                              const LoopTrainingParams& params, const std::string& name) {
   const auto positives = static_cast<int>(std::count(labels.begin(), labels.end(), 1));
   const int negatives = static_cast<int>(labels.size()) - positives;
   if (positives < params.min_per_class || negatives < params.min_per_class) return std::nullopt;
-  BoostTrainingParams p;
-  p.rounds = params.rounds;
-  p.depth = params.depth;
-  p.learning_rate = params.learning_rate;
-  p.validation_fraction = params.validation_fraction;
-  p.folds = 0;
-  p.seed = params.seed;
-  p.threads = params.threads;
+  BoostTrainingParams p = params.boost;
   p.feature_spec = spec;
   TrainingRowInfo info;
   if (!origins.empty()) info.groups = sample_groups(origins, params.group_frames).group;
@@ -83,7 +83,7 @@ std::optional<BoostedModel> train_loop_model(const SampleSet& set, const LoopTra
     return std::nullopt;
   }
   const cv::Mat1f rows =
-      cache ? cache->rows(set, used, params.threads) : set.features(RdsfExtractor(set.feature_spec()), used, params.threads);
+      cache ? cache->rows(set, used, params.boost.threads) : set.features(RdsfExtractor(set.feature_spec()), used, params.boost.threads);
   return train_loop_model(rows, labels, origins, set.feature_spec(), params, name);
 }
 

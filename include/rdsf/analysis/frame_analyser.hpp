@@ -28,6 +28,10 @@ struct AnalyserParams {
   BoxKind reported_box = BoxKind::fitted;
 };
 
+/// The table of AnalyserParams: the segmentation's and candidates' rows, then the reported box
+/// (core/parameter_table.hpp). The feature spec has its own parser (FeatureSpec::parse).
+const ParameterTable<AnalyserParams>& analyser_parameters();
+
 /// `params` with every departure from the thesis turned off (docs/frame-analyser.md, "Departures from the thesis"): no
 /// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no
 /// splitting. Everything else (the thesis's own parameters) is kept.

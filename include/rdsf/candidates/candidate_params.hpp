@@ -1,5 +1,8 @@
 #pragma once
-// Parameters of candidate shaping (thesis names where the thesis names them), with their defaults.
+// Parameters of candidate shaping (thesis names where the thesis names them), with their defaults. Each
+// member's option name, help, check and thesis value are declared once in candidate_parameters()
+// (core/parameter_table.hpp).
+#include "rdsf/core/parameter_table.hpp"
 
 namespace rdsf {
 
@@ -157,5 +160,8 @@ struct CandidateParams {
     return layer_depth_mm < near_far_boundary_mm ? near_height_cm : far_height_cm;
   }
 };
+
+/// The table of CandidateParams: options, config keys, checks and thesis values.
+const ParameterTable<CandidateParams>& candidate_parameters();
 
 }  // namespace rdsf

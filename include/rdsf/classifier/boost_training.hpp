@@ -18,6 +18,7 @@
 #include "rdsf/classifier/bin_scheme.hpp"
 #include "rdsf/classifier/boost_backend.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf {
@@ -84,7 +85,12 @@ struct TrainingProgress {
 
 using TrainingProgressFn = std::function<void(const TrainingProgress&)>;
 
-/// Throws Error on bad parameters (unknown backend, rounds < 1, ...), naming the parameter.
+/// The table of BoostTrainingParams (boost_training_parameters.cpp): rdsf-train's boosting options, the
+/// keys of recipes, the --thesis values (depth 1, learning rate 1) and each row's check.
+const ParameterTable<BoostTrainingParams>& boost_training_parameters();
+
+/// Throws Error on bad parameters, naming the parameter: every row of boost_training_parameters() checked
+/// ("rounds must be at least 1"), then what rows cannot check alone (bin range, feature spec, --init, pool).
 void validate_training_params(const BoostTrainingParams& params);
 
 /// Trains on `rows` (one sample per row) with `labels` (1/0). Validation uses `validation_rows` /

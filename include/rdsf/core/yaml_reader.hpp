@@ -10,12 +10,15 @@
 //   4. read() runs the caller's parse and turns whatever escapes it into "<path>: unreadable <kind> (...)".
 // Every message is one line (text quoted from the file is passed through one_line()).
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/core/yaml_guard.hpp"
 
 namespace rdsf {
@@ -52,6 +55,34 @@ class YamlReader {
   /// A list of texts; absent: empty; a single text: a list of one.
   std::vector<std::string> text_list(const cv::FileNode& parent, const std::string& key,
                                      const std::string& context = "") const;
+
+  /// Every row of `table` whose key (parameter_key: "learning_rate") is an entry of `parent`, set on
+  /// `params` through the row (typed by the row, checked by it; a refusal names the file and the row).
+  template <typename Params>
+  void read_parameters(const cv::FileNode& parent, const ParameterTable<Params>& table, Params& params) const {
+    for (const Parameter<Params>& row : table) {
+      const std::string key = parameter_key(row.name);
+      if (!has(parent, key)) continue;
+      const ParameterValue value = std::visit(
+          [&](const auto& like) -> ParameterValue {
+            using T = std::decay_t<decltype(like)>;
+            if constexpr (std::is_same_v<T, std::string>) {
+              return text(parent, key);
+            } else if constexpr (std::is_same_v<T, double>) {
+              return real(parent, key);
+            } else {
+              return integer(parent, key);  // bool as 0 / 1, integers
+            }
+          },
+          row.get(params));
+      try {
+        row.set(params, value);
+      } catch (const Error& e) {  // "learning-rate must be ..." -> "'learning_rate' must be ..."
+        const std::string message = e.what();
+        bad("'" + key + "' " + (message.rfind(row.name + " ", 0) == 0 ? message.substr(row.name.size() + 1) : message));
+      }
+    }
+  }
 
   // Informational entries, read leniently: a wrong type reads as empty or 0. `child` is none when `parent`
   // is no mapping.

@@ -17,6 +17,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/dataset/sample_groups.hpp"
 #include "rdsf/dataset/sample_set.hpp"
@@ -29,18 +30,17 @@ std::vector<std::size_t> most_uncertain_first(const std::vector<double>& probabi
 /// Probability that `label` (1 person, 0 not) is wrong when the model says P(person) = probability.
 inline double suspicion(int label, double probability) { return label == 1 ? 1.0 - probability : probability; }
 
+/// Boosting of the labeler's loop: rdsf-train's defaults (depth 2, learning rate 0.5), 60 rounds (the
+/// trainer's default is 100) and one held-out part (no folds) for the Platt calibration.
+BoostTrainingParams loop_boosting();
+
 struct LoopTrainingParams {
-  int rounds = 60;                   ///< boosting rounds per retrain (the trainer's default is 100)
-  int depth = 2;                     ///< as rdsf-train's default
-  double learning_rate = 0.5;        ///< as rdsf-train's default
-  double validation_fraction = 0.2;  ///< held out (by group) for the Platt calibration
+  BoostTrainingParams boost = loop_boosting();  ///< its threads: 0 = one per core (no effect on the result)
   int group_frames = 15;             ///< frames per validation group (a synthetic clip's length)
   int min_per_class = 5;             ///< fewer positives or negatives: no model yet
   /// Train on samples the model answered too (origin "labeler-model"); off: a model's answers never teach
   /// its successor (self-training made the loop's later models answer persons n: docs/labeler.md).
   bool train_on_model_answers = false;
-  std::uint64_t seed = 1;
-  int threads = 0;                   ///< 0: one per core (the result does not depend on it)
 };
 
 /// A model trained on `rows` (features of `spec`) with `labels` (1/0); `origins` (one per row, may be

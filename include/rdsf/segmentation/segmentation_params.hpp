@@ -1,7 +1,9 @@
 #pragma once
 // Parameters of the depth segmentation (thesis names). The thesis does not publish its values; these
 // defaults were chosen on ../shared/realdata (people found, layers that separate a person from the wall
-// behind) and are documented in docs/frame-analyser.md.
+// behind) and are documented in docs/frame-analyser.md. Each member's option name, help, check and thesis
+// value are declared once in segmentation_parameters() (core/parameter_table.hpp).
+#include "rdsf/core/parameter_table.hpp"
 
 namespace rdsf {
 
@@ -23,5 +25,8 @@ struct SegmentationParams {
   /// Upper bound of k-means iterations; it stops earlier when no pixel changes layer.
   int max_iterations = 30;
 };
+
+/// The table of SegmentationParams: options, config keys, checks and thesis values.
+const ParameterTable<SegmentationParams>& segmentation_parameters();
 
 }  // namespace rdsf

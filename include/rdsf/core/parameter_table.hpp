@@ -1,0 +1,208 @@
+#pragma once
+// One declaration per parameter, after LightGBM's config.h (a parameter's name, alias, check and
+// description written once, from which parsing and the docs are made), in C++ without a generator.
+//
+// A parameter struct (SegmentationParams, CandidateParams, BoostTrainingParams, ...) keeps its members and
+// their defaults: that is the library's interface, and a default-constructed struct is the one statement
+// of the defaults. Beside it, its table declares every other fact of each member once, in one row:
+//   name    kebab-case: the command-line option (--near-height); with '_' for '-' the key of --config
+//           files, recipes and provenance (near_height), which are also the thesis's names;
+//   member  where the value lives (a member pointer, also through one nested struct);
+//   help    the line --help prints (the default is printed beside it, from the struct);
+//   check   an inclusive range [min, max] for numbers, or the words a text may be, or a function;
+//   thesis  the value under --thesis when the row is a departure from the thesis.
+// The command line (cli::table_options), --config (the same options), recipes (read_parameters),
+// the --thesis preset (thesis_values), --help and so docs/options.md (scripts/option-reference.sh) and
+// the programs' provenance are all made from the rows. A row's setter converts and checks: it throws
+// Error("name must be ...") in one line, naming the row.
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace rdsf {
+
+/// A value as the tables carry it: bool, integers, real numbers or text.
+using ParameterValue = std::variant<bool, int, std::int64_t, double, std::string>;
+
+/// "1"/"0" for bool, the shortest round-trip text of a number ("%g" up to 17 digits: 0.3, 1500), text as is.
+std::string parameter_text(const ParameterValue& value);
+
+/// `name` with '-' as '_': the key of config files and recipes.
+std::string parameter_key(const std::string& name);
+
+/// Converts `value` to the type of `like` (an int where an int is expected, a number from an int, ...);
+/// throws Error("name must be <type>") when it cannot.
+ParameterValue convert_parameter(const ParameterValue& value, const ParameterValue& like, const std::string& name);
+
+template <typename Params>
+struct Parameter {
+  std::string name;
+  std::string help;
+  std::function<ParameterValue(const Params&)> get;
+  /// Converts to the row's type, checks, stores; throws Error("name must be ...").
+  std::function<void(Params&, const ParameterValue&)> set;
+  std::optional<ParameterValue> thesis;  ///< under --thesis, when a departure from the thesis
+  bool is_switch = false;                ///< a flag without a value on the command line (--relaxed)
+};
+
+template <typename Params>
+using ParameterTable = std::vector<Parameter<Params>>;
+
+/// An inclusive range of a number, or none.
+struct Range {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_open = false;  ///< min itself refused
+  bool max_open = false;  ///< max itself refused
+  static Range at_least(double min) { return {min, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range above(double min) { return {min, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range between(double min, double max) { return {min, max, false, false}; }  ///< [min, max]
+  static Range from_below(double min, double max) { return {min, max, false, true}; }  ///< [min, max)
+  static Range above_to(double min, double max) { return {min, max, true, false}; }    ///< (min, max]
+  /// "" when `value` lies in the range, else "must be at least 0", "must be in [1, 4]", ...
+  std::string problem(double value) const;
+};
+
+namespace parameter_detail {
+
+template <typename T>
+ParameterValue wrap(const T& v) {
+  if constexpr (std::is_same_v<T, std::uint64_t>) {
+    return static_cast<std::int64_t>(v);
+  } else {
+    return v;
+  }
+}
+
+template <typename T>
+T unwrap(const ParameterValue& v) {
+  if constexpr (std::is_same_v<T, std::uint64_t>) {
+    return static_cast<std::uint64_t>(std::get<std::int64_t>(v));
+  } else {
+    return std::get<T>(v);
+  }
+}
+
+[[noreturn]] void refuse(const std::string& name, const std::string& problem);
+
+}  // namespace parameter_detail
+
+/// A row bound to `member` (bool, int, std::int64_t, std::uint64_t, double or std::string), checked by
+/// `range` (numbers) and, when given, by `check` (returns the problem or ""), with `thesis` under --thesis.
+template <typename Params, typename T>
+Parameter<Params> parameter(std::string name, T Params::*member, std::string help, Range range = {},
+                            std::optional<T> thesis = std::nullopt,
+                            std::function<std::string(const T&)> check = {}) {
+  Parameter<Params> row;
+  row.name = name;
+  row.help = std::move(help);
+  row.get = [member](const Params& p) { return parameter_detail::wrap(p.*member); };
+  const ParameterValue like = parameter_detail::wrap(T{});
+  row.set = [member, name, range, like, check](Params& p, const ParameterValue& given) {
+    const ParameterValue v = convert_parameter(given, like, name);
+    const T value = parameter_detail::unwrap<T>(v);
+    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+      const std::string problem = range.problem(static_cast<double>(value));
+      if (!problem.empty()) parameter_detail::refuse(name, problem);
+    }
+    if (check) {
+      const std::string problem = check(value);
+      if (!problem.empty()) parameter_detail::refuse(name, problem);
+    }
+    p.*member = value;
+  };
+  if (thesis) row.thesis = parameter_detail::wrap(*thesis);
+  if constexpr (std::is_same_v<T, std::uint64_t>) {
+    // A seed: never negative.
+    row.set = [set = row.set, name](Params& p, const ParameterValue& given) {
+      if (const auto* i = std::get_if<int>(&given); i != nullptr && *i < 0) parameter_detail::refuse(name, "must not be negative");
+      if (const auto* i = std::get_if<std::int64_t>(&given); i != nullptr && *i < 0) {
+        parameter_detail::refuse(name, "must not be negative");
+      }
+      set(p, given);
+    };
+  }
+  return row;
+}
+
+/// A row whose value is computed (an enum shown as a word or a switch): `get` and `set` (which throws
+/// Error through refuse_parameter() on a bad value).
+template <typename Params, typename T>
+Parameter<Params> computed_parameter(std::string name, std::string help, std::function<T(const Params&)> get,
+                                     std::function<void(Params&, const T&)> set,
+                                     std::optional<T> thesis = std::nullopt, bool is_switch = false) {
+  Parameter<Params> row;
+  row.name = name;
+  row.help = std::move(help);
+  row.get = [get](const Params& p) { return ParameterValue(get(p)); };
+  const ParameterValue like = T{};
+  row.set = [set, like, name](Params& p, const ParameterValue& given) {
+    set(p, std::get<T>(convert_parameter(given, like, name)));
+  };
+  if (thesis) row.thesis = *thesis;
+  row.is_switch = is_switch;
+  return row;
+}
+
+/// Throws Error("name <problem>"): what a row's check says.
+[[noreturn]] inline void refuse_parameter(const std::string& name, const std::string& problem) {
+  parameter_detail::refuse(name, problem);
+}
+
+/// The rows of `inner`'s table lifted into the struct that holds it as `member`.
+template <typename Outer, typename Inner>
+ParameterTable<Outer> nested(const ParameterTable<Inner>& inner, Inner Outer::*member) {
+  ParameterTable<Outer> out;
+  for (const Parameter<Inner>& row : inner) {
+    Parameter<Outer> lifted;
+    lifted.name = row.name;
+    lifted.help = row.help;
+    lifted.thesis = row.thesis;
+    lifted.is_switch = row.is_switch;
+    lifted.get = [get = row.get, member](const Outer& o) { return get(o.*member); };
+    lifted.set = [set = row.set, member](Outer& o, const ParameterValue& v) { set(o.*member, v); };
+    out.push_back(std::move(lifted));
+  }
+  return out;
+}
+
+/// `table`'s rows followed by `more`'s.
+template <typename Params>
+ParameterTable<Params> joined(ParameterTable<Params> table, const ParameterTable<Params>& more) {
+  table.insert(table.end(), more.begin(), more.end());
+  return table;
+}
+
+/// The row named `name`, or null.
+template <typename Params>
+const Parameter<Params>* find_parameter(const ParameterTable<Params>& table, const std::string& name) {
+  for (const Parameter<Params>& row : table) {
+    if (row.name == name) return &row;
+  }
+  return nullptr;
+}
+
+/// `params` with every row's thesis value set.
+template <typename Params>
+Params with_thesis_values(const ParameterTable<Params>& table, Params params) {
+  for (const Parameter<Params>& row : table) {
+    if (row.thesis) row.set(params, *row.thesis);
+  }
+  return params;
+}
+
+/// (key, text) of every row, in table order: what a model file or manifest records.
+template <typename Params>
+std::vector<std::pair<std::string, std::string>> parameter_values(const ParameterTable<Params>& table,
+                                                                  const Params& params) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const Parameter<Params>& row : table) out.emplace_back(parameter_key(row.name), parameter_text(row.get(params)));
+  return out;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,67 @@
+// The table of BoostTrainingParams (core/parameter_table.hpp): rdsf-train's boosting options, recipe keys,
+// --thesis values and range checks, each declared once. The order is --help's.
+#include "rdsf/classifier/boost_training.hpp"
+
+namespace rdsf {
+
+const ParameterTable<BoostTrainingParams>& boost_training_parameters() {
+  using P = BoostTrainingParams;
+  static const ParameterTable<P> table = {
+      computed_parameter<P, std::string>(
+          "backend", "native (Real AdaBoost, look-up tables) or opencv (cv::ml::Boost REAL stumps)",
+          [](const P& p) { return p.backend.name(); },
+          [](P& p, const std::string& name) {
+            const BoostBackend backend(name);
+            if (backend == BoostBackend::unknown) refuse_parameter("backend", "'" + name + "' is not known (native or opencv)");
+            p.backend = backend;
+          }),
+      parameter("rounds", &P::rounds, "boosting rounds", Range::at_least(1)),
+      computed_parameter<P, int>(
+          "bins", "native: bins per feature over [0, 1] (2-256)", [](const P& p) { return p.bins.count; },
+          [](P& p, const int& count) {
+            const std::string problem = Range::between(2, 256).problem(count);
+            if (!problem.empty()) refuse_parameter("bins", problem);
+            p.bins.count = count;
+          }),
+      parameter("seed", &P::seed, "seed of the subsets and the validation split"),
+      parameter("validation-fraction", &P::validation_fraction,
+                "fraction of each class held out for validation (0 = none)", Range::from_below(0, 1)),
+      parameter("weight-trim", &P::weight_trim,
+                "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05)",
+                Range::from_below(0, 1)),
+      parameter("early-stopping", &P::early_stopping,
+                "stop after this many rounds without a better validation AUC, keep the best (0 = off)",
+                Range::at_least(0)),
+      parameter("report-every", &P::report_every, "rounds between the figures kept in the model file",
+                Range::at_least(1)),
+      parameter("depth", &P::depth,
+                "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees)",
+                Range::between(1, 4), std::optional<int>(1)),
+      parameter("learning-rate", &P::learning_rate, "native: shrinkage of every response, in (0, 1]",
+                Range::above_to(0, 1), std::optional<double>(1.0)),
+      computed_parameter<P, bool>(
+          "histogram-subtraction",
+          "native trees: count one child of two, the other is parent - sibling (faster; ties may break otherwise)",
+          [](const P& p) { return p.histogram_subtraction; }, [](P& p, const bool& on) { p.histogram_subtraction = on; },
+          std::nullopt, /*is_switch=*/true),
+      parameter("smoothing", &P::smoothing, "native: eps of the responses (0 = 1 / training samples)",
+                Range::at_least(0)),
+      parameter("calibration", &P::calibration,
+                "platt (fit P(person) on the validation samples) or none (P = 1 / (1 + exp(-2 H)))", {},
+                std::optional<std::string>(),
+                std::function<std::string(const std::string&)>([](const std::string& c) {
+                  return c == "platt" || c == "none" ? "" : "'" + c + "' is not known (platt or none)";
+                })),
+      parameter("folds", &P::folds,
+                "K-fold validation by group (2-20): K models on K-1 folds of whole groups give the validation "
+                "figures and calibration of the final model, trained on all samples (0 = one held-out fraction; "
+                "early stopping and separate validation sets use one held-out split)",
+                {}, std::optional<int>(),
+                std::function<std::string(const int&)>([](const int& k) {
+                  return k == 0 || (k >= 2 && k <= 20) ? "" : "must be 0 (off) or 2-20";
+                })),
+  };
+  return table;
+}
+
+}  // namespace rdsf

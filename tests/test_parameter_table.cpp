@@ -1,0 +1,98 @@
+// The parameter tables (core/parameter_table.hpp): each parameter declared once drives options, recipes, the
+// --thesis preset and checks. Defaults pass their own checks, names are unique and kebab-case, a value out of
+// range is refused naming the row, and a recipe is read through the same rows.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "rdsf/analysis/frame_analyser.hpp"
+#include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/dataset/recipe.hpp"
+
+namespace rdsf {
+namespace {
+
+template <typename Params>
+void expect_sound(const ParameterTable<Params>& table) {
+  std::set<std::string> names;
+  const Params defaults{};
+  for (const Parameter<Params>& row : table) {
+    EXPECT_TRUE(names.insert(row.name).second) << "two rows named " << row.name;
+    EXPECT_EQ(row.name.find('_'), std::string::npos) << row.name << ": option names are kebab-case";
+    EXPECT_FALSE(row.help.empty()) << row.name;
+    Params p = defaults;
+    EXPECT_NO_THROW(row.set(p, row.get(defaults))) << row.name << ": its default fails its own check";
+    if (row.thesis) EXPECT_NO_THROW(row.set(p, *row.thesis)) << row.name << ": its thesis value fails its check";
+  }
+}
+
+std::string refusal(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ParameterTable, EveryTableIsSound) {
+  expect_sound(analyser_parameters());
+  expect_sound(boost_training_parameters());
+}
+
+TEST(ParameterTable, OutOfRangeValuesAreRefusedNamingTheRow) {
+  const ParameterTable<AnalyserParams>& analyser = analyser_parameters();
+  AnalyserParams a;
+  EXPECT_EQ(refusal([&] { find_parameter(analyser, "row-step")->set(a, 0); }), "row-step must be at least 1");
+  EXPECT_EQ(refusal([&] { find_parameter(analyser, "window-scale")->set(a, 0.0); }), "window-scale must be above 0");
+  EXPECT_EQ(refusal([&] { find_parameter(analyser, "box")->set(a, std::string("loose")); }),
+            "box is fitted or strict, not 'loose'");
+  EXPECT_EQ(refusal([&] { find_parameter(analyser, "k")->set(a, 2.5); }), "k must be an integer");
+  EXPECT_EQ(a.segmentation.row_step, AnalyserParams{}.segmentation.row_step);  // a refused value is not stored
+  const ParameterTable<BoostTrainingParams>& boost = boost_training_parameters();
+  BoostTrainingParams b;
+  EXPECT_EQ(refusal([&] { find_parameter(boost, "learning-rate")->set(b, 0.0); }), "learning-rate must be in (0, 1]");
+  EXPECT_EQ(refusal([&] { find_parameter(boost, "validation-fraction")->set(b, 1.0); }),
+            "validation-fraction must be in [0, 1)");
+  EXPECT_EQ(refusal([&] { find_parameter(boost, "folds")->set(b, 1); }), "folds must be 0 (off) or 2-20");
+  EXPECT_EQ(refusal([&] { find_parameter(boost, "seed")->set(b, -3); }), "seed must not be negative");
+  find_parameter(boost, "depth")->set(b, 3);
+  EXPECT_EQ(b.depth, 3);
+}
+
+TEST(ParameterTable, ThesisValuesComeFromTheRows) {
+  const AnalyserParams thesis = thesis_params();
+  EXPECT_FALSE(thesis.segmentation.left_border_jump);
+  EXPECT_EQ(thesis.reported_box, BoxKind::strict);
+  EXPECT_EQ(thesis.candidates.fit_min_width_ratio, 0.0);
+  EXPECT_EQ(thesis.candidates.k, CandidateParams{}.k);  // the thesis's own parameters keep their defaults
+  const BoostTrainingParams boost = with_thesis_values(boost_training_parameters(), BoostTrainingParams{});
+  EXPECT_EQ(boost.depth, 1);
+  EXPECT_EQ(boost.learning_rate, 1.0);
+  EXPECT_EQ(boost.rounds, BoostTrainingParams{}.rounds);
+}
+
+TEST(ParameterTable, RecipesAreReadThroughTheRows) {
+  const Recipe r = parse_recipe("%YAML:1.0\n---\nrecipe: r\nlearning_rate: 0.25\nhistogram_subtraction: 1\n"
+                                "smoothing: 0.01\nbackend: native\n",
+                                "r.yml");
+  EXPECT_EQ(r.params.learning_rate, 0.25);
+  EXPECT_TRUE(r.params.histogram_subtraction);
+  EXPECT_EQ(r.params.smoothing, 0.01);
+  EXPECT_EQ(refusal([] { parse_recipe("%YAML:1.0\n---\nlearning_rate: 2\n", "bad.yml"); }),
+            "bad.yml: 'learning_rate' must be in (0, 1]");
+  EXPECT_EQ(refusal([] { parse_recipe("%YAML:1.0\n---\ndepth: 2.5\n", "bad.yml"); }),
+            "bad.yml: 'depth' is not an integer");
+}
+
+TEST(ParameterTable, ValuesAreShownAsShortAsTheyRoundTrip) {
+  EXPECT_EQ(parameter_text(0.3), "0.3");
+  EXPECT_EQ(parameter_text(1500.0), "1500");
+  EXPECT_EQ(parameter_text(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(parameter_text(true), "1");
+  EXPECT_EQ(parameter_key("near-far-boundary"), "near_far_boundary");
+}
+
+}  // namespace
+}  // namespace rdsf
