@@ -9,6 +9,7 @@
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/recipe.hpp"
+#include "support/test_support.hpp"
 
 namespace rdsf {
 namespace {
@@ -27,15 +28,6 @@ void expect_sound(const ParameterTable<Params>& table) {
   }
 }
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(ParameterTable, EveryTableIsSound) {
   expect_sound(analyser_parameters());
   expect_sound(boost_training_parameters());
@@ -44,19 +36,19 @@ TEST(ParameterTable, EveryTableIsSound) {
 TEST(ParameterTable, OutOfRangeValuesAreRefusedNamingTheRow) {
   const ParameterTable<AnalyserParams>& analyser = analyser_parameters();
   AnalyserParams a;
-  EXPECT_EQ(refusal([&] { find_parameter(analyser, "row-step")->set(a, 0); }), "row-step must be at least 1");
-  EXPECT_EQ(refusal([&] { find_parameter(analyser, "window-scale")->set(a, 0.0); }), "window-scale must be above 0");
-  EXPECT_EQ(refusal([&] { find_parameter(analyser, "box")->set(a, std::string("loose")); }),
+  EXPECT_EQ(test::error_message([&] { find_parameter(analyser, "row-step")->set(a, 0); }), "row-step must be at least 1");
+  EXPECT_EQ(test::error_message([&] { find_parameter(analyser, "window-scale")->set(a, 0.0); }), "window-scale must be above 0");
+  EXPECT_EQ(test::error_message([&] { find_parameter(analyser, "box")->set(a, std::string("loose")); }),
             "box is fitted or strict, not 'loose'");
-  EXPECT_EQ(refusal([&] { find_parameter(analyser, "k")->set(a, 2.5); }), "k must be an integer");
+  EXPECT_EQ(test::error_message([&] { find_parameter(analyser, "k")->set(a, 2.5); }), "k must be an integer");
   EXPECT_EQ(a.segmentation.row_step, AnalyserParams{}.segmentation.row_step);  // a refused value is not stored
   const ParameterTable<BoostTrainingParams>& boost = boost_training_parameters();
   BoostTrainingParams b;
-  EXPECT_EQ(refusal([&] { find_parameter(boost, "learning-rate")->set(b, 0.0); }), "learning-rate must be in (0, 1]");
-  EXPECT_EQ(refusal([&] { find_parameter(boost, "validation-fraction")->set(b, 1.0); }),
+  EXPECT_EQ(test::error_message([&] { find_parameter(boost, "learning-rate")->set(b, 0.0); }), "learning-rate must be in (0, 1]");
+  EXPECT_EQ(test::error_message([&] { find_parameter(boost, "validation-fraction")->set(b, 1.0); }),
             "validation-fraction must be in [0, 1)");
-  EXPECT_EQ(refusal([&] { find_parameter(boost, "folds")->set(b, 1); }), "folds must be 0 (off) or 2-20");
-  EXPECT_EQ(refusal([&] { find_parameter(boost, "seed")->set(b, -3); }), "seed must not be negative");
+  EXPECT_EQ(test::error_message([&] { find_parameter(boost, "folds")->set(b, 1); }), "folds must be 0 (off) or 2-20");
+  EXPECT_EQ(test::error_message([&] { find_parameter(boost, "seed")->set(b, -3); }), "seed must not be negative");
   find_parameter(boost, "depth")->set(b, 3);
   EXPECT_EQ(b.depth, 3);
 }
@@ -80,9 +72,9 @@ TEST(ParameterTable, RecipesAreReadThroughTheRows) {
   EXPECT_EQ(r.params.learning_rate, 0.25);
   EXPECT_TRUE(r.params.histogram_subtraction);
   EXPECT_EQ(r.params.smoothing, 0.01);
-  EXPECT_EQ(refusal([] { parse_recipe("%YAML:1.0\n---\nlearning_rate: 2\n", "bad.yml"); }),
+  EXPECT_EQ(test::error_message([] { parse_recipe("%YAML:1.0\n---\nlearning_rate: 2\n", "bad.yml"); }),
             "bad.yml: 'learning_rate' must be in (0, 1]");
-  EXPECT_EQ(refusal([] { parse_recipe("%YAML:1.0\n---\ndepth: 2.5\n", "bad.yml"); }),
+  EXPECT_EQ(test::error_message([] { parse_recipe("%YAML:1.0\n---\ndepth: 2.5\n", "bad.yml"); }),
             "bad.yml: 'depth' is not an integer");
 }
 
