@@ -10,7 +10,8 @@ Layout "ros" (the default; the topics of openni_launch / realsense2_camera):
   /camera/rgb/image_raw      sensor_msgs/Image rgb8 (or --colour-encoding bgr8), only for frames with colour
   /camera/rgb/camera_info    sensor_msgs/CameraInfo of the colour image (registered: the depth's model)
 Layout "realsense" (RealSense Viewer's .bag recordings, the part of their layout rdsf reads):
-  /device_0/sensor_0/Depth_0/image/data      sensor_msgs/Image 16UC1 in depth units
+  /file_version                              std_msgs/UInt32 3
+  /device_0/sensor_0/Depth_0/image/data      sensor_msgs/Image mono16 (librealsense's name for Z16) in depth units
   /device_0/sensor_0/Depth_0/info/camera_info  sensor_msgs/CameraInfo (once)
   /device_0/sensor_0/option/Depth Units/value  std_msgs/Float32, metres per depth unit (--depth-unit-m)
   /device_0/sensor_1/Color_0/image/data      sensor_msgs/Image rgb8
@@ -35,7 +36,7 @@ try:
     import rosbag
     import rospy
     from sensor_msgs.msg import CameraInfo, Image
-    from std_msgs.msg import Float32
+    from std_msgs.msg import Float32, UInt32
 except ImportError as error:
     sys.exit("frames-to-bag: %s (install python3-rosbag python3-sensor-msgs python3-numpy python3-png)" % error)
 
@@ -197,10 +198,12 @@ def main():
             stamp = rospy.Time.from_sec(args.start + index / args.fps)
             header = rospy.Header(seq=index, stamp=stamp, frame_id=layout["frame_id"])
             if args.layout == "realsense" and index == 0:
+                bag.write("/file_version", UInt32(data=3), stamp)
                 bag.write(layout["depth_units"], Float32(data=args.depth_unit_m), stamp)
             unit_mm = args.depth_unit_m * 1000.0 if args.layout == "realsense" else 1.0
+            encoding = "mono16" if args.layout == "realsense" else args.depth_encoding
             bag.write(layout["depth"], image_message(header, depth_array(depth_mm, args.depth_encoding, unit_mm),
-                                                     args.depth_encoding), stamp)
+                                                     encoding), stamp)
             if not args.no_camera_info and (args.layout == "ros" or index == 0):
                 bag.write(layout["depth_info"], camera_info(header, width, height, model), stamp)
             colour_path = os.path.join(args.folder, name + COLOUR_SUFFIX)
