@@ -233,3 +233,32 @@ TEST(BagSource, BadBagsAreOneLineErrorsNamingFileTopicAndProblem) {
   EXPECT_NE(e.find(two_depth + ": several depth image topics, choose one: /camera/depth/image_raw, /second/depth"),
             std::string::npos) << e;
 }
+
+// rdsf-detect on the bag and on the folder: the same CSV rows (candidates, boxes, scores, people) but the frame
+// column (file stems for the folder, indices for the bag); the bag's topics and pairing are reported.
+TEST(BagSource, DetectProgramWritesTheSameRowsForTheBagAsForTheFolder) {
+  REQUIRE_BAG_WRITER();
+  test::TempDir dir("rdsf-bag");
+  const std::string bag = write_bag(dir, "people.bag", "");
+  const test::RunResult on_bag = test::run(test::program("rdsf-detect") + " --source " + test::quote(bag) +
+                                           " --colour-topic /camera/rgb/image_raw --out " + test::quote(dir / "bag.csv"));
+  ASSERT_EQ(on_bag.exit_code, 0) << on_bag.err;
+  EXPECT_NE(on_bag.err.find("paired with 14 of 46 depth frames"), std::string::npos) << on_bag.err;
+  const test::RunResult on_png = test::run(test::program("rdsf-detect") + " --source " + test::quote(people_dir()) +
+                                           " --out " + test::quote(dir / "png.csv"));
+  ASSERT_EQ(on_png.exit_code, 0) << on_png.err;
+  const auto rows_without_frame = [](const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> rows;
+    for (std::string line; std::getline(in, line);) rows.push_back(line.substr(line.find(',')));
+    return rows;
+  };
+  const std::vector<std::string> bag_rows = rows_without_frame(dir / "bag.csv");
+  EXPECT_GT(bag_rows.size(), 200u);
+  EXPECT_EQ(bag_rows, rows_without_frame(dir / "png.csv"));
+
+  const test::RunResult missing = test::run(test::program("rdsf-detect") + " --source " + test::quote(bag) +
+                                            " --depth-topic /nowhere --out " + test::quote(dir / "x.csv"));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("topic /nowhere: not in the bag"), std::string::npos) << missing.err;
+}
