@@ -79,17 +79,19 @@ def read_png(path):
 
 
 def read_camera_yml(path):
-    """The few scalar keys of camera.yml ("key: value" lines; the format rdsf's PNG folder source reads)."""
+    """The scalar keys of camera.yml ("key: value" lines; rdsf/frame/camera_file.hpp, format rdsf-camera 1)."""
     model = {}
     with open(path, encoding="utf-8") as stream:
         for line in stream:
             match = re.match(r"^\s*([A-Za-z_]+)\s*:\s*([-+0-9.eE]+)\s*$", line)
             if match:
                 model[match.group(1)] = float(match.group(2))
-    for key in ("width", "height", "fx", "fy", "cx", "cy"):
+    for key in ("width_px", "height_px", "fx_px", "fy_px", "cx_px", "cy_px"):
         if key not in model:
             fail("%s: has no %s" % (path, key))
-    return model
+    if model.get("depth_unit_mm", 1.0) != 1.0:
+        fail("%s: depth_unit_mm %g: only millimetre frames are written" % (path, model["depth_unit_mm"]))
+    return {key[:-3]: value for key, value in model.items() if key.endswith("_px")}
 
 
 def camera_model(folder, width, height, args):

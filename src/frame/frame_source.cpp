@@ -42,7 +42,7 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const Fr
     fail(spec, "this build has no ROS 1 bag reading (reconfigure with -DRDSF_WITH_ROSBAG=ON, librosbag-dev installed)");
 #endif
   }
-  return std::make_unique<PngFolderSource>(spec, options.camera);
+  return std::make_unique<PngFolderSource>(spec, options);
 }
 
 }  // namespace rdsf
