@@ -61,7 +61,7 @@ struct BagSource::Impl {
   FrameSourceOptions options;
   rosbag::Bag bag;
   std::vector<TopicInfo> topics;
-  std::string depth_topic, colour_topic, info_topic, camera_note, depth_encoding, colour_note;
+  std::string depth_topic, colour_topic, camera_note, depth_encoding, colour_note;
   double unit_mm = 1.0;
   std::string unit_note;
   CameraModel camera;
@@ -72,7 +72,6 @@ struct BagSource::Impl {
   ImagePtr lookahead;      // the next depth image (read ahead for its stamp), null at the end
   std::int64_t lookahead_us = 0;
   std::optional<std::int64_t> previous_us;  // the stamp of the depth frame delivered last
-  bool colour_done = false;
   std::int64_t paired = 0, gap_sum_us = 0, gap_max_us = 0;
 
   [[noreturn]] void fail_topic(const std::string& topic, const std::string& what) const {
@@ -90,8 +89,11 @@ struct BagSource::Impl {
         rosbag::View one(bag, rosbag::TopicQuery(c->topic));
         if (one.begin() != one.end()) {
           ImagePtr image = one.begin()->instantiate<sensor_msgs::Image>();
-          if (image) t.encoding = image->encoding, t.width = static_cast<int>(image->width),
-                     t.height = static_cast<int>(image->height);
+          if (image) {
+            t.encoding = image->encoding;
+            t.width = static_cast<int>(image->width);
+            t.height = static_cast<int>(image->height);
+          }
         }
       }
       topics.push_back(t);
@@ -205,7 +207,9 @@ struct BagSource::Impl {
       rosbag::View view(bag, rosbag::TopicQuery(topic));
       if (view.begin() == view.end()) continue;
       auto info = view.begin()->instantiate<sensor_msgs::CameraInfo>();
-      if (!info || !(info->K[0] > 0) || !(info->K[4] > 0) || !std::isfinite(info->K[0] + info->K[2] + info->K[4] + info->K[5])) {
+      const bool has_focal_lengths = info && info->K[0] > 0 && info->K[4] > 0 &&
+                                     std::isfinite(info->K[0] + info->K[2] + info->K[4] + info->K[5]);
+      if (!has_focal_lengths) {
         camera_note = topic + " has no focal lengths (K[0], K[4])";
         break;
       }
@@ -214,7 +218,6 @@ struct BagSource::Impl {
         fail_topic(topic, "camera info is " + std::to_string(info->width) + "x" + std::to_string(info->height) +
                               ", its depth images " + std::to_string(width) + "x" + std::to_string(height));
       }
-      info_topic = topic;
       camera.width_px = width;
       camera.height_px = height;
       camera.fx_px = info->K[0];
@@ -274,7 +277,7 @@ struct BagSource::Impl {
     return image;
   }
 
-  /// Checks an image's encoding, size and data length; returns its bytes per pixel.
+  /// Checks an image's byte order, size (the camera model's) and data length (step x height).
   void check_image(const std::string& topic, const sensor_msgs::Image& image, std::size_t bytes_per_pixel) const {
     if (image.is_bigendian) fail_topic(topic, "big-endian images are not read");
     if (static_cast<int>(image.width) != camera.width_px || static_cast<int>(image.height) != camera.height_px) {
