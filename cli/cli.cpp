@@ -229,6 +229,25 @@ void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibrat
   }
 }
 
+po::options_description frame_source_options(FrameSourceOptions& options) {
+  po::options_description o("Frame source: ROS 1 bags (--source FILE.bag)");
+  o.add_options()
+      ("depth-topic", po::value(&options.depth_topic),
+       "the depth image topic (16UC1, mono16 or 32FC1); default: the bag's only depth image topic")
+      ("colour-topic", po::value(&options.colour_topic),
+       "the colour image topic (rgb8, bgr8) or 'none'; default: the bag's only colour topic of the depth's size");
+  return o;
+}
+
+void apply_camera(const po::variables_map& values, const CameraModel& camera, FrameSourceOptions& options) {
+  options.camera = camera;
+  options.camera_given = false;
+  for (const char* name : {"fx", "fy", "cx", "cy", "calibration-width", "calibration-height", "calibration-distance"}) {
+    const auto it = values.find(name);
+    if (it != values.end() && !it->second.defaulted()) options.camera_given = true;
+  }
+}
+
 int run(const std::string& program_name, const std::function<int()>& body) {
   try {
     return body();

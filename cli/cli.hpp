@@ -16,6 +16,7 @@
 #include "rdsf/core/parameter_table.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "rdsf/frame/camera_model.hpp"
+#include "rdsf/frame/frame_source.hpp"
 
 namespace rdsf::cli {
 
@@ -82,6 +83,12 @@ std::vector<double> parse_thresholds(const std::string& text);
 po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration);
 /// Applies a given empirical calibration to `camera` (call after parse()).
 void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration);
+
+/// Options of frame sources beyond --source (a bag's topics), bound to `options`.
+po::options_description frame_source_options(FrameSourceOptions& options);
+/// Completes `options` after parse(): the camera model and whether the user gave it (--fx, --fy, --cx, --cy
+/// or the calibration options not left at their defaults), so that it wins over a source's own model.
+void apply_camera(const po::variables_map& values, const CameraModel& camera, FrameSourceOptions& options);
 
 /// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
 /// (0 success, 1 error, 2 usage error). An AlreadyExists error gets "(pass --force to replace it)".

@@ -161,7 +161,7 @@ int run_detect(const DetectOptions& o) {
   }
 
   PeoplePipeline pipeline(pipeline_params, models.empty() ? nullptr : &models.front());
-  auto source = open_frame_source(o.source, o.camera);
+  auto source = open_frame_source(o.source, o.frames);
   std::unique_ptr<DetectionCsv> csv;
   if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), box);
   CandidateCoverage coverage;
@@ -236,6 +236,7 @@ int run_detect(const DetectOptions& o) {
   progress.finish(frames, "candidates " + std::to_string(candidates) +
                               (models.empty() ? "" : ", detections " + std::to_string(detections)));
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!source->summary().empty()) std::cerr << "rdsf-detect: " << source->summary() << "\n";
   if (csv) csv->commit();
   print_times(total, frames, candidates, wall_s);
   if (!models.empty()) std::cerr << "rdsf-detect: " << pipeline.tracker().people().size() << " people tracked\n";

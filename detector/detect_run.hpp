@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rdsf/frame/camera_model.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "rdsf/pipeline/people_pipeline.hpp"
 
 namespace rdsf {
@@ -24,6 +25,7 @@ struct DetectOptions {
   std::vector<double> thresholds;  ///< the sweep
   double min_visible = 0.5;        ///< people less visible than this are "don't care" in the evaluation
   CameraModel camera;
+  FrameSourceOptions frames;  ///< the camera model above, whether it was given, a bag's topics
   PipelineParams pipeline;
   /// --feature-spec was given: the first model must have that spec (else the detector takes the model's).
   bool feature_spec_given = false;

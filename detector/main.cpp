@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
     po::options_description options("rdsf-detect");
     options.add_options()
         ("source", po::value(&o.source)->required(),
-         "frames: a folder of NAME.depth.png, a list file, one PNG, an .oni file, 'openni' or a device URI")
+         "frames: a folder of NAME.depth.png, a list file, one PNG, an .oni file, 'openni', a device URI or a ROS 1 "
+         ".bag")
         ("model", po::value(&o.models)->composing(),
          "model file, NAME (newest version) or NAME/vN; repeat to compare models in the evaluation. Default: the "
          "shipped default model 'people' (synthetic data only; see README), unless --candidates-only")
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
         ("fps", po::value(&o.fps)->default_value(o.fps),
          "--live with a source that is not a device (folder, .oni): deliver its frames at this rate");
     options.add(rdsf::cli::camera_options(o.camera, calibration));
+    options.add(rdsf::cli::frame_source_options(o.frames));
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
     po::variables_map values;
@@ -62,6 +64,7 @@ int main(int argc, char** argv) {
         "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     rdsf::cli::apply_calibration(o.camera, calibration);
+    rdsf::cli::apply_camera(values, o.camera, o.frames);
     o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
     for (double p : o.thresholds) {

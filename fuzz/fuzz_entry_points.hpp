@@ -29,7 +29,12 @@
 #include "rdsf/dataset/sample_tsv.hpp"
 #include "rdsf/dataset/thesis_text.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/camera_file.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
+#include "rdsf/version.hpp"
+#if RDSF_WITH_ROSBAG
+#include "rdsf/frame/bag_source.hpp"
+#endif
 
 namespace rdsf::fuzz {
 
@@ -37,7 +42,11 @@ namespace rdsf::fuzz {
 inline const std::vector<std::string>& parser_names() {
   static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",   "thesis_text",
                                                  "model_file",   "answer_journal", "depth_crop", "model_writer",
-                                                 "recipe"};
+                                                 "recipe", "camera_yml"
+#if RDSF_WITH_ROSBAG
+                                                 , "bag"
+#endif
+  };
   return names;
 }
 
@@ -205,6 +214,36 @@ inline void parse_recipe_bytes(const std::string& bytes) {
   }
 }
 
+/// camera.yml beside PNG frames (frame/camera_file.hpp): what it accepts is written back and reads the same.
+inline void parse_camera_yml_bytes(const std::string& bytes) {
+  const CameraFile file = parse_camera_file(bytes, "fuzz/camera.yml");
+  require(file.camera.fx_px > 0 && file.camera.fy_px > 0 && file.depth_unit_mm > 0, "camera.yml: bad values accepted");
+  try {
+    const CameraFile again = parse_camera_file(camera_file_text(file), "fuzz/camera.yml (written back)");
+    require(again.camera == file.camera && again.depth_unit_mm == file.depth_unit_mm,
+            "camera.yml: the model changes when written back");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("camera.yml: written back, it no longer reads: ") + e.what());
+  }
+}
+
+#if RDSF_WITH_ROSBAG
+/// A ROS 1 bag (frame/bag_source.hpp) read to its end: every frame delivered must be of its camera model's
+/// size, with colour (when any) of the same size; file-based reader (librosbag reads files).
+inline void parse_bag_bytes(const std::string& bytes) {
+  BagSource source(scratch().write(bytes), FrameSourceOptions{});
+  DepthFrame frame;
+  std::int64_t frames = 0;
+  while (source.next(frame)) {
+    require(frame.depth_mm.cols == frame.camera.width_px && frame.depth_mm.rows == frame.camera.height_px,
+            "bag: a frame of another size than its camera model delivered");
+    require(frame.bgr.empty() || frame.bgr.size() == frame.depth_mm.size(), "bag: colour of another size delivered");
+    ++frames;
+  }
+  require(frames == source.frame_count().value_or(-1), "bag: fewer frames delivered than counted");
+}
+#endif
+
 /// Dispatch by parser name (see parser_names()). An rdsf::Error is passed on only when its message is the
 /// project's one line naming the file ("fuzz/..." for text parsers, the temporary input for file readers);
 /// a message that breaks the rule becomes std::logic_error.
@@ -219,6 +258,10 @@ inline void parse_bytes(const std::string& parser, const std::string& bytes) {
     if (parser == "depth_crop") return parse_depth_crop_bytes(bytes);
     if (parser == "model_writer") return parse_model_writer_bytes(bytes);
     if (parser == "recipe") return parse_recipe_bytes(bytes);
+    if (parser == "camera_yml") return parse_camera_yml_bytes(bytes);
+#if RDSF_WITH_ROSBAG
+    if (parser == "bag") return parse_bag_bytes(bytes);
+#endif
   } catch (const Error& e) {
     const std::string message = e.what();
     require(message.find('\n') == std::string::npos, parser + ": error message of more than one line: " + message);

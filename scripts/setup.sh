@@ -10,6 +10,8 @@ packages=(
   libopencv-dev libeigen3-dev libopenni2-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev libdeflate-dev
   xvfb xauth xdotool x11-apps
+  # ROS 1 bags: the bag frame source (librosbag-dev, libsensor-msgs-dev) and scripts/frames-to-bag.py
+  librosbag-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs python3-numpy python3-png
 )
 missing=()
 for p in "${packages[@]}"; do

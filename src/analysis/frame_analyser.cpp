@@ -1,6 +1,8 @@
 #include "rdsf/analysis/frame_analyser.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/core/error.hpp"
@@ -21,6 +23,10 @@ const ParameterTable<AnalyserParams>& analyser_parameters() {
           p.reported_box = box == "strict" ? BoxKind::strict : BoxKind::fitted;
         },
         std::string("strict")));
+    t.push_back(parameter("reference-focal", &P::reference_focal_px,
+                          "pixel counts (--row-step, --n, --k, --column-gap) are for a camera of this focal length "
+                          "(px); other cameras get them scaled by fx or fy / this; 0 = as given",
+                          Range::at_least(0)));
     return t;
   }();
   return table;
@@ -28,18 +34,34 @@ const ParameterTable<AnalyserParams>& analyser_parameters() {
 
 AnalyserParams thesis_params(AnalyserParams params) { return with_thesis_values(analyser_parameters(), params); }
 
+AnalyserParams params_for_camera(const AnalyserParams& params, const CameraModel& camera) {
+  if (!(params.reference_focal_px > 0) ||
+      (camera.fx_px == params.reference_focal_px && camera.fy_px == params.reference_focal_px)) {
+    return params;
+  }
+  const double sx = camera.fx_px / params.reference_focal_px, sy = camera.fy_px / params.reference_focal_px;
+  const auto scaled = [](int pixels, double scale) { return std::max(1, static_cast<int>(std::lround(pixels * scale))); };
+  AnalyserParams p = params;
+  p.segmentation.n = scaled(params.segmentation.n, sx);
+  p.segmentation.row_step = scaled(params.segmentation.row_step, sy);
+  p.candidates.column_gap = scaled(params.candidates.column_gap, sx);
+  p.candidates.k = scaled(params.candidates.k, sy);
+  return p;
+}
+
 FrameAnalyser::FrameAnalyser(AnalyserParams params) : params_(params), extractor_(params.features) {}
 
 FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features, CropColour colour) const {
   if (frame.depth_mm.empty()) throw Error("frame " + frame.name + ": empty depth image");
   FrameAnalysis analysis;
   auto start = std::chrono::steady_clock::now();
-  analysis.segmentation = segment_depth(frame.depth_mm, params_.segmentation);
+  const AnalyserParams p = params_for_camera(params_, frame.camera);
+  analysis.segmentation = segment_depth(frame.depth_mm, p.segmentation);
   analysis.times.segmentation_ms = milliseconds_since(start);
 
   start = std::chrono::steady_clock::now();
   const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
-  analysis.candidates = find_candidates(frame, analysis.segmentation, params_.candidates, crop, colour);
+  analysis.candidates = find_candidates(frame, analysis.segmentation, p.candidates, crop, colour);
   analysis.times.candidates_ms = milliseconds_since(start);
 
   if (with_features) {

@@ -6,6 +6,9 @@
 #if RDSF_WITH_OPENNI
 #include "rdsf/frame/openni_source.hpp"
 #endif
+#if RDSF_WITH_ROSBAG
+#include "rdsf/frame/bag_source.hpp"
+#endif
 
 namespace rdsf {
 
@@ -14,15 +17,32 @@ bool is_openni_spec(const std::string& spec) {
   return oni_file || spec == "openni" || spec.find("://") != std::string::npos;
 }
 
+bool is_bag_spec(const std::string& spec) {
+  return spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".bag") == 0;
+}
+
 std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const CameraModel& camera) {
+  FrameSourceOptions options;
+  options.camera = camera;
+  return open_frame_source(spec, options);
+}
+
+std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const FrameSourceOptions& options) {
   if (is_openni_spec(spec)) {
 #if RDSF_WITH_OPENNI
-    return std::make_unique<OpenNISource>(spec, camera);
+    return std::make_unique<OpenNISource>(spec, options.camera);
 #else
     fail(spec, "this build has no OpenNI2 (reconfigure with -DRDSF_WITH_OPENNI=ON, libopenni2-dev installed)");
 #endif
   }
-  return std::make_unique<PngFolderSource>(spec, camera);
+  if (is_bag_spec(spec)) {
+#if RDSF_WITH_ROSBAG
+    return std::make_unique<BagSource>(spec, options);
+#else
+    fail(spec, "this build has no ROS 1 bag reading (reconfigure with -DRDSF_WITH_ROSBAG=ON, librosbag-dev installed)");
+#endif
+  }
+  return std::make_unique<PngFolderSource>(spec, options);
 }
 
 }  // namespace rdsf

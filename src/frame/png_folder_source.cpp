@@ -1,6 +1,7 @@
 #include "rdsf/frame/png_folder_source.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -65,15 +66,27 @@ std::vector<std::string> read_list_file(const std::string& list_path) {
 }  // namespace
 
 PngFolderSource::PngFolderSource(const std::string& spec, const CameraModel& camera)
-    : spec_(spec), camera_(camera) {
+    : PngFolderSource(spec, FrameSourceOptions{camera, false, {}, {}}) {}
+
+PngFolderSource::PngFolderSource(const std::string& spec, const FrameSourceOptions& options)
+    : spec_(spec), camera_(options.camera), camera_given_(options.camera_given) {
   std::error_code ec;
   if (!fs::exists(spec, ec)) fail(spec, "no such file or folder");
+  fs::path folder;
   if (fs::is_directory(spec, ec)) {
     depth_paths_ = list_folder(spec);
+    folder = spec;
   } else if (ends_with(spec, ".png")) {
     depth_paths_ = {spec};
+    folder = fs::path(spec).parent_path();
   } else {
     depth_paths_ = read_list_file(spec);
+    folder = fs::path(spec).parent_path();
+  }
+  const fs::path camera_file = folder / CameraFile::kFileName;
+  if (fs::exists(camera_file, ec)) {
+    file_path_ = camera_file.string();
+    file_ = read_camera_file(file_path_);
   }
 }
 
@@ -91,24 +104,47 @@ std::string PngFolderSource::colour_path(const std::string& depth_path) {
 
 bool PngFolderSource::next(DepthFrame& frame) {
   if (next_ >= depth_paths_.size()) return false;
-  const std::string& depth_path = depth_paths_[next_];
-  frame.depth_mm = read_depth_png(depth_path);
-  frame.bgr.release();
-  const std::string colour = colour_path(depth_path);
-  std::error_code ec;
-  if (!colour.empty() && fs::exists(colour, ec)) frame.bgr = read_colour_png(colour, frame.depth_mm.size());
-  frame.index = static_cast<std::int64_t>(next_);
-  frame.name = frame_name(depth_path);
-  frame.timestamp_us = frame.index * kFrameIntervalUs;  // image folders carry no clock: 30 frames per second
-  frame.camera = (frame.depth_mm.cols == camera_.width_px && frame.depth_mm.rows == camera_.height_px)
-                     ? camera_
-                     : camera_.scaled_to(frame.depth_mm.cols, frame.depth_mm.rows);
+  frame = read_frame(next_);
   ++next_;
   return true;
 }
 
+DepthFrame PngFolderSource::read_frame(std::size_t i) const {
+  const std::string& depth_path = depth_paths_.at(i);
+  DepthFrame frame;
+  frame.depth_mm = read_depth_png(depth_path);
+  const cv::Size size = frame.depth_mm.size();
+  if (file_ && (size.width != file_->camera.width_px || size.height != file_->camera.height_px)) {
+    fail(depth_path, "frame is " + std::to_string(size.width) + "x" + std::to_string(size.height) + ", " +
+                         file_path_ + " says " + std::to_string(file_->camera.width_px) + "x" +
+                         std::to_string(file_->camera.height_px));
+  }
+  if (file_ && file_->depth_unit_mm != 1.0) {  // stored units to millimetres, nearest; beyond 65535 mm: none
+    frame.depth_mm.forEach([unit = file_->depth_unit_mm](std::uint16_t& v, const int*) {
+      const double mm = std::nearbyint(v * unit);
+      v = mm <= 65535 ? static_cast<std::uint16_t>(mm) : 0;
+    });
+  }
+  const std::string colour = colour_path(depth_path);
+  std::error_code ec;
+  if (!colour.empty() && fs::exists(colour, ec)) frame.bgr = read_colour_png(colour, size);
+  frame.index = static_cast<std::int64_t>(i);
+  frame.name = frame_name(depth_path);
+  frame.timestamp_us = frame.index * kFrameIntervalUs;  // image folders carry no clock: 30 frames per second
+  const CameraModel& model = file_ && !camera_given_ ? file_->camera : camera_;
+  frame.camera = (size.width == model.width_px && size.height == model.height_px)
+                     ? model
+                     : model.scaled_to(size.width, size.height);
+  return frame;
+}
+
 std::string PngFolderSource::description() const {
-  return spec_ + " (" + std::to_string(depth_paths_.size()) + " frames)";
+  std::string text = spec_ + " (" + std::to_string(depth_paths_.size()) + " frames)";
+  if (file_) {
+    text += camera_given_ ? ", camera model given (" + file_path_ + " not used)"
+                          : ", camera model from " + file_path_ + " (" + file_->camera.describe() + ")";
+  }
+  return text;
 }
 
 }  // namespace rdsf

@@ -78,17 +78,11 @@ std::int64_t run_in_frame_order(PeoplePipeline& pipeline, FrameSource& source, c
         },
         {}, on_frame);
   }
-  const std::vector<std::string>& paths = folder->depth_paths();
-  auto load = [&](std::int64_t i) {
-    // One frame's files through a source of its own: the same frame PngFolderSource delivers as frame i.
-    const std::string& path = paths[static_cast<std::size_t>(i)];
-    DepthFrame frame;
-    if (!PngFolderSource(path, camera).next(frame)) fail(path, "delivered no frame");
-    frame.index = i;
-    frame.timestamp_us = i * kFrameIntervalUs;  // as PngFolderSource: image folders carry no clock
-    return frame;
-  };
-  return run_in_frame_order(pipeline, static_cast<std::int64_t>(paths.size()), load, params, on_frame);
+  // Each frame's files read on a worker: the same frame PngFolderSource delivers as frame i.
+  (void)camera;  // the folder's own (its camera.yml or the model it was opened with)
+  auto load = [folder](std::int64_t i) { return folder->read_frame(static_cast<std::size_t>(i)); };
+  return run_in_frame_order(pipeline, static_cast<std::int64_t>(folder->depth_paths().size()), load, params,
+                            on_frame);
 }
 
 }  // namespace rdsf

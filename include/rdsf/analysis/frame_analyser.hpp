@@ -26,11 +26,21 @@ struct AnalyserParams {
   /// The box detections, CSVs, pictures, tracking and the evaluation report (the crop always comes from
   /// the strict box's window). The thesis reports the strict box.
   BoxKind reported_box = BoxKind::fitted;
+  /// The few parameters counted in pixels (segmentation row_step and n, candidates k and column_gap) are
+  /// stated for a camera of this focal length (the Kinect v1 at 640x480); a frame whose camera model has
+  /// other focal lengths gets them scaled by fx / reference (n, column_gap: along rows) and fy / reference
+  /// (row_step, k: along columns), rounded, at least 1, so that they span the same angle (issue 36: other
+  /// resolutions and sensors). 0: pixel counts as given, whatever the camera.
+  double reference_focal_px = 525.0;
 };
 
 /// The table of AnalyserParams: the segmentation's and candidates' rows, then the reported box
 /// (core/parameter_table.hpp). The feature spec has its own parser (FeatureSpec::parse).
 const ParameterTable<AnalyserParams>& analyser_parameters();
+
+/// `params` with its pixel counts scaled to `camera` (see AnalyserParams::reference_focal_px); the same
+/// params for a camera of the reference focal length.
+AnalyserParams params_for_camera(const AnalyserParams& params, const CameraModel& camera);
 
 /// `params` with every departure from the thesis turned off (docs/frame-analyser.md, "Departures from the thesis"): no
 /// left-border jump, no occlusion gaps, no floor trimming, no fitted reach, no joining of pieces, no

@@ -22,6 +22,9 @@ struct DepthFrame {
   std::string name;               ///< file stem (without .depth.png) for folders, the index for recordings
   std::int64_t timestamp_us = 0;  ///< microseconds; from the recording, or index * kFrameIntervalUs for image folders
   CameraModel camera;             ///< intrinsics of the depth image as delivered
+  /// |colour stamp - depth stamp| in microseconds when the source paired separately stamped streams (bags);
+  /// 0 when colour comes registered with the depth (folders, OpenNI2) or there is none.
+  std::int64_t colour_gap_us = 0;
 
   bool has_colour() const { return !bgr.empty(); }
   int width_px() const { return depth_mm.cols; }

@@ -7,6 +7,8 @@
 //   - a path ending in ".oni": an OpenNI2 recording, read frame by frame;
 //     (a build without OpenNI2, RDSF_WITH_OPENNI 0 in rdsf/version.hpp, refuses both with one line);
 //   - a folder: every NAME.depth.png in it (sorted by name), with NAME.rgb.png as colour when present;
+//   - a path ending in ".bag": a ROS 1 bag (rdsf/frame/bag_source.hpp; a build without librosbag,
+//     RDSF_WITH_ROSBAG 0 in rdsf/version.hpp, refuses it with one line);
 //   - a single NAME.depth.png file: that one frame;
 //   - any other file: a list file, one depth PNG path a line (relative to the list's folder; # comments).
 #include <cstdint>
@@ -28,12 +30,31 @@ class FrameSource {
   virtual std::string description() const = 0;
   /// Number of frames when known in advance (files), nothing for live devices.
   virtual std::optional<std::int64_t> frame_count() const = 0;
+  /// What the source has to say after reading (a bag: the colour pairing gaps), empty when nothing.
+  virtual std::string summary() const { return {}; }
+};
+
+/// How a source is opened beyond its path: the camera model to fall back on and what a bag is read for.
+struct FrameSourceOptions {
+  /// The model frames carry when the source has none of its own (camera.yml, CameraInfo, OpenNI2's field
+  /// of view); rescaled to the frame size when the frames are of another size.
+  CameraModel camera = CameraModel::kinect_v1();
+  /// True when `camera` was given by the user: it then wins over the source's own model.
+  bool camera_given = false;
+  std::string depth_topic;   ///< bags: the depth image topic; empty = the bag's one depth image topic
+  std::string colour_topic;  ///< bags: the colour topic; empty = the one of the depth's size, "none" = no colour
 };
 
 /// Opens the source named by `spec`. `camera` is the model frames carry unless the source knows better;
 /// it is rescaled to the frame size when the frames are not 640x480.
 std::unique_ptr<FrameSource> open_frame_source(const std::string& spec,
                                                const CameraModel& camera = CameraModel::kinect_v1());
+
+/// The same with every option (camera model, bag topics).
+std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const FrameSourceOptions& options);
+
+/// True when `spec` names a ROS 1 bag (ends in ".bag").
+bool is_bag_spec(const std::string& spec);
 
 /// True when `spec` names an OpenNI2 recording or device rather than image files.
 bool is_openni_spec(const std::string& spec);

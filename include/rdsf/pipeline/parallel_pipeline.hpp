@@ -25,8 +25,9 @@ struct ParallelParams {
 using PipelineCallback = std::function<bool(const DepthFrame& frame, PipelineFrame& result)>;
 
 /// Runs over every frame of `source` (no frame read from it yet). Image folders and list files
-/// (PngFolderSource) are decoded on the workers, each frame from its own files with `camera` (the model the
-/// source was opened with): the same frames the source delivers. Other sources (recordings, devices) are
+/// (PngFolderSource) are decoded on the workers, each frame from its own files with the source's camera model
+/// (PngFolderSource::read_frame; `camera` is not used since the folders' camera.yml, issue 36): the same frames
+/// the source delivers. Other sources (recordings, devices) are
 /// read in order, one read at a time. Returns the number of frames handed to on_frame.
 std::int64_t run_in_frame_order(PeoplePipeline& pipeline, FrameSource& source, const CameraModel& camera,
                                 const ParallelParams& params, const PipelineCallback& on_frame);
