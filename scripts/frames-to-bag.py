@@ -1,0 +1,235 @@
+#!/usr/bin/python3
+"""Writes a ROS 1 bag from a folder of depth PNGs (NAME.depth.png, 16-bit millimetres, 0 = no reading) and
+their colour frames (NAME.rgb.png, when present), as a depth camera driver would publish them.
+
+    scripts/frames-to-bag.py FOLDER OUT.bag [--fps 30] [--depth-encoding 16UC1|32FC1] [--layout ros|realsense]
+
+Layout "ros" (the default; the topics of openni_launch / realsense2_camera):
+  /camera/depth/image_raw    sensor_msgs/Image, 16UC1 millimetres (or 32FC1 metres, NaN = no reading)
+  /camera/depth/camera_info  sensor_msgs/CameraInfo (K, P, size), one per depth frame, same stamp
+  /camera/rgb/image_raw      sensor_msgs/Image rgb8 (or --colour-encoding bgr8), only for frames with colour
+  /camera/rgb/camera_info    sensor_msgs/CameraInfo of the colour image (registered: the depth's model)
+Layout "realsense" (RealSense Viewer's .bag recordings, the part of their layout rdsf reads):
+  /device_0/sensor_0/Depth_0/image/data      sensor_msgs/Image 16UC1 in depth units
+  /device_0/sensor_0/Depth_0/info/camera_info  sensor_msgs/CameraInfo (once)
+  /device_0/sensor_0/option/Depth Units/value  std_msgs/Float32, metres per depth unit (--depth-unit-m)
+  /device_0/sensor_1/Color_0/image/data      sensor_msgs/Image rgb8
+  /device_0/sensor_1/Color_0/info/camera_info  sensor_msgs/CameraInfo (once)
+
+Frames are sorted by name (as rdsf reads the folder); frame i is stamped start + i / fps seconds, its
+colour frame at the same instant plus --colour-offset-ms. The camera model is camera.yml beside the frames
+when present (width, height, fx, fy, cx, cy, depth_unit_mm), else the Kinect v1 (fx = fy = 525, cx = 319.5,
+cy = 239.5 at 640x480) scaled to the frame size; --fx/--fy/--cx/--cy override it.
+
+The bag is written to OUT.bag.tmp and renamed when complete; an existing OUT.bag is kept unless --force.
+Needs python3-rosbag, python3-sensor-msgs, python3-numpy and python3-png (Debian 12; scripts/setup.sh).
+"""
+import argparse
+import os
+import re
+import sys
+
+try:
+    import numpy as np
+    import png
+    import rosbag
+    import rospy
+    from sensor_msgs.msg import CameraInfo, Image
+    from std_msgs.msg import Float32
+except ImportError as error:
+    sys.exit("frames-to-bag: %s (install python3-rosbag python3-sensor-msgs python3-numpy python3-png)" % error)
+
+DEPTH_SUFFIX = ".depth.png"
+COLOUR_SUFFIX = ".rgb.png"
+
+LAYOUTS = {
+    "ros": {
+        "depth": "/camera/depth/image_raw",
+        "depth_info": "/camera/depth/camera_info",
+        "colour": "/camera/rgb/image_raw",
+        "colour_info": "/camera/rgb/camera_info",
+        "frame_id": "camera_depth_optical_frame",
+    },
+    "realsense": {
+        "depth": "/device_0/sensor_0/Depth_0/image/data",
+        "depth_info": "/device_0/sensor_0/Depth_0/info/camera_info",
+        "depth_units": "/device_0/sensor_0/option/Depth Units/value",
+        "colour": "/device_0/sensor_1/Color_0/image/data",
+        "colour_info": "/device_0/sensor_1/Color_0/info/camera_info",
+        "frame_id": "0",
+    },
+}
+
+
+def fail(message):
+    sys.exit("frames-to-bag: " + message)
+
+
+def read_png(path):
+    """The PNG as a numpy array: (h, w) uint16 for 16-bit grey, (h, w, 3) uint8 for colour."""
+    try:
+        width, height, rows, info = png.Reader(filename=path).asDirect()
+        planes = info["planes"]
+        dtype = np.uint16 if info["bitdepth"] > 8 else np.uint8
+        image = np.vstack([np.asarray(row, dtype=dtype) for row in rows])
+    except (png.Error, OSError, ValueError) as error:
+        fail("%s: cannot be read as PNG (%s)" % (path, error))
+    return image.reshape(height, width, planes) if planes > 1 else image.reshape(height, width)
+
+
+def read_camera_yml(path):
+    """The few scalar keys of camera.yml ("key: value" lines; the format rdsf's PNG folder source reads)."""
+    model = {}
+    with open(path, encoding="utf-8") as stream:
+        for line in stream:
+            match = re.match(r"^\s*([A-Za-z_]+)\s*:\s*([-+0-9.eE]+)\s*$", line)
+            if match:
+                model[match.group(1)] = float(match.group(2))
+    for key in ("width", "height", "fx", "fy", "cx", "cy"):
+        if key not in model:
+            fail("%s: has no %s" % (path, key))
+    return model
+
+
+def camera_model(folder, width, height, args):
+    yml = os.path.join(folder, "camera.yml")
+    if os.path.exists(yml):
+        model = read_camera_yml(yml)
+        if int(model["width"]) != width or int(model["height"]) != height:
+            fail("%s: says %dx%d, the frames are %dx%d" % (yml, model["width"], model["height"], width, height))
+    else:  # the Kinect v1 default scaled to the frame size, as rdsf does
+        sx, sy = width / 640.0, height / 480.0
+        model = {"fx": 525.0 * sx, "fy": 525.0 * sy, "cx": 320.0 * sx - 0.5, "cy": 240.0 * sy - 0.5}
+    for key in ("fx", "fy", "cx", "cy"):
+        if getattr(args, key) is not None:
+            model[key] = getattr(args, key)
+    return model
+
+
+def camera_info(header, width, height, model):
+    info = CameraInfo()
+    info.header = header
+    info.width, info.height = width, height
+    info.distortion_model = "plumb_bob"
+    info.D = [0.0] * 5
+    info.K = [model["fx"], 0.0, model["cx"], 0.0, model["fy"], model["cy"], 0.0, 0.0, 1.0]
+    info.R = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+    info.P = [model["fx"], 0.0, model["cx"], 0.0, 0.0, model["fy"], model["cy"], 0.0, 0.0, 0.0, 1.0, 0.0]
+    return info
+
+
+def image_message(header, array, encoding):
+    message = Image()
+    message.header = header
+    message.height, message.width = array.shape[0], array.shape[1]
+    message.encoding = encoding
+    message.is_bigendian = 0
+    contiguous = np.ascontiguousarray(array)
+    message.step = contiguous.strides[0]
+    message.data = contiguous.tobytes()
+    return message
+
+
+def depth_array(depth_mm, encoding, depth_unit_mm):
+    if encoding == "32FC1":  # metres, NaN where there is no reading (REP 118)
+        metres = depth_mm.astype(np.float32) / np.float32(1000.0)
+        metres[depth_mm == 0] = np.nan
+        return metres.astype("<f4")
+    units = np.rint(depth_mm.astype(np.float64) / depth_unit_mm)
+    if units.max(initial=0) > 65535:
+        fail("depth exceeds 65535 units of %g mm" % depth_unit_mm)
+    return units.astype("<u2")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("folder", help="folder of NAME.depth.png (and NAME.rgb.png) frames")
+    parser.add_argument("bag", help="the bag to write")
+    parser.add_argument("--fps", type=float, default=30.0, help="frames per second of the stamps (default 30)")
+    parser.add_argument("--start", type=float, default=1.0, help="stamp of the first frame, in seconds (default 1)")
+    parser.add_argument("--depth-encoding", choices=["16UC1", "32FC1"], default="16UC1",
+                        help="16UC1 millimetres (default) or 32FC1 metres (layout ros only)")
+    parser.add_argument("--colour-encoding", choices=["rgb8", "bgr8"], default="rgb8", help="default rgb8")
+    parser.add_argument("--no-colour", action="store_true", help="write no colour frames")
+    parser.add_argument("--no-camera-info", action="store_true", help="write no CameraInfo (to test fall-backs)")
+    parser.add_argument("--colour-offset-ms", type=float, default=0.0,
+                        help="colour stamps this much after their depth frame (default 0)")
+    parser.add_argument("--layout", choices=sorted(LAYOUTS), default="ros", help="topic layout (default ros)")
+    parser.add_argument("--depth-unit-m", type=float, default=0.001,
+                        help="realsense layout: metres per depth unit written (default 0.001)")
+    parser.add_argument("--depth-topic", help="override the layout's depth topic")
+    parser.add_argument("--colour-topic", help="override the layout's colour topic")
+    parser.add_argument("--first", type=int, default=0, help="skip the frames before this index")
+    parser.add_argument("--count", type=int, default=0, help="write at most this many frames (0: all)")
+    for key in ("fx", "fy", "cx", "cy"):
+        parser.add_argument("--" + key, type=float, help="override the camera model's " + key + " (px)")
+    parser.add_argument("--force", action="store_true", help="replace an existing bag")
+    args = parser.parse_args()
+
+    if args.fps <= 0:
+        fail("--fps must be positive")
+    if args.layout == "realsense" and args.depth_encoding != "16UC1":
+        fail("the realsense layout stores 16UC1 depth units only")
+    names = sorted(n[: -len(DEPTH_SUFFIX)] for n in os.listdir(args.folder) if n.endswith(DEPTH_SUFFIX))
+    names = names[args.first:]
+    if args.count > 0:
+        names = names[: args.count]
+    if not names:
+        fail("%s: holds no *%s frames" % (args.folder, DEPTH_SUFFIX))
+    if os.path.exists(args.bag) and not args.force:
+        fail("%s: exists (--force replaces it)" % args.bag)
+
+    layout = dict(LAYOUTS[args.layout])
+    layout["depth"] = args.depth_topic or layout["depth"]
+    layout["colour"] = args.colour_topic or layout["colour"]
+    temporary = args.bag + ".tmp"
+    model = None
+    colour_frames = 0
+    bag = rosbag.Bag(temporary, "w")
+    try:
+        for index, name in enumerate(names):
+            depth_mm = read_png(os.path.join(args.folder, name + DEPTH_SUFFIX))
+            if depth_mm.ndim != 2 or depth_mm.dtype != np.uint16:
+                fail("%s%s: not a 16-bit single-channel depth PNG" % (name, DEPTH_SUFFIX))
+            height, width = depth_mm.shape
+            if model is None:
+                model = camera_model(args.folder, width, height, args)
+            stamp = rospy.Time.from_sec(args.start + index / args.fps)
+            header = rospy.Header(seq=index, stamp=stamp, frame_id=layout["frame_id"])
+            if args.layout == "realsense" and index == 0:
+                bag.write(layout["depth_units"], Float32(data=args.depth_unit_m), stamp)
+            unit_mm = args.depth_unit_m * 1000.0 if args.layout == "realsense" else 1.0
+            bag.write(layout["depth"], image_message(header, depth_array(depth_mm, args.depth_encoding, unit_mm),
+                                                     args.depth_encoding), stamp)
+            if not args.no_camera_info and (args.layout == "ros" or index == 0):
+                bag.write(layout["depth_info"], camera_info(header, width, height, model), stamp)
+            colour_path = os.path.join(args.folder, name + COLOUR_SUFFIX)
+            if args.no_colour or not os.path.exists(colour_path):
+                continue
+            rgb = read_png(colour_path)
+            if rgb.ndim != 3 or rgb.shape[2] < 3 or rgb.dtype != np.uint8:
+                fail("%s: not an 8-bit colour PNG" % colour_path)
+            if rgb.shape[:2] != depth_mm.shape:
+                fail("%s: is %dx%d, its depth frame %dx%d" % (colour_path, rgb.shape[1], rgb.shape[0], width, height))
+            rgb = rgb[:, :, :3]
+            colour_stamp = rospy.Time.from_sec(args.start + index / args.fps + args.colour_offset_ms / 1000.0)
+            colour_header = rospy.Header(seq=index, stamp=colour_stamp, frame_id=layout["frame_id"])
+            colour = rgb if args.colour_encoding == "rgb8" else rgb[:, :, ::-1]
+            bag.write(layout["colour"], image_message(colour_header, colour, args.colour_encoding), colour_stamp)
+            if not args.no_camera_info and (args.layout == "ros" or colour_frames == 0):
+                bag.write(layout["colour_info"], camera_info(colour_header, width, height, model), colour_stamp)
+            colour_frames += 1
+    except BaseException:
+        bag.close()
+        os.remove(temporary)
+        raise
+    bag.close()
+    with open(temporary, "rb") as stream:
+        os.fsync(stream.fileno())
+    os.replace(temporary, args.bag)
+    print("frames-to-bag: wrote %s (%d depth frames, %d colour frames, %s, %g fps, layout %s)"
+          % (args.bag, len(names), colour_frames, args.depth_encoding, args.fps, args.layout))
+
+
+if __name__ == "__main__":
+    main()
