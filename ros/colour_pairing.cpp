@@ -23,7 +23,8 @@ std::vector<PairedFrame> ColourPairing::add_depth(DepthFrame frame) {
     return out;
   }
   const bool passed = newest_colour_us_ && *newest_colour_us_ > t + max_gap_us_;
-  const bool stale = !newest_colour_us_ || *newest_colour_us_ < t - stale_after_us_;
+  if (!first_depth_us_) first_depth_us_ = t;
+  const bool stale = newest_colour_us_ ? *newest_colour_us_ < t - stale_after_us_ : t - *first_depth_us_ > stale_after_us_;
   if (passed || stale) {
     out.push_back({std::move(frame), -1});
   } else {

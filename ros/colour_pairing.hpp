@@ -6,7 +6,8 @@
 //     images older than the one taken are discarded);
 //   - otherwise it waits for its colour, unless its colour cannot come any more: a colour image newer than
 //     its stamp + max_gap_us is already here, or no colour image came within stale_after_us of its stamp
-//     (no colour publisher, or a dead one); then it goes on without colour;
+//     (a dead colour publisher; none at all: stale_after_us after the first depth frame); then it goes on
+//     without colour;
 //   - a waiting depth frame goes on without colour when the next depth frame arrives or a colour image
 //     newer than its stamp + max_gap_us arrives (a frame without colour in a stream with colour).
 // So a frame waits at most until the next frame of either topic, and every depth frame comes out once, in
@@ -46,7 +47,7 @@ class ColourPairing {
   std::int64_t max_gap_us_, stale_after_us_;
   std::size_t history_;
   std::deque<Colour> colours_;  ///< waiting colour images, oldest first
-  std::optional<std::int64_t> newest_colour_us_;
+  std::optional<std::int64_t> newest_colour_us_, first_depth_us_;
   std::optional<DepthFrame> waiting_;
 };
 
