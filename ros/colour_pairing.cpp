@@ -34,7 +34,7 @@ std::vector<PairedFrame> ColourPairing::add_depth(DepthFrame frame) {
 }
 
 std::vector<PairedFrame> ColourPairing::add_colour(std::int64_t stamp_us, cv::Mat3b bgr) {
-  newest_colour_us_ = newest_colour_us_ ? std::max(*newest_colour_us_, stamp_us) : stamp_us;
+  newest_colour_us_ = stamp_us;  // the last to arrive (stamps may start again: a bag played in a loop)
   std::vector<PairedFrame> out;
   if (waiting_ && std::llabs(waiting_->timestamp_us - stamp_us) <= max_gap_us_) {
     const std::int64_t gap = std::llabs(waiting_->timestamp_us - stamp_us);

@@ -11,7 +11,9 @@
 //   - a waiting depth frame goes on without colour when the next depth frame arrives or a colour image
 //     newer than its stamp + max_gap_us arrives (a frame without colour in a stream with colour).
 // So a frame waits at most until the next frame of either topic, and every depth frame comes out once, in
-// arrival order. Not thread-safe (the node calls it from its one callback thread).
+// arrival order. "Newer" compares with the colour image that arrived last, so stamps that start again (a
+// bag played in a loop, a restarted camera) cost one frame its colour, not all the following ones. Not
+// thread-safe (the node calls it from its one callback thread).
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -47,7 +49,7 @@ class ColourPairing {
   std::int64_t max_gap_us_, stale_after_us_;
   std::size_t history_;
   std::deque<Colour> colours_;  ///< waiting colour images, oldest first
-  std::optional<std::int64_t> newest_colour_us_, first_depth_us_;
+  std::optional<std::int64_t> newest_colour_us_, first_depth_us_;  ///< last colour to arrive; first depth frame
   std::optional<DepthFrame> waiting_;
 };
 

@@ -33,8 +33,10 @@ class PeopleNode {
         diagnostics_topic_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10)),
         live_(detector.pipeline(), {resolve_thread_count(o.threads)}, clock_,
               [this](const DepthFrame& f, PipelineFrame& r, std::int64_t) { publish(f, r); }) {
-    depth_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth, this);
-    if (o.colour) colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour, this);
+    // Small messages (camera_info) are sent at once, not held back by Nagle's algorithm.
+    const image_transport::TransportHints hints("raw", ros::TransportHints().tcpNoDelay());
+    depth_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth, this, hints);
+    if (o.colour) colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour, this, hints);
     timer_ = nh.createWallTimer(ros::WallDuration(o.diagnostics_period_s), [this, o](const ros::WallTimerEvent&) {
       diagnostics_topic_.publish(diagnostics_.report(live_.stats(), hardware_id_, o.diagnostics_period_s));
     });
