@@ -5,7 +5,9 @@
 //     dropped by the live pipeline (a newer frame took their place: newest frame wins), frames paired with
 //     colour and without;
 //   per period and since the start: latency from the depth message's arrival in the node to its people
-//     published (p50, p95, p99, max, nearest rank), the colour pairing gap (max).
+//     published (p50, p95, p99, max, nearest rank), the colour pairing gap (max); since the start also
+//     the part of it after the frame was complete (its colour in: without colour the same figure), i.e.
+//     without the wait for the colour image.
 // Level: OK; WARN when frames were dropped or refused in the period, p99 of the period exceeds the target,
 // or no depth image arrived in the period. Thread-safe (workers publish, the timer reports).
 #include <cstdint>
@@ -27,8 +29,9 @@ class NodeDiagnostics {
   void refused(const std::string& reason);
   /// A frame goes on to the pipeline: paired with colour at this gap (us), or -1 without colour.
   void paired(std::int64_t gap_us);
-  /// A frame's people were published, `latency_ms` after its depth message arrived.
-  void published(double latency_ms);
+  /// A frame's people were published, `latency_ms` after its depth message arrived and `after_complete_ms`
+  /// after the frame was complete (its colour image in).
+  void published(double latency_ms, double after_complete_ms);
 
   /// The status of the period since the last report (and the counts since the start); starts a new period.
   diagnostic_msgs::DiagnosticArray report(const LiveStats& live, const std::string& hardware_id, double period_s);
@@ -42,7 +45,7 @@ class NodeDiagnostics {
   std::int64_t period_received_ = 0, period_refused_ = 0, dropped_at_last_report_ = 0;
   std::int64_t period_max_gap_us_ = -1, max_gap_us_ = -1;
   std::string last_refusal_;
-  std::vector<double> latency_ms_, period_latency_ms_;
+  std::vector<double> latency_ms_, period_latency_ms_, after_complete_ms_;
 };
 
 }  // namespace rdsf

@@ -59,7 +59,8 @@ class PeopleNode {
  private:
   struct Arrival {
     std_msgs::Header header;
-    std::int64_t received_us = 0;
+    std::int64_t received_us = 0;  ///< the depth message in the node
+    std::int64_t complete_us = 0;  ///< the frame handed to the pipeline (its colour in, or none to wait for)
   };
 
   void on_depth(const sensor_msgs::ImageConstPtr& image, const sensor_msgs::CameraInfoConstPtr& info) {
@@ -100,6 +101,7 @@ class PeopleNode {
   }
 
   void go_on(std::vector<PairedFrame> frames) {
+    const std::int64_t now_us = clock_.now_us();
     for (PairedFrame& p : frames) {
       if (!p.frame.bgr.empty() && p.frame.bgr.size() != p.frame.depth_mm.size()) {
         refuse(colour_.getTopic() + ": colour image of " + std::to_string(p.frame.bgr.cols) + "x" +
@@ -110,6 +112,10 @@ class PeopleNode {
         p.gap_us = -1;
       }
       diagnostics_.paired(p.gap_us);
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        arrivals_[p.frame.index].complete_us = now_us;
+      }
       live_.push(std::move(p.frame));
     }
   }
@@ -130,7 +136,9 @@ class PeopleNode {
     const rdsf_people::People people =
         people_message(arrival.header, detector_.detections(frame, result), result.analysis.candidates.size());
     people_.publish(people);
-    diagnostics_.published(static_cast<double>(clock_.now_us() - arrival.received_us) / 1000.0);
+    const std::int64_t now_us = clock_.now_us();
+    diagnostics_.published(static_cast<double>(now_us - arrival.received_us) / 1000.0,
+                           static_cast<double>(now_us - arrival.complete_us) / 1000.0);
     markers_.publish(people_markers(people, frame.camera));
   }
 
