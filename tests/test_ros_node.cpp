@@ -96,18 +96,8 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   const std::string frames = (test::realdata_dir() / "people").string();
   const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
 
-  // The bag (46 depth frames with camera_info, 14 with colour; 30 frames/s stamps) and rdsf-detect's answer.
-  const test::RunResult bag = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) + "/scripts/frames-to-bag.py") +
-                                        " " + test::quote(frames) + " " + test::quote(dir / "people.bag"));
-  ASSERT_EQ(bag.exit_code, 0) << bag.err;
-  const test::RunResult detect = test::run(test::program("rdsf-detect") + " --source " + test::quote(frames) +
-                                           " --model people --models-dir " + test::quote(models) + " --out " +
-                                           test::quote(dir / "detect.csv"));
-  ASSERT_EQ(detect.exit_code, 0) << detect.err;
-  const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
-  ASSERT_EQ(expected.size(), 46U);
-
-  // A master of our own.
+  // A master of our own, and meanwhile rdsf-detect's answer and the bag (46 depth frames with camera_info,
+  // 14 with colour; 30 frames/s stamps).
   const int port = test::free_tcp_port();
   ASSERT_GT(port, 0);
   setenv("ROS_MASTER_URI", ("http://127.0.0.1:" + std::to_string(port)).c_str(), 1);
@@ -115,6 +105,17 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   setenv("ROS_HOME", (dir / "ros_home").c_str(), 1);
   setenv("ROS_LOG_DIR", (dir / "ros_log").c_str(), 1);
   BackgroundProcess core("roscore -p " + std::to_string(port), dir / "roscore.log");
+  BackgroundProcess detect(test::program("rdsf-detect") + " --source " + test::quote(frames) +
+                               " --model people --models-dir " + test::quote(models) + " --out " +
+                               test::quote(dir / "detect.csv"),
+                           dir / "detect.log");
+  const test::RunResult bag = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) + "/scripts/frames-to-bag.py") +
+                                        " " + test::quote(frames) + " " + test::quote(dir / "people.bag"));
+  ASSERT_EQ(bag.exit_code, 0) << bag.err;
+  ASSERT_EQ(detect.wait(std::chrono::seconds(60)), 0) << detect.log();
+  const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
+  ASSERT_EQ(expected.size(), 46U);
+
   int argc = 1;
   char name[] = "test_ros_node";
   char* argv[] = {name, nullptr};

@@ -61,6 +61,14 @@ int BackgroundProcess::stop(std::chrono::milliseconds grace) {
   return exit_code_;
 }
 
+int BackgroundProcess::wait(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (running() && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return stop();
+}
+
 std::string BackgroundProcess::log() const {
   std::ifstream in(log_path_);
   std::ostringstream text;

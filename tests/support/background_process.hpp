@@ -22,6 +22,8 @@ class BackgroundProcess {
   /// SIGINT to the group, up to `grace` for the process to exit, then SIGKILL. Returns its exit code (128 +
   /// signal when killed by one; -1 when it could not be started). Idempotent.
   int stop(std::chrono::milliseconds grace = std::chrono::seconds(10));
+  /// Waits up to `timeout` for the process to exit by itself; then stop(). Returns its exit code.
+  int wait(std::chrono::milliseconds timeout);
   /// The log so far.
   std::string log() const;
 
