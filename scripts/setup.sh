@@ -13,6 +13,13 @@ packages=(
   # ROS 1 bags: the bag frame source (librosbag-dev, libsensor-msgs-dev) and scripts/frames-to-bag.py
   librosbag-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs python3-numpy python3-png
 )
+# The ROS 1 node rdsf_people (ros/, docs/ros.md) and its test: libraries, the message generator and the
+# definitions it reads, roscore, rosbag play, and what scripts/frames-to-bag.py needs to write the test's bag.
+packages+=(
+  libroscpp-dev libsensor-msgs-dev libcv-bridge-dev libimage-transport-dev libvisualization-msgs-dev
+  libdiagnostic-msgs-dev python3-genmsg python3-gencpp ros-std-msgs ros-geometry-msgs ros-sensor-msgs
+  ros-core python3-rosbag python3-sensor-msgs python3-numpy python3-png
+)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,60 @@
+// rdsf_people: the ROS 1 node. Subscribes to a depth image with its camera_info (and optionally a colour
+// image registered to it), finds and tracks people with rdsf::PeopleDetector in live mode, and publishes
+// them (docs/ros.md). Its parameters (~NAME) are the options below (ros/ros_parameters.hpp).
+#include <ros/init.h>
+
+#include "cli/cli.hpp"
+#include "ros/people_node_run.hpp"
+#include "ros/ros_parameters.hpp"
+
+int main(int argc, char** argv) {
+  return rdsf::cli::run("rdsf_people", [&] {
+    namespace po = rdsf::cli::po;
+    rdsf::PeopleNodeOptions o;
+    po::options_description options("rdsf_people (ROS parameters ~NAME, or options --NAME)");
+    options.add_options()
+        ("model", po::value(&o.model)->default_value(o.model),
+         "model file, NAME (newest version) or NAME/vN (default: the shipped default model, synthetic data only)")
+        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
+        ("threshold", po::value(&o.pipeline.probability_threshold)->default_value(o.pipeline.probability_threshold),
+         "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
+        ("score-threshold", po::value<double>()->notifier([&o](double h) { o.pipeline.score_threshold = h; }),
+         "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
+        ("suppress-duplicates", po::value(&o.pipeline.suppress_duplicates)->default_value(o.pipeline.suppress_duplicates),
+         "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a person")
+        ("threads", po::value(&o.threads)->default_value(o.threads),
+         "live workers analysing frames (0: one per core); at most one frame waits per worker, a newer one replaces "
+         "the oldest waiting (dropped, counted in /diagnostics)")
+        ("colour", po::value(&o.colour)->default_value(o.colour),
+         "also subscribe to rgb/image (registered to the depth image, same size) and pair it by stamp: tracking "
+         "compares colour histograms")
+        ("colour-gap-ms", po::value(&o.colour_gap_ms)->default_value(o.colour_gap_ms),
+         "largest stamp difference (ms) of a depth and a colour image that are a pair")
+        ("diagnostics-period", po::value(&o.diagnostics_period_s)->default_value(o.diagnostics_period_s),
+         "seconds between /diagnostics messages (drops, latency percentiles)");
+    options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
+    options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
+    const rdsf::cli::ProgramInfo info{
+        "rdsf_people", "[ROS remappings] [--NAME VALUE ...]   (rosrun: _NAME:=VALUE)",
+        "ROS 1 node: subscribes to depth/image (16UC1 mm or 32FC1 m) with depth/camera_info, and with --colour\n"
+        "to rgb/image; publishes people (rdsf_people/People), people/markers (visualization_msgs/MarkerArray)\n"
+        "and /diagnostics. Parameters in the node's private namespace (~threshold, ~row_step, ...) are read as\n"
+        "the options of the same names; an option on the command line wins. See docs/ros.md."};
+    ros::init(argc, argv, "rdsf_people");  // takes the ROS arguments (remappings, _NAME:=VALUE) out of argv
+    std::vector<std::string> arguments = rdsf::arguments_with_parameters(argc, argv, options);
+    std::vector<char*> argument_pointers;
+    for (std::string& a : arguments) argument_pointers.push_back(a.data());
+    po::variables_map values;
+    if (!rdsf::cli::parse(static_cast<int>(argument_pointers.size()), argument_pointers.data(), info, options, values)) {
+      return 0;
+    }
+    o.feature_spec_given = !values["feature-spec"].defaulted();
+    if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
+      throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
+    }
+    if (o.threads < 0) throw rdsf::cli::UsageError("--threads must be 0 (one per core) or more");
+    if (!(o.colour_gap_ms >= 0)) throw rdsf::cli::UsageError("--colour-gap-ms must be 0 or more");
+    if (!(o.diagnostics_period_s > 0)) throw rdsf::cli::UsageError("--diagnostics-period must be more than 0 s");
+    return rdsf::run_people_node(o);
+  });
+}

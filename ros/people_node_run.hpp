@@ -1,0 +1,25 @@
+#pragma once
+// rdsf_people's work: subscribe, run rdsf::PeopleDetector in live mode (LivePipeline: newest frame wins),
+// publish people, markers and diagnostics until ROS shuts down (docs/ros.md).
+#include <string>
+
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
+
+namespace rdsf {
+
+struct PeopleNodeOptions {
+  std::string model = kDefaultModelName;  ///< a file, NAME or NAME/vN (rdsf-detect's --model)
+  std::string models_dir = "models";
+  PipelineParams pipeline;
+  bool feature_spec_given = false;  ///< else the model's feature spec
+  int threads = 0;                  ///< live workers (0: one per core)
+  bool colour = false;              ///< subscribe to rgb/image and pair it with the depth images
+  double colour_gap_ms = 15;        ///< largest depth-colour stamp difference of a pair
+  double diagnostics_period_s = 1;  ///< /diagnostics every this many seconds
+};
+
+/// Runs the node until ROS shuts down (Ctrl-C, rosnode kill); returns the exit code. Call after ros::init.
+int run_people_node(const PeopleNodeOptions& options);
+
+}  // namespace rdsf

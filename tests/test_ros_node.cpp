@@ -1,0 +1,203 @@
+// The ROS 1 node rdsf_people against rdsf-detect, with every component real: a roscore on a free port
+// (ROS_MASTER_URI, so parallel tests do not meet), the node, a bag written from ../shared/realdata/people by
+// scripts/frames-to-bag.py and played by `rosbag play`, and this test subscribed to /people. The bag is
+// played at 0.2 x its 30 frames/s (6 frames/s, 7.7 s) so that the node (about 1 ms a frame) drops no frame
+// and the comparison is frame for frame; the node's own count of drops is checked to be 0. Everything
+// started is stopped (SIGINT, then SIGKILL after a bound). Skips with a message without ROS or real frames.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/test_support.hpp"
+
+#if RDSF_TEST_WITH_ROS
+#include <mutex>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <rdsf_people/People.h>
+#include <ros/ros.h>
+
+#include "rdsf/classifier/boosted_model.hpp"
+#include "support/background_process.hpp"
+#endif
+
+namespace rdsf {
+namespace {
+
+#if RDSF_TEST_WITH_ROS
+
+using test::BackgroundProcess;
+
+struct CsvPerson {
+  int x = 0, y = 0, w = 0, h = 0;
+  std::string score, distance_cm;  // as rdsf-detect prints them (%.4f, %.1f)
+  int person = 0;
+};
+struct CsvFrame {
+  std::string name;
+  int candidates = 0;
+  std::vector<CsvPerson> people;
+};
+
+// rdsf-detect's CSV (frame,candidate,x,y,w,h,depth_mm,score,person,distance_cm), frames in file order.
+std::vector<CsvFrame> read_detect_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<CsvFrame> frames;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) f.push_back(field);
+    if (line.back() == ',') f.emplace_back();
+    if (f.size() != 10) ADD_FAILURE() << "unexpected CSV row: " << line;
+    if (f.size() != 10) continue;
+    if (frames.empty() || frames.back().name != f[0]) frames.push_back({f[0], 0, {}});
+    ++frames.back().candidates;
+    if (!f[8].empty()) {
+      frames.back().people.push_back({std::stoi(f[2]), std::stoi(f[3]), std::stoi(f[4]), std::stoi(f[5]), f[7], f[9],
+                                      std::stoi(f[8])});
+    }
+  }
+  return frames;
+}
+
+std::string printed(const char* format, double value) {
+  char text[48];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+bool have_python_rosbag() {
+  return test::run("/usr/bin/python3 -c 'import rosbag, sensor_msgs.msg, numpy, png'").exit_code == 0;
+}
+
+#endif
+
+TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
+#if !RDSF_TEST_WITH_ROS
+  GTEST_SKIP() << "built without ROS 1 (RDSF_WITH_ROS=OFF: Debian's roscpp, cv_bridge, image_transport, gencpp "
+                  "... not found; scripts/setup.sh installs them): rdsf_people test skipped";
+#else
+  RDSF_REQUIRE_REALDATA();
+  if (test::run("command -v roscore >/dev/null && command -v rosbag").exit_code != 0 || !have_python_rosbag()) {
+    GTEST_SKIP() << "roscore, rosbag or python3-rosbag/sensor-msgs/numpy/png not installed: rdsf_people test skipped";
+  }
+  test::TempDir dir("rdsf-ros");
+  const std::string frames = (test::realdata_dir() / "people").string();
+  const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
+
+  // A master of our own, and meanwhile rdsf-detect's answer and the bag (46 depth frames with camera_info,
+  // 14 with colour; 30 frames/s stamps).
+  const int port = test::free_tcp_port();
+  ASSERT_GT(port, 0);
+  setenv("ROS_MASTER_URI", ("http://127.0.0.1:" + std::to_string(port)).c_str(), 1);
+  setenv("ROS_HOSTNAME", "127.0.0.1", 1);
+  setenv("ROS_HOME", (dir / "ros_home").c_str(), 1);
+  setenv("ROS_LOG_DIR", (dir / "ros_log").c_str(), 1);
+  BackgroundProcess core("roscore -p " + std::to_string(port), dir / "roscore.log");
+  BackgroundProcess detect(test::program("rdsf-detect") + " --source " + test::quote(frames) +
+                               " --model people --models-dir " + test::quote(models) + " --out " +
+                               test::quote(dir / "detect.csv"),
+                           dir / "detect.log");
+  const test::RunResult bag = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) + "/scripts/frames-to-bag.py") +
+                                        " " + test::quote(frames) + " " + test::quote(dir / "people.bag"));
+  ASSERT_EQ(bag.exit_code, 0) << bag.err;
+  ASSERT_EQ(detect.wait(std::chrono::seconds(60)), 0) << detect.log();
+  const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
+  ASSERT_EQ(expected.size(), 46U);
+
+  int argc = 1;
+  char name[] = "test_ros_node";
+  char* argv[] = {name, nullptr};
+  ros::init(argc, argv, "rdsf_people_test", ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
+  for (int i = 0; i < 300 && !ros::master::check(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_TRUE(ros::master::check()) << "roscore did not come up on port " << port << ":\n" << core.log();
+
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  std::vector<rdsf_people::People> received;
+  bool node_up = false;
+  ros::Subscriber people = nh.subscribe<rdsf_people::People>("/people", 100, [&](const rdsf_people::PeopleConstPtr& m) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    received.push_back(*m);
+  });
+  ros::Subscriber diagnostics = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArrayConstPtr&) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        node_up = true;
+      });
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+
+  // The node, parameters as rosrun gives them; up when its first /diagnostics arrives.
+  BackgroundProcess node(std::string(RDSF_BINARY_DIR) + "/ros/rdsf_people depth/image:=/camera/depth/image_raw "
+                             "rgb/image:=/camera/rgb/image_raw _colour:=true _model:=people _models_dir:=" +
+                             test::quote(models) + " --diagnostics-period 0.5",
+                         dir / "node.log");
+  auto up = [&] {
+    const std::lock_guard<std::mutex> lock(mutex);
+    return node_up;
+  };
+  for (int i = 0; i < 300 && !up() && node.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_TRUE(up()) << "rdsf_people did not come up:\n" << node.log();
+
+  const test::RunResult play = test::run("timeout 60 rosbag play -q -d 1 -r 0.2 " + test::quote(dir / "people.bag"));
+  ASSERT_EQ(play.exit_code, 0) << play.err;
+  auto count = [&] {
+    const std::lock_guard<std::mutex> lock(mutex);
+    return received.size();
+  };
+  for (int i = 0; i < 100 && count() < expected.size(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(node.stop(), 0) << node.log();
+  spinner.stop();
+  ros::shutdown();
+  core.stop();
+
+  // No frame refused or dropped: the comparison is frame for frame.
+  EXPECT_NE(node.log().find("46 depth images received, 0 refused, 46 processed, 0 dropped; 14 with colour"),
+            std::string::npos)
+      << node.log();
+  ASSERT_EQ(received.size(), expected.size());
+  std::sort(received.begin(), received.end(),
+            [](const rdsf_people::People& a, const rdsf_people::People& b) { return a.header.stamp < b.header.stamp; });
+  const BoostedModel model = BoostedModel::load("people", models);
+  int people_seen = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const rdsf_people::People& m = received[i];
+    const CsvFrame& e = expected[i];
+    SCOPED_TRACE("frame " + std::to_string(i) + " " + e.name);
+    EXPECT_EQ(m.header.seq, i);  // frames-to-bag numbers the frames in the folder's order
+    EXPECT_EQ(m.header.frame_id, "camera_depth_optical_frame");
+    EXPECT_EQ(m.candidates, static_cast<std::uint32_t>(e.candidates));
+    ASSERT_EQ(m.people.size(), e.people.size());
+    for (std::size_t k = 0; k < e.people.size(); ++k) {
+      const rdsf_people::Person& p = m.people[k];
+      EXPECT_EQ(static_cast<int>(p.box.x_offset), e.people[k].x);
+      EXPECT_EQ(static_cast<int>(p.box.y_offset), e.people[k].y);
+      EXPECT_EQ(static_cast<int>(p.box.width), e.people[k].w);
+      EXPECT_EQ(static_cast<int>(p.box.height), e.people[k].h);
+      EXPECT_EQ(printed("%.4f", p.score), e.people[k].score);
+      EXPECT_EQ(p.probability, model.probability(p.score));
+      EXPECT_GE(p.probability, 0.5);
+      EXPECT_EQ(p.track_id, e.people[k].person);
+      EXPECT_NEAR(p.distance_walked_m * 100.0, std::stod(e.people[k].distance_cm), 0.05 + 1e-9);
+      EXPECT_GT(p.position_m.z, 0.5);
+      ++people_seen;
+    }
+  }
+  EXPECT_GT(people_seen, 20);  // the real frames hold 49 people: most of them are found
+#endif
+}
+
+}  // namespace
+}  // namespace rdsf
