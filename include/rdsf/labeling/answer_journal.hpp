@@ -39,6 +39,8 @@ class AnswerJournal {
   explicit AnswerJournal(const std::string& path);
 
   bool answered(const CandidateKey& key) const { return answered_.count(key) > 0; }
+  /// The answer in force for `key` ('y', 'n', 's'), '\0' when none.
+  char answer_of(const CandidateKey& key) const;
   /// Appends an answer (flushed and synced before returning).
   void record(const JournalEntry& entry);
   /// Appends an undo of `undone`'s answer (the most recent one in force for its candidate).
