@@ -206,7 +206,7 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptSta
   if (!state.get("negatives").empty()) args.push_back(paths.negatives);
   args.push_back(paths.room);
   args.insert(args.end(), o.base_neg.begin(), o.base_neg.end());
-  const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : 30;
+  const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : 10;
   // One held-out fifth for validation and calibration (--folds 0): K fold models would cost K trainings.
   args.insert(args.end(), {"--rounds", std::to_string(rounds), "--folds", "0"});
   if (!o.retrain) args.insert(args.end(), {"--init", o.model});

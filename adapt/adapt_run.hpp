@@ -28,7 +28,7 @@ struct AdaptOptions {
   std::string eval;     ///< held-out frames of the room for the report (with truth)
   bool per_candidate = false;  ///< ask every candidate (no propagation; the benchmark's comparison)
   bool retrain = false;        ///< train from nothing instead of continuing the model
-  int rounds = 0;              ///< 0: 30 continuing, 100 retraining
+  int rounds = 0;              ///< 0: 10 continuing (30 made the lab room worse), 100 retraining
   std::vector<std::string> base_pos, base_neg;  ///< the synthetic base sample sets
   int threads = 0;
 };
