@@ -1,8 +1,12 @@
 // Track propagation (labeling/track_propagation.hpp) on hand-built sequences: a person walking is labelled
 // from one answer both ways; two people crossing stop the track where it is unsure (those are asked); a
-// score gate; undo of the answer through the journal removes every propagated label.
+// score gate; undo of the answer through the journal removes every propagated label; the labelling session
+// with per_track on a rendered room.
 #include <gtest/gtest.h>
 
+#include "rdsf/candidates/crop_provenance.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/labeling/labeling_session.hpp"
 #include "rdsf/labeling/track_propagation.hpp"
 #include "support/test_support.hpp"
 
@@ -94,4 +98,41 @@ TEST(TrackPropagation, UndoOfTheAnswerRemovesEveryPropagatedLabel) {
   journal.record_undo({seed, 'y', 7, "human"});
   EXPECT_EQ(journal.answers_in_force(), 1u);  // only the other answer is left
   EXPECT_TRUE(propagated_from(AnswerJournal(path), seed).empty());
+}
+
+// The session with per_track on a rendered synthetic room and the shipped model: the track the window
+// would show is what an answer labels, and undo takes the answer and its whole track back.
+TEST(TrackPropagation, SessionLabelsTheTrackAndUndoTakesItAllBack) {
+  test::TempDir dir;
+  const test::RunResult r = test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
+                                      " --force --frames 30 --people 2..2 --clip-frames 30 --seed 5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
+  LabelingConfig config;
+  config.sources = {dir / "room"};
+  config.ask = AskOrder::uncertain;
+  config.per_track = true;
+  config.keep_rejected = true;
+  config.threads = 2;
+  SampleSetWriter writer = SampleSetWriter::open_or_create(dir / "set", config.analyser.features, config.camera, "test",
+                                                           crop_provenance(config.analyser.candidates));
+  LabelingSession session(config, writer, &model, nullptr);
+  // The first question whose track reaches other frames (answered n until then).
+  std::size_t preview = 0;
+  for (int asked = 0; asked < 40 && session.current() != nullptr; ++asked) {
+    preview = session.track_preview('y').size();
+    if (preview > 0) break;
+    ASSERT_TRUE(session.answer('s'));
+  }
+  ASSERT_GT(preview, 0u) << "no question with a track in 40";
+  const std::size_t in_force = session.journal().answers_in_force();
+  const std::size_t samples = writer.records().size();
+  ASSERT_TRUE(session.answer('y'));
+  EXPECT_EQ(static_cast<std::size_t>(session.stats().propagated_positives), preview);
+  EXPECT_EQ(session.journal().answers_in_force(), in_force + 1 + preview);
+  EXPECT_EQ(writer.records().size(), samples + 1 + preview);
+  ASSERT_TRUE(session.answer('u'));
+  EXPECT_EQ(session.stats().propagated_positives, 0);
+  EXPECT_EQ(session.journal().answers_in_force(), in_force);
+  EXPECT_EQ(SampleSet::open_read(dir / "set").records().size(), samples);  // retracted samples are left out
 }
