@@ -1,10 +1,17 @@
 // rdsf-adapt: bad input refused with one line before anything is written (budget 0, another camera, a truth
 // naming frames not in the room, an "empty" recording with people), and a run stopped after its answers
-// resumes without asking again. Small synthetic rooms rendered by rdsf-synth; the shipped model people.
+// resumes without asking again, and a run killed (SIGKILL, the step's program with it) resumes. Small synthetic rooms rendered by rdsf-synth; the shipped model people.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <opencv2/imgproc.hpp>
 
@@ -105,4 +112,49 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   EXPECT_NE(text.find("adapted_room"), std::string::npos);
   EXPECT_NE(text.find("adapted_from"), std::string::npos);
   EXPECT_NE(text.find("init"), std::string::npos);  // continued from people/v2
+}
+
+TEST(Adapt, AKilledRunResumes) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
+  const std::filesystem::path models = dir.path() / "models";
+  std::filesystem::create_directories(models / "people");
+  std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
+  const std::string command = adapt() + " --source " + test::quote(dir / "room") + " --truth " +
+                              test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
+                              " --name room --budget 8 --rounds 3 --threads 2 --models-dir " +
+                              test::quote(models.string());
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);  // its own group: the kill reaches the step's program too
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>/dev/null").c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  // Killed once the first step is done (whatever runs then: the questions or the training).
+  const std::string state = dir / "out/adapt-state.tsv";
+  auto has = [&](const std::string& text) {
+    std::ifstream in(state);
+    const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return all.find(text) != std::string::npos;
+  };
+  for (int i = 0; i < 1200 && !has("done.negatives"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  kill(-pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(has("done.negatives"));
+  const test::RunResult r = test::run(command);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("negatives: done before"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(models / "room/v1.yml")) << r.err;
+  const AnswerJournal journal(dir / "out/sets/room/labeler-answers.tsv");
+  std::set<CandidateKey> keys;
+  long human = 0;
+  for (const JournalEntry& e : journal.in_force()) {
+    EXPECT_TRUE(keys.insert(e.key).second) << "answered twice: " << e.key.frame;
+    human += e.by == "human" ? 1 : 0;
+  }
+  EXPECT_GT(human, 0);
+  EXPECT_LE(human, 8);  // the budget over both runs
 }
