@@ -1,6 +1,7 @@
 // rdsf-adapt: bad input refused with one line before anything is written (budget 0, another camera, a truth
 // naming frames not in the room, an "empty" recording with people), and a run stopped after its answers
-// resumes without asking again, and a run killed (SIGKILL, the step's program with it) resumes. Small synthetic rooms rendered by rdsf-synth; the shipped model people.
+// resumes without asking again, and a run killed (SIGKILL, the step's program with it) resumes. Small
+// synthetic rooms rendered by rdsf-synth; the shipped model people.
 #include <gtest/gtest.h>
 
 #include <chrono>
