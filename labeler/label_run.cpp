@@ -213,7 +213,9 @@ int run_label(const LabelOptions& o) {
     } else {
       ScreenStatus status = status_of(session, *p, start, message);
       status.zoom = zoom;
-      cv::imshow(window, render_label_screen(*p, status));
+      cv::Mat3b screen = render_label_screen(*p, status);
+      if (o.session.per_track) screen = add_track_strip(screen, *p, session.track_preview('y'));
+      cv::imshow(window, screen);
       if (key_time) latency.add(*key_time);
       while (key == label_keys::kNone) {
         const int code = cv::waitKeyEx(100);
@@ -272,6 +274,17 @@ int run_label(const LabelOptions& o) {
     std::fprintf(stderr, "rdsf-label: truth oracle: %ld of %ld model answers wrong (%.2f%%), %ld in the truth's uncertain band\n",
                  st.model_wrong, by_model, by_model ? 100.0 * static_cast<double>(st.model_wrong) / static_cast<double>(by_model) : 0.0,
                  st.model_in_band);
+  }
+  if (o.session.per_track) {
+    const long propagated = st.propagated_positives + st.propagated_negatives;
+    std::fprintf(stderr, "rdsf-label: per track: %ld labels propagated (%ld y, %ld n), %ld skips", propagated,
+                 st.propagated_positives, st.propagated_negatives, st.propagated_skips);
+    if (truth) {
+      std::fprintf(stderr, "; the truth contradicts %ld (%.2f%%), %ld in its uncertain band", st.propagated_wrong,
+                   propagated ? 100.0 * static_cast<double>(st.propagated_wrong) / static_cast<double>(propagated) : 0.0,
+                   st.propagated_in_band);
+    }
+    std::fprintf(stderr, "\n");
   }
   std::fprintf(stderr, "rdsf-label: %s\n", latency.summary().c_str());
   std::fprintf(stderr, "rdsf-label: sample set %s now holds %zu samples\n", o.out_set.c_str(), writer.records().size());

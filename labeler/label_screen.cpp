@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "gui/screen_text.hpp"
+#include "gui/track_strip.hpp"
 #include "rdsf/analysis/overlay.hpp"
 #include "label_keys.hpp"
 
@@ -111,6 +112,32 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   if (!extra.empty()) put(canvas, extra, {kMargin, status_y + 54}, 0.55, kHighlight);
   put(canvas, label_keys::legend(), {kMargin, status_y + 80}, 0.55, kDim);
   return canvas;
+}
+
+cv::Mat3b add_track_strip(const cv::Mat3b& screen, const PresentedCandidate& asked,
+                          const std::vector<PresentedCandidate>& track) {
+  if (track.empty()) return screen;
+  std::vector<gui::StripCrop> crops;
+  std::size_t asked_at = 0;
+  bool placed = false;
+  for (const PresentedCandidate& t : track) {
+    if (!placed && t.frame->ordinal > asked.frame->ordinal) {
+      asked_at = crops.size();
+      crops.push_back({asked.candidate().depth_crop, asked.frame->frame.name});
+      placed = true;
+    }
+    crops.push_back({t.candidate().depth_crop, t.frame->frame.name});
+  }
+  if (!placed) {
+    asked_at = crops.size();
+    crops.push_back({asked.candidate().depth_crop, asked.frame->frame.name});
+  }
+  char title[200];
+  std::snprintf(title, sizeof title, "track: %zu candidates in frames %s .. %s   y: all are this person   n: none is",
+                crops.size(), crops.front().frame.c_str(), crops.back().frame.c_str());
+  cv::Mat3b out;
+  cv::vconcat(screen, gui::render_track_strip(crops, asked_at, title, screen.cols), out);
+  return out;
 }
 
 }  // namespace rdsf

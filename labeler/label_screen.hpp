@@ -33,4 +33,9 @@ cv::Mat3b zoom_around(const cv::Mat3b& view, const cv::Rect& box, double zoom);
 
 cv::Mat3b render_label_screen(const PresentedCandidate& presented, const ScreenStatus& status);
 
+/// `screen` with the strip of the track one answer to `asked` would label (`track`, frame order, asked not
+/// among them) below it (gui/track_strip.hpp); `screen` itself when the track is empty.
+cv::Mat3b add_track_strip(const cv::Mat3b& screen, const PresentedCandidate& asked,
+                          const std::vector<PresentedCandidate>& track);
+
 }  // namespace rdsf

@@ -54,7 +54,11 @@ int main(int argc, char** argv) {
          "assisted mode: people with visible_fraction below this are don't-care (as rdsf-detect's evaluation): "
          "their candidates are asked, not answered")
         ("answers", po::value(&o.answers), "headless: read keys from this file (- = stdin) instead of a window")
-        ("keep-rejected", po::bool_switch(&o.session.keep_rejected), "store 'n' answers as negatives (label 0)");
+        ("keep-rejected", po::bool_switch(&o.session.keep_rejected), "store 'n' answers as negatives (label 0)")
+        ("per-track", po::bool_switch(&o.session.per_track),
+         "one answer per track (needs --ask uncertain): a y or n is given to the candidates on the same person's "
+         "track in the frames before and after while the track is sure (docs/adapting-to-your-room.md); the window "
+         "shows the track as a strip of crops; u undoes the whole track");
     options.add(rdsf::cli::camera_options(o.session.camera, calibration));
     options.add(rdsf::cli::analyser_options(o.session.analyser));
     po::variables_map values;
@@ -90,6 +94,9 @@ int main(int argc, char** argv) {
     }
     if (o.session.ask == rdsf::AskOrder::uncertain && o.model.empty() && !o.loop) {
       throw rdsf::cli::UsageError("--ask uncertain needs --model");
+    }
+    if (o.session.per_track && o.session.ask != rdsf::AskOrder::uncertain) {
+      throw rdsf::cli::UsageError("--per-track needs --ask uncertain (or --loop)");
     }
     if (o.budget < 0) throw rdsf::cli::UsageError("--budget must be 0 (no limit) or more");
     return rdsf::run_label(o);

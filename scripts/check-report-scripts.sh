@@ -13,11 +13,12 @@ expect() {  # exit code, pattern of stderr/stdout, command...
   grep -qE -e "$pattern" <<<"$output" || fail "$* printed no line matching '$pattern': $output"
 }
 empty=$(mktemp -d); trap 'rm -rf "$empty"' EXIT
-for s in quality-report regularisation-sweep; do
+for s in quality-report regularisation-sweep adaptation-benchmark; do
   expect 0 "default" "scripts/$s.sh" --help
   expect 2 "unknown argument '--bogus'" "scripts/$s.sh" --bogus
 done
 expect 2 "--test-frames takes a positive number" scripts/quality-report.sh --test-frames 0
+expect 2 "--synthetic takes 0-16" scripts/adaptation-benchmark.sh --synthetic 17
 expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only levers
 expect 1 "^regularisation-sweep: $empty has no quality report's data" scripts/regularisation-sweep.sh --out "$empty"
 [ -z "$(ls -A "$empty")" ] || fail "regularisation-sweep wrote into $empty although it refused it"

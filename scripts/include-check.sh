@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 flow="core frame segmentation candidates features analysis classifier tracking evaluation pipeline dataset labeling"
 # Beside the flow: what they may include.
 declare -A beside=([synth]="core frame")
-programs="detector synth miner labeler trainer recorder bench ros"
+programs="detector synth miner labeler trainer recorder bench ros adapt"
 
 allowed_library() {  # area -> the library folders it may include
   local area="$1" before=""

@@ -31,7 +31,10 @@ po::options_description train_options(TrainOptions& o) {
       ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "folder of models and recipes/")
       ("init", po::value(&o.init),
        "continue training MODEL (file, NAME or NAME/vN, e.g. the shipped 'people') on the given sets: --rounds "
-       "more weak classifiers after its own, its bins; the new model holds both. Default: none (from nothing)");
+       "more weak classifiers after its own, its bins; the new model holds both. Default: none (from nothing)")
+      ("provenance", po::value(&o.provenance)->composing(),
+       "KEY=VALUE recorded among the model file's training parameters (repeat; KEY of a-z, 0-9 and _), e.g. "
+       "the room and answers rdsf-adapt trained on");
   po::options_description how("Boosting (default: the recipe's value, else the one shown)");
   cli::add_override_options(how, boost_training_parameters(), BoostTrainingParams{}, o.boosting);
   how.add_options()

@@ -92,6 +92,17 @@ void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& vali
 }  // namespace
 
 int run_train(const TrainOptions& o) {
+  std::vector<std::pair<std::string, std::string>> provenance;  // checked before any work
+  for (const std::string& kv : o.provenance) {
+    const std::size_t eq = kv.find('=');
+    const std::string key = kv.substr(0, eq);
+    if (eq == std::string::npos || key.empty() ||
+        key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos ||
+        kv.find_first_of("\n\r") != std::string::npos) {
+      throw cli::UsageError("--provenance '" + kv + "': give KEY=VALUE, KEY of a-z, 0-9 and _, one line");
+    }
+    provenance.emplace_back(key, kv.substr(eq + 1));
+  }
   const Recipe recipe = effective_recipe(o);
   if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
   const std::string name = o.name.empty() ? recipe.name : o.name;
@@ -193,6 +204,7 @@ int run_train(const TrainOptions& o) {
   record.parameters.emplace_back("group_by", o.group_by);
   record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
   if (!init_reference.empty()) record.parameters.emplace_back("init", init_reference);
+  record.parameters.insert(record.parameters.end(), provenance.begin(), provenance.end());
 
   const std::string path = save_new_model_version(model, name, o.models_dir);
   const ValidationFigures& v = record.validation;

@@ -34,6 +34,8 @@ struct TrainOptions {
   /// Continued training: start from this model (path, NAME or NAME/vN; the shipped `people` too): the new
   /// rounds follow its weak classifiers, on the given sets; the new model keeps both. Empty: from nothing.
   std::string init;
+  /// Extra provenance recorded with the training parameters, "key=value" each (rdsf-adapt: room, answers, base).
+  std::vector<std::string> provenance;
   std::string inspect;      ///< model to describe instead of training
   int top = 20;             ///< --inspect: features listed
   std::string export_text;  ///< write the chosen samples here instead of training

@@ -76,6 +76,14 @@ AnswerJournal::AnswerJournal(const std::string& path) : path_(path) {
   }
 }
 
+char AnswerJournal::answer_of(const CandidateKey& key) const {
+  if (!answered(key)) return '\0';
+  for (auto it = in_force_.rbegin(); it != in_force_.rend(); ++it) {
+    if (it->key == key) return it->answer;
+  }
+  return '\0';
+}
+
 void AnswerJournal::append_line(const std::string& line) { append_line_synced(path_, line); }
 
 void AnswerJournal::record(const JournalEntry& e) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <filesystem>
 #include <numeric>
+#include <set>
 #include <unordered_set>
 
 #include "rdsf/candidates/candidate_finder.hpp"
@@ -50,6 +51,9 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
         config_.accept_probability <= 1)) {
     throw Error("--accept " + std::to_string(config_.accept_probability) + " must be at least --reject " +
                 std::to_string(config_.reject_probability) + ", both in [0, 1]");
+  }
+  if (config_.per_track && config_.ask != AskOrder::uncertain) {
+    throw Error("one answer per track needs the uncertain ask order (the whole session read first)");
   }
   if (model_ != nullptr && !(model_->feature_spec() == writer_.manifest().feature_spec)) {
     throw Error(model_->path() + ": the model reads feature spec " + model_->feature_spec().hash() +
@@ -132,6 +136,7 @@ void LabelingSession::start_prefetch() {
 
 void LabelingSession::take_frame(std::shared_ptr<const LoadedFrame> frame) {
   ++stats_.frames_loaded;
+  if (config_.per_track) frames_.push_back(frame);
   std::vector<std::size_t> order(frame->analysis.candidates.size());
   std::iota(order.begin(), order.end(), 0);
   if (config_.order_by_score && !frame->scores.empty()) {
@@ -235,8 +240,20 @@ void LabelingSession::rescore(const BoostedModel& model, bool may_answer) {
     }
     p.frame = copy;
   }
+  for (auto& frame : frames_) {  // per_track: the score gate reads every frame's new probabilities
+    auto& copy = rescored[frame.get()];
+    if (!copy) {
+      copy = std::make_shared<LoadedFrame>(*frame);
+      score(*copy);
+    }
+    frame = copy;
+  }
+  auto renew = [&rescored](PresentedCandidate& p) {
+    if (auto it = rescored.find(p.frame.get()); it != rescored.end()) p.frame = it->second;
+  };
   for (Given& g : history_) {
-    if (auto it = rescored.find(g.presented.frame.get()); it != rescored.end()) g.presented.frame = it->second;
+    renew(g.presented);
+    for (PresentedCandidate& t : g.track) renew(t);
   }
   std::deque<PresentedCandidate> kept;
   const bool answers = config_.model_answers;
@@ -309,6 +326,13 @@ bool LabelingSession::answer(char key) {
     if (history_.empty()) return false;
     Given last = history_.back();
     history_.pop_back();
+    for (std::size_t k = last.track.size(); k-- > 0;) {  // its track first, newest first
+      const JournalEntry& e = last.track_entries[k];
+      if (e.sample_id >= 0) writer_.retract(e.sample_id);
+      journal_.record_undo(e);
+      --(e.answer == 'y' ? stats_.propagated_positives : e.answer == 'n' ? stats_.propagated_negatives : stats_.propagated_skips);
+      queue_.push_back(last.track[k]);
+    }
     if (last.entry.sample_id >= 0) writer_.retract(last.entry.sample_id);
     journal_.record_undo(last.entry);
     switch (last.entry.answer) {
@@ -340,9 +364,82 @@ bool LabelingSession::answer(char key) {
   }
   const JournalEntry entry{p.key(), key, id, "human"};
   journal_.record(entry);
-  history_.push_back({p, entry});
+  history_.push_back({p, entry, {}, {}});
   queue_.pop_front();
+  if (config_.per_track) propagate(history_.back());
   return true;
+}
+
+PropagatedTrack LabelingSession::follow(const PresentedCandidate& p, char answer, std::size_t& first_frame) const {
+  // The frames of p's source (frames_ holds the session's frames in order, ordinal 1, 2, ...).
+  const auto at = static_cast<std::size_t>(p.frame->ordinal - 1);
+  std::size_t first = at, last = at;
+  while (first > 0 && frames_[first - 1]->source == p.frame->source) --first;
+  while (last + 1 < frames_.size() && frames_[last + 1]->source == p.frame->source) ++last;
+  std::vector<std::vector<TrackCandidate>> frames;
+  for (std::size_t f = first; f <= last; ++f) {
+    const LoadedFrame& lf = *frames_[f];
+    std::vector<TrackCandidate> candidates;
+    for (std::size_t i = 0; i < lf.analysis.candidates.size(); ++i) {
+      const Candidate& c = lf.analysis.candidates[i];
+      candidates.push_back({c.strict_box, c.layer_depth_mm, lf.probabilities.empty() ? -1.0 : lf.probabilities[i]});
+    }
+    frames.push_back(std::move(candidates));
+  }
+  first_frame = first;
+  const AnswerOf answer_of = [&](const TrackLink& l) {
+    return journal_.answer_of(PresentedCandidate{frames_[first + l.frame], l.index}.key());
+  };
+  return propagate_track(frames, {at - first, p.index}, answer, config_.propagation, config_.camera, answer_of);
+}
+
+std::vector<PresentedCandidate> LabelingSession::track_preview(char answer) const {
+  std::vector<PresentedCandidate> track;
+  if (!config_.per_track || queue_.empty() || frames_.empty()) return track;
+  std::size_t first = 0;
+  for (const TrackLink& l : follow(queue_.front(), answer, first).labelled) {
+    track.push_back({frames_[first + l.frame], l.index});
+  }
+  return track;
+}
+
+void LabelingSession::propagate(Given& given) {
+  if (frames_.empty()) return;
+  std::size_t first = 0;
+  const PropagatedTrack track = follow(given.presented, given.entry.answer, first);
+  const std::string by = track_answerer(given.entry.key);
+  std::set<std::pair<const LoadedFrame*, std::size_t>> labelled;
+  for (const TrackLink& l : track.labelled) {
+    const PresentedCandidate p{frames_[first + l.frame], l.index};
+    const bool yes = given.entry.answer == 'y', skip = given.entry.answer == 's';
+    const std::int64_t id = skip ? -1 : yes || config_.keep_rejected ? store(p, yes ? 1 : 0, "labeler-track") : -1;
+    const JournalEntry e{p.key(), given.entry.answer, id, by};
+    journal_.record(e);
+    given.track.push_back(p);
+    given.track_entries.push_back(e);
+    labelled.insert({p.frame.get(), p.index});
+    if (skip) {
+      ++stats_.propagated_skips;
+      continue;
+    }
+    ++(yes ? stats_.propagated_positives : stats_.propagated_negatives);
+    if (const char truth = oracle_key(p); truth == 's') {
+      ++stats_.propagated_in_band;
+    } else if (truth != '\0' && truth != given.entry.answer) {
+      ++stats_.propagated_wrong;
+    }
+  }
+  // The track's candidates leave the queue; where it became unsure is asked next.
+  std::set<std::pair<const LoadedFrame*, std::size_t>> ask;
+  for (const TrackLink& l : track.ask) ask.insert({frames_[first + l.frame].get(), l.index});
+  std::deque<PresentedCandidate> front, rest;
+  for (const PresentedCandidate& p : queue_) {
+    const std::pair<const LoadedFrame*, std::size_t> id{p.frame.get(), p.index};
+    if (labelled.count(id) != 0) continue;
+    (ask.count(id) != 0 ? front : rest).push_back(p);
+  }
+  front.insert(front.end(), rest.begin(), rest.end());
+  queue_ = std::move(front);
 }
 
 std::size_t LabelingSession::sure_count() const {

@@ -38,8 +38,8 @@ TempDir::~TempDir() {
 }
 
 std::string program(const std::string& name) {
-  static const std::array<const char*, 8> folders = {"detector", "synth", "miner", "labeler",
-                                                     "review", "trainer", "recorder", "bench"};
+  static const std::array<const char*, 9> folders = {"detector", "synth", "miner", "labeler",
+                                                     "review", "trainer", "recorder", "bench", "adapt"};
   for (const char* folder : folders) {
     const std::filesystem::path candidate = std::filesystem::path(RDSF_BINARY_DIR) / folder / name;
     if (std::filesystem::exists(candidate)) return candidate.string();

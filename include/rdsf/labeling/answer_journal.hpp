@@ -39,11 +39,15 @@ class AnswerJournal {
   explicit AnswerJournal(const std::string& path);
 
   bool answered(const CandidateKey& key) const { return answered_.count(key) > 0; }
+  /// The answer in force for `key` ('y', 'n', 's'), '\0' when none.
+  char answer_of(const CandidateKey& key) const;
   /// Appends an answer (flushed and synced before returning).
   void record(const JournalEntry& entry);
   /// Appends an undo of `undone`'s answer (the most recent one in force for its candidate).
   void record_undo(const JournalEntry& undone);
   std::size_t answers_in_force() const { return in_force_.size(); }
+  /// The answers in force (replayed and recorded, undone ones removed), oldest first.
+  const std::vector<JournalEntry>& in_force() const { return in_force_; }
   /// Finishes undos cut short: an answer in force whose sample is no longer in the set (`in_set` says which
   /// ids are) was undone there (the retraction is written first) but its journal line was lost to a failed
   /// write or a power cut; its undo is appended now. Returns how many.

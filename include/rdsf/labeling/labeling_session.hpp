@@ -18,6 +18,11 @@
 // source first (on the read-ahead thread) and presents the whole session's candidates closest to P = 0.5
 // first, ties in frame order (without a model yet: in a seeded random order). rescore() replaces the model
 // mid-session (the active-learning loop).
+// Per track (per_track, uncertain order only): a human y or n is followed through the frames before and
+// after by track propagation (track_propagation.hpp, the rule there) and every candidate on the sure part
+// of the track gets the same answer (origin "labeler-track", journalled with by = "track FRAME X,Y,W,H");
+// the candidates where the track became unsure are presented next. Undo of the answer undoes them all. A
+// skip (s) is propagated too: the track is not presented again, nothing is stored.
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -34,6 +39,7 @@
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
+#include "rdsf/labeling/track_propagation.hpp"
 
 namespace rdsf {
 
@@ -75,6 +81,9 @@ struct LabelingConfig {
   /// The truth is the person (benchmarks): it answers only the candidates presented (as a human answer,
   /// see oracle_key()) instead of the sure ones silently.
   bool truth_is_oracle = false;
+  /// One answer per track (the header's comment); needs ask == uncertain (the whole session is read first).
+  bool per_track = false;
+  PropagationParams propagation;
   AnalyserParams analyser;
   CameraModel camera;
 };
@@ -105,6 +114,10 @@ struct LabelingStats {
   /// and those in the truth's uncertain band (neither right nor wrong)
   long model_wrong = 0, model_in_band = 0;
   long already_answered = 0;                                                 ///< skipped on resume
+  /// per_track: labels given by propagation, and (with truth) those the truth contradicts or leaves in
+  /// its uncertain band
+  long propagated_positives = 0, propagated_negatives = 0, propagated_wrong = 0, propagated_in_band = 0;
+  long propagated_skips = 0;  ///< per_track: candidates skipped with a skipped one (nothing stored)
   long unanswered = 0;      ///< presented but left without an answer (answers ran out)
   std::int64_t frames_loaded = 0;
   long answers() const { return positives + negatives + skipped; }
@@ -155,12 +168,21 @@ class LabelingSession {
   /// Lets the current model answer every pending candidate it is sure about (the loop's end); returns how
   /// many it answered.
   std::size_t finish_with_model();
+  /// per_track: the candidates an answer `answer` to the current candidate would label too (the track the
+  /// window shows as a strip), frame order; empty otherwise.
+  std::vector<PresentedCandidate> track_preview(char answer = 'y') const;
 
  private:
   struct Given {
     PresentedCandidate presented;
     JournalEntry entry;
+    std::vector<PresentedCandidate> track;  ///< per_track: labelled by propagation from this answer
+    std::vector<JournalEntry> track_entries;
   };
+  /// per_track: the track of `p` answered `answer` over the frames of its source.
+  PropagatedTrack follow(const PresentedCandidate& p, char answer, std::size_t& first_frame) const;
+  /// per_track: labels the track of the answer just given (`given`), presents its unsure ends next.
+  void propagate(Given& given);
   std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread: read_next + analyse_loaded
   std::shared_ptr<LoadedFrame> read_next();  // the next frame of the sources, read; null at the end (in order)
   void analyse_loaded(LoadedFrame& frame) const;  // candidates, scores, truth (any thread)
@@ -190,6 +212,7 @@ class LabelingSession {
   std::deque<PresentedCandidate> queue_;
   std::uint64_t reorders_ = 0;  ///< exploration draws a new random order each time
   std::vector<Given> history_;
+  std::vector<std::shared_ptr<const LoadedFrame>> frames_;  ///< per_track: every frame, in session order
   LabelingStats stats_;
 };
 

@@ -1,0 +1,300 @@
+#include "adapt/adapt_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <iostream>
+#include <set>
+
+#include "adapt/adapt_state.hpp"
+#include "adapt/run_program.hpp"
+#include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
+#include "rdsf/pipeline/room_presence.hpp"
+
+namespace rdsf {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct Paths {
+  std::string negatives, room, logs;
+  explicit Paths(const std::string& out)
+      : negatives((fs::path(out) / "sets" / "room-negatives").string()),
+        room((fs::path(out) / "sets" / "room").string()),
+        logs((fs::path(out) / "logs").string()) {}
+  std::string log(const std::string& step) const { return (fs::path(logs) / (step + ".log")).string(); }
+};
+
+void say(const std::string& line) { std::cerr << "rdsf-adapt: " << line << "\n"; }
+
+// Runs a sibling program; a failure is one line: the program's own last line and where the log is.
+void run_step_program(const std::string& program, const std::vector<std::string>& args, const std::string& log) {
+  const int code = run_program(sibling_program(program), args, log);
+  if (code == 0) return;
+  const std::vector<std::string> last = log_lines(log, program + ": ", 1);
+  throw Error(program + " failed (exit " + std::to_string(code) + "): " +
+              (last.empty() ? std::string("see ") + log : last.back() + " (log: " + log + ")"));
+}
+
+// The room must come from the camera the model's crops were cut from (640x480 depth in millimetres), and the
+// truth must name only frames of the room (source or eval). Checked before anything is written.
+void check_room(const AdaptOptions& o, const BoostedModel& model) {
+  std::set<std::string> names;
+  for (const std::string& spec : {o.source, o.eval}) {
+    if (spec.empty()) continue;
+    auto frames = open_frame_source(spec);
+    DepthFrame frame;
+    bool first = true;
+    while (frames->next(frame)) {
+      if (first) {
+        if (frame.width_px() != 640 || frame.height_px() != 480) {
+          fail(spec, "frames are " + std::to_string(frame.width_px()) + "x" + std::to_string(frame.height_px()) +
+                         ": " + model_reference(model) + " was trained on crops of 640x480 Kinect-class depth frames");
+        }
+        std::vector<std::uint16_t> valid;
+        for (auto it = frame.depth_mm.begin(); it != frame.depth_mm.end(); ++it) {
+          if (*it > 0) valid.push_back(*it);
+        }
+        std::nth_element(valid.begin(), valid.begin() + static_cast<long>(valid.size() / 2), valid.end());
+        const int median = valid.empty() ? 0 : valid[valid.size() / 2];
+        if (median < 300 || median > 12000) {
+          fail(spec, "depth values (median " + std::to_string(median) + ") are not millimetres of a Kinect-class camera "
+                     "like the crops of " + model_reference(model));
+        }
+        first = false;
+      }
+      if (o.truth.empty()) break;
+      names.insert(frame.name);
+    }
+    if (first) fail(spec, "no frames");
+  }
+  if (o.truth.empty()) return;
+  const GroundTruth truth = read_ground_truth(o.truth);
+  for (const auto& [frame, people] : truth.frames) {
+    if (!people.empty() && names.count(frame) == 0) {
+      fail(o.truth, "frame '" + frame + "' is not in " + o.source + (o.eval.empty() ? "" : " nor " + o.eval));
+    }
+  }
+}
+
+// A list file of the room's frames taken as empty (absolute paths), for rdsf-mine.
+std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presence) {
+  std::map<std::string, std::string> path_of;  // frame name -> depth PNG
+  if (fs::is_directory(o.source)) {
+    for (const std::string& name : presence.frames) {
+      path_of[name] = fs::absolute(fs::path(o.source) / (name + ".depth.png")).string();
+    }
+  } else {  // a list file: its lines, relative to its folder
+    std::ifstream in(o.source);
+    for (std::string line; std::getline(in, line);) {
+      if (line.empty() || line[0] == '#') continue;
+      const fs::path p = fs::absolute(fs::path(o.source).parent_path() / line);
+      std::string stem = p.filename().string();
+      stem = stem.substr(0, stem.find(".depth.png"));
+      path_of[stem] = p.string();
+    }
+  }
+  const std::string list = (fs::path(o.out) / "empty-frames.txt").string();
+  AtomicTextFile file(list, /*overwrite=*/true);
+  for (std::size_t f = 0; f < presence.frames.size(); ++f) {
+    if (presence.empty[f] == 0) continue;
+    const auto it = path_of.find(presence.frames[f]);
+    if (it == path_of.end()) fail(o.source, "frame '" + presence.frames[f] + "': its file is not known (give a folder)");
+    file.stream() << it->second << "\n";
+  }
+  file.commit();
+  return list;
+}
+
+// Step 1: the room's negatives, the model's false positives first.
+void room_negatives(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
+  const std::string scanned = o.empty.empty() ? o.source : o.empty;
+  const RoomPresence presence = scan_room_presence(scanned, model, PipelineParams{}, CameraModel::kinect_v1());
+  const PresenceParams rule;
+  std::string source = o.empty;
+  if (!o.empty.empty()) {
+    if (presence.longest_confident_track >= rule.confident_track_frames) {
+      fail(o.empty, "not empty: " + model_reference(model) + " follows a person over " +
+                        std::to_string(presence.longest_confident_track) + " frames with P(person) >= " +
+                        std::to_string(rule.confident_probability).substr(0, 4) + " (up to frame " +
+                        presence.confident_track_end + "); give a recording without people, or none");
+    }
+    say(o.empty + ": nobody followed over " + std::to_string(rule.confident_track_frames) + " frames (longest " +
+        std::to_string(presence.longest_confident_track) + ")");
+  } else {
+    say(std::to_string(presence.empty_frames()) + " of " + std::to_string(presence.frames.size()) +
+        " frames taken as empty (no candidate with P >= 0.2 within 15 frames, runs of 10 frames or more)");
+    if (!o.truth.empty()) {  // how often that took a person as empty
+      const GroundTruth truth = read_ground_truth(o.truth);
+      long with_people = 0, people = 0;
+      for (std::size_t f = 0; f < presence.frames.size(); ++f) {
+        if (presence.empty[f] == 0) continue;
+        const std::size_t n = truth.in(presence.frames[f]).size();
+        with_people += n > 0 ? 1 : 0;
+        people += static_cast<long>(n);
+      }
+      say("truth: " + std::to_string(with_people) + " of the frames taken as empty have people (" +
+          std::to_string(people) + " boxes)");
+      state.set("empty.frames_with_people", std::to_string(with_people));
+    }
+    state.set("empty.frames", std::to_string(presence.empty_frames()));
+    if (presence.empty_frames() == 0) return;
+    source = write_empty_frames(o, presence);
+  }
+  char min_score[32];
+  std::snprintf(min_score, sizeof min_score, "%.6g", model.calibration().score_at(0.5));
+  const std::vector<std::string> common{"--source", source, "--out", paths.negatives, "--threads",
+                                        std::to_string(o.threads)};
+  std::vector<std::string> hard = common;  // the model's false positives first, then every other candidate
+  hard.insert(hard.end(), {"--model", o.model, "--models-dir", o.models_dir, "--min-score", min_score});
+  run_step_program("rdsf-mine", hard, paths.log("negatives"));
+  run_step_program("rdsf-mine", common, paths.log("negatives"));
+  state.set("negatives", paths.negatives);
+}
+
+struct Answers {
+  long human = 0, propagated = 0;
+};
+
+Answers count_answers(const std::string& room_set) {
+  Answers a;
+  const fs::path journal = fs::path(room_set) / "labeler-answers.tsv";
+  if (!fs::exists(journal)) return a;
+  const AnswerJournal answers(journal.string());
+  for (const JournalEntry& e : answers.in_force()) {
+    a.human += e.by == "human" ? 1 : 0;
+    a.propagated += e.by.rfind("track ", 0) == 0 ? 1 : 0;
+  }
+  return a;
+}
+
+// Step 2: the person answers what the model is unsure of, one answer per track, within the budget.
+void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
+  const long left = o.budget - count_answers(paths.room).human;  // a resumed run spends only the rest
+  if (left > 0) {
+    std::vector<std::string> args{"--source", o.source, "--out", paths.room, "--model", o.model, "--models-dir",
+                                  o.models_dir, "--ask", "uncertain", "--keep-rejected", "--budget",
+                                  std::to_string(left), "--threads", std::to_string(o.threads)};
+    if (!o.per_candidate) args.push_back("--per-track");
+    if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
+    if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
+    const bool window = o.truth.empty() && o.answers.empty();
+    run_step_program("rdsf-label", args, window ? std::string() : paths.log("answers"));
+  }
+  const Answers a = count_answers(paths.room);
+  state.set("answers.human", std::to_string(a.human));
+  state.set("answers.propagated", std::to_string(a.propagated));
+  say(std::to_string(a.human) + " answers given, " + std::to_string(a.propagated) + " labels propagated along tracks");
+}
+
+// Step 3: the room's samples with the base sets; the new model's path goes to the state.
+void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
+  std::vector<std::string> args{"--models-dir", o.models_dir, "--name", o.name, "--pos", paths.room};
+  args.insert(args.end(), o.base_pos.begin(), o.base_pos.end());
+  args.push_back("--neg");
+  if (!state.get("negatives").empty()) args.push_back(paths.negatives);
+  args.push_back(paths.room);
+  args.insert(args.end(), o.base_neg.begin(), o.base_neg.end());
+  const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : 10;
+  // One held-out fifth for validation and calibration (--folds 0): K fold models would cost K trainings.
+  args.insert(args.end(), {"--rounds", std::to_string(rounds), "--folds", "0"});
+  if (!o.retrain) args.insert(args.end(), {"--init", o.model});
+  // Without a base, one room's few samples cannot be split by groups of frames: validation takes samples.
+  if (o.base_pos.empty() && o.base_neg.empty()) args.insert(args.end(), {"--group-frames", "0"});
+  std::string base;
+  for (const std::string& s : o.base_pos) base += (base.empty() ? "" : " ") + s;
+  for (const std::string& s : o.base_neg) base += (base.empty() ? "" : " ") + s;
+  for (const std::string& kv : {"adapted_room=" + fs::absolute(o.source).string(),
+                                "adapted_from=" + model_reference(model),
+                                "adapted_answers=" + state.get("answers.human") + " human, " +
+                                    state.get("answers.propagated") + " propagated",
+                                "adapted_base=" + (base.empty() ? std::string("none") : base)}) {
+    args.insert(args.end(), {"--provenance", kv});
+  }
+  const auto t0 = Clock::now();
+  run_step_program("rdsf-train", args, paths.log("train"));
+  const std::vector<std::string> wrote = log_lines(paths.log("train"), "rdsf-train: wrote ", 1);
+  if (wrote.empty()) throw Error(paths.log("train") + ": rdsf-train did not say which file it wrote");
+  const std::string path = wrote.back().substr(std::string("rdsf-train: wrote ").size());
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.1f", std::chrono::duration<double>(Clock::now() - t0).count());
+  state.set("model", path);
+  state.set("train_seconds", seconds);
+  say("trained " + path + " in " + seconds + " s (" + (o.retrain ? "from nothing" : "continuing " + o.model) + ")");
+}
+
+// TAR at FPPF <= 0.1 of `model` on the eval frames (rdsf-detect's exact curve).
+std::string tar_on_eval(const AdaptOptions& o, const std::string& model, const std::string& dir, const Paths& paths) {
+  run_step_program("rdsf-detect", {"--source", o.eval, "--truth", o.truth, "--model", model, "--models-dir",
+                                   o.models_dir, "--report-dir", dir, "--force"},
+                   paths.log("report"));
+  std::ifstream in(fs::path(dir) / "summary.txt");
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t at = line.find("exact curve: TAR ");
+    if (at != std::string::npos) return line.substr(at + 17, line.find(' ', at + 17) - at - 17);
+  }
+  throw Error(dir + "/summary.txt: no TAR at FPPF <= 0.1 in it");
+}
+
+// Step 4: before / after on held-out frames, else the answers and the new model's own validation.
+void report(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
+  const BoostedModel adapted = BoostedModel::load(state.get("model"));
+  const RocSummary& v = adapted.training().validation.summary;
+  char line[400];
+  std::snprintf(line, sizeof line, "%s: %s answers, %s labels propagated, trained in %s s; validation AUC %.4f, TAR %.3f at FAR 1%%",
+                state.get("model").c_str(), state.get("answers.human").c_str(), state.get("answers.propagated").c_str(),
+                state.get("train_seconds").c_str(), v.auc, v.tar_at_far_1);
+  std::string text = std::string(line) + "\n";
+  if (!o.truth.empty() && !o.eval.empty()) {
+    const fs::path dir = fs::path(o.out) / "report";
+    const std::string before = tar_on_eval(o, o.model, (dir / "before").string(), paths);
+    const std::string after = tar_on_eval(o, state.get("model"), (dir / "after").string(), paths);
+    state.set("tar_before", before);
+    state.set("tar_after", after);
+    text += "TAR at FPPF <= 0.1 on " + o.eval + ": before " + before + " (" + o.model + "), after " + after + "\n";
+  }
+  AtomicTextFile file((fs::path(o.out) / "report.txt").string(), /*overwrite=*/true);
+  file.stream() << text;
+  file.commit();
+  std::cerr << text;
+}
+
+void step(AdaptState& state, const std::string& name, const std::function<void()>& work) {
+  if (state.done(name)) {
+    say(name + ": done before (" + state.path() + ")");
+    return;
+  }
+  say(name + " ...");
+  work();
+  state.mark_done(name);
+}
+
+}  // namespace
+
+int run_adapt(const AdaptOptions& o) {
+  const BoostedModel model = BoostedModel::load(o.model, o.models_dir);
+  check_room(o, model);  // bad input is refused before anything is written
+  AdaptState state(o.out);
+  state.pin("room", fs::absolute(o.source).string());
+  state.pin("name", o.name);
+  const Paths paths(o.out);
+  fs::create_directories(paths.logs);
+  step(state, "negatives", [&] { room_negatives(o, model, state, paths); });
+  step(state, "answers", [&] { room_answers(o, state, paths); });
+  step(state, "train", [&] { train_room_model(o, model, state, paths); });
+  step(state, "report", [&] { report(o, state, paths); });
+  return 0;
+}
+
+}  // namespace rdsf

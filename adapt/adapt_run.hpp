@@ -1,0 +1,38 @@
+#pragma once
+// rdsf-adapt's work: a room's own detector from the fewest answers, in steps that each run one of the
+// workbench's programs (docs/adapting-to-your-room.md), resumable after a kill (adapt_state.hpp):
+//   1. negatives  the room's people-free frames mined (rdsf-mine): the --empty recording, the shipped
+//                 model's false positives (hard negatives) first; without one, the stretches of the room
+//                 recording where the model and the tracker see nobody (pipeline/room_presence.hpp)
+//   2. answers    the model answers what it is sure of, the person the rest, most uncertain first, one
+//                 answer per track, within --budget (rdsf-label --ask uncertain --per-track)
+//   3. train      the room's samples with the base sets, continuing the model (--init) or from nothing
+//                 (rdsf-train), saved as a new version of --name with the room, answers and base recorded
+//   4. report     before / after on held-out frames with --truth and --eval (rdsf-detect), else the
+//                 answers spent and the new model's validation
+#include <string>
+#include <vector>
+
+namespace rdsf {
+
+struct AdaptOptions {
+  std::string source;   ///< the room recording (frames with people)
+  std::string empty;    ///< the room without people (optional)
+  std::string out;      ///< work folder: state, sample sets, logs, report
+  std::string name;     ///< the adapted model's name (a new version of it is written)
+  std::string model = "people";  ///< the model to adapt (file, NAME or NAME/vN)
+  std::string models_dir = "models";
+  long budget = 50;     ///< human answers at most
+  std::string truth;    ///< boxes.csv: the truth is the person (headless) and the report's truth
+  std::string answers;  ///< headless keys (rdsf-label --answers); neither: the window
+  std::string eval;     ///< held-out frames of the room for the report (with truth)
+  bool per_candidate = false;  ///< ask every candidate (no propagation; the benchmark's comparison)
+  bool retrain = false;        ///< train from nothing instead of continuing the model
+  int rounds = 0;              ///< 0: 10 continuing (30 made the lab room worse), 100 retraining
+  std::vector<std::string> base_pos, base_neg;  ///< the synthetic base sample sets
+  int threads = 0;
+};
+
+int run_adapt(const AdaptOptions& options);
+
+}  // namespace rdsf

@@ -1,0 +1,57 @@
+// rdsf-adapt: a detector for a lab's own room from the fewest answers: room negatives, the person's answers
+// (one per track), training on the room's samples with the synthetic base, a report. Resumable.
+#include "adapt/adapt_chart.hpp"
+#include "adapt/adapt_run.hpp"
+#include "cli/cli.hpp"
+
+int main(int argc, char** argv) {
+  return rdsf::cli::run("rdsf-adapt", [&] {
+    namespace po = rdsf::cli::po;
+    rdsf::AdaptOptions o;
+    std::string chart, chart_png;
+    po::options_description options("rdsf-adapt");
+    options.add_options()
+        ("source", po::value(&o.source), "the room recording, with people (folder, list file, .oni)")
+        ("empty", po::value(&o.empty),
+         "the room without people (mined whole; refused when the model follows a person in it over 5 frames). "
+         "Default: none (the stretches of --source where the model and the tracker see nobody)")
+        ("out", po::value(&o.out), "work folder: adapt-state.tsv, sets/, logs/, report.txt (rerun to resume)")
+        ("name", po::value(&o.name), "the adapted model's name: saved as MODELS/NAME/vN.yml")
+        ("model", po::value(&o.model)->default_value(o.model), "the model to adapt (file, NAME or NAME/vN)")
+        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up and saved")
+        ("budget", po::value(&o.budget)->default_value(o.budget), "human answers at most (at least 1)")
+        ("truth", po::value(&o.truth),
+         "boxes.csv of the room: the truth is the person (headless, answers counted) and, with --eval, the report's")
+        ("answers", po::value(&o.answers), "headless: the person's keys from this file (- = stdin); default: a window")
+        ("eval", po::value(&o.eval), "held-out frames of the room for the before / after report (needs --truth)")
+        ("per-candidate", po::bool_switch(&o.per_candidate), "ask every candidate, no propagation along tracks")
+        ("retrain", po::bool_switch(&o.retrain), "train from nothing instead of continuing --model")
+        ("rounds", po::value(&o.rounds)->default_value(o.rounds), "boosting rounds (0: 10 continuing, 100 retraining)")
+        ("base-pos", po::value(&o.base_pos)->multitoken(), "the synthetic base's positive sample set(s)")
+        ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)")
+        ("threads", po::value(&o.threads)->default_value(o.threads), "threads of each step (0: one per core)")
+        ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")
+        ("chart-png", po::value(&chart_png), "with --chart: the picture to write");
+    po::variables_map values;
+    const rdsf::cli::ProgramInfo info{
+        "rdsf-adapt", "--source ROOM [--empty EMPTY] --out DIR --name NAME [--budget N] [--truth boxes.csv [--eval HELD_OUT]]",
+        "Adapts a model to a room in four resumable steps, each one of the workbench's programs: negatives\n"
+        "(rdsf-mine), the person's answers, one per track (rdsf-label --per-track), training (rdsf-train --init),\n"
+        "report (rdsf-detect). Killed, it resumes at the step it was in; nothing answered is lost.\n"
+        "docs/adapting-to-your-room.md"};
+    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    if (!chart.empty()) {
+      if (chart_png.empty()) throw rdsf::cli::UsageError("--chart needs --chart-png");
+      rdsf::write_adaptation_chart(chart, chart_png);
+      return 0;
+    }
+    if (o.source.empty() || o.out.empty() || o.name.empty()) {
+      throw rdsf::cli::UsageError("give --source ROOM, --out DIR and --name NAME (see rdsf-adapt --help)");
+    }
+    if (o.budget < 1) throw rdsf::cli::UsageError("--budget " + std::to_string(o.budget) + ": adapting needs answers, give 1 or more");
+    if (!o.eval.empty() && o.truth.empty()) throw rdsf::cli::UsageError("--eval needs --truth");
+    if (!o.truth.empty() && !o.answers.empty()) throw rdsf::cli::UsageError("give --truth (the truth answers) or --answers, not both");
+    if (o.rounds < 0) throw rdsf::cli::UsageError("--rounds must be 0 (the default) or more");
+    return rdsf::run_adapt(o);
+  });
+}

@@ -1,0 +1,83 @@
+#pragma once
+// One answer per track: a candidate the person answered is followed forwards and backwards through the
+// frames of its recording, and the candidates on its track get the same answer while the track is sure.
+//
+// The rule, between consecutive frames f and g = f +- 1 (t: the track's candidate in f, c: one in g):
+//   c passes the gates from t when
+//     IoU(t.box, c.box) >= min_iou                                         (overlap)
+//     |t.depth_mm - c.depth_mm| <= max_depth_step_mm                       (depth continuity)
+//     lkh(t, c) <= max_lkh, the tracker's match score (tracking/tracker.hpp, colour term dropped:
+//       d_cm / 98 - 1 / 49 with d_cm between the two centroids)           (the tracker's matching)
+//     and, when candidates have a probability (a model scored them): c.probability >= min_yes_probability
+//     for a 'y' track, <= max_no_probability for an 'n' track             (score)
+//   the link t -> c is sure when c is the best of g's candidates passing the gates from t (highest IoU),
+//   every other one of them has an IoU with t at least ambiguity_margin lower, and the same holds back from
+//   c among f's candidates (t best, runner-up at least ambiguity_margin lower): two people crossing, or a
+//   person and a piece of them, make both directions ambiguous and the track stops there.
+// The track stops at the first frame with no sure link; the candidates that passed the gates there (there
+// is at least one when the stop was an ambiguity) are returned as the ones to ask. It also stops at a
+// candidate answered otherwise before (answer_of gives another answer), and goes through (without
+// relabelling) one answered the same. Frames are one recording in time order; a gap (another recording,
+// a skipped frame) must be a frame without candidates.
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "rdsf/frame/camera_model.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
+
+namespace rdsf {
+
+struct PropagationParams {
+  /// Strict boxes of consecutive frames. 0.4 / 0.1 and 0.5 / 0.2 wrote the same 3 wrong labels on 16 synthetic
+  /// rooms (0.33 %, of 899 and 847 propagated; docs/adapting-to-your-room.md); 0.4 / 0.1 asked 655 instead of 722.
+  double min_iou = 0.4;
+  double ambiguity_margin = 0.1;     ///< the runner-up's IoU must be this much below the best's
+  double max_depth_step_mm = 300;    ///< layer depth change between consecutive frames
+  double max_lkh = 0.39;             ///< tracker lkh without colour: centroids at most 40 cm apart
+  double min_yes_probability = 0.05; ///< a 'y' track does not enter a candidate the model rejects this surely
+  double max_no_probability = 0.95;  ///< an 'n' track does not enter a candidate the model accepts this surely
+  int max_frames = 0;                ///< frames followed in each direction (0: no limit)
+};
+
+/// What propagation needs of a candidate.
+struct TrackCandidate {
+  cv::Rect box;              ///< strict box, pixels
+  double depth_mm = 0;       ///< layer depth
+  double probability = -1;   ///< P(person) of the model; < 0: not scored (no score gate)
+};
+
+/// A candidate: frame position in the recording and index among that frame's candidates.
+struct TrackLink {
+  std::size_t frame = 0, index = 0;
+  bool operator==(const TrackLink& o) const { return frame == o.frame && index == o.index; }
+};
+
+struct PropagatedTrack {
+  std::vector<TrackLink> labelled;  ///< candidates given the answer (the seed not included), frame order
+  std::vector<TrackLink> ask;       ///< candidates at the ends where the track was unsure (to be asked)
+};
+
+/// The answer already given a candidate: 'y', 'n', 's' or '\0' for none.
+using AnswerOf = std::function<char(const TrackLink&)>;
+
+/// True when c passes the gates from t for a track answered `answer` (the rule above).
+bool passes_track_gates(const TrackCandidate& t, const TrackCandidate& c, char answer, const PropagationParams& params,
+                        const CameraModel& camera);
+
+/// Follows `seed` (answered `answer`, 'y' or 'n') through `frames` both ways (the rule above).
+PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& frames, const TrackLink& seed,
+                                char answer, const PropagationParams& params, const CameraModel& camera,
+                                const AnswerOf& answer_of = {});
+
+/// The journal's "by" of labels propagated from the answer to `seed`: "track FRAME X,Y,W,H" (the seed's
+/// frame and strict box; the source is the entry's own). Undoing the seed's answer undoes every entry
+/// journalled with this "by" (propagated_from()).
+std::string track_answerer(const CandidateKey& seed);
+
+/// The entries in force in `journal` propagated from the answer to `seed`, oldest first.
+std::vector<JournalEntry> propagated_from(const AnswerJournal& journal, const CandidateKey& seed);
+
+}  // namespace rdsf

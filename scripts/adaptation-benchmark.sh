@@ -1,0 +1,183 @@
+#!/usr/bin/env bash
+# The adaptation benchmark (issue 35): how many answers a room costs and what its detector reaches, with
+# the truth as the person (every answer it gives is counted). For every room, its frames are split in time:
+# the earlier part is adapted on, the later part evaluated (TAR at FPPF <= 0.1, rdsf-detect's exact curve):
+#   none            the model as shipped (people/v2)
+#   negatives       continued (--init) on the room's negatives and the synthetic base
+#   per candidate   rdsf-adapt --per-candidate --budget B (every candidate the model is unsure of is asked)
+#   per track       rdsf-adapt --budget B (one answer per track), continuing people/v2 for 10 rounds
+#   retrain         per track at the largest budget, trained from nothing (100 rounds) instead
+# A synthetic room whose later half has no counted person (all out of view or less than half visible) has no
+# TAR: it is left out and the next room taken, so --synthetic N rooms are evaluated.
+# Rooms: the real ones in ../shared/realdata/people (lab: 24 frames in name order, 12 + 12, its two empty
+# frames as --empty; home: 22 frames, 11 + 11, no empty recording) and the first --synthetic N of the 16
+# held-out synthetic rooms of the quality report (seed 31, 60 frames each: 30 + 30, the same rooms rendered
+# empty as --empty). The base: the synthetic recording of seed 11 (--base-frames, default 600 frames, and
+# 300 empty), mined and labelled in assisted mode, far smaller than the shipped model's 18,000 frames.
+# Writes out/adaptation/REPORT.md (a table) and curve.png (answers against TAR); rerunning reuses the
+# recordings and sets, and each rdsf-adapt run resumes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+usage() {
+  cat <<USAGE
+Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B ..."] [--real DIR]
+  --out DIR        work folder (default out/adaptation)
+  --synthetic N    synthetic held-out rooms to use, 0-16 (default 4)
+  --budgets "..."  answer budgets of the per-candidate and per-track runs (default "10 50")
+  --real DIR       real frames with boxes.csv (default ../shared/realdata/people; its ../empty for the lab)
+USAGE
+}
+out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people
+while (($#)); do
+  case "$1" in
+    --out) out="$2"; shift 2 ;;
+    --synthetic) synthetic="$2"; shift 2 ;;
+    --budgets) budgets="$2"; shift 2 ;;
+    --real) real="$2"; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "adaptation-benchmark: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+case "$synthetic" in ''|*[!0-9]*) echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2 ;; esac
+((synthetic <= 16)) || { echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2; }
+
+bin=${RDSF_BUILD_DIR:-build}
+synth=$bin/synth/rdsf-synth mine=$bin/miner/rdsf-mine label=$bin/labeler/rdsf-label
+train=$bin/trainer/rdsf-train detect=$bin/detector/rdsf-detect adapt=$bin/adapt/rdsf-adapt
+data=$out/data sets=$out/sets models=$out/models rooms=$out/rooms
+mkdir -p "$data" "$sets" "$models" "$rooms"
+threads=2
+step() { printf '\n== %s\n' "$1" >&2; }
+
+step "the synthetic base and held-out rooms (reused when present)"
+[ -f "$data/base-train/synth.yml" ] ||
+  "$synth" --out "$data/base-train" --force --frames 600 --people 1..4 --seed 11 --clip-frames 15 >/dev/null 2>&1
+[ -f "$data/base-empty/synth.yml" ] ||
+  "$synth" --out "$data/base-empty" --force --frames 300 --people 1..4 --seed 11 --empty --clip-frames 15 >/dev/null 2>&1
+if ((synthetic > 0)); then
+  [ -f "$data/heldout/synth.yml" ] ||
+    "$synth" --out "$data/heldout" --force --frames 960 --people 1..4 --seed 31 --clip-frames 60 >/dev/null 2>&1
+  [ -f "$data/heldout-empty/synth.yml" ] ||
+    "$synth" --out "$data/heldout-empty" --force --frames 960 --people 1..4 --seed 31 --empty --clip-frames 60 >/dev/null 2>&1
+fi
+[ -f "$sets/base-neg/manifest.yml" ] || "$mine" --source "$data/base-empty" --out "$sets/base-neg" --threads $threads 2>/dev/null
+[ -f "$sets/base-pos/manifest.yml" ] ||
+  "$label" --source "$data/base-train" --out "$sets/base-pos" --truth "$data/base-train/boxes.csv" --answers /dev/null \
+    --keep-rejected 2>/dev/null
+
+# A room: NAME, then files adapt.txt, eval.txt, truth.csv and optionally empty.txt in $rooms/NAME.
+list() {  # folder, frame names... -> absolute paths, one a line
+  local dir; dir=$(cd "$1" && pwd); shift
+  for f in "$@"; do echo "$dir/$f.depth.png"; done
+}
+truth_of() {  # boxes.csv, frame names... -> their rows
+  local csv=$1; shift
+  head -1 "$csv"
+  printf '%s\n' "$@" | awk -F, 'NR == FNR { keep[$1] = 1; next } FNR > 1 && ($1 in keep)' - "$csv"
+}
+room_names=()
+make_room() {  # name, source folder, boxes.csv, split index, frame names...
+  local name=$1 folder=$2 csv=$3 split=$4; shift 4
+  local all=("$@") w=$rooms/$name
+  mkdir -p "$w"
+  list "$folder" "${all[@]:0:split}" > "$w/adapt.txt"
+  list "$folder" "${all[@]:split}" > "$w/eval.txt"
+  truth_of "$csv" "${all[@]}" > "$w/truth.csv"
+  room_names+=("$name")
+}
+if [ -f "$real/boxes.csv" ]; then
+  mapfile -t lab < <(cd "$real" && ls lab_*.depth.png | sed 's/\.depth\.png$//' | sort)
+  make_room lab "$real" "$real/boxes.csv" $(( ${#lab[@]} / 2 )) "${lab[@]}"
+  if [ -f "$real/../empty/lab_empty_lab.depth.png" ]; then
+    list "$real/../empty" lab_empty_lab lab_inside1 > "$rooms/lab/empty.txt"
+  fi
+  mapfile -t home < <(cd "$real" && ls home_*.depth.png | sed 's/\.depth\.png$//' | sort)
+  make_room home "$real" "$real/boxes.csv" $(( ${#home[@]} / 2 )) "${home[@]}"
+else
+  echo "adaptation-benchmark: $real/boxes.csv not found: real rooms skipped" >&2
+fi
+taken=0
+for ((r = 0; r < 16 && taken < synthetic; ++r)); do
+  names=()
+  for ((f = r * 60; f < r * 60 + 60; ++f)); do names+=("$(printf '%06d' "$f")"); done
+  counted=$(printf '%s\n' "${names[@]:30}" |
+            awk -F, 'NR == FNR { keep[$1] = 1; next } FNR > 1 && ($1 in keep) && $7 >= 0.5' - "$data/heldout/boxes.csv" | wc -l)
+  if ((counted == 0)); then echo "adaptation-benchmark: synthetic room $((r + 1)): nobody counted in its later half, left out" >&2; continue; fi
+  make_room "synthetic-$((r + 1))" "$data/heldout" "$data/heldout/boxes.csv" 30 "${names[@]}"
+  list "$data/heldout-empty" "${names[@]:0:30}" > "$rooms/synthetic-$((r + 1))/empty.txt"
+  taken=$((taken + 1))
+done
+
+tar_of() {  # model, room -> TAR at FPPF <= 0.1 on the room's later frames
+  local report=$rooms/$2/report-$(echo "$1" | tr '/' '-')
+  "$detect" --source "$rooms/$2/eval.txt" --truth "$rooms/$2/truth.csv" --model "$1" --models-dir "$models" \
+    --report-dir "$report" --force >/dev/null 2>&1
+  sed -n 's/.*exact curve: TAR \([0-9.]*\) at FPPF <= 0.1.*/\1/p' "$report/summary.txt"
+}
+field() { awk -F'\t' -v k="$2" '$1 == k { print $2 }' "$1"; }
+[ -f "$models/people/v2.yml" ] || { mkdir -p "$models/people"; cp models/people/v2.yml "$models/people/v2.yml"; }
+
+results=$out/results.tsv
+printf 'room\tmode\tbudget\tanswers\tpropagated\tpropagated_wrong\ttar\ttrain_s\n' > "$results"
+for room in "${room_names[@]}"; do
+  w=$rooms/$room
+  step "room $room: $(wc -l < "$w/adapt.txt") frames to adapt on, $(wc -l < "$w/eval.txt") to evaluate"
+  empty=()
+  [ -f "$w/empty.txt" ] && empty=(--empty "$w/empty.txt")
+  before=$(tar_of people "$room")
+  printf '%s\tnone\t0\t0\t0\t0\t%s\t0\n' "$room" "$before" >> "$results"
+  for budget in $budgets; do
+    for mode in track candidate; do
+      run=$w/$mode-$budget
+      flags=()
+      [ "$mode" = candidate ] && flags=(--per-candidate)
+      "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
+        --name "$room-$mode-$budget" --models-dir "$models" --budget "$budget" --threads $threads \
+        --base-pos "$sets/base-pos" --base-neg "$sets/base-neg" "${flags[@]}" 2>"$run.log" ||
+        { tail -3 "$run.log" >&2; exit 1; }
+      state=$run/adapt-state.tsv
+      wrong=$(sed -n 's/.*the truth contradicts \([0-9]*\) .*/\1/p' "$run/logs/answers.log" | tail -1)
+      printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$room" "$mode" "$budget" "$(field "$state" answers.human)" \
+        "$(field "$state" answers.propagated)" "${wrong:-0}" "$(field "$state" tar_after)" \
+        "$(field "$state" train_seconds)" >> "$results"
+      echo "$room $mode $budget: $(tail -1 "$results" | cut -f4-8)" >&2
+    done
+  done
+  # Retrained from nothing (100 rounds) on the per-track answers of the largest budget, to compare.
+  budget=${budgets##* } run=$w/retrain-${budgets##* }
+  "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
+    --name "$room-retrain-$budget" --models-dir "$models" --budget "$budget" --threads $threads --retrain \
+    --base-pos "$sets/base-pos" --base-neg "$sets/base-neg" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
+  state=$run/adapt-state.tsv
+  printf '%s\tretrain\t%s\t%s\t%s\t0\t%s\t%s\n' "$room" "$budget" "$(field "$state" answers.human)" \
+    "$(field "$state" answers.propagated)" "$(field "$state" tar_after)" "$(field "$state" train_seconds)" >> "$results"
+  # Negatives only: the same training on the room's negatives and the base, no answers.
+  negatives=$w/track-${budgets%% *}/sets/room-negatives
+  if [ -f "$negatives/manifest.yml" ]; then
+    start=$(date +%s.%N)
+    "$train" --models-dir "$models" --name "$room-negatives" --init people --rounds 10 --folds 0 \
+      --pos "$sets/base-pos" --neg "$negatives" "$sets/base-neg" >/dev/null 2>"$w/negatives-train.log"
+    seconds=$(echo "$(date +%s.%N) - $start" | bc)
+    printf '%s\tnegatives\t0\t0\t0\t0\t%s\t%.1f\n' "$room" "$(tar_of "$room-negatives" "$room")" "$seconds" >> "$results"
+  else
+    printf '%s\tnegatives\t0\t0\t0\t0\t%s\t0\n' "$room" "$before" >> "$results"  # no empty frames: as before
+  fi
+done
+
+step "report"
+"$adapt" --chart "$results" --chart-png "$out/curve.png" >/dev/null
+{
+  echo "# Adaptation benchmark ($(date -u +%Y-%m-%dT%H:%MZ))"
+  echo
+  echo "TAR at FPPF <= 0.1 on each room's later frames; answers = the truth-as-person's answers (rdsf-adapt"
+  echo "--truth); propagated = labels written along tracks (wrong: contradicted by the truth); train s = rdsf-train"
+  echo "wall time (from the last answer to the model)."
+  echo
+  echo "| room | mode | budget | answers | propagated (wrong) | TAR | train s |"
+  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  awk -F'\t' 'NR > 1 { printf "| %s | %s | %s | %s | %s (%s) | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, $8 }' "$results"
+  echo
+  echo "![answers against TAR](curve.png)"
+} > "$out/REPORT.md"
+cat "$out/REPORT.md"

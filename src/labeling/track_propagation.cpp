@@ -1,0 +1,111 @@
+#include "rdsf/labeling/track_propagation.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/tracking/tracker.hpp"
+
+namespace rdsf {
+namespace {
+
+struct Best {
+  std::optional<std::size_t> index;  ///< the best candidate passing the gates
+  bool sure = false;                 ///< the runner-up is at least ambiguity_margin lower
+  std::vector<std::size_t> passing;  ///< every candidate passing the gates
+};
+
+Best best_match(const TrackCandidate& from, const std::vector<TrackCandidate>& in, char answer,
+                const PropagationParams& params, const CameraModel& camera) {
+  Best best;
+  double best_iou = -1, runner_up = -1;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    if (!passes_track_gates(from, in[i], answer, params, camera)) continue;
+    best.passing.push_back(i);
+    const double overlap = iou(from.box, in[i].box);
+    if (overlap > best_iou) {
+      runner_up = best_iou;
+      best_iou = overlap;
+      best.index = i;
+    } else if (overlap > runner_up) {
+      runner_up = overlap;
+    }
+  }
+  // Candidates that fail the gates still make the link ambiguous when they overlap as much (a person beside
+  // a crossing one whose depth or score differs is no reason to be sure).
+  for (std::size_t i = 0; best.index && i < in.size(); ++i) {
+    if (i == *best.index) continue;
+    const double overlap = iou(from.box, in[i].box);
+    if (overlap > runner_up) runner_up = overlap;
+  }
+  best.sure = best.index.has_value() && runner_up <= best_iou - params.ambiguity_margin;
+  return best;
+}
+
+}  // namespace
+
+bool passes_track_gates(const TrackCandidate& t, const TrackCandidate& c, char answer, const PropagationParams& params,
+                        const CameraModel& camera) {
+  if (iou(t.box, c.box) < params.min_iou) return false;
+  if (std::abs(t.depth_mm - c.depth_mm) > params.max_depth_step_mm) return false;
+  const double d_cm = cv::norm(centroid_cm(t.box, t.depth_mm, camera) - centroid_cm(c.box, c.depth_mm, camera));
+  if (match_lkh({}, {}, d_cm) > params.max_lkh) return false;
+  if (c.probability >= 0) {
+    if (answer == 'y' && c.probability < params.min_yes_probability) return false;
+    if (answer == 'n' && c.probability > params.max_no_probability) return false;
+  }
+  return true;
+}
+
+PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& frames, const TrackLink& seed,
+                                char answer, const PropagationParams& params, const CameraModel& camera,
+                                const AnswerOf& answer_of) {
+  PropagatedTrack track;
+  std::vector<TrackLink> backwards;
+  for (const int step : {-1, 1}) {
+    TrackLink at = seed;
+    for (int followed = 0; params.max_frames <= 0 || followed < params.max_frames; ++followed) {
+      if ((step < 0 && at.frame == 0) || (step > 0 && at.frame + 1 >= frames.size())) break;
+      const std::size_t next_frame = at.frame + step;
+      const TrackCandidate& from = frames[at.frame][at.index];
+      const Best forward = best_match(from, frames[next_frame], answer, params, camera);
+      bool sure = forward.sure;
+      if (sure) {  // and back: t must be c's best among t's frame, as clearly
+        const Best back = best_match(frames[next_frame][*forward.index], frames[at.frame], answer, params, camera);
+        sure = back.sure && back.index == at.index;
+      }
+      if (!sure) {
+        for (const std::size_t i : forward.passing) {
+          const TrackLink link{next_frame, i};
+          if (!answer_of || answer_of(link) == '\0') track.ask.push_back(link);
+        }
+        break;
+      }
+      const TrackLink next{next_frame, *forward.index};
+      const char given = answer_of ? answer_of(next) : '\0';
+      if (given != '\0' && given != answer) break;  // answered otherwise: the person knows better
+      if (given == '\0') (step < 0 ? backwards : track.labelled).push_back(next);
+      at = next;
+    }
+  }
+  track.labelled.insert(track.labelled.begin(), backwards.rbegin(), backwards.rend());
+  return track;
+}
+
+std::string track_answerer(const CandidateKey& seed) {
+  char box[96];
+  std::snprintf(box, sizeof box, " %d,%d,%d,%d", seed.box.x, seed.box.y, seed.box.width, seed.box.height);
+  return "track " + seed.frame + box;
+}
+
+std::vector<JournalEntry> propagated_from(const AnswerJournal& journal, const CandidateKey& seed) {
+  const std::string by = track_answerer(seed);
+  std::vector<JournalEntry> entries;
+  for (const JournalEntry& e : journal.in_force()) {
+    if (e.by == by && e.key.source == seed.source) entries.push_back(e);
+  }
+  return entries;
+}
+
+}  // namespace rdsf

@@ -1,0 +1,161 @@
+// rdsf-adapt: bad input refused with one line before anything is written (budget 0, another camera, a truth
+// naming frames not in the room, an "empty" recording with people), and a run stopped after its answers
+// resumes without asking again, and a run killed (SIGKILL, the step's program with it) resumes. Small
+// synthetic rooms rendered by rdsf-synth; the shipped model people.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/depth_png.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
+#include "support/depth_scenes.hpp"
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::string adapt() { return test::quote(test::program("rdsf-adapt")); }
+
+test::RunResult render(const std::string& out, const std::string& extra) {
+  return test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(out) +
+                   " --force --people 1..2 --clip-frames 30 --seed 7 " + extra);
+}
+
+std::string models_dir() { return std::string(RDSF_SOURCE_DIR) + "/models"; }
+
+}  // namespace
+
+TEST(Adapt, BudgetZeroIsAUsageError) {
+  test::TempDir dir;
+  const test::RunResult r = test::run(adapt() + " --source x --out " + test::quote(dir / "out") + " --name room --budget 0");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--budget 0"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST(Adapt, AnotherCameraAndATruthOfOtherFramesAreRefusedBeforeAnythingIsWritten) {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir / "small");
+  DepthFrame frame = test::wall_frame(3000);
+  cv::Mat1w half;
+  cv::resize(frame.depth_mm, half, {320, 240}, 0, 0, cv::INTER_NEAREST);
+  write_png_atomically(dir / "small/000000.depth.png", half);
+  test::RunResult r = test::run(adapt() + " --source " + test::quote(dir / "small") + " --out " +
+                                test::quote(dir / "out") + " --name room --models-dir " + models_dir());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(dir / "small"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("320x240"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+  ASSERT_EQ(render(dir / "room", "--frames 30").exit_code, 0);
+  std::ofstream(dir / "truth.csv") << "frame,person,x,y,w,h\n000003,1,100,100,50,100\nnot-a-frame,1,100,100,50,100\n";
+  r = test::run(adapt() + " --source " + test::quote(dir / "room") + " --truth " + test::quote(dir / "truth.csv") +
+                " --out " + test::quote(dir / "out") + " --name room --models-dir " + models_dir());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(dir / "truth.csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not-a-frame"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST(Adapt, AnEmptyRecordingWithPeopleIsRefused) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 30").exit_code, 0);
+  const test::RunResult r = test::run(adapt() + " --source " + test::quote(dir / "room") + " --empty " +
+                                      test::quote(dir / "room") + " --truth " + test::quote(dir / "room/boxes.csv") +
+                                      " --out " + test::quote(dir / "out") + " --name room --models-dir " + models_dir());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("not empty"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir / "room"), std::string::npos) << r.err;
+}
+
+TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
+  ASSERT_EQ(render(dir / "empty", "--frames 30 --empty").exit_code, 0);
+  const std::filesystem::path models = dir.path() / "models";
+  std::filesystem::create_directories(models / "people");
+  std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
+  const std::string common = adapt() + " --source " + test::quote(dir / "room") + " --empty " + test::quote(dir / "empty") +
+                             " --truth " + test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
+                             " --name room --budget 6 --rounds 3 --threads 2 --models-dir " + test::quote(models.string());
+  // The first run fails at training (a base set that does not exist), after its negatives and answers.
+  test::RunResult r = test::run(common + " --base-pos " + test::quote(dir / "missing"));
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("rdsf-train failed"), std::string::npos) << r.err;
+  const std::string journal = dir / "out/sets/room/labeler-answers.tsv";
+  long human = 0;
+  {
+    const AnswerJournal j(journal);
+    for (const JournalEntry& e : j.in_force()) human += e.by == "human" ? 1 : 0;
+  }
+  EXPECT_GT(human, 0);
+  EXPECT_LE(human, 6);
+  const auto journal_size = std::filesystem::file_size(journal);
+  r = test::run(common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("answers: done before"), std::string::npos) << r.err;
+  EXPECT_EQ(std::filesystem::file_size(journal), journal_size);  // nothing asked again
+  EXPECT_TRUE(std::filesystem::exists(models / "room/v1.yml"));
+  std::ifstream model(models / "room/v1.yml");
+  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("adapted_room"), std::string::npos);
+  EXPECT_NE(text.find("adapted_from"), std::string::npos);
+  EXPECT_NE(text.find("init"), std::string::npos);  // continued from people/v2
+}
+
+TEST(Adapt, AKilledRunResumes) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
+  const std::filesystem::path models = dir.path() / "models";
+  std::filesystem::create_directories(models / "people");
+  std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
+  const std::string command = adapt() + " --source " + test::quote(dir / "room") + " --truth " +
+                              test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
+                              " --name room --budget 8 --rounds 3 --threads 2 --models-dir " +
+                              test::quote(models.string());
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);  // its own group: the kill reaches the step's program too
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>/dev/null").c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  // Killed once the first step is done (whatever runs then: the questions or the training).
+  const std::string state = dir / "out/adapt-state.tsv";
+  auto has = [&](const std::string& text) {
+    std::ifstream in(state);
+    const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return all.find(text) != std::string::npos;
+  };
+  for (int i = 0; i < 1200 && !has("done.negatives"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  kill(-pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(has("done.negatives"));
+  const test::RunResult r = test::run(command);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("negatives: done before"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(models / "room/v1.yml")) << r.err;
+  const AnswerJournal journal(dir / "out/sets/room/labeler-answers.tsv");
+  std::set<CandidateKey> keys;
+  long human = 0;
+  for (const JournalEntry& e : journal.in_force()) {
+    EXPECT_TRUE(keys.insert(e.key).second) << "answered twice: " << e.key.frame;
+    human += e.by == "human" ? 1 : 0;
+  }
+  EXPECT_GT(human, 0);
+  EXPECT_LE(human, 8);  // the budget over both runs
+}

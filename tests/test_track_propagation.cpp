@@ -1,0 +1,138 @@
+// Track propagation (labeling/track_propagation.hpp) on hand-built sequences: a person walking is labelled
+// from one answer both ways; two people crossing stop the track where it is unsure (those are asked); a
+// score gate; undo of the answer through the journal removes every propagated label; the labelling session
+// with per_track on a rendered room.
+#include <gtest/gtest.h>
+
+#include "rdsf/candidates/crop_provenance.hpp"
+#include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/labeling/labeling_session.hpp"
+#include "rdsf/labeling/track_propagation.hpp"
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+// A person 60x120 px at 2.5 m walking right 4 px per frame, and a chair (static, 3 m) far to the right.
+std::vector<std::vector<TrackCandidate>> walking(int frames) {
+  std::vector<std::vector<TrackCandidate>> out(frames);
+  for (int f = 0; f < frames; ++f) {
+    out[f].push_back({cv::Rect(100 + 4 * f, 150, 60, 120), 2500, 0.6});
+    out[f].push_back({cv::Rect(500, 250, 50, 80), 3000, 0.3});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(TrackPropagation, PersonWalkingIsLabelledBothWaysFromOneAnswer) {
+  const auto frames = walking(20);
+  const PropagatedTrack t = propagate_track(frames, {10, 0}, 'y', {}, CameraModel{});
+  ASSERT_EQ(t.labelled.size(), 19u);  // every other frame's person, none of the chair
+  for (std::size_t i = 0; i < t.labelled.size(); ++i) {
+    EXPECT_EQ(t.labelled[i].index, 0u);
+    EXPECT_EQ(t.labelled[i].frame, i < 10 ? i : i + 1);  // frame order, the seed left out
+  }
+  EXPECT_TRUE(t.ask.empty());
+  // max_frames limits each direction.
+  PropagationParams near;
+  near.max_frames = 3;
+  EXPECT_EQ(propagate_track(frames, {10, 0}, 'y', near, CameraModel{}).labelled.size(), 6u);
+}
+
+TEST(TrackPropagation, TwoPeopleCrossingStopTheTrackAndAreAsked) {
+  // A walks right, B walks left at the same depth; they meet at frame 20.
+  std::vector<std::vector<TrackCandidate>> frames(41);
+  for (int f = 0; f <= 40; ++f) {
+    frames[f].push_back({cv::Rect(200 + 6 * f, 150, 60, 120), 2500, 0.7});
+    frames[f].push_back({cv::Rect(440 - 6 * f, 150, 60, 120), 2550, 0.7});
+  }
+  const PropagatedTrack t = propagate_track(frames, {0, 0}, 'y', {}, CameraModel{});
+  ASSERT_FALSE(t.labelled.empty());
+  for (const TrackLink& l : t.labelled) {
+    EXPECT_EQ(l.index, 0u);  // never B
+    EXPECT_LT(l.frame, 20u);
+  }
+  ASSERT_FALSE(t.ask.empty());  // where it stopped, both people passed the gates
+  EXPECT_EQ(t.ask.front().frame, t.labelled.back().frame + 1);
+  EXPECT_GE(t.ask.size(), 2u);
+}
+
+TEST(TrackPropagation, GatesStopAtADepthJumpAScoreAndAnotherAnswer) {
+  auto frames = walking(10);
+  frames[6][0].depth_mm = 3200;  // a jump of 70 cm: another object
+  PropagatedTrack t = propagate_track(frames, {2, 0}, 'y', {}, CameraModel{});
+  EXPECT_EQ(t.labelled.size(), 5u);  // frames 0, 1, 3, 4, 5
+  frames = walking(10);
+  frames[6][0].probability = 0.01;  // the model rejects it surely: a 'y' track does not enter it ...
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'y', {}, CameraModel{}).labelled.size(), 5u);
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', {}, CameraModel{}).labelled.size(), 9u);  // ... an 'n' one does
+  // An answer given otherwise stops it; the same answer is gone through without relabelling.
+  frames = walking(10);
+  t = propagate_track(frames, {2, 0}, 'y', {}, CameraModel{}, [](const TrackLink& l) {
+    return l.frame == 4 ? 'y' : l.frame == 7 ? 'n' : '\0';
+  });
+  EXPECT_EQ(t.labelled.size(), 5u);  // 0, 1, 3, 5, 6 (4 was answered y already, 7 n)
+}
+
+TEST(TrackPropagation, UndoOfTheAnswerRemovesEveryPropagatedLabel) {
+  test::TempDir dir;
+  const std::string path = (dir / "labeler-answers.tsv");
+  const auto frames = walking(8);
+  const CandidateKey seed{"room", "000003", frames[3][0].box};
+  {
+    AnswerJournal journal(path);
+    journal.record({seed, 'y', 7, "human"});
+    const PropagatedTrack t = propagate_track(frames, {3, 0}, 'y', {}, CameraModel{});
+    for (const TrackLink& l : t.labelled) {
+      journal.record({{"room", "00000" + std::to_string(l.frame), frames[l.frame][0].box}, 'y', -1, track_answerer(seed)});
+    }
+    journal.record({{"room", "000001", frames[1][1].box}, 'n', -1, "human"});  // another answer
+    EXPECT_EQ(journal.answers_in_force(), 9u);
+  }
+  AnswerJournal journal(path);  // replayed after a restart
+  const std::vector<JournalEntry> propagated = propagated_from(journal, seed);
+  ASSERT_EQ(propagated.size(), 7u);
+  for (auto it = propagated.rbegin(); it != propagated.rend(); ++it) journal.record_undo(*it);
+  journal.record_undo({seed, 'y', 7, "human"});
+  EXPECT_EQ(journal.answers_in_force(), 1u);  // only the other answer is left
+  EXPECT_TRUE(propagated_from(AnswerJournal(path), seed).empty());
+}
+
+// The session with per_track on a rendered synthetic room and the shipped model: the track the window
+// would show is what an answer labels, and undo takes the answer and its whole track back.
+TEST(TrackPropagation, SessionLabelsTheTrackAndUndoTakesItAllBack) {
+  test::TempDir dir;
+  const test::RunResult r = test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
+                                      " --force --frames 30 --people 2..2 --clip-frames 30 --seed 5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
+  LabelingConfig config;
+  config.sources = {dir / "room"};
+  config.ask = AskOrder::uncertain;
+  config.per_track = true;
+  config.keep_rejected = true;
+  config.threads = 2;
+  SampleSetWriter writer = SampleSetWriter::open_or_create(dir / "set", config.analyser.features, config.camera, "test",
+                                                           crop_provenance(config.analyser.candidates));
+  LabelingSession session(config, writer, &model, nullptr);
+  // The first question whose track reaches other frames (answered n until then).
+  std::size_t preview = 0;
+  for (int asked = 0; asked < 40 && session.current() != nullptr; ++asked) {
+    preview = session.track_preview('y').size();
+    if (preview > 0) break;
+    ASSERT_TRUE(session.answer('s'));
+  }
+  ASSERT_GT(preview, 0u) << "no question with a track in 40";
+  const std::size_t in_force = session.journal().answers_in_force();
+  const std::size_t samples = writer.records().size();
+  ASSERT_TRUE(session.answer('y'));
+  EXPECT_EQ(static_cast<std::size_t>(session.stats().propagated_positives), preview);
+  EXPECT_EQ(session.journal().answers_in_force(), in_force + 1 + preview);
+  EXPECT_EQ(writer.records().size(), samples + 1 + preview);
+  ASSERT_TRUE(session.answer('u'));
+  EXPECT_EQ(session.stats().propagated_positives, 0);
+  EXPECT_EQ(session.journal().answers_in_force(), in_force);
+  EXPECT_EQ(SampleSet::open_read(dir / "set").records().size(), samples);  // retracted samples are left out
+}
