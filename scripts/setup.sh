@@ -10,7 +10,7 @@ packages=(
   libopencv-dev libeigen3-dev libopenni2-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev libdeflate-dev
   xvfb xauth xdotool x11-apps
-  libopenmpi-dev openmpi-bin parallel  # issue 37: rdsf-train under mpirun, scripts/shard-mine.sh
+  libopenmpi-dev openmpi-bin parallel slurm-wlm  # issue 37: mpirun rdsf-train, shard-mine.sh, the Slurm array test
 )
 missing=()
 for p in "${packages[@]}"; do
