@@ -81,6 +81,38 @@ MpiShards::MpiShards() {
   check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
 }
 
+
+void MpiShards::reduce_scatter(double* values, const std::vector<int>& begin) const {
+  const auto ranks = static_cast<std::size_t>(size_), mine = static_cast<std::size_t>(rank_);
+  std::vector<int> length(ranks);
+  for (std::size_t r = 0; r < ranks; ++r) length[r] = begin[r + 1] - begin[r];
+  const int block = length[mine];
+  std::vector<int> receive_length(ranks, block), receive_begin(ranks);
+  for (std::size_t r = 0; r < ranks; ++r) receive_begin[r] = as_int(r * static_cast<std::size_t>(block));
+  std::vector<double> blocks(ranks * static_cast<std::size_t>(block));
+  check(MPI_Alltoallv(values, length.data(), begin.data(), MPI_DOUBLE, blocks.data(), receive_length.data(),
+                      receive_begin.data(), MPI_DOUBLE, MPI_COMM_WORLD),
+        "MPI_Alltoallv");
+  double* out = values + begin[mine];
+  for (std::size_t k = 0; k < static_cast<std::size_t>(block); ++k) {
+    double s = blocks[k];
+    for (std::size_t r = 1; r < ranks; ++r) s += blocks[r * static_cast<std::size_t>(block) + k];
+    out[k] = s;
+  }
+  bytes_ += (static_cast<std::size_t>(begin[ranks]) - static_cast<std::size_t>(block)) * sizeof(double);
+}
+
+std::pair<std::size_t, std::size_t> MpiShards::sum_own_block(double* values, std::size_t units,
+                                                              std::size_t unit_size) const {
+  if (size_ <= 1) return {0, units};
+  const Timed timed(seconds_, calls_);
+  const auto ranks = static_cast<std::size_t>(size_), mine = static_cast<std::size_t>(rank_);
+  std::vector<int> begin(ranks + 1);  // whole units per rank
+  for (std::size_t r = 0; r <= ranks; ++r) begin[r] = as_int(units * r / ranks * unit_size);
+  reduce_scatter(values, begin);
+  return {units * mine / ranks, units * (mine + 1) / ranks};
+}
+
 void MpiShards::sum(double* values, std::size_t count) const {
   if (size_ <= 1 || count == 0) return;
   const Timed timed(seconds_, calls_);
@@ -97,28 +129,16 @@ void MpiShards::sum(double* values, std::size_t count) const {
     }
     return;
   }
-  // Block r = values [begin[r], begin[r + 1]).
+  // Block r = values [begin[r], begin[r + 1]): summed by rank r, then sent to every rank.
   std::vector<int> begin(ranks + 1), length(ranks);
   for (std::size_t r = 0; r <= ranks; ++r) begin[r] = as_int(count * r / ranks);
   for (std::size_t r = 0; r < ranks; ++r) length[r] = begin[r + 1] - begin[r];
+  reduce_scatter(values, begin);
   const auto mine = static_cast<std::size_t>(rank_);
-  const int block = length[mine];
-  std::vector<int> receive_length(ranks, block), receive_begin(ranks);
-  for (std::size_t r = 0; r < ranks; ++r) receive_begin[r] = as_int(r * static_cast<std::size_t>(block));
-  std::vector<double> blocks(ranks * static_cast<std::size_t>(block));
-  check(MPI_Alltoallv(values, length.data(), begin.data(), MPI_DOUBLE, blocks.data(), receive_length.data(),
-                      receive_begin.data(), MPI_DOUBLE, MPI_COMM_WORLD),
-        "MPI_Alltoallv");
-  std::vector<double> summed(static_cast<std::size_t>(block));
-  for (std::size_t k = 0; k < summed.size(); ++k) {
-    double s = blocks[k];
-    for (std::size_t r = 1; r < ranks; ++r) s += blocks[r * static_cast<std::size_t>(block) + k];
-    summed[k] = s;
-  }
-  check(MPI_Allgatherv(summed.data(), block, MPI_DOUBLE, values, length.data(), begin.data(), MPI_DOUBLE,
+  check(MPI_Allgatherv(MPI_IN_PLACE, length[mine], MPI_DOUBLE, values, length.data(), begin.data(), MPI_DOUBLE,
                        MPI_COMM_WORLD),
         "MPI_Allgatherv");
-  bytes_ += 2 * (count - static_cast<std::size_t>(block)) * sizeof(double);
+  bytes_ += (count - static_cast<std::size_t>(length[mine])) * sizeof(double);
 }
 
 void MpiShards::max(double* values, std::size_t count) const {

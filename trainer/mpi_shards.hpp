@@ -7,6 +7,9 @@
 //     crosses the wire about 2 (N - 1) / N times, like a ring allreduce, and the order of the additions is
 //     fixed (MPI_Allreduce's is the library's choice). Short arrays (fewer values than 64 per rank) are
 //     gathered whole and added in rank order on every rank.
+//   sum_own_block: the reduce-scatter alone, in whole units (a feature's histogram): the best split is then
+//     found per block and only the winners are exchanged (LightGBM's best-split exchange), about half the
+//     bytes of sum().
 //   max: MPI_Allreduce (MPI_MAX; exact in any order). gather: MPI_Allgatherv.
 // Time and bytes in these calls are counted for the report at the end (docs/scaling.md).
 #include <cstdint>
@@ -38,6 +41,8 @@ class MpiShards : public RowShards {
   int rank() const override { return rank_; }
   int size() const override { return size_; }
   void sum(double* values, std::size_t count) const override;
+  std::pair<std::size_t, std::size_t> sum_own_block(double* values, std::size_t units,
+                                                     std::size_t unit_size) const override;
   void max(double* values, std::size_t count) const override;
   std::vector<double> gather(const std::vector<double>& local) const override;
   std::vector<std::string> gather_text(const std::string& local) const override;
@@ -46,6 +51,9 @@ class MpiShards : public RowShards {
   double seconds() const { return seconds_; }
 
  private:
+  /// Rank r receives block r ([begin[r], begin[r + 1]) of `values`) of every rank and stores their sum, in
+  /// rank order, over its own block of `values`.
+  void reduce_scatter(double* values, const std::vector<int>& begin) const;
   int rank_ = 0, size_ = 1;
   mutable double seconds_ = 0.0;
   mutable std::uint64_t bytes_ = 0, calls_ = 0;

@@ -311,18 +311,50 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables_sharded(
     const std::vector<const std::vector<std::size_t>*>& members, const std::vector<std::uint8_t>& y, bool split) const {
   const std::size_t features = data_.features(), nodes = members.size();
   const std::size_t width = 2 * static_cast<std::size_t>(data_.scheme().count);
-  std::vector<double> sums;  // [node][feature][2 * bins]: this rank's, then every rank's
+  const RowShards& shards = *params_.shards;
+  std::vector<double> sums;  // [node][feature][2 * bins]: this rank's
   best_tables(members, y, split, nullptr, &sums);
-  params_.shards->sum(sums.data(), sums.size());
-  std::vector<TableFit> fits;
+  // Per node, this rank sums every rank's sums of its block of features (reduce-scatter) and finds the
+  // block's best: the smallest Z, the lowest feature of equals.
+  std::vector<double> candidates;  // per node: Z, feature
   for (std::size_t node = 0; node < nodes; ++node) {
-    const double* node_sums = sums.data() + node * features * width;
-    std::vector<double> z(features);
-    parallel_chunks(features, threads_, [&](std::size_t f0, std::size_t f1) {
-      for (std::size_t f = f0; f < f1; ++f) z[f] = table_z(node_sums + f * width, split);
+    double* node_sums = sums.data() + node * features * width;
+    const auto [f0, f1] = shards.sum_own_block(node_sums, features, width);
+    std::vector<double> z(f1 - f0);
+    parallel_chunks(z.size(), threads_, [&](std::size_t k0, std::size_t k1) {
+      for (std::size_t k = k0; k < k1; ++k) z[k] = table_z(node_sums + (f0 + k) * width, split);
     });
-    const std::size_t best = static_cast<std::size_t>(std::min_element(z.begin(), z.end()) - z.begin());
-    fits.push_back(fit_sums(best, z[best], node_sums + best * width, split));
+    const auto best = std::min_element(z.begin(), z.end());
+    candidates.push_back(best == z.end() ? std::numeric_limits<double>::infinity() : *best);
+    candidates.push_back(static_cast<double>(f0 + static_cast<std::size_t>(best - z.begin())));
+  }
+  // The best of the blocks (rank order = feature order, so ties still go to the lowest feature), then the
+  // winners' sums from the ranks that hold them.
+  const std::vector<double> all = shards.gather(candidates);
+  const auto ranks = static_cast<std::size_t>(shards.size());
+  std::vector<std::size_t> winner(nodes, 0);
+  for (std::size_t node = 0; node < nodes; ++node) {
+    for (std::size_t r = 1; r < ranks; ++r) {
+      if (all[(r * nodes + node) * 2] < all[(winner[node] * nodes + node) * 2]) winner[node] = r;
+    }
+  }
+  std::vector<double> mine;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    if (winner[node] != static_cast<std::size_t>(shards.rank())) continue;
+    const auto feature = static_cast<std::size_t>(candidates[2 * node + 1]);
+    const double* s = sums.data() + (node * features + feature) * width;
+    mine.insert(mine.end(), s, s + width);
+  }
+  const std::vector<double> won = shards.gather(mine);  // rank order, each rank's nodes in order
+  std::vector<TableFit> fits(nodes);
+  std::size_t next = 0;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    for (std::size_t node = 0; node < nodes; ++node) {
+      if (winner[node] != r) continue;
+      const double* c = all.data() + (r * nodes + node) * 2;
+      fits[node] = fit_sums(static_cast<std::size_t>(c[1]), c[0], won.data() + next, split);
+      next += width;
+    }
   }
   return fits;
 }

@@ -110,8 +110,9 @@ class RealAdaBoost {
   double table_z(const double* sums, bool split) const;
   /// The table (or split) of `feature` from its sums[2 * bin + y], with the given Z.
   TableFit fit_sums(std::size_t feature, double z, const double* sums, bool split) const;
-  /// Data-parallel best_tables: every node's sums of every feature on this rank, summed over the ranks,
-  /// then the smallest Z per node (lowest feature of equals) and its table from the summed sums.
+  /// Data-parallel best_tables: every node's sums of every feature on this rank; each rank sums every
+  /// rank's sums of its block of features (RowShards::sum_own_block) and finds the block's best; the best
+  /// of the blocks per node (lowest feature of equals) and its summed sums are exchanged.
   std::vector<TableFit> best_tables_sharded(const std::vector<const std::vector<std::size_t>*>& members,
                                             const std::vector<std::uint8_t>& y, bool split) const;
   bool sharded() const { return params_.shards != nullptr && params_.shards->distributed(); }

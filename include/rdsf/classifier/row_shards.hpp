@@ -11,6 +11,7 @@
 // near tie breaks otherwise (docs/scaling.md states the largest difference measured).
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rdsf {
@@ -23,6 +24,12 @@ class RowShards {
   bool distributed() const { return size() > 1; }
   /// values[k] <- the sum over ranks of their values[k], added in rank order: the same bits on every rank.
   virtual void sum(double* values, std::size_t count) const;
+  /// The reduce-scatter half of sum(): `values` are `units` runs of `unit_size`; this rank's block of units
+  /// [first, last) (contiguous blocks in rank order, every unit in one) becomes the sum over ranks, added in
+  /// rank order (the same bits as sum()); the other values are left as they were. Returns {first, last}.
+  /// One process: every unit, unchanged.
+  virtual std::pair<std::size_t, std::size_t> sum_own_block(double* values, std::size_t units,
+                                                             std::size_t unit_size) const;
   /// values[k] <- the largest of the ranks' values[k].
   virtual void max(double* values, std::size_t count) const;
   /// Every rank's `local` (lengths may differ), concatenated in rank order; the same on every rank.
