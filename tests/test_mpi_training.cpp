@@ -125,6 +125,15 @@ TEST_F(MpiTraining, HeldOutValidationEarlyStoppingAndTables) {
              "--feature-pool 256");
 }
 
+TEST_F(MpiTraining, SeparateValidationSets) {
+  RDSF_REQUIRE_MPIRUN();
+  const std::string validation_people = dir / "validation-people", validation_negatives = dir / "validation-negatives";
+  test::make_set(validation_people, 1, 20, 5, {}, "other recording");
+  test::make_set(validation_negatives, 0, 30, 6, {}, "other recording");
+  compare(3, "--rounds 6 --feature-pool 256 --validation-pos " + test::quote(validation_people) +
+                 " --validation-neg " + test::quote(validation_negatives), "-separate");
+}
+
 TEST_F(MpiTraining, ContinuedTrainingOnEveryFeature) {
   RDSF_REQUIRE_MPIRUN();
   const std::string start = dir / "start";
