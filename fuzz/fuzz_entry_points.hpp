@@ -20,6 +20,7 @@
 
 #include "rdsf/classifier/model_file.hpp"
 #include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/dataset/recipe.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/dataset/sample_set_check.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
@@ -35,7 +36,8 @@ namespace rdsf::fuzz {
 /// The parsers, by the name used for fuzz/corpus/<name>/ and fuzz/regressions/<name>/.
 inline const std::vector<std::string>& parser_names() {
   static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",   "thesis_text",
-                                                 "model_file",   "answer_journal", "depth_crop", "model_writer"};
+                                                 "model_file",   "answer_journal", "depth_crop", "model_writer",
+                                                 "recipe"};
   return names;
 }
 
@@ -192,6 +194,17 @@ inline void parse_model_writer_bytes(const std::string& bytes) {
   }
 }
 
+/// A training recipe (dataset/recipe.hpp): what it reads must be trainable parameters.
+inline void parse_recipe_bytes(const std::string& bytes) {
+  const Recipe recipe = parse_recipe(bytes, "fuzz/recipe.yml");
+  require(recipe.path == "fuzz/recipe.yml", "recipe: the path it came from is lost");
+  try {
+    validate_training_params(recipe.params);
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("recipe: accepted parameters that do not validate: ") + e.what());
+  }
+}
+
 /// Dispatch by parser name (see parser_names()). An rdsf::Error is passed on only when its message is the
 /// project's one line naming the file ("fuzz/..." for text parsers, the temporary input for file readers);
 /// a message that breaks the rule becomes std::logic_error.
@@ -205,6 +218,7 @@ inline void parse_bytes(const std::string& parser, const std::string& bytes) {
     if (parser == "answer_journal") return parse_answer_journal_bytes(bytes);
     if (parser == "depth_crop") return parse_depth_crop_bytes(bytes);
     if (parser == "model_writer") return parse_model_writer_bytes(bytes);
+    if (parser == "recipe") return parse_recipe_bytes(bytes);
   } catch (const Error& e) {
     const std::string message = e.what();
     require(message.find('\n') == std::string::npos, parser + ": error message of more than one line: " + message);

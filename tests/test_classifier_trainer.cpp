@@ -106,6 +106,26 @@ TEST_F(TrainerProgram, RecipeWarnsWhenASetHoldsFewerThanAsked) {
   EXPECT_EQ(again.weak_classifiers(), model.weak_classifiers());
 }
 
+// A damaged recipe is refused with one line naming it, before OpenCV's reader sees a layout on which it
+// never returns (it hung rdsf-train before the recipe reader shared the model files' YamlReader), and a
+// mistyped entry is named.
+TEST_F(TrainerProgram, DamagedRecipeIsOneLineNamingItNotAHang) {
+  fs::create_directories(models + "/recipes");
+  const std::string damaged = models + "/recipes/damaged.yml";
+  std::ofstream(damaged) << "%YAML:1.0\n---\n  recipe: damaged\n- rounds: 4\n";
+  const test::RunResult r = train("--recipe damaged --folds 0");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(damaged + ": line 3: the top-level entries must start in the first column (not a recipe "
+                                 "this workbench wrote)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  std::ofstream(models + "/recipes/typo.yml") << "%YAML:1.0\n---\nrecipe: typo\nrounds: many\n";
+  const test::RunResult typo = train("--recipe typo --folds 0");
+  EXPECT_EQ(typo.exit_code, 1) << typo.err;
+  EXPECT_NE(typo.err.find("typo.yml: 'rounds' is not an integer"), std::string::npos) << typo.err;
+}
+
 TEST_F(TrainerProgram, InspectShowsHeaderFiguresAndCellPairs) {
   ASSERT_EQ(train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name toy --rounds 6")
                 .exit_code,

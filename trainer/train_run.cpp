@@ -13,8 +13,8 @@
 #include "rdsf/classifier/model_registry.hpp"
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/recipe.hpp"
 #include "trainer/ranks.hpp"
-#include "trainer/recipe.hpp"
 #include "rdsf/dataset/thesis_text.hpp"
 #include "trainer/training_samples.hpp"
 

@@ -13,7 +13,7 @@
 
 #include "rdsf/classifier/yaml_node_copy.hpp"
 #include "rdsf/core/error.hpp"
-#include "rdsf/core/yaml_guard.hpp"
+#include "rdsf/core/yaml_reader.hpp"
 #include "rdsf/features/feature_spec_record.hpp"
 
 namespace rdsf {
@@ -173,52 +173,9 @@ void write_calibration(FileStorage& fs, const ScoreCalibration& c) {
 
 // ---- reading ----
 
-struct Reader {
-  std::string path;
-
-  /// Throws Error("<path>: <what>"); `what` may quote text from the file, kept on one line.
-  [[noreturn]] void bad(const std::string& what) const { fail(path, one_line(what)); }
-
-  FileNode need(const FileNode& parent, const std::string& key, const std::string& context) const {
-    if (!parent.isMap()) {
-      const std::string parent_name =
-          context.empty() ? std::string("the file") : "'" + context.substr(0, context.size() - 1) + "'";
-      bad("missing '" + context + key + "' (" + parent_name + " is not a mapping)");
-    }
-    const FileNode node = parent[key];
-    if (node.empty() || node.isNone()) bad("missing '" + context + key + "'");
-    return node;
-  }
-  std::string text(const FileNode& parent, const std::string& key, const std::string& context) const {
-    const FileNode node = need(parent, key, context);
-    if (!node.isString()) bad("'" + context + key + "' is not text");
-    return static_cast<std::string>(node);
-  }
-  int integer(const FileNode& parent, const std::string& key, const std::string& context) const {
-    const FileNode node = need(parent, key, context);
-    if (!node.isInt()) bad("'" + context + key + "' is not an integer");
-    return static_cast<int>(node);
-  }
-  double real(const FileNode& parent, const std::string& key, const std::string& context) const {
-    const FileNode node = need(parent, key, context);
-    if (!node.isInt() && !node.isReal()) bad("'" + context + key + "' is not a number");
-    return static_cast<double>(node);
-  }
-  /// A number that must fit a float (converting a larger double to float is undefined behaviour).
-  float single(const FileNode& parent, const std::string& key, const std::string& context) const {
-    const double value = real(parent, key, context);
-    if (std::isfinite(value) && std::fabs(value) > FLT_MAX) bad("'" + context + key + "' is out of the float range");
-    return static_cast<float>(value);
-  }
-  // Optional fields (informational parts of the training record): `child` is none when `parent` is no map.
-  static FileNode child(const FileNode& parent, const char* key) { return parent.isMap() ? parent[key] : FileNode(); }
-  static std::string opt_text(const FileNode& n) { return n.isString() ? static_cast<std::string>(n) : ""; }
-  static double opt_real(const FileNode& n) { return (n.isInt() || n.isReal()) ? static_cast<double>(n) : 0.0; }
-  static int opt_int(const FileNode& n) { return n.isInt() ? static_cast<int>(n) : 0; }
-};
 
 // Any spec this build knows; `expected` (when given) is the one the caller computes.
-FeatureSpec read_feature_spec_v1(const Reader& r, const FileNode& root, const FeatureSpec* expected) {
+FeatureSpec read_feature_spec_v1(const YamlReader& r, const FileNode& root, const FeatureSpec* expected) {
   const FileNode node = r.need(root, "feature_spec", "");
   const std::string canonical = r.text(node, "canonical", "feature_spec.");
   const std::string hash = r.text(node, "hash", "feature_spec.");
@@ -245,8 +202,8 @@ std::vector<RocPoint> read_roc_points(const FileNode& node) {
   if (!node.isSeq()) return out;
   for (auto it = node.begin(); it != node.end(); ++it) {
     const FileNode p = *it;
-    out.push_back({Reader::opt_real(Reader::child(p, "far")), Reader::opt_real(Reader::child(p, "tar")),
-                   Reader::opt_real(Reader::child(p, "threshold"))});
+    out.push_back({YamlReader::opt_real(YamlReader::child(p, "far")), YamlReader::opt_real(YamlReader::child(p, "tar")),
+                   YamlReader::opt_real(YamlReader::child(p, "threshold"))});
   }
   return out;
 }
@@ -254,8 +211,8 @@ std::vector<RocPoint> read_roc_points(const FileNode& node) {
 TrainingRecord read_training_v1(const FileNode& node) {
   TrainingRecord t;
   if (!node.isMap()) return t;
-  t.recipe = Reader::opt_text(node["recipe"]);
-  t.backend = Reader::opt_text(node["backend"]);
+  t.recipe = YamlReader::opt_text(node["recipe"]);
+  t.backend = YamlReader::opt_text(node["backend"]);
   const FileNode params = node["parameters"];
   if (params.isMap()) {
     for (auto it = params.begin(); it != params.end(); ++it) {
@@ -271,41 +228,41 @@ TrainingRecord read_training_v1(const FileNode& node) {
     for (auto it = sets.begin(); it != sets.end(); ++it) {
       const FileNode s = *it;
       SampleSetUse use;
-      use.role = Reader::opt_text(Reader::child(s, "role"));
-      use.path = Reader::opt_text(Reader::child(s, "path"));
-      use.manifest_hash = Reader::opt_text(Reader::child(s, "manifest_hash"));
-      use.available = static_cast<std::size_t>(Reader::opt_int(Reader::child(s, "available")));
-      use.used = static_cast<std::size_t>(Reader::opt_int(Reader::child(s, "used")));
+      use.role = YamlReader::opt_text(YamlReader::child(s, "role"));
+      use.path = YamlReader::opt_text(YamlReader::child(s, "path"));
+      use.manifest_hash = YamlReader::opt_text(YamlReader::child(s, "manifest_hash"));
+      use.available = static_cast<std::size_t>(YamlReader::opt_int(YamlReader::child(s, "available")));
+      use.used = static_cast<std::size_t>(YamlReader::opt_int(YamlReader::child(s, "used")));
       t.sample_sets.push_back(use);
     }
   }
-  t.train_positives = static_cast<std::size_t>(Reader::opt_int(node["train_positives"]));
-  t.train_negatives = static_cast<std::size_t>(Reader::opt_int(node["train_negatives"]));
-  t.stopped = Reader::opt_text(node["stopped"]);
+  t.train_positives = static_cast<std::size_t>(YamlReader::opt_int(node["train_positives"]));
+  t.train_negatives = static_cast<std::size_t>(YamlReader::opt_int(node["train_negatives"]));
+  t.stopped = YamlReader::opt_text(node["stopped"]);
   const FileNode v = node["validation"];
   if (v.isMap()) {
     ValidationFigures& f = t.validation;
-    f.source = Reader::opt_text(v["source"]);
-    f.positives = static_cast<std::size_t>(Reader::opt_int(v["positives"]));
-    f.negatives = static_cast<std::size_t>(Reader::opt_int(v["negatives"]));
-    f.summary.auc = Reader::opt_real(v["auc"]);
-    f.summary.tar_at_far_1 = Reader::opt_real(v["tar_at_far_1"]);
-    f.summary.tar_at_far_5 = Reader::opt_real(v["tar_at_far_5"]);
-    f.summary.error_rate = Reader::opt_real(v["error_rate"]);
+    f.source = YamlReader::opt_text(v["source"]);
+    f.positives = static_cast<std::size_t>(YamlReader::opt_int(v["positives"]));
+    f.negatives = static_cast<std::size_t>(YamlReader::opt_int(v["negatives"]));
+    f.summary.auc = YamlReader::opt_real(v["auc"]);
+    f.summary.tar_at_far_1 = YamlReader::opt_real(v["tar_at_far_1"]);
+    f.summary.tar_at_far_5 = YamlReader::opt_real(v["tar_at_far_5"]);
+    f.summary.error_rate = YamlReader::opt_real(v["error_rate"]);
     f.roc = read_roc_points(v["roc"]);
     const FileNode rounds = v["rounds"];
     if (rounds.isSeq()) {
       for (auto it = rounds.begin(); it != rounds.end(); ++it) {
         const FileNode p = *it;
         RoundFigures r;
-        r.round = Reader::opt_int(Reader::child(p, "round"));
-        r.feature = Reader::opt_int(Reader::child(p, "feature"));
-        r.train_error = Reader::opt_real(Reader::child(p, "train_error"));
-        r.validation_error = Reader::opt_real(Reader::child(p, "validation_error"));
-        r.auc = Reader::opt_real(Reader::child(p, "auc"));
-        r.tar_at_far_1 = Reader::opt_real(Reader::child(p, "tar_at_far_1"));
-        r.tar_at_far_5 = Reader::opt_real(Reader::child(p, "tar_at_far_5"));
-        r.roc = read_roc_points(Reader::child(p, "roc"));
+        r.round = YamlReader::opt_int(YamlReader::child(p, "round"));
+        r.feature = YamlReader::opt_int(YamlReader::child(p, "feature"));
+        r.train_error = YamlReader::opt_real(YamlReader::child(p, "train_error"));
+        r.validation_error = YamlReader::opt_real(YamlReader::child(p, "validation_error"));
+        r.auc = YamlReader::opt_real(YamlReader::child(p, "auc"));
+        r.tar_at_far_1 = YamlReader::opt_real(YamlReader::child(p, "tar_at_far_1"));
+        r.tar_at_far_5 = YamlReader::opt_real(YamlReader::child(p, "tar_at_far_5"));
+        r.roc = read_roc_points(YamlReader::child(p, "roc"));
         f.rounds.push_back(r);
       }
     }
@@ -313,9 +270,9 @@ TrainingRecord read_training_v1(const FileNode& node) {
     if (by_p.isSeq()) {
       for (auto it = by_p.begin(); it != by_p.end(); ++it) {
         const FileNode p = *it;
-        f.by_probability.push_back({Reader::opt_real(Reader::child(p, "probability")),
-                                    Reader::opt_real(Reader::child(p, "tar")),
-                                    Reader::opt_real(Reader::child(p, "far"))});
+        f.by_probability.push_back({YamlReader::opt_real(YamlReader::child(p, "probability")),
+                                    YamlReader::opt_real(YamlReader::child(p, "tar")),
+                                    YamlReader::opt_real(YamlReader::child(p, "far"))});
       }
     }
   }
@@ -323,7 +280,7 @@ TrainingRecord read_training_v1(const FileNode& node) {
 }
 
 // Nodes of a tree (format 2).
-std::vector<LutNode> read_tree_nodes(const Reader& r, const FileNode& n, const std::string& context) {
+std::vector<LutNode> read_tree_nodes(const YamlReader& r, const FileNode& n, const std::string& context) {
   const FileNode nodes = r.need(n, "nodes", context);
   if (!nodes.isSeq()) r.bad("'" + context + "nodes' is not a list");
   std::vector<LutNode> out;
@@ -340,7 +297,7 @@ std::vector<LutNode> read_tree_nodes(const Reader& r, const FileNode& n, const s
   return out;
 }
 
-ScoreCalibration read_calibration(const Reader& r, const FileNode& root) {
+ScoreCalibration read_calibration(const YamlReader& r, const FileNode& root) {
   const FileNode c = r.need(root, "calibration", "");
   ScoreCalibration out;
   out.method = r.text(c, "method", "calibration.");
@@ -353,16 +310,16 @@ ScoreCalibration read_calibration(const Reader& r, const FileNode& root) {
     r.bad("'calibration' has a = " + std::to_string(out.a) + ", b = " + std::to_string(out.b) +
           " (a must be a positive finite number)");
   }
-  out.positives = static_cast<std::size_t>(std::max(0, Reader::opt_int(c["positives"])));
-  out.negatives = static_cast<std::size_t>(std::max(0, Reader::opt_int(c["negatives"])));
-  out.source = Reader::opt_text(c["source"]);
+  out.positives = static_cast<std::size_t>(std::max(0, YamlReader::opt_int(c["positives"])));
+  out.negatives = static_cast<std::size_t>(std::max(0, YamlReader::opt_int(c["negatives"])));
+  out.source = YamlReader::opt_text(c["source"]);
   return out;
 }
 
 // training.crops (format 3, optional): how the training crops were cut.
-CropProvenance read_crops_v3(const Reader& r, const FileNode& training) {
+CropProvenance read_crops_v3(const YamlReader& r, const FileNode& training) {
   CropProvenance crops;
-  const FileNode node = Reader::child(training, "crops");
+  const FileNode node = YamlReader::child(training, "crops");
   if (node.empty()) return crops;
   crops.window_box = r.text(node, "window_box", "training.crops.");
   crops.window_scale = r.real(node, "window_scale", "training.crops.");
@@ -374,7 +331,7 @@ CropProvenance read_crops_v3(const Reader& r, const FileNode& training) {
 
 // Formats 1, 2 and 3 share their layout; 2 adds `calibration`, trees and validation.by_probability; 3
 // adds training.crops.
-BoostedModel read_v1_to_v3(const Reader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
+BoostedModel read_v1_to_v3(const YamlReader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
   const FeatureSpec spec = read_feature_spec_v1(r, root, expected);
   const FileNode classifier = r.need(root, "classifier", "");
   const FileNode bins_node = r.need(classifier, "bins", "classifier.");
@@ -426,7 +383,7 @@ BoostedModel read_v1_to_v3(const Reader& r, const FileNode& root, const FeatureS
   } catch (const Error& e) {
     r.bad(e.what());
   }
-  model.set_identity(r.text(root, "name", ""), r.integer(root, "version", ""), r.path, r.text(root, "created", ""));
+  model.set_identity(r.text(root, "name", ""), r.integer(root, "version", ""), r.path(), r.text(root, "created", ""));
   model.training() = read_training_v1(root["training"]);
   if (format_version >= 3) model.training().crops = read_crops_v3(r, root["training"]);
   model.set_format_version(format_version);
@@ -441,7 +398,7 @@ BoostedModel read_v1_to_v3(const Reader& r, const FileNode& root, const FeatureS
 }
 
 // The file once OpenCV has parsed it.
-BoostedModel read_opened(const Reader& r, const FileNode& root, const FeatureSpec* expected) {
+BoostedModel read_opened(const YamlReader& r, const FileNode& root, const FeatureSpec* expected) {
   if (!root.isMap()) r.bad("not an rdsf model file (no 'format: " + std::string(kModelFormat) + "')");
   const FileNode format = root["format"];
   if (!format.isString() || static_cast<std::string>(format) != kModelFormat) {
@@ -484,40 +441,8 @@ std::string model_file_text(const BoostedModel& model) {
 namespace {
 
 BoostedModel read_model_file_checked(const std::string& path, const FeatureSpec* expected) {
-  Reader r{path};
-  std::string text;
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) r.bad("cannot be read (missing or no permission)");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-  }
-  if (const std::string problem = yaml_layout_problem(text); !problem.empty()) {
-    r.bad(problem + " (not a model file this workbench wrote)");
-  }
-  FileStorage fs;
-  try {
-    if (!fs.open(text, FileStorage::READ | FileStorage::MEMORY | FileStorage::FORMAT_YAML)) {
-      r.bad("cannot be opened as YAML");
-    }
-  } catch (const Error&) {
-    throw;
-  } catch (const cv::Exception& e) {
-    r.bad("is not a readable YAML file (" + one_line(e.err) + ")");
-  } catch (const std::exception& e) {
-    // OpenCV's parser lets standard exceptions through (std::length_error on some damaged files).
-    r.bad("is not a readable YAML file (" + one_line(e.what()) + ")");
-  }
-  try {
-    return read_opened(r, fs.root(), expected);
-  } catch (const Error&) {
-    throw;
-  } catch (const cv::Exception& e) {
-    r.bad("unreadable model (" + one_line(e.err) + ")");
-  } catch (const std::exception& e) {
-    r.bad("unreadable model (" + one_line(e.what()) + ")");
-  }
+  const YamlReader r = YamlReader::from_file(path, "model file");
+  return r.read([&](const YamlReader& reader) { return read_opened(reader, reader.root(), expected); });
 }
 
 }  // namespace

@@ -38,4 +38,8 @@ struct Recipe {
 /// recipe shipped_models_dir()/recipes/NAME.yml. Throws Error naming the file and the bad field.
 Recipe load_recipe(const std::string& name_or_path, const std::string& models_dir);
 
+/// The recipe in `text`, read from `path` (named in errors): every entry but the sets is optional (the
+/// defaults of BoostTrainingParams); a damaged layout is refused before OpenCV reads it (yaml_reader.hpp).
+Recipe parse_recipe(const std::string& text, const std::string& path);
+
 }  // namespace rdsf
