@@ -19,6 +19,7 @@ packages+=(
   libroscpp-dev libsensor-msgs-dev libcv-bridge-dev libimage-transport-dev libvisualization-msgs-dev
   libdiagnostic-msgs-dev python3-genmsg python3-gencpp ros-std-msgs ros-geometry-msgs ros-sensor-msgs
   ros-core python3-rosbag python3-sensor-msgs python3-numpy python3-png
+  libopenmpi-dev openmpi-bin parallel slurm-wlm  # issue 37: mpirun rdsf-train, shard-mine.sh, the Slurm array test
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -332,3 +332,52 @@ TEST(Miner, BadSourceFailsBeforeTheSetIsCreated) {
   EXPECT_NE(result.err.find(dir / "no-such-folder" + ": no such file or folder"), std::string::npos) << result.err;
   EXPECT_FALSE(fs::exists(dir / "set"));
 }
+
+// Mining at scale (issue 37): scripts/shard-mine.sh mines a list of recordings in 3 shards over GNU parallel
+// and merges them; scripts/slurm/mine-array.sbatch does each shard as an array task (run here with the
+// variables Slurm sets, no Slurm daemons) and the merge. Both merged sets hold exactly the samples of one
+// rdsf-mine over the list: the same (label, source, frame, boxes, crop hash) rows, compared sorted (ids and
+// order differ by design).
+TEST(Miner, ShardMineScriptAndSlurmArrayEqualOneRun) {
+  if (run("command -v parallel").exit_code != 0) GTEST_SKIP() << "GNU parallel is absent (Debian: parallel): skipped";
+  rdsf::test::TempDir dir;
+  std::string list_text, sources;
+  for (int k = 1; k <= 3; ++k) {  // three short people-free recordings of other lengths
+    const std::string recording = dir / ("recording" + std::to_string(k));
+    ASSERT_EQ(run(quote(rdsf::test::program("rdsf-synth")) + " --out " + quote(recording) + " --frames " +
+                  std::to_string(4 + k) + " --seed " + std::to_string(k) + " --empty --clip-frames 4")
+                  .exit_code,
+              0);
+    list_text += recording + "\n";
+    sources += " " + quote(recording);
+  }
+  std::ofstream(dir / "list.txt") << "# people-free rooms\n" << list_text;
+  const std::string whole = dir / "whole";
+  ASSERT_EQ(run(mine("--source" + sources + " --out " + quote(whole))).exit_code, 0);
+  const std::vector<Key> expected = sorted(keys_of(whole));
+  ASSERT_GT(expected.size(), 10u);
+
+  const std::string env = "RDSF_BUILD_DIR=" + quote(RDSF_BINARY_DIR) + " ";
+  const std::string script = quote(std::string(RDSF_SOURCE_DIR) + "/scripts/shard-mine.sh");
+  const auto sharded = run(env + script + " --list " + quote(dir / "list.txt") + " --out " + quote(dir / "merged") +
+                           " --shards 3 -- --threads 1");
+  ASSERT_EQ(sharded.exit_code, 0) << sharded.err << sharded.out;
+  EXPECT_NE(sharded.out.find("shard 3/3"), std::string::npos) << sharded.out;
+  EXPECT_EQ(sorted(keys_of(dir / "merged")), expected);
+
+  // Array indices 0-2 (Slurm's --array=0-2), then the merge job.
+  const std::string sbatch = "SLURM_SUBMIT_DIR=" + quote(RDSF_SOURCE_DIR) + " " + env + "bash " +
+                             quote(std::string(RDSF_SOURCE_DIR) + "/scripts/slurm/mine-array.sbatch");
+  const std::string sets = " " + quote(dir / "list.txt") + " " + quote(dir / "slurm");
+  for (int task = 0; task <= 2; ++task) {
+    const auto result = run("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_MAX=2 " +
+                            sbatch + sets + " -- --threads 1");
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.err.find("shard " + std::to_string(task + 1) + "/3"), std::string::npos) << result.err;
+  }
+  const auto merged = run(sbatch + " --merge" + sets);
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_EQ(sorted(keys_of(dir / "slurm")), expected);
+  // Outside an array task the per-shard step refuses to run.
+  EXPECT_NE(run(sbatch + sets).exit_code, 0);
+}

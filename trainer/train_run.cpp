@@ -14,6 +14,7 @@
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/recipe.hpp"
+#include "trainer/ranks.hpp"
 #include "rdsf/dataset/thesis_text.hpp"
 #include "trainer/training_samples.hpp"
 
@@ -89,9 +90,55 @@ void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& vali
   }
 }
 
+// What every rank of a data-parallel run must have alike: the effective recipe and options, one per line.
+std::string options_text(const Recipe& r, const TrainOptions& o) {
+  std::string text;
+  auto line = [&text](const std::string& name, const std::string& value) { text += name + " " + value + "\n"; };
+  auto list = [](const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& item : items) out += item + " ";
+    return out;
+  };
+  const BoostTrainingParams& p = r.params;
+  line("recipe", o.recipe + " " + r.name);
+  line("pos", list(r.pos_sets));
+  line("neg", list(r.neg_sets));
+  line("validation", list(r.validation_pos_sets) + "/ " + list(r.validation_neg_sets));
+  line("counts", std::to_string(r.positives) + " " + std::to_string(r.negatives));
+  line("boosting", p.backend.name() + " rounds " + std::to_string(p.rounds) + " bins " + std::to_string(p.bins.count) +
+                       " depth " + std::to_string(p.depth) + " folds " + std::to_string(p.folds) + " seed " +
+                       std::to_string(p.seed) + " early " + std::to_string(p.early_stopping) + " report " +
+                       std::to_string(p.report_every) + " calibration " + p.calibration);
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers, "%.17g %.17g %.17g %.17g", p.learning_rate, p.smoothing,
+                p.validation_fraction, p.weight_trim);
+  line("numbers", numbers);
+  line("groups", std::to_string(o.group_frames) + " " + o.group_by);
+  line("augment", o.augment + " " + std::to_string(o.augment_copies) + (o.thesis ? " thesis" : ""));
+  line("features", (o.feature_spec_given ? o.feature_spec.canonical() : std::string("the sets'")) + " pool " +
+                       std::to_string(o.feature_pool) + " budget " + std::to_string(o.memory_budget_mb));
+  line("name", o.name + " in " + o.models_dir + " init " + o.init);
+  return text;
+}
+
+// What every rank must have read alike: the feature spec and every set's manifest and counts.
+std::string data_text(const ChosenSamples& train, const ChosenSamples& validation) {
+  std::string text = "feature spec " + train.spec.hash() + " rows " + std::to_string(train.labels.size()) + " + " +
+                     std::to_string(validation.labels.size()) + "\n";
+  for (const ChosenSamples* c : {&train, &validation}) {
+    for (const SampleSetUse& u : c->sets) {
+      text += u.role + " " + u.path + " manifest " + u.manifest_hash + " available " + std::to_string(u.available) +
+              " used " + std::to_string(u.used) + "\n";
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
-int run_train(const TrainOptions& o) {
+int run_train(const TrainOptions& o) { return run_train(o, RowShards{}); }
+
+int run_train(const TrainOptions& o, const RowShards& shards) {
   std::vector<std::pair<std::string, std::string>> provenance;  // checked before any work
   for (const std::string& kv : o.provenance) {
     const std::size_t eq = kv.find('=');
@@ -104,6 +151,15 @@ int run_train(const TrainOptions& o) {
     provenance.emplace_back(key, kv.substr(eq + 1));
   }
   const Recipe recipe = effective_recipe(o);
+  const bool ranks = shards.distributed();
+  if (ranks) {
+    check_ranks_agree(shards, "options", options_text(recipe, o));
+    if (recipe.params.backend != BoostBackend::native || recipe.params.weight_trim > 0.0 ||
+        recipe.params.histogram_subtraction) {
+      throw cli::UsageError("data-parallel training (" + std::to_string(shards.size()) +
+                            " ranks) needs the native backend without --weight-trim and --histogram-subtraction");
+    }
+  }
   if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
   const std::string name = o.name.empty() ? recipe.name : o.name;
   if (name.empty()) throw cli::UsageError("ad hoc training needs a model name: give --name NAME");
@@ -115,7 +171,7 @@ int run_train(const TrainOptions& o) {
   // Continued training: the model is read (and its bins checked) before any sample is.
   std::optional<BoostedModel> init;
   if (!o.init.empty()) {
-    init = BoostedModel::load(o.init, o.models_dir);
+    on_every_rank(shards, "reading the --init model", [&] { init = BoostedModel::load(o.init, o.models_dir); });
     const bool bins_given = std::any_of(o.boosting.begin(), o.boosting.end(), [](const auto& g) { return g.first == "bins"; });
     if (bins_given && recipe.params.bins.count != init->bins().count) {
       throw cli::UsageError("--bins " + std::to_string(recipe.params.bins.count) + " differs from the --init model's " +
@@ -123,7 +179,12 @@ int run_train(const TrainOptions& o) {
     }
   }
 
-  const ChosenSamples train = choose_samples(training_choice(recipe, o), std::cerr, o.threads);
+  SampleChoice train_choice = training_choice(recipe, o);
+  train_choice.shard = shards.rank();
+  train_choice.shards = shards.size();
+  ChosenSamples train;
+  on_every_rank(shards, "reading its share of the training sets",
+                [&] { train = choose_samples(train_choice, std::cerr, o.threads); });
   ChosenSamples validation;
   if (!recipe.validation_pos_sets.empty()) {
     SampleChoice v;
@@ -138,8 +199,16 @@ int run_train(const TrainOptions& o) {
     v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
     v.group_frames = o.group_frames;
     v.group_by = parse_group_by(o.group_by);
-    validation = choose_samples(v, std::cerr, o.threads);
+    v.shard = shards.rank();
+    v.shards = shards.size();
+    on_every_rank(shards, "reading its share of the validation sets",
+                  [&] { validation = choose_samples(v, std::cerr, o.threads); });
     check_disjoint_groups(train, validation);
+  }
+  check_ranks_agree(shards, "sample sets or feature spec", data_text(train, validation));
+  if (ranks) {
+    std::cerr << "rdsf-train: " << shards.size() << " ranks; rank 0 holds " << train.rows.rows << " of the "
+              << train.labels.size() << " training rows\n";
   }
   const std::size_t positives = static_cast<std::size_t>(std::count(train.labels.begin(), train.labels.end(), 1));
   std::cerr << "rdsf-train: " << positives << " positives, " << train.labels.size() - positives
@@ -168,6 +237,10 @@ int run_train(const TrainOptions& o) {
   TrainingRowInfo info;
   info.groups = train.groups;
   info.augmented = train.augmented;
+  if (ranks) {
+    info.owners = RowOwners(&shards, train.owner);
+    if (separate) info.validation_owners = RowOwners(&shards, validation.owner);
+  }
   BoostTrainingParams params = recipe.params;
   params.feature_spec = train.spec;
   params.feature_columns = train.columns;
@@ -206,7 +279,11 @@ int run_train(const TrainOptions& o) {
   if (!init_reference.empty()) record.parameters.emplace_back("init", init_reference);
   record.parameters.insert(record.parameters.end(), provenance.begin(), provenance.end());
 
-  const std::string path = save_new_model_version(model, name, o.models_dir);
+  std::string path;  // rank 0 writes the model; every rank learns whether it could
+  on_every_rank(shards, "writing the model", [&] {
+    if (shards.rank() == 0) path = save_new_model_version(model, name, o.models_dir);
+  });
+  if (shards.rank() != 0) return 0;
   const ValidationFigures& v = record.validation;
   std::fprintf(stderr, "rdsf-train: %zu weak classifiers (%s); validation: %s\n", model.weak_classifiers().size(),
                record.stopped.c_str(), v.source.c_str());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/classifier/row_shards.hpp"
 
 namespace rdsf {
 
@@ -44,6 +45,11 @@ struct TrainOptions {
 
 /// Trains and saves models_dir/NAME/vN.yml; progress on stderr. Returns the exit code.
 int run_train(const TrainOptions& options);
+
+/// The same over the ranks of `shards` (mpirun -np N rdsf-train, docs/scaling.md): every rank checks that
+/// the others have its options, feature spec and sample sets, computes the feature rows of its share only,
+/// and trains with the others; rank 0 reports progress and writes the model, the others write nothing.
+int run_train(const TrainOptions& options, const RowShards& shards);
 
 /// Prints the header, figures and most used features of a model file (or NAME, NAME/vN) to `out`.
 int run_inspect(const TrainOptions& options, std::ostream& out);

@@ -77,9 +77,18 @@ ClassPick pick_class(const std::vector<std::string>& paths, int label, std::size
 constexpr std::size_t kChunk = 2048;
 
 
+// Rank of the k-th of `count` chosen samples of a class: `shards` contiguous blocks of nearly equal size.
+int block_owner(std::size_t k, std::size_t count, int shards) {
+  return static_cast<int>(k * static_cast<std::size_t>(shards) / std::max<std::size_t>(1, count));
+}
+
+// Appends a class's rows (those of rank `shard` only: the others are another rank's) and every row's label,
+// origin, source and owner. `row` counts every row, `local` the rows computed here.
 void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, const RdsfExtractor& extractor,
-                 int threads, ChosenSamples& out, int& row, cli::Progress& progress, std::vector<SampleOrigin>& origins,
+                 int threads, const SampleChoice& choice, ChosenSamples& out, int& row, int& local,
+                 cli::Progress& progress, std::vector<SampleOrigin>& origins,
                  std::vector<std::pair<std::size_t, std::size_t>>& sources) {
+  std::size_t k = 0;  // the class's chosen sample
   for (std::size_t s = 0; s < pick.sets.size(); ++s) {
     std::vector<std::size_t> indices;
     for (const PoolEntry& e : pick.chosen) {
@@ -88,18 +97,25 @@ void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, 
     for (std::size_t begin = 0; begin < indices.size(); begin += kChunk) {
       const std::vector<std::size_t> chunk(indices.begin() + static_cast<long>(begin),
                                           indices.begin() + static_cast<long>(std::min(indices.size(), begin + kChunk)));
-      const cv::Mat1f rows = subset != nullptr ? pick.sets[s].features(*subset, chunk, threads)
-                                               : pick.sets[s].features(extractor, chunk, threads);
-      if (rows.rows != static_cast<int>(chunk.size()) || rows.cols != out.rows.cols) {
-        fail(pick.sets[s].dir(), "feature rows of the wrong size were returned");
-      }
-      rows.copyTo(out.rows.rowRange(row, row + rows.rows));
-      row += rows.rows;
-      out.labels.insert(out.labels.end(), chunk.size(), label);
+      std::vector<std::size_t> mine;
       for (std::size_t r : chunk) {
         const SampleRecord& record = pick.sets[s].records()[r];
         origins.push_back({record.source, record.frame});
         sources.emplace_back(s, r);
+        const int owner = block_owner(k++, pick.chosen.size(), choice.shards);
+        if (choice.shards > 1) out.owner.push_back(owner);
+        if (owner == choice.shard) mine.push_back(r);
+      }
+      out.labels.insert(out.labels.end(), chunk.size(), label);
+      row += static_cast<int>(chunk.size());
+      if (!mine.empty()) {
+        const cv::Mat1f rows = subset != nullptr ? pick.sets[s].features(*subset, mine, threads)
+                                                 : pick.sets[s].features(extractor, mine, threads);
+        if (rows.rows != static_cast<int>(mine.size()) || rows.cols != out.rows.cols) {
+          fail(pick.sets[s].dir(), "feature rows of the wrong size were returned");
+        }
+        rows.copyTo(out.rows.rowRange(local, local + rows.rows));
+        local += rows.rows;
       }
       progress.update(row, (label == 1 ? "positives from " : "negatives from ") + pick.sets[s].dir());
     }
@@ -145,38 +161,55 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
       extractor.compute(crop, values);
     }
   };
-  out.rows.create(static_cast<int>(samples), columns);
+  if (choice.shards < 1 || choice.shard < 0 || choice.shard >= choice.shards) {
+    throw Error("rank " + std::to_string(choice.shard) + " of " + std::to_string(choice.shards) + " is not a rank");
+  }
+  std::size_t here = 0;  // rows computed here: this rank's block of each class
+  for (const std::size_t count : {pos.chosen.size(), neg.chosen.size()}) {
+    for (std::size_t k = 0; k < count; ++k) here += block_owner(k, count, choice.shards) == choice.shard ? 1 : 0;
+  }
+  out.rows.create(static_cast<int>(here), columns);
   choice.augmentation.validate();
-  int row = 0;
-  cli::Progress progress(log, "samples", out.rows.rows);
+  int row = 0, local = 0;
+  cli::Progress progress(log, "samples", static_cast<std::int64_t>(samples));
   std::vector<SampleOrigin> origins;
   std::vector<std::pair<std::size_t, std::size_t>> pos_sources, neg_sources;
-  append_rows(pos, 1, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, pos_sources);
-  append_rows(neg, 0, subset ? &*subset : nullptr, extractor, threads, out, row, progress, origins, neg_sources);
+  append_rows(pos, 1, subset ? &*subset : nullptr, extractor, threads, choice, out, row, local, progress, origins,
+              pos_sources);
+  append_rows(neg, 0, subset ? &*subset : nullptr, extractor, threads, choice, out, row, local, progress, origins,
+              neg_sources);
   progress.finish(row, "features ready");
   out.augmented.assign(out.labels.size(), false);
   if (choice.augmentation.enabled()) {
     // Variants of every positive with a crop, after the originals, with their original's origin (group).
+    // With ranks, each computes the copies of its own positives; every rank knows how many each has.
+    const std::size_t per_crop = (choice.augmentation.mirror ? 1u : 0u) + static_cast<std::size_t>(choice.augmentation.copies);
     std::vector<float> values(static_cast<std::size_t>(columns));
     cv::Mat1f extra(0, columns);
     std::vector<SampleOrigin> extra_origins;
+    std::vector<int> extra_owners;
     for (std::size_t k = 0; k < pos_sources.size(); ++k) {
       const SampleSet& set = pos.sets[pos_sources[k].first];
       const SampleRecord& record = set.records()[pos_sources[k].second];
       if (!record.has_crop) continue;
-      for (const cv::Mat1w& crop : augmented_crops(set.depth_crop(pos_sources[k].second), choice.augmentation, record.id)) {
+      const int owner = out.owner.empty() ? 0 : out.owner[k];
+      extra_origins.insert(extra_origins.end(), per_crop, origins[k]);
+      extra_owners.insert(extra_owners.end(), per_crop, owner);
+      if (owner != choice.shard) continue;
+      const std::vector<cv::Mat1w> copies =
+          augmented_crops(set.depth_crop(pos_sources[k].second), choice.augmentation, record.id);
+      if (copies.size() != per_crop) fail(set.dir(), "augmentation gave another number of copies than expected");
+      for (const cv::Mat1w& crop : copies) {
         compute_row(crop, values.data());
         extra.push_back(cv::Mat1f(1, columns, values.data()));
-        extra_origins.push_back(origins[k]);
       }
     }
-    if (!extra.empty()) {
-      cv::vconcat(out.rows, extra, out.rows);
-      out.labels.insert(out.labels.end(), static_cast<std::size_t>(extra.rows), 1);
-      out.augmented.insert(out.augmented.end(), static_cast<std::size_t>(extra.rows), true);
-      origins.insert(origins.end(), extra_origins.begin(), extra_origins.end());
-    }
-    log << "rdsf-train: augmentation (" << choice.augmentation.describe() << "): " << extra.rows
+    if (!extra.empty()) cv::vconcat(out.rows, extra, out.rows);
+    out.labels.insert(out.labels.end(), extra_origins.size(), 1);
+    out.augmented.insert(out.augmented.end(), extra_origins.size(), true);
+    origins.insert(origins.end(), extra_origins.begin(), extra_origins.end());
+    if (!out.owner.empty()) out.owner.insert(out.owner.end(), extra_owners.begin(), extra_owners.end());
+    log << "rdsf-train: augmentation (" << choice.augmentation.describe() << "): " << extra_origins.size()
         << " more positives\n";
   }
   if (choice.group_frames > 0) {

@@ -39,18 +39,24 @@ struct SampleChoice {
   int group_frames = 30;
   GroupBy group_by = GroupBy::recording_block;
   CropAugmentation augmentation;  ///< positives only; off by default
+  /// Data-parallel training (issue 37): this process is rank `shard` of `shards` and computes the feature
+  /// rows of its share only: each class's chosen samples in `shards` contiguous blocks of (nearly) equal
+  /// size, in order (rank r holds block r), an augmented copy where its original is. Everything else
+  /// (labels, groups, sets) is of every row. 1: one process, every row.
+  int shard = 0, shards = 1;
 };
 
 struct ChosenSamples {
   FeatureSpec spec;         ///< of the sets
   CropProvenance crops;     ///< how the sets' crops were cut (unknown when none records it)
   std::vector<int> columns; ///< feature of each column when the rows hold a pool; empty: all features
-  cv::Mat1f rows;           ///< one feature row per sample, positives first
+  cv::Mat1f rows;           ///< one feature row per sample, positives first (this rank's rows only)
   std::vector<int> labels;  ///< 1 / 0
   std::vector<SampleSetUse> sets;  ///< per set and role: path, manifest hash, available, used
   std::vector<std::size_t> groups;    ///< per row: group id (dataset/sample_groups.hpp)
   std::vector<std::string> group_names;  ///< group id -> "recording#block"
   std::vector<bool> augmented;        ///< per row: an augmented copy (after the originals)
+  std::vector<int> owner;             ///< per row: the rank holding it (SampleChoice::shards); empty: one process
 };
 
 

@@ -33,6 +33,7 @@ std::string number_text(double value) {
 // Validation samples: rows of a matrix, by index.
 struct ValidationView {
   const cv::Mat1f* rows = nullptr;
+  const RowOwners* owners = nullptr;  // which rank holds each of `rows` (data-parallel training)
   std::vector<std::size_t> index;
   std::vector<int> labels;
   bool empty() const { return labels.empty(); }
@@ -66,6 +67,20 @@ std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTra
 }
 
 
+// score(row) of the rows `index` lists (global indices), each computed by the rank holding it, in order on
+// every rank; with one process simply in order.
+template <typename Score>
+std::vector<double> scores_of(const cv::Mat1f& rows, const std::vector<std::size_t>& index, const RowOwners& owners,
+                              Score score) {
+  std::vector<double> local;
+  local.reserve(index.size());
+  for (std::size_t i : index) {
+    const long l = owners.local(i);
+    if (l >= 0) local.push_back(score(rows[static_cast<int>(l)]));
+  }
+  return owners.whole(local, index);
+}
+
 // Column c of the rows -> feature of the spec (the pool's feature, or c itself).
 struct ColumnFeatures {
   const std::vector<int>* columns = nullptr;
@@ -75,8 +90,20 @@ struct ColumnFeatures {
 // Step 1: the rows, labels and row information agree with each other and with the feature spec.
 void check_rows(const cv::Mat1f& rows, const std::vector<int>& labels, const BoostTrainingParams& params,
                 const TrainingRowInfo& info) {
-  if (rows.rows != static_cast<int>(labels.size())) {
-    throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(labels.size()) + " labels");
+  const std::size_t held =
+      info.owners.owner.empty()
+          ? labels.size()
+          : static_cast<std::size_t>(std::count_if(info.owners.local_of.begin(), info.owners.local_of.end(),
+                                                   [](long l) { return l >= 0; }));
+  if (!info.owners.owner.empty() && info.owners.owner.size() != labels.size()) {
+    throw Error("training: owners of " + std::to_string(info.owners.owner.size()) + " rows for " +
+                std::to_string(labels.size()) + " labels");
+  }
+  if (rows.rows != static_cast<int>(held)) {
+    throw Error("training: " + std::to_string(rows.rows) + " rows for " + std::to_string(held) + " labels");
+  }
+  if (info.owners.distributed() && params.backend != BoostBackend::native) {
+    throw Error("data-parallel training needs the native backend");
   }
   const std::vector<int>& columns = params.feature_columns;
   const int column_count = columns.empty() ? params.feature_spec.dimension() : static_cast<int>(columns.size());
@@ -103,11 +130,17 @@ TrainValidationSplit split_rows(const cv::Mat1f& rows, const std::vector<int>& l
   TrainValidationSplit out;
   ValidationView& validation = out.validation;
   if (validation_rows != nullptr && validation_labels != nullptr && !validation_labels->empty()) {
-    if (validation_rows->rows != static_cast<int>(validation_labels->size()) || validation_rows->cols != rows.cols) {
+    const std::size_t here = info.validation_owners.owner.empty()
+                                 ? validation_labels->size()
+                                 : static_cast<std::size_t>(std::count_if(info.validation_owners.local_of.begin(),
+                                                                          info.validation_owners.local_of.end(),
+                                                                          [](long l) { return l >= 0; }));
+    if (validation_rows->rows != static_cast<int>(here) || validation_rows->cols != rows.cols) {
       throw Error("training: validation rows and labels do not match");
     }
     for (std::size_t i = 0; i < labels.size(); ++i) out.train_index.push_back(i);
     validation.rows = validation_rows;
+    validation.owners = &info.validation_owners;
     validation.labels = *validation_labels;
     for (std::size_t i = 0; i < validation.labels.size(); ++i) validation.index.push_back(i);
     out.source = "separate sets";
@@ -120,6 +153,7 @@ TrainValidationSplit split_rows(const cv::Mat1f& rows, const std::vector<int>& l
     const HoldOutSplit split = group_split(labels, info.groups, params.validation_fraction, params.seed, counts);
     out.train_index = split.train;
     validation.rows = &rows;
+    validation.owners = &info.owners;
     std::vector<std::size_t> held_groups;
     for (std::size_t i : split.validation) {
       held_groups.push_back(info.groups[i]);
@@ -135,6 +169,7 @@ TrainValidationSplit split_rows(const cv::Mat1f& rows, const std::vector<int>& l
     const HoldOutSplit split = stratified_split(labels, params.validation_fraction, params.seed);
     out.train_index = split.train;
     validation.rows = &rows;
+    validation.owners = &info.owners;
     validation.index = split.validation;
     for (std::size_t i : split.validation) validation.labels.push_back(labels[i]);
     if (!validation.index.empty()) {
@@ -167,6 +202,7 @@ TrainingSide training_side(const std::vector<int>& labels, const std::vector<std
 
 // Continued training: the score F0 of params.init (H(x) of a model of those weak classifiers) on each of
 // `rows`' rows in `index`.
+// Scores of the --init model: of `rows`' rows `index` lists (indices into `rows`).
 std::vector<double> init_scores(const cv::Mat1f& rows, const std::vector<std::size_t>& index, const BoostTrainingParams& params) {
   const BoostedModel init(params.feature_spec, params.bins, params.init);
   std::vector<double> scores(index.size(), 0.0);
@@ -188,7 +224,13 @@ class RoundObserver {
                 ColumnFeatures feature_of, const TrainingProgressFn& progress, Clock::time_point start)
       : params_(params), validation_(validation), validating_(validating), feature_of_(feature_of),
         progress_(progress), start_(start), scores_(validation.labels.size(), 0.0) {
-    if (!params.init.empty() && validation.rows != nullptr) scores_ = init_scores(*validation.rows, validation.index, params);
+    // The validation rows this rank holds (all of them with one process), as rows of validation.rows.
+    for (std::size_t i : validation.index) {
+      const long l = validation.owners == nullptr ? static_cast<long>(i) : validation.owners->local(i);
+      if (l >= 0) local_rows_.push_back(static_cast<std::size_t>(l));
+    }
+    local_scores_.assign(local_rows_.size(), 0.0);
+    if (!params.init.empty() && validation.rows != nullptr) local_scores_ = init_scores(*validation.rows, local_rows_, params);
   }
 
   /// Returns false to stop (early stopping).
@@ -203,9 +245,10 @@ class RoundObserver {
     report.feature = feature_of_(weak.feature);
     report.train_error = train_error;
     if (validating_) {
-      for (std::size_t k = 0; k < validation_.index.size(); ++k) {
-        scores_[k] += weak.respond_row((*validation_.rows)[static_cast<int>(validation_.index[k])], params_.bins);
+      for (std::size_t k = 0; k < local_rows_.size(); ++k) {
+        local_scores_[k] += weak.respond_row((*validation_.rows)[static_cast<int>(local_rows_[k])], params_.bins);
       }
+      scores_ = validation_.owners == nullptr ? local_scores_ : validation_.owners->whole(local_scores_, validation_.index);
       const RocSummary s = summarise_roc(scores_, validation_.labels);
       figures.roc = roc_at_far_levels(roc_curve(scores_, validation_.labels));
       figures.validation_error = s.error_rate;
@@ -250,6 +293,8 @@ class RoundObserver {
   const TrainingProgressFn& progress_;
   Clock::time_point start_;
   std::vector<double> scores_;  // validation scores so far
+  std::vector<std::size_t> local_rows_;  // the validation rows held here, as rows of validation_.rows
+  std::vector<double> local_scores_;     // their scores so far
   std::vector<RoundFigures> rounds_;
   double best_auc_ = -1.0;
   int best_round_ = 0;
@@ -265,8 +310,17 @@ struct Boosted {
 };
 
 Boosted boost_native(const cv::Mat1f& rows, const TrainingSide& side, const BoostTrainingParams& params,
-                     RoundObserver& observer) {
-  const BinnedMatrix binned(rows, params.bins, side.index, params.threads);
+                     RoundObserver& observer, const RowOwners& owners) {
+  // The training rows held here (all of them with one process), in the side's order.
+  std::vector<std::size_t> local_index;
+  std::vector<int> local_labels;
+  for (std::size_t k = 0; k < side.index.size(); ++k) {
+    const long l = owners.local(side.index[k]);
+    if (l < 0) continue;
+    local_index.push_back(static_cast<std::size_t>(l));
+    local_labels.push_back(side.labels[k]);
+  }
+  const BinnedMatrix binned(rows, params.bins, local_index, params.threads);
   RealAdaBoostParams rp;
   rp.smoothing = params.smoothing;
   rp.weight_trim = params.weight_trim;
@@ -274,8 +328,9 @@ Boosted boost_native(const cv::Mat1f& rows, const TrainingSide& side, const Boos
   rp.depth = params.depth;
   rp.learning_rate = params.learning_rate;
   rp.histogram_subtraction = params.histogram_subtraction;
-  RealAdaBoost booster(binned, side.labels, rp);
-  if (!params.init.empty()) booster.start_from_scores(init_scores(rows, side.index, params));
+  rp.shards = owners.distributed() ? owners.shards : nullptr;
+  RealAdaBoost booster(binned, local_labels, rp);
+  if (!params.init.empty()) booster.start_from_scores(init_scores(rows, local_index, params));
   const Clock::time_point boost_start = Clock::now();
   for (int round = 1; round <= params.rounds; ++round) {
     const Clock::time_point round_start = Clock::now();
@@ -358,10 +413,9 @@ BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const 
   weak.insert(weak.begin(), params.init.begin(), params.init.end());  // continued training: its model first
   BoostedModel model(params.feature_spec, params.bins, std::move(weak));
   if (validation.has_both_classes()) {
-    std::vector<double> final_scores(validation.labels.size(), 0.0);
-    for (std::size_t k = 0; k < validation.index.size(); ++k) {
-      final_scores[k] = model.score((*validation.rows)[static_cast<int>(validation.index[k])]);
-    }
+    const std::vector<double> final_scores =
+        scores_of(*validation.rows, validation.index, validation.owners == nullptr ? RowOwners{} : *validation.owners,
+                  [&model](const float* row) { return model.score(row); });
     record_validation(model, record.validation, final_scores, validation.labels, params.calibration, split.source);
   }
   if (!params.feature_columns.empty()) {  // columns of the pool -> features of the spec
@@ -454,7 +508,7 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
   const TrainingSide side = training_side(labels, split.train_index);
   const ColumnFeatures feature_of{&params.feature_columns};
   RoundObserver observer(params, split.validation, validating, feature_of, progress, start);
-  Boosted boosted = params.backend == BoostBackend::native ? boost_native(rows, side, params, observer)
+  Boosted boosted = params.backend == BoostBackend::native ? boost_native(rows, side, params, observer, info.owners)
                                                            : boost_opencv(rows, side, params, observer);
   return finish_model(std::move(boosted), observer, params, split, side, feature_of);
 }
@@ -492,13 +546,18 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
         held.push_back(static_cast<int>(i));
       }
     }
-    cv::Mat1f fold_rows(static_cast<int>(train_rows_index.size()), rows.cols);
-    std::vector<int> fold_labels;
+    // The fold's rows held here (all of them with one process).
     TrainingRowInfo fold_info;
-    for (std::size_t k = 0; k < train_rows_index.size(); ++k) {
-      rows.row(train_rows_index[k]).copyTo(fold_rows.row(static_cast<int>(k)));
-      fold_labels.push_back(labels[static_cast<std::size_t>(train_rows_index[k])]);
+    fold_info.owners = info.owners.subset(train_rows_index);
+    std::vector<int> fold_local;
+    for (int i : train_rows_index) {
+      const long l = info.owners.local(static_cast<std::size_t>(i));
+      if (l >= 0) fold_local.push_back(static_cast<int>(l));
     }
+    cv::Mat1f fold_rows(static_cast<int>(fold_local.size()), rows.cols);
+    std::vector<int> fold_labels;
+    for (std::size_t k = 0; k < fold_local.size(); ++k) rows.row(fold_local[k]).copyTo(fold_rows.row(static_cast<int>(k)));
+    for (int i : train_rows_index) fold_labels.push_back(labels[static_cast<std::size_t>(i)]);
     const auto fold_pos = std::count(fold_labels.begin(), fold_labels.end(), 1);
     // A held-out fold may hold one class only: the pooled scores need both (checked below).
     if (fold_pos == 0 || fold_pos == static_cast<long>(fold_labels.size())) {
@@ -525,16 +584,30 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
     const std::size_t first = params.init.size();
     const std::size_t rounds = weak_on_rows.size() - first;
     if (per_round.size() < rounds) per_round.resize(rounds);
+    // Scores of the held-out rows held here after each round, then of every held-out row in order.
+    std::vector<std::vector<double>> local_round(rounds);
+    std::vector<double> local_pooled;
+    std::vector<std::size_t> held_index;
     for (int i : held) {
-      double h = 0.0;
-      for (std::size_t r = 0; r < first; ++r) h += weak_on_rows[r].respond_row(rows[i], model.bins());
-      for (std::size_t r = 0; r < rounds; ++r) {
-        h += weak_on_rows[first + r].respond_row(rows[i], model.bins());
-        per_round[r].push_back(h);
-      }
-      pooled_scores.push_back(h);
+      held_index.push_back(static_cast<std::size_t>(i));
       pooled_labels.push_back(labels[static_cast<std::size_t>(i)]);
+      const long l = info.owners.local(static_cast<std::size_t>(i));
+      if (l < 0) continue;
+      const float* row = rows[static_cast<int>(l)];
+      double h = 0.0;
+      for (std::size_t r = 0; r < first; ++r) h += weak_on_rows[r].respond_row(row, model.bins());
+      for (std::size_t r = 0; r < rounds; ++r) {
+        h += weak_on_rows[first + r].respond_row(row, model.bins());
+        local_round[r].push_back(h);
+      }
+      local_pooled.push_back(h);
     }
+    for (std::size_t r = 0; r < rounds; ++r) {
+      const std::vector<double> whole = info.owners.whole(local_round[r], held_index);
+      per_round[r].insert(per_round[r].end(), whole.begin(), whole.end());
+    }
+    const std::vector<double> pooled = info.owners.whole(local_pooled, held_index);
+    pooled_scores.insert(pooled_scores.end(), pooled.begin(), pooled.end());
   }
   const auto pooled_pos = std::count(pooled_labels.begin(), pooled_labels.end(), 1);
   if (pooled_pos == 0 || pooled_pos == static_cast<long>(pooled_labels.size())) {
@@ -548,7 +621,9 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
     q.folds = static_cast<int>(folds);
     progress(q);
   };
-  BoostedModel model = train_boosted_model(rows, labels, inner, final_progress, nullptr, nullptr, {});
+  TrainingRowInfo final_info;
+  final_info.owners = info.owners;
+  BoostedModel model = train_boosted_model(rows, labels, inner, final_progress, nullptr, nullptr, final_info);
   TrainingRecord& record = model.training();
   record.parameters = parameter_record(params);
   const std::string source = std::to_string(folds) + " folds of whole groups (" + std::to_string(groups.count) +

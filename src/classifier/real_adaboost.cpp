@@ -90,7 +90,16 @@ RealAdaBoost::RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, Re
                 std::to_string(data_.samples()) + " samples");
   }
   const auto positives = std::count(labels_.begin(), labels_.end(), 1);
-  if (positives == 0 || positives == static_cast<long>(labels_.size())) {
+  double counts[2] = {static_cast<double>(positives), static_cast<double>(labels_.size())};  // exact integers
+  if (sharded()) {
+    params_.shards->sum(counts, 2);
+    if (params_.weight_trim > 0.0 || params_.histogram_subtraction) {
+      throw Error("Real AdaBoost: weight trimming and histogram subtraction need one process (data-parallel "
+                  "training over " + std::to_string(params_.shards->size()) + " ranks)");
+    }
+  }
+  total_samples_ = static_cast<std::size_t>(counts[1]);
+  if (counts[0] == 0.0 || counts[0] == counts[1]) {
     throw Error("Real AdaBoost: both positive and negative training samples are needed");
   }
   for (int label : labels_) {
@@ -100,7 +109,7 @@ RealAdaBoost::RealAdaBoost(const BinnedMatrix& data, std::vector<int> labels, Re
   if (!(params_.weight_trim >= 0.0 && params_.weight_trim < 1.0)) {
     throw Error("Real AdaBoost: weight trim " + std::to_string(params_.weight_trim) + " is outside [0, 1)");
   }
-  const double n = static_cast<double>(labels_.size());
+  const double n = static_cast<double>(total_samples_);
   eps_ = params_.smoothing > 0.0 ? params_.smoothing : 1.0 / n;
   if (params_.depth < 1 || params_.depth > 4) {
     throw Error("Real AdaBoost: depth " + std::to_string(params_.depth) + " is outside 1..4");
@@ -125,11 +134,13 @@ void RealAdaBoost::start_from_scores(const std::vector<double>& scores) {
   // exp(-y F) scaled by the largest exponent first, so that large scores cannot overflow.
   double largest = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < scores.size(); ++i) largest = std::max(largest, labels_[i] == 1 ? -scores[i] : scores[i]);
+  if (sharded()) params_.shards->max(&largest, 1);
   double total = 0.0;
   for (std::size_t i = 0; i < scores.size(); ++i) {
     weights_[i] = std::exp((labels_[i] == 1 ? -scores[i] : scores[i]) - largest);
     total += weights_[i];
   }
+  if (sharded()) params_.shards->sum(&total, 1);
   for (double& w : weights_) w /= total;
 }
 
@@ -157,14 +168,19 @@ double RealAdaBoost::table_z(const double* sums, bool split) const {
 RealAdaBoost::TableFit RealAdaBoost::fit_feature(std::size_t feature, double z, const std::vector<std::size_t>* subset,
                                                  const std::vector<std::uint8_t>& y, bool split) const {
   const int bin_count = data_.scheme().count;
-  TableFit fit;
-  fit.feature = feature;
-  fit.z = z;
   // Responses of the chosen feature, from the same samples as its histograms.
   double sums[2 * kMaxBins];
   feature_histogram(data_.feature(feature), y.data(), weights_.data(), data_.samples(),
                     subset == nullptr ? nullptr : subset->data(), subset == nullptr ? 0 : subset->size(), bin_count,
                     sums);
+  return fit_sums(feature, z, sums, split);
+}
+
+RealAdaBoost::TableFit RealAdaBoost::fit_sums(std::size_t feature, double z, const double* sums, bool split) const {
+  const int bin_count = data_.scheme().count;
+  TableFit fit;
+  fit.feature = feature;
+  fit.z = z;
   fit.responses.resize(static_cast<std::size_t>(bin_count));
   if (split) {
     const int t = split_z(sums, bin_count).second;  // bins <= t go left (-1), the others right (+1)
@@ -291,6 +307,58 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<
   return fits;
 }
 
+std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables_sharded(
+    const std::vector<const std::vector<std::size_t>*>& members, const std::vector<std::uint8_t>& y, bool split) const {
+  const std::size_t features = data_.features(), nodes = members.size();
+  const std::size_t width = 2 * static_cast<std::size_t>(data_.scheme().count);
+  const RowShards& shards = *params_.shards;
+  std::vector<double> sums;  // [node][feature][2 * bins]: this rank's
+  best_tables(members, y, split, nullptr, &sums);
+  // Per node, this rank sums every rank's sums of its block of features (reduce-scatter) and finds the
+  // block's best: the smallest Z, the lowest feature of equals.
+  std::vector<double> candidates;  // per node: Z, feature
+  for (std::size_t node = 0; node < nodes; ++node) {
+    double* node_sums = sums.data() + node * features * width;
+    const auto [f0, f1] = shards.sum_own_block(node_sums, features, width);
+    std::vector<double> z(f1 - f0);
+    parallel_chunks(z.size(), threads_, [&](std::size_t k0, std::size_t k1) {
+      for (std::size_t k = k0; k < k1; ++k) z[k] = table_z(node_sums + (f0 + k) * width, split);
+    });
+    const auto best = std::min_element(z.begin(), z.end());
+    candidates.push_back(best == z.end() ? std::numeric_limits<double>::infinity() : *best);
+    candidates.push_back(static_cast<double>(f0 + static_cast<std::size_t>(best - z.begin())));
+  }
+  // The best of the blocks (rank order = feature order, so ties still go to the lowest feature), then the
+  // winners' sums from the ranks that hold them.
+  const std::vector<double> all = shards.gather(candidates);
+  const auto ranks = static_cast<std::size_t>(shards.size());
+  std::vector<std::size_t> winner(nodes, 0);
+  for (std::size_t node = 0; node < nodes; ++node) {
+    for (std::size_t r = 1; r < ranks; ++r) {
+      if (all[(r * nodes + node) * 2] < all[(winner[node] * nodes + node) * 2]) winner[node] = r;
+    }
+  }
+  std::vector<double> mine;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    if (winner[node] != static_cast<std::size_t>(shards.rank())) continue;
+    const auto feature = static_cast<std::size_t>(candidates[2 * node + 1]);
+    const double* s = sums.data() + (node * features + feature) * width;
+    mine.insert(mine.end(), s, s + width);
+  }
+  const std::vector<double> won = shards.gather(mine);  // rank order, each rank's nodes in order
+  std::vector<TableFit> fits(nodes);
+  std::size_t next = 0;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    for (std::size_t node = 0; node < nodes; ++node) {
+      if (winner[node] != r) continue;
+      const double* c = all.data() + (r * nodes + node) * 2;
+      fits[node] = fit_sums(static_cast<std::size_t>(c[1]), c[0], won.data() + next, split);
+      next += width;
+    }
+  }
+  return fits;
+}
+
 RealAdaBoostRound RealAdaBoost::next_round() {
   const std::size_t n = data_.samples();
   const std::vector<std::size_t> trimmed =
@@ -303,7 +371,8 @@ RealAdaBoostRound RealAdaBoost::next_round() {
   std::vector<double> response(n);  // the weak classifier's (shrunk) response per sample
   double z = 0.0;
   if (params_.depth <= 1) {
-    TableFit fit = std::move(best_tables({trimmed.empty() ? nullptr : &trimmed}, y, false)[0]);
+    const std::vector<const std::vector<std::size_t>*> all{trimmed.empty() ? nullptr : &trimmed};
+    TableFit fit = std::move((sharded() ? best_tables_sharded(all, y, false) : best_tables(all, y, false))[0]);
     weak.kind = WeakClassifier::Kind::Lut;
     weak.feature = static_cast<int>(fit.feature);
     for (double& r : fit.responses) r *= nu;
@@ -336,9 +405,13 @@ RealAdaBoostRound RealAdaBoost::next_round() {
       }
       std::vector<std::size_t> fitted;
       std::vector<const std::vector<std::size_t>*> lists;
+      std::vector<double> masses(k1 - k0, 0.0);
       for (std::size_t k = k0; k < k1; ++k) {
-        double mass = 0.0;
-        for (std::size_t i : members[k - k0]) mass += weights_[i];
+        for (std::size_t i : members[k - k0]) masses[k - k0] += weights_[i];
+      }
+      if (sharded()) params_.shards->sum(masses.data(), masses.size());
+      for (std::size_t k = k0; k < k1; ++k) {
+        const double mass = masses[k - k0];
         LutNode& node = weak.nodes[k];
         if (k > 0 && mass <= 1e-12) {
           // Nothing reaches it: a table of zeros (a leaf responds 0, an inner node sends everything left).
@@ -368,7 +441,8 @@ RealAdaBoostRound RealAdaBoost::next_round() {
           any = true;
         }
         const bool keep = params_.histogram_subtraction && inner;
-        std::vector<TableFit> fits = best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &level_sums : nullptr);
+        std::vector<TableFit> fits = sharded() ? best_tables_sharded(lists, y, inner)
+                                               : best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &level_sums : nullptr);
         if (keep) {
           for (std::size_t j = 0; j < fitted.size(); ++j) parent_index[fitted[j]] = static_cast<std::ptrdiff_t>(j);
           parent_sums.swap(level_sums);
@@ -408,6 +482,13 @@ RealAdaBoostRound RealAdaBoost::next_round() {
     scores_[i] += response[i];
     wrong += ((scores_[i] > 0.0) != (labels_[i] == 1)) ? 1 : 0;
   }
+  double wrong_count = static_cast<double>(wrong);  // an exact integer
+  if (sharded()) {
+    double reduced[2] = {total, wrong_count};
+    params_.shards->sum(reduced, 2);
+    total = reduced[0];
+    wrong_count = reduced[1];
+  }
   for (double& w : weights_) w /= total;
   const int feature = weak.feature;
   weak_.push_back(std::move(weak));
@@ -416,8 +497,8 @@ RealAdaBoostRound RealAdaBoost::next_round() {
   report.round = static_cast<int>(weak_.size());
   report.feature = feature;
   report.z = z;
-  report.train_error = static_cast<double>(wrong) / static_cast<double>(n);
-  report.samples_used = trimmed.empty() ? n : trimmed.size();
+  report.train_error = wrong_count / static_cast<double>(total_samples_);
+  report.samples_used = trimmed.empty() ? total_samples_ : trimmed.size();
   return report;
 }
 

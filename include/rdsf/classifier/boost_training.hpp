@@ -19,6 +19,7 @@
 #include "rdsf/classifier/boost_backend.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/core/parameter_table.hpp"
+#include "rdsf/classifier/row_shards.hpp"
 #include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf {
@@ -70,6 +71,12 @@ struct TrainingRowInfo {
   /// Per row: true for augmented copies, which are only ever trained on (dropped with their group when it
   /// is held out). Empty: none.
   std::vector<bool> augmented;
+  /// Data-parallel training (issue 37, row_shards.hpp): `rows` (and the separate validation rows) hold only
+  /// this rank's share, in the rows' order; `owners` (`validation_owners`) says which rank holds each row.
+  /// Labels, groups and augmentation marks are of every row, so every rank splits, folds and orders the
+  /// rows alike; scores of held-out rows are gathered, the histograms summed (real_adaboost.hpp). Native
+  /// backend only. Default: one process, every row here.
+  RowOwners owners, validation_owners;
 };
 
 struct TrainingProgress {

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/row_shards.hpp"
 #include "rdsf/classifier/weak_classifier.hpp"
 
 namespace rdsf {
@@ -46,6 +47,11 @@ struct RealAdaBoostParams {
   /// are rounded differently, so a near tie can choose another feature: models are then not the same
   /// bits as without it. Off by default.
   bool histogram_subtraction = false;
+  /// Data-parallel training (row_shards.hpp): the data are this rank's rows; the per-bin sums of every
+  /// feature and node, the class counts, node weights and the weights' normaliser are summed over the
+  /// ranks (in rank order) so that every rank picks the same weak classifier. Null: one process.
+  /// Weight trimming and histogram subtraction are not available with more than one rank.
+  const RowShards* shards = nullptr;
 };
 
 struct RealAdaBoostRound {
@@ -102,6 +108,14 @@ class RealAdaBoost {
                                     const Subtraction* derived = nullptr, std::vector<double>* keep = nullptr) const;
   /// Z of a table (or split) from its sums[2 * bin + y].
   double table_z(const double* sums, bool split) const;
+  /// The table (or split) of `feature` from its sums[2 * bin + y], with the given Z.
+  TableFit fit_sums(std::size_t feature, double z, const double* sums, bool split) const;
+  /// Data-parallel best_tables: every node's sums of every feature on this rank; each rank sums every
+  /// rank's sums of its block of features (RowShards::sum_own_block) and finds the block's best; the best
+  /// of the blocks per node (lowest feature of equals) and its summed sums are exchanged.
+  std::vector<TableFit> best_tables_sharded(const std::vector<const std::vector<std::size_t>*>& members,
+                                            const std::vector<std::uint8_t>& y, bool split) const;
+  bool sharded() const { return params_.shards != nullptr && params_.shards->distributed(); }
   /// `feature`'s table (or split) over `subset` (all samples when null), with the given Z.
   TableFit fit_feature(std::size_t feature, double z, const std::vector<std::size_t>* subset,
                        const std::vector<std::uint8_t>& y, bool split) const;
@@ -112,6 +126,7 @@ class RealAdaBoost {
   double eps_ = 0.0;
   bool positives_first_ = false;  ///< labels are 1...1 0...0: the two-part histograms apply
   std::size_t positives_ = 0;
+  std::size_t total_samples_ = 0;  ///< over every rank (data().samples() with one process)
   int threads_ = 1;
   std::vector<double> weights_;
   std::vector<double> scores_;
