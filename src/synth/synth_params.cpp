@@ -156,6 +156,8 @@ void SynthParams::validate() const {
   need_share("--children", people.body.child_share);
   need_share("--sitting", people.sitting_share);
   need_share("--groups", people.group_share);
+  need_range("--people-distance", people.nearest_m, people.farthest_m, 0.5, 10, "m");
+  need_value("--wall-clearance", people.clearance_m, 0.2, 1, "m");
 }
 
 }  // namespace rdsf::synth
