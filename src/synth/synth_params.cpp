@@ -96,6 +96,8 @@ void SynthParams::set_classic() {
   people.sitting_share = 0;
   people.in_view_share = 0;
   people.nearest_m = 1.0;
+  people.farthest_m = 7.0;
+  people.clearance_m = 0.5;
 }
 
 void parse_people_range(const std::string& text, int& people_min, int& people_max) {
