@@ -1,11 +1,14 @@
 // rdsf-synth's people near the camera and against walls (issue 34's cases): --people-distance and
 // --wall-clearance reach the planner, and the defaults keep the earlier paths.
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "rdsf/synth/people_planner.hpp"
 #include "rdsf/synth/room_generator.hpp"
+#include "support/test_support.hpp"
 
 namespace {
 
@@ -52,6 +55,19 @@ TEST(SynthNearPeople, DistanceAndClearanceReachThePlanner) {
   EXPECT_LT(after.nearest_z, 1.2);
   EXPECT_GE(after.nearest_z, 0.8 - 1e-9);
   EXPECT_GT(after.near_a_wall, 50);
+}
+
+TEST(SynthNearPeople, ImpossibleValuesAreOneLineErrorsAndWriteNothing) {
+  rdsf::test::TempDir dir("synth-near");
+  for (const std::string bad : {"--people-distance 0.3..7", "--people-distance 3..2", "--people-distance near",
+                                "--wall-clearance 0", "--wall-clearance 1.5"}) {
+    const auto r = rdsf::test::run(rdsf::test::quote(rdsf::test::program("rdsf-synth")) + " --out " +
+                                   rdsf::test::quote(dir / "out") + " --frames 1 " + bad);
+    EXPECT_EQ(r.exit_code, 1) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find(bad.substr(0, bad.find(' '))), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << bad << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out")) << bad;
+  }
 }
 
 }  // namespace
