@@ -11,6 +11,11 @@
 #   4. the recipes table: the four recipes with the chosen defaults, evaluated the same way
 #   5. the shipped default models (models/people/v*.yml, trained by scripts/train-default-model.sh on their
 #      own synthetic rooms), evaluated the same way (whole runs only)
+#   6. the peer row: PCL's ground-based people detector (peers/pcl_people, rdsf-pcl-people; libpcl-dev is
+#      installed here, CI does not need it) on the real frames with colour, beside the shipped models on the
+#      same frames (whole runs only; --no-peer skips it)
+# Real frames are reported per source (the frames' name prefixes: lab_ = UC3M lab, lab_height included, and
+# home_ = UC3M home; docs/quality.md, "Per source") and pooled.
 # Each evaluation prints one row per model: TAR at FPPF <= 0.1 and <= 0.5 (exact curve), best MOTA,
 # candidate recall, the classifier's AUC on the candidates, and the gap between the TAR the model file's
 # validation predicts at P(person) >= 0.5 and the TAR measured on the held-out candidates.
@@ -20,7 +25,8 @@ cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
-Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes] [--test-frames N] [--docs]
+Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes] [--test-frames N]
+                                [--synth-variety 'RDSF-SYNTH OPTIONS'] [--no-peer] [--docs]
   --out DIR      output folder (default out/quality); recordings and sample sets there are reused (the
                  hard negatives and lever models are made again: a rerun gives a fresh run's figures)
   --test-frames N  frames of the held-out synthetic sequence (default 960: 16 rooms of 60 frames; 4 rooms,
@@ -30,6 +36,10 @@ Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only le
   --real DIR     real frames with boxes.csv (default ../shared/realdata/people)
   --no-real      skip the real frames
   --only WHAT    run only the lever table or only the recipes table
+  --synth-variety 'OPTIONS'  extra rdsf-synth options for the TRAINING renderings (training, its empty
+                 rooms, the other empty rooms; not the held-out sequence), e.g. a data lever: use another
+                 --out (the renderings there are made with them)
+  --no-peer      skip the PCL peer row (it installs libpcl-dev, about 1 GB, and builds rdsf-pcl-people)
 USAGE
 }
 out=out/quality
@@ -37,6 +47,8 @@ real=../shared/realdata/people
 only=""
 test_frames=960
 docs=0
+variety=""
+peer=1
 while (($#)); do
   case "$1" in
     --out) out="$2"; shift 2 ;;
@@ -45,6 +57,8 @@ while (($#)); do
     --only) only="$2"; shift 2 ;;
     --test-frames) test_frames="$2"; shift 2 ;;
     --docs) docs=1; shift ;;
+    --synth-variety) variety="$2"; shift 2 ;;
+    --no-peer) peer=0; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "quality-report: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
@@ -85,9 +99,10 @@ render() {
   render_pids+=($!) render_names+=("$name")
 }
 test=test-$test_frames
-render train --frames 900 --people 1..4 --seed 11 --rgb --clip-frames 15
-render empty --frames 500 --people 1..4 --seed 11 --empty --rgb --clip-frames 15
-render empty-hard --frames 500 --people 0..0 --seed 21 --empty --rgb --clip-frames 15
+read -r -a variety_args <<<"$variety"
+render train --frames 900 --people 1..4 --seed 11 --rgb --clip-frames 15 "${variety_args[@]}"
+render empty --frames 500 --people 1..4 --seed 11 --empty --rgb --clip-frames 15 "${variety_args[@]}"
+render empty-hard --frames 500 --people 0..0 --seed 21 --empty --rgb --clip-frames 15 "${variety_args[@]}"
 render "$test" --frames "$test_frames" --people 1..4 --seed 31 --rgb --clip-frames 60
 for i in "${!render_pids[@]}"; do
   wait "${render_pids[$i]}" || { tail -3 "$logs/render-${render_names[$i]}.log" >&2; exit 1; }
@@ -102,6 +117,29 @@ if ((test_frames > 240)); then
   mkdir -p "$main_test"
   (cd "$data/$test" && ls ./*.depth.png | sort | awk "NR <= 240" | sed "s|^\./|../$test/|") > "$main_test/frames.txt"
   awk -F, 'NR == 1 || $1 + 0 < 240' "$data/$test/boxes.csv" > "$main_test/boxes.csv"
+fi
+
+# The real frames per source (boxes.csv's frame name prefixes), each a list file and its boxes; *-colour: the
+# frames with a colour image (the PCL peer needs colour; the shipped models are evaluated on them too).
+real_sets=()
+if ((have_real)); then
+  real_abs=$(cd "$real" && pwd)
+  for source in lab home; do
+    for kind in all colour; do
+      name=real-$source; [ "$kind" = colour ] && name=real-$source-colour
+      dir=$out/real-sources/$name
+      mkdir -p "$dir"
+      (cd "$real_abs" && for f in "$source"_*.depth.png; do
+         [ -f "$f" ] || continue
+         [ "$kind" = colour ] && [ ! -f "${f%.depth.png}.rgb.png" ] && continue
+         echo "$real_abs/$f"
+       done) > "$dir/frames.txt"
+      awk -F, -v p="${source}_" -v list="$dir/frames.txt" '
+        BEGIN { while ((getline f < list) > 0) { sub(/.*\//, "", f); sub(/\.depth\.png$/, "", f); keep[f] = 1 } }
+        NR == 1 || (index($1, p) == 1 && ($1 in keep))' "$real/boxes.csv" > "$dir/boxes.csv"
+      if [ -s "$dir/frames.txt" ]; then real_sets+=("$name"); fi
+    done
+  done
 fi
 
 step "mine negatives and label positives"
@@ -125,6 +163,11 @@ evaluate() {  # report folder, models...
   one synthetic "$data/$test" "$data/$test/boxes.csv"
   [ -n "$main_test" ] && one synthetic-240 "$main_test/frames.txt" "$main_test/boxes.csv"
   ((have_real)) && one real "$real" "$real/boxes.csv"
+  local set
+  for set in "${real_sets[@]}"; do
+    case "$set" in *-colour) ((with_colour)) || continue ;; esac
+    one "$set" "$out/real-sources/$set/frames.txt" "$out/real-sources/$set/boxes.csv"
+  done
   local i
   for i in "${!pids[@]}"; do
     wait "${pids[$i]}" || { cat "$logs/detect-${names[$i]}.log" >&2; exit 1; }
@@ -158,12 +201,30 @@ table_of() {  # report folder, title
   fi
   if ((have_real)); then
     echo
-    echo "Real frames ($real):"
+    echo "Real frames ($real), all sources pooled:"
     echo
     cat "$1/real/summary.md"
+    local set
+    for set in "${real_sets[@]}"; do
+      [ -f "$1/$set/summary.md" ] || continue
+      echo
+      echo "Real frames, $(source_title "$set") ($(wc -l < "$out/real-sources/$set/frames.txt") frames):"
+      echo
+      cat "$1/$set/summary.md"
+    done
   fi
   echo
 }
+source_title() {
+  case "$1" in
+    real-lab) echo "source UC3M lab (lab_*, lab_height included)" ;;
+    real-home) echo "source UC3M home (home_*)" ;;
+    real-lab-colour) echo "source UC3M lab, the frames with colour" ;;
+    real-home-colour) echo "source UC3M home, the frames with colour" ;;
+    *) echo "$1" ;;
+  esac
+}
+with_colour=0
 
 report=$run/REPORT.md
 {
@@ -245,8 +306,43 @@ fi
 if [ -z "$only" ]; then
   step "evaluate the shipped default models"
   shipped=(models/people/v*.yml)
+  with_colour=1
   evaluate "$run/shipped" "${shipped[@]}"
+  with_colour=0
   table_of "$run/shipped" "The shipped default models (scripts/train-default-model.sh: their own synthetic rooms, seed 11)" >> "$report"
+fi
+
+if [ -z "$only" ] && ((peer)) && ((have_real)); then
+  step "the PCL peer row"
+  # PCL is large and only this report needs it: installed here, not by scripts/setup.sh.
+  if ! dpkg-query -W -f='${Status}' libpcl-dev 2>/dev/null | grep -q "ok installed"; then
+    sudo_=""; [ "$(id -u)" -ne 0 ] && sudo_=sudo
+    $sudo_ apt-get install -y --no-install-recommends libpcl-dev >"$logs/apt-pcl.log" 2>&1 ||
+      { tail -3 "$logs/apt-pcl.log" >&2; exit 1; }
+  fi
+  cmake -S . -B "$bin" >/dev/null && cmake --build "$bin" --target rdsf-pcl-people >"$logs/build-pcl.log" 2>&1 ||
+    { tail -5 "$logs/build-pcl.log" >&2; exit 1; }
+  {
+    echo "### The peer: PCL's ground-based people detector"
+    echo
+    echo "pcl::people::GroundBasedPeopleDetectionApp with PCL's HOG+SVM file (peers/pcl_people), PCL's defaults"
+    echo "(person 1.3-2.3 m, voxel 6 cm, a person at confidence >= -1.5), the floor fitted per recording by RANSAC;"
+    echo "its confidence is the score (P = 1 / (1 + exp(-2 c)) for the thresholds). On the real frames with colour,"
+    echo "beside the shipped models on the same frames (the tables above, '... the frames with colour'):"
+    for set in "${real_sets[@]}"; do
+      case "$set" in *-colour) ;; *) continue ;; esac
+      mkdir -p "$run/peer"
+      "$bin/peers/pcl_people/rdsf-pcl-people" --source "$out/real-sources/$set/frames.txt" \
+        --truth "$out/real-sources/$set/boxes.csv" --report-dir "$run/peer/$set" \
+        --out "$run/peer/$set.detections.csv" --force >/dev/null 2>"$logs/peer-$set.log" ||
+        { cat "$logs/peer-$set.log" >&2; exit 1; }
+      echo
+      echo "Real frames, $(source_title "$set") ($(wc -l < "$out/real-sources/$set/frames.txt") frames; $(grep -c "recording '" "$logs/peer-$set.log") recording(s), floors: $(grep -o "camera [0-9.]* m above" "$logs/peer-$set.log" | awk '{printf "%s%.2f", sep, $2; sep=", "}') m below the camera):"
+      echo
+      cat "$run/peer/$set/summary.md"
+    done
+    echo
+  } >> "$report"
 fi
 
 cat "$report"

@@ -60,6 +60,12 @@ int main(int argc, char** argv) {
          "on: sitting, bending, arms raised, out, crossed, in pockets, pointing, waving; off: the four basic")
         ("sitting", po::value(&p.people.sitting_share)->default_value(p.people.sitting_share, g(p.people.sitting_share)),
          "chance that a person sits on a free chair, with --poses on (0..1)")
+        ("people-distance", po::value(&o.people_distance)->default_value(o.people_distance),
+         "people's paths stay MIN..MAX metres in front of the room's camera end (0.5..10; nearer than about 1.5 m "
+         "the image's edges cut heads or feet)")
+        ("wall-clearance", po::value(&p.people.clearance_m)->default_value(p.people.clearance_m, g(p.people.clearance_m)),
+         "people's paths keep this far from walls and furniture, metres (0.2..1; 0.25: people stand against "
+         "walls, cupboards and chair backs)")
         ("groups", po::value(&p.people.group_share)->default_value(p.people.group_share, g(p.people.group_share)),
          "chance that a person walks and stands beside the one before (pairs, groups) (0..1)")
         ("eight-bit", po::value(&p.sensor.eight_bit_share)->default_value(p.sensor.eight_bit_share, g(p.sensor.eight_bit_share)),

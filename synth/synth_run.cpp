@@ -18,6 +18,7 @@ int run_synth(SynthOptions o) {
   synth::SynthParams& p = o.params;
   synth::parse_real_range("--camera-height", o.camera_height, p.room.camera_height_min_m, p.room.camera_height_max_m);
   synth::parse_real_range("--camera-pitch", o.camera_pitch, p.room.pitch_min_deg, p.room.pitch_max_deg);
+  synth::parse_real_range("--people-distance", o.people_distance, p.people.nearest_m, p.people.farthest_m);
   double clutter_min = 0, clutter_max = 0;
   synth::parse_real_range("--clutter", o.clutter, clutter_min, clutter_max);
   if (clutter_min != std::floor(clutter_min) || clutter_max != std::floor(clutter_max)) {

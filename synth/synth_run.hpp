@@ -13,6 +13,7 @@ struct SynthOptions {
   // variety (issue 13), as given on the command line; parsed into params by run_synth
   std::string camera_height = "0.5..1.6";
   std::string camera_pitch = "-3..6";
+  std::string people_distance = "1.6..7";
   std::string clutter = "3..9";
   std::string eight_bit_step = "12..28";
   std::string outfits = "on", poses = "on", bodies = "on", room_kinds = "on";

@@ -23,10 +23,8 @@ double standing_yaw(Rng& rng, double yaw) {
   return yaw;
 }
 
-constexpr double clearance_m = 0.5;  // from walls and furniture
-
 bool free_spot(const Room& room, const PeopleParams& p, double x, double z) {
-  return z >= p.nearest_m && z <= p.farthest_m && room.walkable(x, z, clearance_m);
+  return z >= p.nearest_m && z <= p.farthest_m && room.walkable(x, z, p.clearance_m);
 }
 
 /// A free spot of the room; most (in_view_share) in the camera's view: within 0.45 rad of its heading, at

@@ -96,6 +96,8 @@ void SynthParams::set_classic() {
   people.sitting_share = 0;
   people.in_view_share = 0;
   people.nearest_m = 1.0;
+  people.farthest_m = 7.0;
+  people.clearance_m = 0.5;
 }
 
 void parse_people_range(const std::string& text, int& people_min, int& people_max) {
@@ -156,6 +158,8 @@ void SynthParams::validate() const {
   need_share("--children", people.body.child_share);
   need_share("--sitting", people.sitting_share);
   need_share("--groups", people.group_share);
+  need_range("--people-distance", people.nearest_m, people.farthest_m, 0.5, 10, "m");
+  need_value("--wall-clearance", people.clearance_m, 0.2, 1, "m");
 }
 
 }  // namespace rdsf::synth

@@ -135,6 +135,8 @@ std::string SynthWriter::describe(const SynthParams& p, const std::string& comma
       << "  poses: " << on(p.people.poses) << "\n"
       << "  sitting: " << p.people.sitting_share << "\n"
       << "  groups: " << p.people.group_share << "\n"
+      << "  distance_m: [" << p.people.nearest_m << ", " << p.people.farthest_m << "]\n"
+      << "  wall_clearance_m: " << p.people.clearance_m << "\n"
       << "boxes: \"boxes.csv: frame,person,x,y,w,h,visible_fraction,track (tight box of the visible pixels; "
          "person = track id)\"\n";
   return out.str();

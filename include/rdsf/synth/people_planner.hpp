@@ -16,6 +16,8 @@ struct PeopleParams {
   double speed_min_mps = 0.7, speed_max_mps = 1.5;  ///< walking speed
   double stride_m = 1.35;                           ///< distance of one gait cycle (two steps) at 1.75 m
   double nearest_m = 1.6, farthest_m = 7.0;         ///< distance range (Z) the paths stay in
+  /// Paths keep this far from walls and furniture (metres; a body's half-width is about 0.2 m).
+  double clearance_m = 0.5;
   double in_view_share = 0.8;  ///< share of spots drawn in the camera's view (the rest anywhere in the room)
   double frame_interval_s = 1.0 / 30.0;
   /// Share of walks that head mostly towards or away from the camera (the rest go anywhere).
