@@ -201,67 +201,49 @@ long write(int fd, const void* data, std::size_t size) {
   return n;
 }
 
-int fdatasync(int fd) {
+// The wrappers below share one shape: count the call (it may be made to fail), make it, and record it
+// when it succeeded. `record_it(l)` records; `result` is what the system call returned (0 is success).
+template <typename Make, typename Record>
+int intercepted(Call call, Make make, Record record_it) {
   Layer& l = layer();
   std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::fdatasync) == Verdict::fail) return failed(l.fault);
-  const int result = ::fdatasync(fd);
-  if (result == 0) record(l, Call::fdatasync, fd, 0);
+  if (count(l, call) == Verdict::fail) return failed(l.fault);
+  const int result = make();
+  if (result == 0) record_it(l);
   return result;
+}
+
+int fdatasync(int fd) {
+  return intercepted(Call::fdatasync, [&] { return ::fdatasync(fd); }, [&](Layer& l) { record(l, Call::fdatasync, fd, 0); });
 }
 
 int fsync(int fd) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::fsync) == Verdict::fail) return failed(l.fault);
-  const int result = ::fsync(fd);
-  if (result == 0) record(l, Call::fsync, fd, 0);
-  return result;
+  return intercepted(Call::fsync, [&] { return ::fsync(fd); }, [&](Layer& l) { record(l, Call::fsync, fd, 0); });
 }
 
 int rename(const std::string& from, const std::string& to) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::rename) == Verdict::fail) return failed(l.fault);
-  const int result = ::rename(from.c_str(), to.c_str());
-  if (result == 0) record(l, Call::rename, -1, 0, from, to);
-  return result;
+  return intercepted(Call::rename, [&] { return ::rename(from.c_str(), to.c_str()); },
+                     [&](Layer& l) { record(l, Call::rename, -1, 0, from, to); });
 }
 
 int link(const std::string& from, const std::string& to) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::link) == Verdict::fail) return failed(l.fault);
-  const int result = ::link(from.c_str(), to.c_str());
-  if (result == 0) record(l, Call::link, -1, 0, from, to);
-  return result;
+  return intercepted(Call::link, [&] { return ::link(from.c_str(), to.c_str()); },
+                     [&](Layer& l) { record(l, Call::link, -1, 0, from, to); });
 }
 
 int unlink(const std::string& path) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::unlink) == Verdict::fail) return failed(l.fault);
-  const int result = ::unlink(path.c_str());
-  if (result == 0) record(l, Call::unlink, -1, 0, path);
-  return result;
+  return intercepted(Call::unlink, [&] { return ::unlink(path.c_str()); },
+                     [&](Layer& l) { record(l, Call::unlink, -1, 0, path); });
 }
 
 int mkdir(const std::string& path, int mode) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::mkdir) == Verdict::fail) return failed(l.fault);
-  const int result = ::mkdir(path.c_str(), static_cast<mode_t>(mode));
-  if (result == 0) record(l, Call::mkdir, -1, 0, path);
-  return result;
+  return intercepted(Call::mkdir, [&] { return ::mkdir(path.c_str(), static_cast<mode_t>(mode)); },
+                     [&](Layer& l) { record(l, Call::mkdir, -1, 0, path); });
 }
 
 int ftruncate(int fd, std::uint64_t size) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::truncate) == Verdict::fail) return failed(l.fault);
-  const int result = ::ftruncate(fd, static_cast<off_t>(size));
-  if (result == 0) record(l, Call::truncate, fd, static_cast<std::int64_t>(size));
-  return result;
+  return intercepted(Call::truncate, [&] { return ::ftruncate(fd, static_cast<off_t>(size)); },
+                     [&](Layer& l) { record(l, Call::truncate, fd, static_cast<std::int64_t>(size)); });
 }
 
 int close(int fd) {
@@ -275,12 +257,7 @@ int close(int fd) {
 }
 
 int syncfs(int fd) {
-  Layer& l = layer();
-  std::lock_guard<std::mutex> lock(l.mutex);
-  if (count(l, Call::syncfs) == Verdict::fail) return failed(l.fault);
-  const int result = ::syncfs(fd);
-  if (result == 0) record(l, Call::syncfs, fd, 0);
-  return result;
+  return intercepted(Call::syncfs, [&] { return ::syncfs(fd); }, [&](Layer& l) { record(l, Call::syncfs, fd, 0); });
 }
 
 }  // namespace io
