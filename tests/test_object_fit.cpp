@@ -1,0 +1,120 @@
+// The passing columns and spans of LayerShape (layer_shape.hpp) and the fitted extent of fit_object()
+// (object_fit.hpp) on a hand-built layer at 5,250 mm, where with fx = fy = 525 one pixel is one centimetre.
+#include <gtest/gtest.h>
+
+#include "rdsf/candidates/object_fit.hpp"
+
+namespace rdsf {
+namespace {
+
+// 100 x 40: a body of layer 1 in columns 10..14 (rows 20..79, depth 5250) and an arm beside it in columns
+// 15..19 (rows 30..40; column 17 also rows 10..29), then columns 20..23 empty, column 24 at 5,250 + 500 mm
+// (too deep a step), columns 30..32 another body. Heights: 50 cm pass (relaxed mode), the arm's do not.
+struct Layer {
+  cv::Mat1b labels = cv::Mat1b::zeros(100, 40);
+  cv::Mat1w depth = cv::Mat1w::zeros(100, 40);
+  std::vector<ColumnRun> runs = std::vector<ColumnRun>(40);
+  CameraModel camera;
+  CandidateParams params;
+  void fill(int c, int top, int bottom, int depth_mm, int label = 1) {
+    for (int y = top; y <= bottom; ++y) labels(y, c) = static_cast<std::uint8_t>(label), depth(y, c) = static_cast<std::uint16_t>(depth_mm);
+    if (label == 1) runs[static_cast<std::size_t>(c)] = {top, bottom};
+  }
+  Layer() {
+    for (int c = 10; c <= 14; ++c) fill(c, 20, 79, 5250);
+    for (int c = 15; c <= 19; ++c) fill(c, 30, 40, 5250);
+    fill(17, 10, 40, 5250);
+    fill(24, 30, 40, 5750);
+    for (int c = 30; c <= 32; ++c) fill(c, 20, 79, 5250);
+    params.mode = HeightMode::relaxed;
+    params.near_height_cm = 50.0;
+    params.height_at_column_depth = false;
+    params.fit_reach_cm = 60.0;
+    params.fit_depth_step_mm = 150.0;
+    params.column_gap = 6;
+    params.fit_occlusion_gap_cm = 0.0;
+  }
+  LayerView view() const { return {&runs, &labels, &depth, 1, 5250.0, 5750.0, &camera}; }
+};
+
+TEST(LayerShape, PassingColumnsUnitsAndSpan) {
+  const Layer l;
+  const LayerView view = l.view();
+  const LayerShape shape(view, l.params);
+  for (int c = 0; c < 40; ++c) {
+    EXPECT_EQ(shape.passes(c), (c >= 10 && c <= 14) || (c >= 30 && c <= 32)) << "column " << c;
+  }
+  EXPECT_DOUBLE_EQ(shape.cm(7), 7.0);
+  EXPECT_EQ(shape.px(60.0), 60);
+  const LayerObject o = shape.span(10, 14);
+  EXPECT_EQ(o.top, 20);
+  EXPECT_EQ(o.bottom, 79);
+  EXPECT_EQ(o.tallest, 60);
+  EXPECT_EQ(o.highest, 12);  // middle of the five columns reaching the top
+  EXPECT_EQ(o.fit_first, 10);
+  EXPECT_EQ(o.fit_last, 14);
+  EXPECT_EQ(shape.column_depth_mm(24), 5750.0);
+  EXPECT_EQ(shape.column_depth_mm(0), 0.0);
+}
+
+TEST(ObjectFit, ReachesOverTheArmAndRaisesTheTop) {
+  const Layer l;
+  const LayerView view = l.view();
+  const LayerShape shape(view, l.params);
+  LayerObject o = shape.span(10, 14);
+  fit_object(shape, o, 0, 39);
+  EXPECT_EQ(o.fit_first, 10);  // nothing to the left
+  EXPECT_EQ(o.fit_last, 19);   // the arm; column 24 steps 500 mm deeper
+  EXPECT_EQ(o.fit_top, 10);    // column 17's highest band row (band from row 0, every other row)
+  EXPECT_EQ(o.first, 10);
+  EXPECT_EQ(o.last, 14);
+}
+
+TEST(ObjectFit, StopsAtTheLimitsAndWithoutReach) {
+  Layer l;
+  const LayerView view = l.view();
+  {
+    const LayerShape shape(view, l.params);
+    LayerObject o = shape.span(10, 14);
+    fit_object(shape, o, 10, 16);  // lo..hi end at column 16
+    EXPECT_EQ(o.fit_last, 16);
+    EXPECT_EQ(o.fit_top, 20);  // column 17 not reached
+  }
+  {
+    l.fill(24, 30, 40, 5300);  // now within fit_depth_step_mm, after 4 empty columns (20..23)
+    l.params.column_gap = 3;
+    const LayerShape shape(view, l.params);
+    LayerObject o = shape.span(10, 14);
+    fit_object(shape, o, 0, 39);
+    EXPECT_EQ(o.fit_last, 19);
+    l.params.column_gap = 4;
+    const LayerShape wider(view, l.params);
+    LayerObject p = wider.span(10, 14);
+    fit_object(wider, p, 0, 39);
+    EXPECT_EQ(p.fit_last, 24);
+  }
+  {
+    l.params.fit_reach_cm = 0.0;
+    const LayerShape shape(view, l.params);
+    LayerObject o = shape.span(10, 14);
+    fit_object(shape, o, 0, 39);
+    EXPECT_EQ(o.fit_last, 14);
+    EXPECT_EQ(o.fit_top, 20);
+  }
+}
+
+TEST(ObjectFit, NearerInBandCountsNearerLayersEveryOtherRow) {
+  Layer l;
+  l.fill(25, 0, 9, 3000, 0);
+  for (int y = 0; y < 10; ++y) l.labels(y, 25) = static_cast<std::uint8_t>(y < 5 ? 0 : 1);
+  // Layer 3 sees layers 1 and 2 as nearer.
+  LayerView view = l.view();
+  view.label = 3;
+  EXPECT_TRUE(nearer_in_band(view, 25, 0, 9, 2));   // rows 6, 8
+  EXPECT_FALSE(nearer_in_band(view, 25, 0, 9, 3));
+  EXPECT_TRUE(nearer_in_band(view, 25, 1, 5, 1));   // rows 1, 3, 5: row 5
+  EXPECT_FALSE(nearer_in_band(view, 25, 0, 4, 1));  // rows 0, 2, 4: none
+}
+
+}  // namespace
+}  // namespace rdsf
