@@ -1,8 +1,9 @@
 // The passing columns and spans of LayerShape (layer_shape.hpp) and the fitted extent of fit_object()
-// (object_fit.hpp) on a hand-built layer at 5,250 mm, where with fx = fy = 525 one pixel is one centimetre.
+// (object_fit.hpp), and the heads of object_heads.hpp, on a hand-built layer at 5,250 mm, where with fx = fy = 525 one pixel is one centimetre.
 #include <gtest/gtest.h>
 
 #include "rdsf/candidates/object_fit.hpp"
+#include "rdsf/candidates/object_heads.hpp"
 
 namespace rdsf {
 namespace {
@@ -114,6 +115,53 @@ TEST(ObjectFit, NearerInBandCountsNearerLayersEveryOtherRow) {
   EXPECT_FALSE(nearer_in_band(view, 25, 0, 9, 3));
   EXPECT_TRUE(nearer_in_band(view, 25, 1, 5, 1));   // rows 1, 3, 5: row 5
   EXPECT_FALSE(nearer_in_band(view, 25, 0, 4, 1));  // rows 0, 2, 4: none
+}
+
+// Head parameters for the tests below: heads 2..6 cm wide, 8 cm above their shoulders, pieces of 5 cm.
+void head_params(CandidateParams& params) {
+  params.split_head_width_cm = 6.0;
+  params.split_head_min_width_cm = 2.0;
+  params.split_head_drop_cm = 8.0;
+  params.min_part_width_cm = 5.0;
+}
+
+// A profile of 30 columns: shoulders of 80 cm (columns 3..24) with a head of 100 at 5..8 and one of 95 at
+// 18..21; the object's fitted extent starts at column 5.
+TEST(ObjectHeads, TwoHeadsOnAProfileAndNoneWithoutTheDrop) {
+  Layer l;
+  head_params(l.params);
+  const LayerView view = l.view();
+  const LayerShape shape(view, l.params);
+  std::vector<double> h(30, 0.0);
+  for (int i = 3; i <= 24; ++i) h[static_cast<std::size_t>(i)] = 80.0;
+  for (int i = 5; i <= 8; ++i) h[static_cast<std::size_t>(i)] = 100.0;
+  for (int i = 18; i <= 21; ++i) h[static_cast<std::size_t>(i)] = 95.0;
+  LayerObject o;
+  o.fit_first = 5;
+  o.fit_last = 34;
+  EXPECT_EQ(head_columns(shape, o, h), (std::vector<int>{5 + 6, 5 + 19}));  // the middles (5+8)/2, (18+21)/2
+  for (double& v : h) v = v == 80.0 ? 93.0 : v;  // shoulders within 8 cm of both heads
+  EXPECT_TRUE(head_columns(shape, o, h).empty());
+  EXPECT_EQ(middle_of(0, 9, [](int c) { return c == 2 || c == 5; }), 4);
+}
+
+// A body (columns 10..30, rows 30..79) with heads at columns 12..15 (from row 20: 60 cm) and 24..27 (from
+// row 22: 58 cm) over 50 cm shoulders: cut at the middle of the shoulders between them, 16..23.
+TEST(ObjectHeads, CutBetweenTwoHeads) {
+  Layer l;
+  head_params(l.params);
+  l.labels.setTo(0);
+  for (ColumnRun& r : l.runs) r = ColumnRun{};
+  for (int c = 10; c <= 30; ++c) l.fill(c, c >= 12 && c <= 15 ? 20 : c >= 24 && c <= 27 ? 22 : 30, 79, 5250);
+  const LayerView view = l.view();
+  const LayerShape shape(view, l.params);
+  LayerObject o = shape.span(10, 30);
+  EXPECT_DOUBLE_EQ(top_profile_cm(shape, o, 12), 60.0);
+  EXPECT_DOUBLE_EQ(top_profile_cm(shape, o, 20), 50.0);
+  EXPECT_DOUBLE_EQ(top_profile_cm(shape, o, 5), 0.0);
+  EXPECT_EQ(cut_between_heads(shape, o, 5), 20);
+  // Pieces of 12 columns cannot be cut from 21.
+  EXPECT_EQ(cut_between_heads(shape, o, 12), -1);
 }
 
 }  // namespace
