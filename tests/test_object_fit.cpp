@@ -1,7 +1,8 @@
 // The passing columns and spans of LayerShape (layer_shape.hpp) and the fitted extent of fit_object()
-// (object_fit.hpp), and the heads of object_heads.hpp, on a hand-built layer at 5,250 mm, where with fx = fy = 525 one pixel is one centimetre.
+// (object_fit.hpp), the heads of object_heads.hpp and the cuts of object_cut.hpp, on a hand-built layer at 5,250 mm, where with fx = fy = 525 one pixel is one centimetre.
 #include <gtest/gtest.h>
 
+#include "rdsf/candidates/object_cut.hpp"
 #include "rdsf/candidates/object_fit.hpp"
 #include "rdsf/candidates/object_heads.hpp"
 
@@ -162,6 +163,34 @@ TEST(ObjectHeads, CutBetweenTwoHeads) {
   EXPECT_EQ(cut_between_heads(shape, o, 5), 20);
   // Pieces of 12 columns cannot be cut from 21.
   EXPECT_EQ(cut_between_heads(shape, o, 12), -1);
+}
+
+// A body of columns 10..30 (rows 30..79): cut where its depth jumps (5,250 -> 5,600 mm at column 20), or,
+// at one depth, at the valley of columns 19..21 (20 cm high between 50 cm shoulders).
+TEST(ObjectCut, DepthJumpThenValley) {
+  Layer l;
+  l.labels.setTo(0);
+  for (ColumnRun& r : l.runs) r = ColumnRun{};
+  l.params.split_depth_jump_mm = 200.0;
+  l.params.split_valley_cm = 20.0;
+  l.params.split_step_cm = 0.0;
+  for (int c = 10; c <= 30; ++c) l.fill(c, 30, 79, c < 20 ? 5250 : 5600);
+  const LayerView view = l.view();
+  {
+    const LayerShape shape(view, l.params);
+    const LayerObject o = shape.span(10, 30);
+    EXPECT_EQ(cut_wide(shape, o, 5), 20);
+    EXPECT_EQ(cut_wide(shape, o, 11), -1);  // 21 columns: no two pieces of 11
+  }
+  for (int c = 10; c <= 30; ++c) l.fill(c, c >= 19 && c <= 21 ? 60 : 30, 79, 5250);
+  const LayerShape shape(view, l.params);
+  const LayerObject o = shape.span(10, 30);
+  EXPECT_DOUBLE_EQ(profile_cm(shape, o, 19), 20.0);
+  EXPECT_DOUBLE_EQ(profile_cm(shape, o, 10), 50.0);
+  EXPECT_EQ(cut_wide(shape, o, 5), 20);  // the middle of 19..21
+  l.params.split_valley_cm = 31.0;       // deeper than the valley's 30 cm
+  const LayerShape shallow(view, l.params);
+  EXPECT_EQ(cut_wide(shallow, o, 5), -1);
 }
 
 }  // namespace

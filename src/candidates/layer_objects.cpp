@@ -2,6 +2,7 @@
 
 #include "rdsf/candidates/layer_shape.hpp"
 #include "rdsf/candidates/object_fit.hpp"
+#include "rdsf/candidates/object_cut.hpp"
 #include "rdsf/candidates/object_heads.hpp"
 
 #include <algorithm>
@@ -129,78 +130,8 @@ class ObjectShaper {
     return joined;
   }
 
-  // Height (cm) of the top of column c above the object's lowest row; 0 without a run in its rows.
-  double profile_cm(const LayerObject& o, int c) const {
-    const ColumnRun& r = run(c);
-    if (r.length() == 0 || r.bottom < o.top || r.top > o.bottom) return 0.0;
-    return layer_.camera->height_cm(o.bottom - std::max(o.top, r.top) + 1, layer_.depth_mm_mean);
-  }
-
-  double column_depth_mm(int c) const { return shape_.column_depth_mm(c); }
-
-  // The best place to cut o.fit_first..o.fit_last (the first column of the right piece), or -1: the
-  // largest depth jump between neighbouring columns, else the deepest valley of the height profile, else
-  // the largest step between the mean heights of a person-wide band on each side.
-  int cut(const LayerObject& o, int min_piece) const {
-    const int a = o.fit_first, b = o.fit_last;
-    if (b - a + 1 < 2 * min_piece) return -1;
-    const int lo = a + min_piece, hi = b - min_piece + 1;  // cut columns leaving both pieces wide enough
-    if (params_.split_depth_jump_mm > 0) {
-      int best = -1;
-      double best_jump = params_.split_depth_jump_mm;
-      double previous = column_depth_mm(lo - 1);
-      for (int c = lo; c <= hi; ++c) {
-        const double depth = column_depth_mm(c);
-        if (depth > 0 && previous > 0 && std::abs(depth - previous) > best_jump) {
-          best_jump = std::abs(depth - previous);
-          best = c;
-        }
-        if (depth > 0) previous = depth;
-      }
-      if (best >= 0) return best;
-    }
-    std::vector<double> h(static_cast<std::size_t>(b - a + 1));
-    for (int c = a; c <= b; ++c) h[static_cast<std::size_t>(c - a)] = profile_cm(o, c);
-    auto at = [&](int c) { return h[static_cast<std::size_t>(c - a)]; };
-    if (params_.split_valley_cm > 0) {
-      std::vector<double> left(h.size()), right(h.size());
-      for (std::size_t i = 0; i < h.size(); ++i) left[i] = std::max(h[i], i > 0 ? left[i - 1] : 0.0);
-      for (std::size_t i = h.size(); i-- > 0;) right[i] = std::max(h[i], i + 1 < h.size() ? right[i + 1] : 0.0);
-      double deepest = 0;
-      for (int c = lo; c <= hi; ++c) {
-        const std::size_t i = static_cast<std::size_t>(c - a);
-        deepest = std::max(deepest, std::min(left[i], right[i]) - h[i]);
-      }
-      if (deepest >= params_.split_valley_cm) {
-        // The middle of the columns within 2 cm of the deepest point of the valley.
-        return middle_of(lo, hi, [&](int c) {
-          const std::size_t i = static_cast<std::size_t>(c - a);
-          return std::min(left[i], right[i]) - h[i] >= deepest - 2.0;
-        });
-      }
-    }
-    if (params_.split_step_cm > 0) {
-      const int band = std::max(1, px(params_.min_part_width_cm));
-      int best = -1;
-      double best_step = params_.split_step_cm;
-      for (int c = lo; c <= hi; ++c) {
-        double sum_left = 0, sum_right = 0;
-        int n_left = 0, n_right = 0;
-        for (int x = std::max(a, c - band); x < c; ++x, ++n_left) sum_left += at(x);
-        for (int x = c; x < std::min(b + 1, c + band); ++x, ++n_right) sum_right += at(x);
-        const double step = std::abs(sum_left / std::max(1, n_left) - sum_right / std::max(1, n_right));
-        if (step > best_step) {
-          best_step = step;
-          best = c;
-        }
-      }
-      return best;
-    }
-    return -1;
-  }
-
   // Step 3: an object with two heads (split_head_drop_cm) is cut between them, else one wider than a person
-  // where cut() says, and each piece again; the final pieces (with their passing columns) are appended to
+  // where cut_wide() (object_cut.hpp) says, and each piece again; the final pieces (with their passing columns) are appended to
   // `out`, nothing when the object is not cut. *by_heads tells whether the first cut was between heads.
   void split(const LayerObject& whole, std::vector<LayerObject>& out, int depth = 0, bool* by_heads = nullptr) const {
     if (depth > 4) return;
@@ -209,7 +140,7 @@ class ObjectShaper {
     const bool heads = c >= 0;
     if (by_heads != nullptr) *by_heads = heads;
     if (c < 0 && split_wide_enabled() && cm(whole.fit_last - whole.fit_first + 1) > params_.max_person_width_cm) {
-      c = cut(whole, min_piece);
+      c = cut_wide(shape_, whole, min_piece);
     }
     if (c < 0) return;
     for (const auto& [lo, hi] : {std::pair<int, int>{whole.fit_first, c - 1}, std::pair<int, int>{c, whole.fit_last}}) {
