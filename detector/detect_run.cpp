@@ -7,6 +7,7 @@
 #include <iostream>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <opencv2/highgui.hpp>
@@ -123,147 +124,226 @@ void run_live(const DetectOptions& o, PeoplePipeline& pipeline, FrameSource& sou
                static_cast<long long>(s.dropped), s.p50_ms, s.p95_ms, s.p99_ms, s.max_ms);
 }
 
+/// Refuses to replace a report without --force and --show without a display (errors, exit 1).
+void check_outputs(const DetectOptions& o) {
+  if (!o.report_dir.empty() && !o.force && std::filesystem::exists(std::filesystem::path(o.report_dir) / "metrics.csv")) {
+    throw Error(o.report_dir + ": already holds a report (pass --force to replace it)");
+  }
+  if (o.show) gui::require_display("rdsf-detect --show", "drop --show or use --save-dir to get pictures");
+}
+
+/// The pipeline's parameters for these models: the detector computes the first model's feature spec unless
+/// --feature-spec names one (then they must agree: PeoplePipeline refuses otherwise). Further models score
+/// the same crops in their own specs.
+PipelineParams pipeline_params_for(const DetectOptions& o, const std::vector<BoostedModel>& models) {
+  PipelineParams params = o.pipeline;
+  if (!models.empty() && !o.feature_spec_given) params.analyser.features = models.front().feature_spec();
+  // The evaluation sweeps tracking over every candidate's colour histogram, not only the detections'.
+  params.colour_crops_of_all = !o.truth_csv.empty();
+  return params;
+}
+
+/// --truth read, with the hardly visible people marked ignored.
+GroundTruth read_truth(const DetectOptions& o) {
+  GroundTruth truth = read_ground_truth(o.truth_csv);
+  const std::size_t ignored = ignore_hardly_visible(truth, o.min_visible);
+  std::cerr << "rdsf-detect: " << o.truth_csv << ": " << truth.people() << " people, " << ignored
+            << " of them less than " << o.min_visible * 100 << "% visible (ignored: no miss, no false positive)\n";
+  return truth;
+}
+
+void create_save_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) fail(dir, "cannot create folder: " + ec.message());
+}
+
+void announce(const DetectOptions& o, const FrameSource& source, const std::vector<BoostedModel>& models) {
+  std::cerr << "rdsf-detect: " << source.description() << "; " << resolve_thread_count(o.threads)
+            << (o.live ? " live worker(s)" : " thread(s)");
+  for (const BoostedModel& m : models) std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
+  std::cerr << "\n";
+}
+
+/// Each frame after tracking, in frame order, one at a time (on the calling thread, or a live worker):
+/// writes the CSV row, keeps what the evaluation needs, saves or shows the picture, counts.
+class FrameHandler {
+ public:
+  FrameHandler(const DetectOptions& o, const std::vector<BoostedModel>& models, const GroundTruth& truth,
+               const PeoplePipeline& pipeline, DetectionCsv* csv, std::optional<std::int64_t> frame_count)
+      : o_(o), models_(models), truth_(truth), pipeline_(pipeline), csv_(csv),
+        box_(o.pipeline.analyser.reported_box), evaluated(models.size()), progress_(std::cerr, "frames", frame_count) {
+    for (const BoostedModel& m : models) scorers_.emplace_back(m);
+  }
+
+  /// false: the viewer asked to stop.
+  bool operator()(const DepthFrame& frame, const PipelineFrame& processed) {
+    total += processed.times;
+    const auto& found = processed.analysis.candidates;
+    std::vector<CandidateOutcome> outcomes;
+    for (std::size_t i = 0; i < processed.scores.size(); ++i) {
+      const TrackedPerson* person = pipeline_.tracker().person(processed.person[i]);
+      outcomes.push_back({processed.scores[i], processed.person[i], person != nullptr ? person->distance_cm : 0.0});
+      detections += processed.person[i] != 0 ? 1 : 0;
+    }
+    if (csv_) csv_->write_frame(frame.name, found, outcomes);
+    if (!o_.truth_csv.empty()) keep_for_evaluation(frame, processed);
+    const bool go_on = picture(frame, processed);
+    ++frames;
+    candidates += static_cast<std::int64_t>(found.size());
+    progress_.update(frames, counts());
+    return go_on;
+  }
+
+  void finish() { progress_.finish(frames, counts()); }
+
+  std::int64_t frames = 0, candidates = 0, detections = 0;
+  StageTimes total;
+  CandidateCoverage coverage;
+  std::vector<std::vector<EvaluatedFrame>> evaluated;  ///< per model, every frame's scored candidates
+
+ private:
+  std::string counts() const {
+    return "candidates " + std::to_string(candidates) +
+           (models_.empty() ? "" : ", detections " + std::to_string(detections));
+  }
+
+  void keep_for_evaluation(const DepthFrame& frame, const PipelineFrame& processed) {
+    const auto& found = processed.analysis.candidates;
+    coverage.add(truth_.in(frame.name), found, box_);
+    std::vector<EvaluatedCandidate> base;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      base.push_back({reported_box(found[i], box_), found[i].layer_depth_mm, 0.0,
+                      ColourHistogram::of(found[i].colour_crop, found[i].depth_crop, o_.pipeline.tracking.histogram_bins),
+                      o_.pipeline.suppress_duplicates ? kin_of(found[i]) : CandidateKin{}});
+    }
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+      const std::vector<double> scores = m == 0 ? processed.scores : scorers_[m].score(found);
+      EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
+      for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
+      evaluated[m].push_back(std::move(e));
+    }
+  }
+
+  /// Saves and/or shows the frame's picture; false when the viewer pressed q or Esc.
+  bool picture(const DepthFrame& frame, const PipelineFrame& processed) {
+    if (o_.save_dir.empty() && !o_.show) return true;
+    const cv::Mat3b picture =
+        models_.empty() ? render_candidates(frame, processed.analysis.segmentation, processed.analysis.candidates, nullptr, box_)
+                        : render_people(frame, processed, pipeline_.tracker(), box_);
+    if (!o_.save_dir.empty()) {
+      write_png_atomically((std::filesystem::path(o_.save_dir) / (frame.name + ".detections.png")).string(), picture);
+    }
+    if (!o_.show) return true;
+    cv::imshow("rdsf-detect", picture);
+    const int key = cv::waitKey(1);
+    return !(key == 'q' || key == 27);
+  }
+
+  const DetectOptions& o_;
+  const std::vector<BoostedModel>& models_;
+  const GroundTruth& truth_;
+  const PeoplePipeline& pipeline_;
+  DetectionCsv* csv_;
+  BoxKind box_;
+  std::vector<ModelScorer> scorers_;
+  cli::Progress progress_;
+};
+
+/// Runs every frame through the pipeline (live or in frame order) into the handler; the wall time in s.
+double process_frames(const DetectOptions& o, PeoplePipeline& pipeline, FrameSource& source, FrameHandler& handler) {
+  const auto start = std::chrono::steady_clock::now();
+  if (o.live) {
+    run_live(o, pipeline, source, [&](const DepthFrame& f, const PipelineFrame& r) { handler(f, r); });
+  } else {
+    run_in_frame_order(pipeline, source, o.camera, {o.threads, 0, o.max_frames},
+                       [&](const DepthFrame& f, PipelineFrame& r) { return handler(f, r); });
+  }
+  handler.finish();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Commits the CSV and prints what the run did.
+void finish_run(const DetectOptions& o, const FrameSource& source, const PeoplePipeline& pipeline, DetectionCsv* csv,
+                const FrameHandler& handler, double wall_s, bool with_models) {
+  if (!source.summary().empty()) std::cerr << "rdsf-detect: " << source.summary() << "\n";
+  if (csv) csv->commit();
+  print_times(handler.total, handler.frames, handler.candidates, wall_s);
+  if (with_models) std::cerr << "rdsf-detect: " << pipeline.tracker().people().size() << " people tracked\n";
+  if (!o.out_csv.empty()) std::cerr << "rdsf-detect: wrote " << o.out_csv << "\n";
+  if (!o.save_dir.empty()) std::cerr << "rdsf-detect: pictures in " << o.save_dir << "\n";
+}
+
+/// Sweeps every model's thresholds over the kept frames and writes the evaluation report.
+void evaluate_models(const DetectOptions& o, const std::vector<BoostedModel>& models, const GroundTruth& truth,
+                     const FrameHandler& handler, double wall_s) {
+  std::vector<SweepResult> results;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    const BoostedModel& model = models[m];
+    const double operating = o.pipeline.score_threshold ? model.probability(*o.pipeline.score_threshold)
+                                                        : o.pipeline.probability_threshold;
+    results.push_back(sweep_thresholds(handler.evaluated[m], truth, o.thresholds, o.pipeline.tracking,
+                                       model_label(model), model.calibration(), operating));
+    results.back().fps = wall_s > 0 ? static_cast<double>(handler.frames) / wall_s : 0.0;
+    // What the model file's validation predicted at (the kept level nearest) the operating probability.
+    for (const ProbabilityPoint& p : model.training().validation.by_probability) {
+      if (!results.back().validation ||
+          std::abs(p.probability - operating) < std::abs(results.back().validation->probability - operating)) {
+        results.back().validation = p;
+      }
+    }
+  }
+  std::cout << write_evaluation_report(results, o.report_dir);
+  std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, summary.txt, summary.md, roc.png, det.png)\n";
+}
 
 }  // namespace
 
-int run_detect(const DetectOptions& o) {
+void check_options(DetectOptions& o) {
+  for (double p : o.thresholds) {
+    if (!(p > 0.0 && p < 1.0)) throw cli::UsageError("--thresholds are probabilities inside (0, 1), got " + std::to_string(p));
+  }
+  if (o.candidates_only && !o.models.empty()) throw cli::UsageError("--candidates-only and --model exclude each other");
+  // No model named: the default model, except for --truth without a model (candidate coverage only).
+  if (o.models.empty() && !o.candidates_only && o.truth_csv.empty()) o.models.push_back(kDefaultModelName);
+  if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
+    throw cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
+  }
+  if (o.threads < 0) throw cli::UsageError("--threads must be 0 (one per core) or more, got " + std::to_string(o.threads));
+  if (o.max_frames < 0) throw cli::UsageError("--frames must be 0 (every frame) or more");
+  if (o.live && (o.show || !o.truth_csv.empty())) throw cli::UsageError("--live works with --out and --save-dir, not with --show or --truth");
+  if (!(o.fps > 0.0 && o.fps <= 1000.0)) throw cli::UsageError("--fps must be in (0, 1000], got " + std::to_string(o.fps));
   const bool evaluate = !o.truth_csv.empty();
   if (evaluate && !o.models.empty() && o.report_dir.empty()) {
     throw cli::UsageError("--truth with a --model needs --report-dir DIR for the evaluation report");
   }
   if (!o.report_dir.empty() && !evaluate) throw cli::UsageError("--report-dir needs --truth boxes.csv");
-  const BoxKind box = o.pipeline.analyser.reported_box;
   if (!o.report_dir.empty() && o.models.empty()) throw cli::UsageError("--report-dir needs at least one --model to evaluate");
   if (o.out_csv.empty() && o.save_dir.empty() && !o.show && !evaluate && !o.live) {
     throw cli::UsageError("nothing to do: give --out FILE.csv, --save-dir DIR, --show or --truth with --report-dir");
   }
-  if (!o.report_dir.empty() && !o.force && std::filesystem::exists(std::filesystem::path(o.report_dir) / "metrics.csv")) {
-    throw Error(o.report_dir + ": already holds a report (pass --force to replace it)");
-  }
-  if (o.show) gui::require_display("rdsf-detect --show", "drop --show or use --save-dir to get pictures");
+}
 
+int run_detect(const DetectOptions& o) {
+  check_outputs(o);
+  const bool evaluate = !o.truth_csv.empty();
   std::vector<BoostedModel> models;
   for (const std::string& m : o.models) models.push_back(BoostedModel::load(m, o.models_dir));
-  PipelineParams pipeline_params = o.pipeline;
-  // The detector computes the first model's feature spec unless --feature-spec names one (then they must
-  // agree: PeoplePipeline refuses otherwise). Further models score the same crops in their own specs.
-  if (!models.empty() && !o.feature_spec_given) pipeline_params.analyser.features = models.front().feature_spec();
-  // The evaluation sweeps tracking over every candidate's colour histogram, not only the detections'.
-  pipeline_params.colour_crops_of_all = evaluate;
-  std::vector<ModelScorer> scorers;
-  for (const BoostedModel& m : models) scorers.emplace_back(m);
-  GroundTruth truth;
-  if (evaluate) {
-    truth = read_ground_truth(o.truth_csv);
-    const std::size_t ignored = ignore_hardly_visible(truth, o.min_visible);
-    std::cerr << "rdsf-detect: " << o.truth_csv << ": " << truth.people() << " people, " << ignored
-              << " of them less than " << o.min_visible * 100 << "% visible (ignored: no miss, no false positive)\n";
-  }
+  const GroundTruth truth = evaluate ? read_truth(o) : GroundTruth{};
 
-  PeoplePipeline pipeline(pipeline_params, models.empty() ? nullptr : &models.front());
+  PeoplePipeline pipeline(pipeline_params_for(o, models), models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.frames);
   std::unique_ptr<DetectionCsv> csv;
-  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), box);
-  CandidateCoverage coverage;
-  if (!o.save_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(o.save_dir, ec);
-    if (ec) fail(o.save_dir, "cannot create folder: " + ec.message());
-  }
-  std::cerr << "rdsf-detect: " << source->description() << "; " << resolve_thread_count(o.threads)
-            << (o.live ? " live worker(s)" : " thread(s)");
-  for (const BoostedModel& m : models) std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
-  std::cerr << "\n";
+  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), o.pipeline.analyser.reported_box);
+  if (!o.save_dir.empty()) create_save_dir(o.save_dir);
+  announce(o, *source, models);
 
-  std::vector<std::vector<EvaluatedFrame>> evaluated(models.size());
-  cli::Progress progress(std::cerr, "frames", source->frame_count());
-  std::int64_t frames = 0, candidates = 0, detections = 0;
-  StageTimes total;
-  // Each frame after tracking, in frame order, one at a time (on this thread, or a live worker).
-  auto handle = [&](const DepthFrame& frame, const PipelineFrame& processed) {
-    total += processed.times;
-    const auto& found = processed.analysis.candidates;
-    std::vector<CandidateOutcome> outcomes;
-    for (std::size_t i = 0; i < processed.scores.size(); ++i) {
-      const TrackedPerson* person = pipeline.tracker().person(processed.person[i]);
-      outcomes.push_back({processed.scores[i], processed.person[i], person != nullptr ? person->distance_cm : 0.0});
-      detections += processed.person[i] != 0 ? 1 : 0;
-    }
-    if (csv) csv->write_frame(frame.name, found, outcomes);
-    if (evaluate) {
-      coverage.add(truth.in(frame.name), found, box);
-      std::vector<EvaluatedCandidate> base;
-      for (std::size_t i = 0; i < found.size(); ++i) {
-        base.push_back({reported_box(found[i], box), found[i].layer_depth_mm, 0.0,
-                        ColourHistogram::of(found[i].colour_crop, found[i].depth_crop,
-                                            o.pipeline.tracking.histogram_bins),
-                        o.pipeline.suppress_duplicates ? kin_of(found[i]) : CandidateKin{}});
-      }
-      for (std::size_t m = 0; m < models.size(); ++m) {
-        const std::vector<double> scores = m == 0 ? processed.scores : scorers[m].score(found);
-        EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
-        for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
-        evaluated[m].push_back(std::move(e));
-      }
-    }
-    bool go_on = true;
-    if (!o.save_dir.empty() || o.show) {
-      const cv::Mat3b picture = models.empty()
-                                    ? render_candidates(frame, processed.analysis.segmentation, found, nullptr, box)
-                                    : render_people(frame, processed, pipeline.tracker(), box);
-      if (!o.save_dir.empty()) {
-        write_png_atomically((std::filesystem::path(o.save_dir) / (frame.name + ".detections.png")).string(), picture);
-      }
-      if (o.show) {
-        cv::imshow("rdsf-detect", picture);
-        const int key = cv::waitKey(1);
-        go_on = !(key == 'q' || key == 27);
-      }
-    }
-    ++frames;
-    candidates += static_cast<std::int64_t>(found.size());
-    progress.update(frames, "candidates " + std::to_string(candidates) +
-                                (models.empty() ? "" : ", detections " + std::to_string(detections)));
-    return go_on;
-  };
-  const auto start = std::chrono::steady_clock::now();
-  if (o.live) {
-    run_live(o, pipeline, *source, [&](const DepthFrame& f, const PipelineFrame& r) { handle(f, r); });
-  } else {
-    run_in_frame_order(pipeline, *source, o.camera, {o.threads, 0, o.max_frames},
-                       [&](const DepthFrame& f, PipelineFrame& r) { return handle(f, r); });
-  }
-  progress.finish(frames, "candidates " + std::to_string(candidates) +
-                              (models.empty() ? "" : ", detections " + std::to_string(detections)));
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!source->summary().empty()) std::cerr << "rdsf-detect: " << source->summary() << "\n";
-  if (csv) csv->commit();
-  print_times(total, frames, candidates, wall_s);
-  if (!models.empty()) std::cerr << "rdsf-detect: " << pipeline.tracker().people().size() << " people tracked\n";
-  if (!o.out_csv.empty()) std::cerr << "rdsf-detect: wrote " << o.out_csv << "\n";
-  if (!o.save_dir.empty()) std::cerr << "rdsf-detect: pictures in " << o.save_dir << "\n";
+  FrameHandler handler(o, models, truth, pipeline, csv.get(), source->frame_count());
+  const double wall_s = process_frames(o, pipeline, *source, handler);
+  finish_run(o, *source, pipeline, csv.get(), handler, wall_s, !models.empty());
 
-  if (evaluate) std::cerr << coverage.summary(box);
-  if (evaluate && !models.empty()) {
-    std::vector<SweepResult> results;
-    for (std::size_t m = 0; m < models.size(); ++m) {
-      const BoostedModel& model = models[m];
-      const double operating = o.pipeline.score_threshold ? model.probability(*o.pipeline.score_threshold)
-                                                          : o.pipeline.probability_threshold;
-      results.push_back(sweep_thresholds(evaluated[m], truth, o.thresholds, o.pipeline.tracking, model_label(model),
-                                         model.calibration(), operating));
-      results.back().fps = wall_s > 0 ? static_cast<double>(frames) / wall_s : 0.0;
-      // What the model file's validation predicted at (the kept level nearest) the operating probability.
-      for (const ProbabilityPoint& p : model.training().validation.by_probability) {
-        if (!results.back().validation ||
-            std::abs(p.probability - operating) < std::abs(results.back().validation->probability - operating)) {
-          results.back().validation = p;
-        }
-      }
-    }
-    std::cout << write_evaluation_report(results, o.report_dir);
-    std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, summary.txt, summary.md, roc.png, det.png)\n";
-  }
+  if (evaluate) std::cerr << handler.coverage.summary(o.pipeline.analyser.reported_box);
+  if (evaluate && !models.empty()) evaluate_models(o, models, truth, handler, wall_s);
   return 0;
 }
 

@@ -39,6 +39,10 @@ struct DetectOptions {
   double fps = 30;
 };
 
+/// Checks the options together (cli::UsageError naming the option, exit 2) and, when no model is named, adds
+/// the default model (except for --truth without a model: candidate coverage only). Call once, before run_detect.
+void check_options(DetectOptions& options);
+
 /// Returns the process exit code.
 int run_detect(const DetectOptions& options);
 

@@ -2,7 +2,6 @@
 // and evaluates models against ground truth.
 #include "cli/cli.hpp"
 #include "detector/detect_run.hpp"
-#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/evaluation/threshold_sweep.hpp"
 
 int main(int argc, char** argv) {
@@ -67,21 +66,7 @@ int main(int argc, char** argv) {
     rdsf::cli::apply_camera(values, o.camera, o.frames);
     o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
-    for (double p : o.thresholds) {
-      if (!(p > 0.0 && p < 1.0)) throw rdsf::cli::UsageError("--thresholds are probabilities inside (0, 1), got " + std::to_string(p));
-    }
-    if (o.candidates_only && !o.models.empty()) {
-      throw rdsf::cli::UsageError("--candidates-only and --model exclude each other");
-    }
-    // No model named: the default model, except for --truth without a model (candidate coverage only).
-    if (o.models.empty() && !o.candidates_only && o.truth_csv.empty()) o.models.push_back(rdsf::kDefaultModelName);
-    if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
-      throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
-    }
-    if (o.threads < 0) throw rdsf::cli::UsageError("--threads must be 0 (one per core) or more, got " + std::to_string(o.threads));
-    if (o.max_frames < 0) throw rdsf::cli::UsageError("--frames must be 0 (every frame) or more");
-    if (o.live && (o.show || !o.truth_csv.empty())) throw rdsf::cli::UsageError("--live works with --out and --save-dir, not with --show or --truth");
-    if (!(o.fps > 0.0 && o.fps <= 1000.0)) throw rdsf::cli::UsageError("--fps must be in (0, 1000], got " + std::to_string(o.fps));
+    rdsf::check_options(o);
     return rdsf::run_detect(o);
   });
 }

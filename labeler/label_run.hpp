@@ -22,6 +22,10 @@ struct LabelOptions {
   double min_visible = 0.5;    ///< assisted mode: people less visible than this are don't-care
 };
 
+/// Checks the options together (cli::UsageError naming the option, exit 2): --accept and --reject,
+/// --truth-oracle, --batch, --ask uncertain, --per-track, --budget. Call once, before run_label.
+void check_options(const LabelOptions& options);
+
 int run_label(const LabelOptions& options);
 
 }  // namespace rdsf

@@ -1,6 +1,5 @@
 // rdsf-label: a person confirms the frame analyser's candidates one by one (y / n / skip / undo / quit);
 // every answer is stored before the next candidate appears, and a rerun resumes where it stopped.
-#include <sstream>
 
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
@@ -78,27 +77,12 @@ int main(int argc, char** argv) {
     } catch (const rdsf::Error& e) {
       throw rdsf::cli::UsageError(std::string("--ask: ") + e.what());
     }
-    if (!(o.session.reject_probability >= 0 && o.session.reject_probability <= o.session.accept_probability &&
-          o.session.accept_probability <= 1)) {
-      std::ostringstream text;
-      text << "--accept " << o.session.accept_probability << " must be at least --reject "
-           << o.session.reject_probability << ", both between 0 and 1";
-      throw rdsf::cli::UsageError(text.str());
-    }
-    if (o.session.truth_is_oracle && o.truth_csv.empty()) throw rdsf::cli::UsageError("--truth-oracle needs --truth");
-    if (o.loop) {
+    if (o.loop) {  // --loop asks the uncertain candidates first and keeps the rejected ones
       o.session.ask = rdsf::AskOrder::uncertain;
       o.session.keep_rejected = true;
       o.session.explore_every = explore;
-      if (o.batch < 1) throw rdsf::cli::UsageError("--batch must be at least 1");
     }
-    if (o.session.ask == rdsf::AskOrder::uncertain && o.model.empty() && !o.loop) {
-      throw rdsf::cli::UsageError("--ask uncertain needs --model");
-    }
-    if (o.session.per_track && o.session.ask != rdsf::AskOrder::uncertain) {
-      throw rdsf::cli::UsageError("--per-track needs --ask uncertain (or --loop)");
-    }
-    if (o.budget < 0) throw rdsf::cli::UsageError("--budget must be 0 (no limit) or more");
+    rdsf::check_options(o);
     return rdsf::run_label(o);
   });
 }

@@ -26,8 +26,7 @@ int main(int argc, char** argv) {
         "recorder, lossless. Ctrl-C stops and keeps a playable file. Read it back with --source FILE.oni."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     o.depth = !no_depth;
-    if (o.frames < 0) throw rdsf::cli::UsageError("--frames must be 0 or more");
-    if (o.timeout_ms < 1) throw rdsf::cli::UsageError("--timeout-ms must be at least 1");
+    rdsf::recorder::check_options(o);
     return rdsf::recorder::run_record(o);
   });
 }

@@ -18,6 +18,11 @@ struct RecordOptions {
   int timeout_ms = 2000;           ///< longest wait for a frame before the device counts as gone
 };
 
+/// Checks the options together, before anything is opened, in this order: --frames >= 0, --timeout-ms >= 1
+/// (cli::UsageError, exit 2), --out ending in .oni (rdsf::Error, exit 1), not --no-depth without --colour
+/// (cli::UsageError). Call once, before run_record.
+void check_options(const RecordOptions& options);
+
 /// Records; returns the exit code. Throws rdsf::Error (one line) on a bad device or file. The file is
 /// written under a temporary name and renamed when the recorder has finished it, also after Ctrl-C or a
 /// device that stops sending: what was recorded then stays playable.

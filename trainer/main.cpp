@@ -43,13 +43,8 @@ int main(int argc, char** argv) {
       if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
       o.augment_given = !values["augment"].defaulted();
       o.feature_spec_given = !values["feature-spec"].defaulted();  // else the sets' spec
-      const int modes = static_cast<int>(!o.inspect.empty()) + static_cast<int>(!o.export_text.empty());
-      if (modes > 1) throw rdsf::cli::UsageError("give either --inspect or --export-text, not both");
-      if (modes > 0 && ranks) throw rdsf::cli::UsageError("--inspect and --export-text run in one process, not under mpirun");
+      rdsf::check_options(o, ranks);
       if (!o.inspect.empty()) return rdsf::run_inspect(o, std::cout);
-      if (o.recipe.empty() && (o.pos_sets.empty() || o.neg_sets.empty())) {
-        throw rdsf::cli::UsageError("give --recipe NAME, or --pos SET and --neg SET (see rdsf-train --help)");
-      }
       if (!o.export_text.empty()) return rdsf::run_export_text(o);
       try {
         return rdsf::run_train(o, *shards);

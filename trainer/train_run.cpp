@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iterator>
 #include <iostream>
 #include <limits>
@@ -134,12 +135,18 @@ std::string data_text(const ChosenSamples& train, const ChosenSamples& validatio
   return text;
 }
 
-}  // namespace
+/// What the command line asks for, checked: the effective recipe, the model's name and the --provenance pairs.
+struct TrainingPlan {
+  std::vector<std::pair<std::string, std::string>> provenance;
+  Recipe recipe;
+  std::string name;
+};
 
-int run_train(const TrainOptions& o) { return run_train(o, RowShards{}); }
-
-int run_train(const TrainOptions& o, const RowShards& shards) {
-  std::vector<std::pair<std::string, std::string>> provenance;  // checked before any work
+/// The checks that need the recipe (and, under mpirun, every rank's options), in this order: --provenance,
+/// the recipe and its overrides, the ranks' agreement and what data-parallel training allows,
+/// --group-frames, the model name. Before any sample is read.
+TrainingPlan plan_training(const TrainOptions& o, const RowShards& shards) {
+  TrainingPlan plan;
   for (const std::string& kv : o.provenance) {
     const std::size_t eq = kv.find('=');
     const std::string key = kv.substr(0, eq);
@@ -148,65 +155,72 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
         kv.find_first_of("\n\r") != std::string::npos) {
       throw cli::UsageError("--provenance '" + kv + "': give KEY=VALUE, KEY of a-z, 0-9 and _, one line");
     }
-    provenance.emplace_back(key, kv.substr(eq + 1));
+    plan.provenance.emplace_back(key, kv.substr(eq + 1));
   }
-  const Recipe recipe = effective_recipe(o);
-  const bool ranks = shards.distributed();
-  if (ranks) {
-    check_ranks_agree(shards, "options", options_text(recipe, o));
-    if (recipe.params.backend != BoostBackend::native || recipe.params.weight_trim > 0.0 ||
-        recipe.params.histogram_subtraction) {
+  plan.recipe = effective_recipe(o);
+  const BoostTrainingParams& p = plan.recipe.params;
+  if (shards.distributed()) {
+    check_ranks_agree(shards, "options", options_text(plan.recipe, o));
+    if (p.backend != BoostBackend::native || p.weight_trim > 0.0 || p.histogram_subtraction) {
       throw cli::UsageError("data-parallel training (" + std::to_string(shards.size()) +
                             " ranks) needs the native backend without --weight-trim and --histogram-subtraction");
     }
   }
   if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
-  const std::string name = o.name.empty() ? recipe.name : o.name;
-  if (name.empty()) throw cli::UsageError("ad hoc training needs a model name: give --name NAME");
-  validate_model_name(name);
-  std::cerr << "rdsf-train: model " << name << " (next version v" << latest_model_version(o.models_dir, name) + 1
-            << " under " << o.models_dir << "), " << recipe.params.backend.name() << " backend, " << recipe.params.rounds
-            << " rounds\n";
+  plan.name = o.name.empty() ? plan.recipe.name : o.name;
+  if (plan.name.empty()) throw cli::UsageError("ad hoc training needs a model name: give --name NAME");
+  validate_model_name(plan.name);
+  return plan;
+}
 
-  // Continued training: the model is read (and its bins checked) before any sample is.
+/// Continued training: the --init model, read (and its bins checked) before any sample is.
+std::optional<BoostedModel> read_init_model(const TrainOptions& o, const Recipe& recipe, const RowShards& shards) {
   std::optional<BoostedModel> init;
-  if (!o.init.empty()) {
-    on_every_rank(shards, "reading the --init model", [&] { init = BoostedModel::load(o.init, o.models_dir); });
-    const bool bins_given = std::any_of(o.boosting.begin(), o.boosting.end(), [](const auto& g) { return g.first == "bins"; });
-    if (bins_given && recipe.params.bins.count != init->bins().count) {
-      throw cli::UsageError("--bins " + std::to_string(recipe.params.bins.count) + " differs from the --init model's " +
-                            std::to_string(init->bins().count) + " (continued training keeps its bins)");
-    }
+  if (o.init.empty()) return init;
+  on_every_rank(shards, "reading the --init model", [&] { init = BoostedModel::load(o.init, o.models_dir); });
+  const bool bins_given = std::any_of(o.boosting.begin(), o.boosting.end(), [](const auto& g) { return g.first == "bins"; });
+  if (bins_given && recipe.params.bins.count != init->bins().count) {
+    throw cli::UsageError("--bins " + std::to_string(recipe.params.bins.count) + " differs from the --init model's " +
+                          std::to_string(init->bins().count) + " (continued training keeps its bins)");
   }
+  return init;
+}
 
+/// The separate validation sets, read like the training sets: the same spec, crops and features.
+ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const ChosenSamples& train,
+                              const RowShards& shards) {
+  SampleChoice v;
+  v.pos_sets = recipe.validation_pos_sets;
+  v.neg_sets = recipe.validation_neg_sets;
+  v.seed = recipe.params.seed;
+  v.asked_by = "validation";
+  v.role_prefix = "validation-";
+  v.spec = train.spec;          // the same spec, crops cut the same way ...
+  v.crops = train.crops;
+  v.columns = train.columns;    // ... and the same features as training
+  v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
+  v.group_frames = o.group_frames;
+  v.group_by = parse_group_by(o.group_by);
+  v.shard = shards.rank();
+  v.shards = shards.size();
+  ChosenSamples validation;
+  on_every_rank(shards, "reading its share of the validation sets",
+                [&] { validation = choose_samples(v, std::cerr, o.threads); });
+  check_disjoint_groups(train, validation);
+  return validation;
+}
+
+/// Every rank reads its share of the training (and validation) rows; the ranks must agree on what they read.
+void read_samples(const TrainOptions& o, const Recipe& recipe, const RowShards& shards, ChosenSamples& train,
+                  ChosenSamples& validation) {
   SampleChoice train_choice = training_choice(recipe, o);
   train_choice.shard = shards.rank();
   train_choice.shards = shards.size();
-  ChosenSamples train;
   on_every_rank(shards, "reading its share of the training sets",
                 [&] { train = choose_samples(train_choice, std::cerr, o.threads); });
-  ChosenSamples validation;
-  if (!recipe.validation_pos_sets.empty()) {
-    SampleChoice v;
-    v.pos_sets = recipe.validation_pos_sets;
-    v.neg_sets = recipe.validation_neg_sets;
-    v.seed = recipe.params.seed;
-    v.asked_by = "validation";
-    v.role_prefix = "validation-";
-    v.spec = train.spec;          // the same spec, crops cut the same way ...
-    v.crops = train.crops;
-    v.columns = train.columns;    // ... and the same features as training
-    v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
-    v.group_frames = o.group_frames;
-    v.group_by = parse_group_by(o.group_by);
-    v.shard = shards.rank();
-    v.shards = shards.size();
-    on_every_rank(shards, "reading its share of the validation sets",
-                  [&] { validation = choose_samples(v, std::cerr, o.threads); });
-    check_disjoint_groups(train, validation);
-  }
+  if (!recipe.validation_pos_sets.empty()) validation = read_validation(o, recipe, train, shards);
   check_ranks_agree(shards, "sample sets or feature spec", data_text(train, validation));
-  if (ranks) {
+  if (shards.distributed()) {
     std::cerr << "rdsf-train: " << shards.size() << " ranks; rank 0 holds " << train.rows.rows << " of the "
               << train.labels.size() << " training rows\n";
   }
@@ -217,9 +231,11 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
     std::cerr << "rdsf-train: OpenCV trains all rounds in one call: no progress until it is done (about 16-33 s "
                  "per round at 28,000 samples)\n";
   }
+}
 
-  const FeatureSpec spec = train.spec;
-  const auto progress = [&spec](const TrainingProgress& p) {
+/// One line per reported round on stderr.
+TrainingProgressFn round_printer(const FeatureSpec& spec) {
+  return [spec](const TrainingProgress& p) {
     char line[256], fold[32] = "";
     if (p.folds > 0 && p.fold <= p.folds) std::snprintf(fold, sizeof fold, "fold %d/%d  ", p.fold, p.folds);
     if (p.folds > 0 && p.fold > p.folds) std::snprintf(fold, sizeof fold, "final model  ");
@@ -233,37 +249,44 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
                                                                   : duration_text(p.round_s))
               << "/round  " << duration_text(p.left_s) << " left\n";
   };
-  const bool separate = !validation.labels.empty();
+}
+
+/// The rows' groups, augmentation marks and (under mpirun) owners, for the boosting.
+TrainingRowInfo row_info(const ChosenSamples& train, const ChosenSamples& validation, const RowShards& shards) {
   TrainingRowInfo info;
   info.groups = train.groups;
   info.augmented = train.augmented;
-  if (ranks) {
+  if (shards.distributed()) {
     info.owners = RowOwners(&shards, train.owner);
-    if (separate) info.validation_owners = RowOwners(&shards, validation.owner);
+    if (!validation.labels.empty()) info.validation_owners = RowOwners(&shards, validation.owner);
   }
-  BoostTrainingParams params = recipe.params;
-  params.feature_spec = train.spec;
-  params.feature_columns = train.columns;
-  std::string init_reference;
-  if (init) {
-    const std::string what = init->path().empty() ? o.init : init->path();
-    if (init->feature_spec() != train.spec) {
-      throw Error(what + ": --init model reads feature spec " + init->feature_spec().name() + " (" +
-                  init->feature_spec().hash() + "), the sets hold " + train.spec.name() + " (" + train.spec.hash() + ")");
-    }
-    const std::string crops = crop_provenance_mismatch(init->training().crops, "the --init model's crops", train.crops,
-                                                       "the sets' crops");
-    if (!crops.empty()) throw Error(what + ": " + crops);
-    params.bins = init->bins();
-    params.init = init->weak_classifiers();
-    init_reference = model_reference(*init) + " (" + what + ")";
-    std::cerr << "rdsf-train: continuing " << init_reference << ": " << params.init.size()
-              << " weak classifiers, then " << params.rounds << " new rounds\n";
+  return info;
+}
+
+/// Continued training: checks the --init model against the sets and starts `params` from it; returns the
+/// reference recorded in the new model ("NAME/vN (path)").
+std::string continue_from(const BoostedModel& init, const TrainOptions& o, const ChosenSamples& train,
+                          BoostTrainingParams& params) {
+  const std::string what = init.path().empty() ? o.init : init.path();
+  if (init.feature_spec() != train.spec) {
+    throw Error(what + ": --init model reads feature spec " + init.feature_spec().name() + " (" +
+                init.feature_spec().hash() + "), the sets hold " + train.spec.name() + " (" + train.spec.hash() + ")");
   }
-  BoostedModel model = train_boosted_model(train.rows, train.labels, params, progress,
-                                           separate ? &validation.rows : nullptr,
-                                           separate ? &validation.labels : nullptr, info);
-  TrainingRecord& record = model.training();
+  const std::string crops = crop_provenance_mismatch(init.training().crops, "the --init model's crops", train.crops,
+                                                     "the sets' crops");
+  if (!crops.empty()) throw Error(what + ": " + crops);
+  params.bins = init.bins();
+  params.init = init.weak_classifiers();
+  const std::string reference = model_reference(init) + " (" + what + ")";
+  std::cerr << "rdsf-train: continuing " << reference << ": " << params.init.size() << " weak classifiers, then "
+            << params.rounds << " new rounds\n";
+  return reference;
+}
+
+/// Writes where the model came from into its training record.
+void record_provenance(TrainingRecord& record, const TrainOptions& o, const TrainingPlan& plan,
+                       const ChosenSamples& train, const ChosenSamples& validation, const std::string& init_reference) {
+  const Recipe& recipe = plan.recipe;
   record.recipe = o.recipe.empty() ? "ad hoc" : recipe.name + " (" + recipe.path + ")";
   record.sample_sets = train.sets;
   record.sample_sets.insert(record.sample_sets.end(), validation.sets.begin(), validation.sets.end());
@@ -277,13 +300,12 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
   record.parameters.emplace_back("group_by", o.group_by);
   record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
   if (!init_reference.empty()) record.parameters.emplace_back("init", init_reference);
-  record.parameters.insert(record.parameters.end(), provenance.begin(), provenance.end());
+  record.parameters.insert(record.parameters.end(), plan.provenance.begin(), plan.provenance.end());
+}
 
-  std::string path;  // rank 0 writes the model; every rank learns whether it could
-  on_every_rank(shards, "writing the model", [&] {
-    if (shards.rank() == 0) path = save_new_model_version(model, name, o.models_dir);
-  });
-  if (shards.rank() != 0) return 0;
+/// The model's size, why it stopped and its validation figures, on stderr.
+void report_model(const BoostedModel& model, const std::string& path) {
+  const TrainingRecord& record = model.training();
   const ValidationFigures& v = record.validation;
   std::fprintf(stderr, "rdsf-train: %zu weak classifiers (%s); validation: %s\n", model.weak_classifiers().size(),
                record.stopped.c_str(), v.source.c_str());
@@ -301,6 +323,49 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
     std::fprintf(stderr, "\n");
   }
   std::cerr << "rdsf-train: wrote " << path << "\n";
+}
+
+}  // namespace
+
+void check_options(const TrainOptions& o, bool ranks) {
+  const int modes = static_cast<int>(!o.inspect.empty()) + static_cast<int>(!o.export_text.empty());
+  if (modes > 1) throw cli::UsageError("give either --inspect or --export-text, not both");
+  if (modes > 0 && ranks) throw cli::UsageError("--inspect and --export-text run in one process, not under mpirun");
+  if (!o.inspect.empty()) return;
+  if (o.recipe.empty() && (o.pos_sets.empty() || o.neg_sets.empty())) {
+    throw cli::UsageError("give --recipe NAME, or --pos SET and --neg SET (see rdsf-train --help)");
+  }
+}
+
+int run_train(const TrainOptions& o) { return run_train(o, RowShards{}); }
+
+int run_train(const TrainOptions& o, const RowShards& shards) {
+  const TrainingPlan plan = plan_training(o, shards);
+  const Recipe& recipe = plan.recipe;
+  std::cerr << "rdsf-train: model " << plan.name << " (next version v" << latest_model_version(o.models_dir, plan.name) + 1
+            << " under " << o.models_dir << "), " << recipe.params.backend.name() << " backend, " << recipe.params.rounds
+            << " rounds\n";
+  const std::optional<BoostedModel> init = read_init_model(o, recipe, shards);
+  ChosenSamples train, validation;
+  read_samples(o, recipe, shards, train, validation);
+
+  const bool separate = !validation.labels.empty();
+  const TrainingRowInfo info = row_info(train, validation, shards);
+  BoostTrainingParams params = recipe.params;
+  params.feature_spec = train.spec;
+  params.feature_columns = train.columns;
+  const std::string init_reference = init ? continue_from(*init, o, train, params) : std::string();
+  BoostedModel model = train_boosted_model(train.rows, train.labels, params, round_printer(train.spec),
+                                           separate ? &validation.rows : nullptr,
+                                           separate ? &validation.labels : nullptr, info);
+  record_provenance(model.training(), o, plan, train, validation, init_reference);
+
+  std::string path;  // rank 0 writes the model; every rank learns whether it could
+  on_every_rank(shards, "writing the model", [&] {
+    if (shards.rank() == 0) path = save_new_model_version(model, plan.name, o.models_dir);
+  });
+  if (shards.rank() != 0) return 0;
+  report_model(model, path);
   return 0;
 }
 

@@ -43,6 +43,11 @@ struct TrainOptions {
   bool force = false;       ///< --export-text may replace a file
 };
 
+/// Checks the command line's choice of job (cli::UsageError, exit 2): --inspect or --export-text, not both,
+/// neither under mpirun (`ranks`); training and --export-text need --recipe or --pos and --neg. The checks
+/// that need the recipe file (and the other ranks) follow in run_train and run_export_text. Call once, first.
+void check_options(const TrainOptions& options, bool ranks);
+
 /// Trains and saves models_dir/NAME/vN.yml; progress on stderr. Returns the exit code.
 int run_train(const TrainOptions& options);
 

@@ -193,14 +193,8 @@ std::vector<cv::Point2d> sorted_points(std::vector<cv::Point2d> points) {
   return points;
 }
 
-}  // namespace
-
-std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) fail(dir, "cannot create report folder: " + ec.message());
-  const std::filesystem::path folder(dir);
-
+// metrics.csv: per model, table row and figure set (all people, without segmentation errors) a line.
+void write_metrics_csv(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
   AtomicTextFile csv((folder / "metrics.csv").string(), true);
   csv.stream() << "model,table,probability,threshold,n_frames,n_people,n_det,n_fp,n_miss,TAR,FAR,TRR,FRR,FPPF,MPF,"
                   "MOTA,MOTP,matches,misses,false_positives,mismatches\n";
@@ -218,7 +212,10 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
     }
   }
   csv.commit();
+}
 
+// curve.csv: every point of every model's exact curve.
+void write_curve_csv(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
   AtomicTextFile curve_csv((folder / "curve.csv").string(), true);
   curve_csv.stream() << "model,probability,threshold,n_frames,n_people,n_det,n_fp,TAR,FAR,FPPF,FRR\n";
   for (const SweepResult& r : results) {
@@ -230,47 +227,46 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
     }
   }
   curve_csv.commit();
+}
 
-  std::ostringstream summary;
-  for (const SweepResult& r : results) {
-    const SweepRow& best = r.best_mota();
-    summary << "Model " << r.model << ": " << r.operating.all.n_frames << " frames, " << r.operating.all.n_people
-            << " people, " << r.segmentation_errors << " segmentation errors (no candidate with IoU >= 0.5)";
-    if (r.fps > 0) summary << ", " << std::lround(r.fps * 10) / 10.0 << " fps";
-    summary << "\n";
-    summary << " All people (FAR = n_fp / (n_fp + n_frames), as the thesis's tables):\n";
-    write_table(summary, r, false);
-    summary << " Without segmentation errors:\n";
-    write_table(summary, r, true);
-    char line[400];
-    const RateInterval tar01 = r.tar_interval_at_fppf(0.1), tar05 = r.tar_interval_at_fppf(0.5);
+// One model's part of summary.txt: its tables, best MOTA, the exact curve and the operating point.
+void write_model_summary(std::ostream& out, const SweepResult& r) {
+  const SweepRow& best = r.best_mota();
+  out << "Model " << r.model << ": " << r.operating.all.n_frames << " frames, " << r.operating.all.n_people
+      << " people, " << r.segmentation_errors << " segmentation errors (no candidate with IoU >= 0.5)";
+  if (r.fps > 0) out << ", " << std::lround(r.fps * 10) / 10.0 << " fps";
+  out << "\n";
+  out << " All people (FAR = n_fp / (n_fp + n_frames), as the thesis's tables):\n";
+  write_table(out, r, false);
+  out << " Without segmentation errors:\n";
+  write_table(out, r, true);
+  char line[400];
+  const RateInterval tar01 = r.tar_interval_at_fppf(0.1), tar05 = r.tar_interval_at_fppf(0.5);
+  std::snprintf(line, sizeof line,
+                " Best MOTA %.3f at P >= %.2f (MOTP %.1f, %ld mismatches); exact curve: TAR %.3f at FPPF <= 0.1, "
+                "%.3f at FPPF <= 0.5 (95 %% intervals over the %ld people: %.2f-%.2f, %.2f-%.2f)\n",
+                best.mot.mota(), best.probability, best.mot.motp(), best.mot.mismatches, r.tar_at_fppf(0.1),
+                r.tar_at_fppf(0.5), r.operating.all.n_people, tar01.low, tar01.high, tar05.low, tar05.high);
+  out << line;
+  std::snprintf(line, sizeof line,
+                " At the operating point P >= %.2f: TAR %.3f, FPPF %.3f, MOTA %.3f. Classifier on the %ld + %ld "
+                "candidates: AUC %.4f, TAR %.3f, FAR %.3f",
+                r.operating_probability, r.operating.all.tar, r.operating.all.fppf, r.operating.mot.mota(),
+                r.candidates.positives, r.candidates.negatives, r.candidates.auc, r.candidates.tar, r.candidates.far);
+  out << line;
+  if (r.validation) {
     std::snprintf(line, sizeof line,
-                  " Best MOTA %.3f at P >= %.2f (MOTP %.1f, %ld mismatches); exact curve: TAR %.3f at FPPF <= 0.1, "
-                  "%.3f at FPPF <= 0.5 (95 %% intervals over the %ld people: %.2f-%.2f, %.2f-%.2f)\n",
-                  best.mot.mota(), best.probability, best.mot.motp(), best.mot.mismatches, r.tar_at_fppf(0.1),
-                  r.tar_at_fppf(0.5), r.operating.all.n_people, tar01.low, tar01.high, tar05.low, tar05.high);
-    summary << line;
-    std::snprintf(line, sizeof line,
-                  " At the operating point P >= %.2f: TAR %.3f, FPPF %.3f, MOTA %.3f. Classifier on the %ld + %ld "
-                  "candidates: AUC %.4f, TAR %.3f, FAR %.3f",
-                  r.operating_probability, r.operating.all.tar, r.operating.all.fppf, r.operating.mot.mota(),
-                  r.candidates.positives, r.candidates.negatives, r.candidates.auc, r.candidates.tar, r.candidates.far);
-    summary << line;
-    if (r.validation) {
-      std::snprintf(line, sizeof line,
-                    "; the model file's validation said TAR %.3f, FAR %.3f (gap %+.3f; the held-out TAR's 95 %% "
-                    "interval over %ld positives is %.3f-%.3f)",
-                    r.validation->tar, r.validation->far, r.candidates.tar - r.validation->tar, r.candidates.positives,
-                    r.candidates.tar_interval.low, r.candidates.tar_interval.high);
-      summary << line;
-    }
-    summary << "\n\n";
+                  "; the model file's validation said TAR %.3f, FAR %.3f (gap %+.3f; the held-out TAR's 95 %% "
+                  "interval over %ld positives is %.3f-%.3f)",
+                  r.validation->tar, r.validation->far, r.candidates.tar - r.validation->tar, r.candidates.positives,
+                  r.candidates.tar_interval.low, r.candidates.tar_interval.high);
+    out << line;
   }
-  AtomicTextFile text((folder / "summary.txt").string(), true);
-  text.stream() << summary.str();
-  text.commit();
+  out << "\n\n";
+}
 
-  // The one-table view: models x TAR at FPPF 0.1, best MOTA, fps.
+// summary.md, the one-table view: models x TAR at FPPF 0.1, best MOTA, fps.
+void write_summary_md(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
   AtomicTextFile table((folder / "summary.md").string(), true);
   table.stream() << "| model | TAR at FPPF <= 0.1 | TAR at FPPF <= 0.5 | best MOTA (P >=) | MOTP | candidate recall | "
                     "candidate AUC | TAR at P >= op: validation / held-out (gap; held-out 95 % interval) | fps | "
@@ -296,8 +292,10 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
     table.stream() << row;
   }
   table.commit();
+}
 
-  // Charts: every model on one ROC and one DET chart, the operating threshold marked.
+// roc.png and det.png: every model on one ROC and one DET chart, the operating threshold marked.
+void write_charts(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
   PlotAxes roc;
   roc.title = "ROC: true accept rate against false accept rate";
   roc.x_label = "FAR = n_fp / (n_fp + n_frames)";
@@ -338,6 +336,24 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   roc.x_max = std::min(1.0, max_far * 1.1);
   write_png_atomically((folder / "roc.png").string(), draw_plot(roc, roc_curves));
   write_png_atomically((folder / "det.png").string(), draw_plot(det, det_curves));
+}
+
+}  // namespace
+
+std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) fail(dir, "cannot create report folder: " + ec.message());
+  const std::filesystem::path folder(dir);
+  write_metrics_csv(results, folder);
+  write_curve_csv(results, folder);
+  std::ostringstream summary;
+  for (const SweepResult& r : results) write_model_summary(summary, r);
+  AtomicTextFile text((folder / "summary.txt").string(), true);
+  text.stream() << summary.str();
+  text.commit();
+  write_summary_md(results, folder);
+  write_charts(results, folder);
   return summary.str();
 }
 
