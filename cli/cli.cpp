@@ -160,6 +160,17 @@ po::options_description feature_spec_options(FeatureSpec& spec) {
   return features;
 }
 
+void add_decision_options(po::options_description& group, PipelineParams& p) {
+  group.add_options()
+      ("threshold", po::value(&p.probability_threshold)->default_value(p.probability_threshold),
+       "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
+      ("score-threshold", po::value<double>()->notifier([&p](double h) { p.score_threshold = h; }),
+       "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
+      ("suppress-duplicates", po::value(&p.suppress_duplicates)->default_value(p.suppress_duplicates),
+       "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a "
+       "person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)");
+}
+
 po::options_description tracking_options(TrackingParams& t) {
   po::options_description o("Tracking");
   o.add_options()

@@ -16,6 +16,7 @@
 #include "rdsf/core/parameter_table.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "rdsf/frame/camera_model.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/frame/frame_source.hpp"
 
 namespace rdsf::cli {
@@ -72,6 +73,10 @@ po::options_description analyser_options(AnalyserParams& params);
 /// --feature-spec NAME[:key=value,...] bound to `spec` (part of detector_options; rdsf-train adds it alone).
 /// A name or parameter that is not known is a UsageError.
 po::options_description feature_spec_options(FeatureSpec& spec);
+
+/// --threshold, --score-threshold and --suppress-duplicates (what makes a candidate a person), added to
+/// `group` in that order and bound to `params` (rdsf-detect and the ROS node share them).
+void add_decision_options(po::options_description& group, PipelineParams& params);
 
 /// Options of the tracker (thesis names), bound to `params`.
 po::options_description tracking_options(TrackingParams& params);

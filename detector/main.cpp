@@ -20,14 +20,9 @@ int main(int argc, char** argv) {
          "shipped default model 'people' (synthetic data only; see README), unless --candidates-only")
         ("candidates-only", po::bool_switch(&o.candidates_only),
          "without --model: report every candidate unscored instead of running the default model")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
-        ("threshold", po::value(&o.pipeline.probability_threshold)->default_value(o.pipeline.probability_threshold),
-         "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
-        ("score-threshold", po::value<double>()->notifier([&o](double h) { o.pipeline.score_threshold = h; }),
-         "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
-        ("suppress-duplicates", po::value(&o.pipeline.suppress_duplicates)->default_value(o.pipeline.suppress_duplicates),
-         "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a "
-         "person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)")
+        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up");
+    rdsf::cli::add_decision_options(options, o.pipeline);
+    options.add_options()
         ("out", po::value(&o.out_csv), "write one row per candidate to this CSV")
         ("save-dir", po::value(&o.save_dir), "write NAME.detections.png per frame here")
         ("show", po::bool_switch(&o.show), "show each frame in a window (q or Esc stops)")

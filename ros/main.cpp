@@ -15,13 +15,9 @@ int main(int argc, char** argv) {
     options.add_options()
         ("model", po::value(&o.model)->default_value(o.model),
          "model file, NAME (newest version) or NAME/vN (default: the shipped default model, synthetic data only)")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
-        ("threshold", po::value(&o.pipeline.probability_threshold)->default_value(o.pipeline.probability_threshold),
-         "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
-        ("score-threshold", po::value<double>()->notifier([&o](double h) { o.pipeline.score_threshold = h; }),
-         "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
-        ("suppress-duplicates", po::value(&o.pipeline.suppress_duplicates)->default_value(o.pipeline.suppress_duplicates),
-         "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a person")
+        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up");
+    rdsf::cli::add_decision_options(options, o.pipeline);
+    options.add_options()
         ("threads", po::value(&o.threads)->default_value(o.threads),
          "live workers analysing frames (0: one per core); at most one frame waits per worker, a newer one replaces "
          "the oldest waiting (dropped, counted in /diagnostics)")
