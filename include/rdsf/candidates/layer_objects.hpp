@@ -26,6 +26,9 @@
 //      background above a head) - narrow_fitted_width_cm.
 // Objects wider than max_object_width_cm (walls) and, unless they touch the left or right border, objects
 // whose fitted extent is narrower than min_fitted_width_cm (posts, furniture legs) are dropped.
+// Each step is a unit of its own, applied in this order: the thesis's objects (object_join.hpp), 1
+// (object_fit.hpp), 2 (object_join.hpp), 4 and the drops (object_keep.hpp, narrow_person.hpp), 3
+// (object_split.hpp).
 #include <vector>
 
 #include <opencv2/core.hpp>
