@@ -3,6 +3,7 @@
 #include "adapt/adapt_chart.hpp"
 #include "adapt/adapt_run.hpp"
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 
 int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-adapt", [&] {
@@ -16,9 +17,10 @@ int main(int argc, char** argv) {
          "the room without people (mined whole; refused when the model follows a person in it over 5 frames). "
          "Default: none (the stretches of --source where the model and the tracker see nobody)")
         ("out", po::value(&o.out), "work folder: adapt-state.tsv, sets/, logs/, report.txt (rerun to resume)")
-        ("name", po::value(&o.name), "the adapted model's name: saved as MODELS/NAME/vN.yml")
-        ("model", po::value(&o.model)->default_value(o.model), "the model to adapt (file, NAME or NAME/vN)")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up and saved")
+        ("name", po::value(&o.name), "the adapted model's name: saved as MODELS/NAME/vN.yml");
+    rdsf::cli::add_model_option(options, o.model, "the model to adapt");
+    rdsf::cli::add_models_dir_option(options, o.models_dir, rdsf::cli::ModelsDirUse::look_up_and_save);
+    options.add_options()
         ("budget", po::value(&o.budget)->default_value(o.budget), "human answers at most (at least 1)")
         ("truth", po::value(&o.truth),
          "boxes.csv of the room: the truth is the person (headless, answers counted) and, with --eval, the report's")
@@ -28,8 +30,9 @@ int main(int argc, char** argv) {
         ("retrain", po::bool_switch(&o.retrain), "train from nothing instead of continuing --model")
         ("rounds", po::value(&o.rounds)->default_value(o.rounds), "boosting rounds (0: 10 continuing, 100 retraining)")
         ("base-pos", po::value(&o.base_pos)->multitoken(), "the synthetic base's positive sample set(s)")
-        ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)")
-        ("threads", po::value(&o.threads)->default_value(o.threads), "threads of each step (0: one per core)")
+        ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)");
+    rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
+    options.add_options()
         ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")
         ("chart-png", po::value(&chart_png), "with --chart: the picture to write");
     po::variables_map values;

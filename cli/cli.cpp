@@ -162,7 +162,9 @@ po::options_description feature_spec_options(FeatureSpec& spec) {
 
 void add_decision_options(po::options_description& group, PipelineParams& p) {
   group.add_options()
-      ("threshold", po::value(&p.probability_threshold)->default_value(p.probability_threshold),
+      ("threshold", po::value(&p.probability_threshold)->default_value(p.probability_threshold)->notifier([](double t) {
+         if (!(t > 0.0 && t < 1.0)) throw UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(t));
+       }),
        "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
       ("score-threshold", po::value<double>()->notifier([&p](double h) { p.score_threshold = h; }),
        "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
@@ -173,13 +175,7 @@ void add_decision_options(po::options_description& group, PipelineParams& p) {
 
 po::options_description tracking_options(TrackingParams& t) {
   po::options_description o("Tracking");
-  o.add_options()
-      ("threshold-lkh", po::value(&t.threshold_lkh)->default_value(t.threshold_lkh, shortest_text(t.threshold_lkh)),
-       "a detection matches a person when lkh = Bhattacharyya distance + d_cm/98 - 1/49 <= this")
-      ("max-missed-frames", po::value(&t.max_missed_frames)->default_value(t.max_missed_frames),
-       "a person unmatched for more frames is not matched again (0: never forgotten)")
-      ("histogram-bins", po::value(&t.histogram_bins)->default_value(t.histogram_bins),
-       "colour histogram bins per channel");
+  add_table_options(o, tracking_parameters(), t);
   return o;
 }
 

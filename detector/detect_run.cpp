@@ -171,8 +171,8 @@ class FrameHandler {
  public:
   FrameHandler(const DetectOptions& o, const std::vector<BoostedModel>& models, const GroundTruth& truth,
                const PeoplePipeline& pipeline, DetectionCsv* csv, std::optional<std::int64_t> frame_count)
-      : o_(o), models_(models), truth_(truth), pipeline_(pipeline), csv_(csv),
-        box_(o.pipeline.analyser.reported_box), evaluated(models.size()), progress_(std::cerr, "frames", frame_count) {
+      : evaluated(models.size()), o_(o), models_(models), truth_(truth), pipeline_(pipeline), csv_(csv),
+        box_(o.pipeline.analyser.reported_box), progress_(std::cerr, "frames", frame_count) {
     for (const BoostedModel& m : models) scorers_.emplace_back(m);
   }
 
@@ -306,10 +306,6 @@ void check_options(DetectOptions& o) {
   if (o.candidates_only && !o.models.empty()) throw cli::UsageError("--candidates-only and --model exclude each other");
   // No model named: the default model, except for --truth without a model (candidate coverage only).
   if (o.models.empty() && !o.candidates_only && o.truth_csv.empty()) o.models.push_back(kDefaultModelName);
-  if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
-    throw cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
-  }
-  if (o.threads < 0) throw cli::UsageError("--threads must be 0 (one per core) or more, got " + std::to_string(o.threads));
   if (o.max_frames < 0) throw cli::UsageError("--frames must be 0 (every frame) or more");
   if (o.live && (o.show || !o.truth_csv.empty())) throw cli::UsageError("--live works with --out and --save-dir, not with --show or --truth");
   if (!(o.fps > 0.0 && o.fps <= 1000.0)) throw cli::UsageError("--fps must be in (0, 1000], got " + std::to_string(o.fps));

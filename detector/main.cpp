@@ -1,6 +1,7 @@
 // rdsf-detect: runs the whole system (candidates, RDSF, classifier, tracking) on every frame of a source,
 // and evaluates models against ground truth.
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "detector/detect_run.hpp"
 #include "rdsf/evaluation/threshold_sweep.hpp"
 
@@ -19,8 +20,8 @@ int main(int argc, char** argv) {
          "model file, NAME (newest version) or NAME/vN; repeat to compare models in the evaluation. Default: the "
          "shipped default model 'people' (synthetic data only; see README), unless --candidates-only")
         ("candidates-only", po::bool_switch(&o.candidates_only),
-         "without --model: report every candidate unscored instead of running the default model")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up");
+         "without --model: report every candidate unscored instead of running the default model");
+    rdsf::cli::add_models_dir_option(options, o.models_dir);
     rdsf::cli::add_decision_options(options, o.pipeline);
     options.add_options()
         ("out", po::value(&o.out_csv), "write one row per candidate to this CSV")
@@ -35,9 +36,10 @@ int main(int argc, char** argv) {
          "0.1 ... 0.95 0.98 0.99); the ROC and DET curves are exact (every distinct score)")
         ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible),
          "evaluation: people with visible_fraction below this are don't-care (no miss, no false positive)")
-        ("force", po::bool_switch(&o.force), "replace an existing --out file or report")
-        ("threads", po::value(&o.threads)->default_value(o.threads),
-         "threads analysing frames (0: one per core); tracking stays in frame order, results do not depend on it")
+        ("force", po::bool_switch(&o.force), "replace an existing --out file or report");
+    rdsf::cli::add_threads_option(options, o.threads, "threads analysing frames",
+                                  "tracking stays in frame order, results do not depend on it");
+    options.add_options()
         ("frames", po::value(&o.max_frames)->default_value(o.max_frames),
          "stop after this many frames (0: every frame; a live device sends frames until stopped)")
         ("live", po::bool_switch(&o.live),

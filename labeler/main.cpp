@@ -2,6 +2,7 @@
 // every answer is stored before the next candidate appears, and a rerun resumes where it stopped.
 
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "rdsf/core/error.hpp"
 #include "label_run.hpp"
 
@@ -17,9 +18,10 @@ int main(int argc, char** argv) {
     options.add_options()
         ("source", po::value(&o.session.sources)->required()->composing(),
          "frames to label (repeat for several): folder, list file, PNG, .oni, 'openni' or device URI")
-        ("out", po::value(&o.out_set)->required(), "sample set to append to (created when missing)")
-        ("model", po::value(&o.model), "show each candidate's score H(x) with this model (file, NAME or NAME/vN)")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
+        ("out", po::value(&o.out_set)->required(), "sample set to append to (created when missing)");
+    rdsf::cli::add_model_option(options, o.model, "show each candidate's score H(x) with this model");
+    rdsf::cli::add_models_dir_option(options, o.models_dir);
+    options.add_options()
         ("accept", po::value(&o.session.accept_probability)
                       ->default_value(o.session.accept_probability, rdsf::cli::shortest_text(o.session.accept_probability)),
          "with --model: candidates with P(person) >= this are answered y by the model, never shown")
@@ -39,10 +41,11 @@ int main(int argc, char** argv) {
         ("explore", po::value(&explore)->default_value(explore),
          "--loop: every Nth candidate asked is a random one, not the most uncertain (finds what the model "
          "wrongly is sure of; 0 = off)")
-        ("budget", po::value(&o.budget)->default_value(o.budget), "stop after this many human answers (0: no limit)")
-        ("threads", po::value(&o.session.threads)->default_value(o.session.threads),
-         "--ask uncertain / --loop: threads that analyse and score the session's frames before the first question "
-         "(0: one per core; the same session for every count)")
+        ("budget", po::value(&o.budget)->default_value(o.budget), "stop after this many human answers (0: no limit)");
+    rdsf::cli::add_threads_option(options, o.session.threads,
+                                  "--ask uncertain / --loop: threads that analyse and score the session's frames "
+                                  "before the first question", "the same session for every count");
+    options.add_options()
         ("order-by-score", po::bool_switch(&o.session.order_by_score), "present a frame's candidates best score first")
         ("truth", po::value(&o.truth_csv),
          "assisted mode: boxes.csv; IoU >= 0.5 answers y, < 0.3 answers n, only the band between is asked")

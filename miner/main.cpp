@@ -1,6 +1,7 @@
 // rdsf-mine: mines negatives (every candidate of people-free frames, or a model's false positives) into a
 // sample set; --merge joins sample sets (e.g. the shards of a job array).
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "miner/mine_run.hpp"
 
 int main(int argc, char** argv) {
@@ -12,10 +13,10 @@ int main(int argc, char** argv) {
     options.add_options()
         ("source", po::value(&o.mine.sources)->multitoken(),
          "people-free frames, one or more: folders of NAME.depth.png, list files, PNGs, .oni files, devices")
-        ("out", po::value(&o.out)->required(), "the sample set folder to append to (created when absent)")
-        ("model", po::value(&o.model), "hard-negative mode: keep only candidates this model scores >= --min-score "
-                                       "(a model file, NAME or NAME/vN)")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
+        ("out", po::value(&o.out)->required(), "the sample set folder to append to (created when absent)");
+    rdsf::cli::add_model_option(options, o.model, "hard-negative mode: keep only candidates this model scores >= --min-score");
+    rdsf::cli::add_models_dir_option(options, o.models_dir);
+    options.add_options()
         ("min-score", po::value(&o.min_score)->default_value(o.min_score), "hard-negative mode: score threshold")
         ("stride", po::value(&o.mine.stride)->default_value(o.mine.stride), "use every N-th frame of each source")
         ("max", po::value(&o.mine.max_negatives)->default_value(0),
@@ -23,8 +24,9 @@ int main(int argc, char** argv) {
         ("max-frames", po::value(&o.mine.max_frames)->default_value(0), "stop after N frames (0: no limit)")
         ("shard", po::value(&o.shard)->default_value(o.shard),
          "mine slice i of n (1-based): of the strided frames k = index / stride, those with k % n == i - 1; "
-         "e.g. --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
-        ("threads", po::value(&o.mine.threads)->default_value(0), "threads analysing frames, this one among them (0: one per core)")
+         "e.g. --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT");
+    rdsf::cli::add_threads_option(options, o.mine.threads, "threads analysing frames, this one among them");
+    options.add_options()
         ("sync-every", po::value(&o.mine.sync_every_frames)->default_value(o.mine.sync_every_frames),
          "flush to disk once per N frames (group commit; a kill or power cut loses at most the frames since "
          "the last flush, which a rerun mines again; 1: after every frame)")

@@ -2,6 +2,7 @@
 // origin or source); keys flip a label, retract a sample, open its frame, page. Every change is on disk
 // before the next key.
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "review_run.hpp"
 
 int main(int argc, char** argv) {
@@ -10,9 +11,10 @@ int main(int argc, char** argv) {
     rdsf::ReviewOptions o;
     po::options_description options("rdsf-review");
     options.add_options()
-        ("set", po::value(&o.set)->required(), "the sample set to review")
-        ("model", po::value(&o.model), "score every sample with this model (file, NAME or NAME/vN)")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up")
+        ("set", po::value(&o.set)->required(), "the sample set to review");
+    rdsf::cli::add_model_option(options, o.model, "score every sample with this model");
+    rdsf::cli::add_models_dir_option(options, o.models_dir);
+    options.add_options()
         ("sort", po::value(&o.sort), "suspicion (the default with --model: the model's disagreement with the label), "
                                      "origin (the default without) or source")
         ("folds", po::value(&o.folds)->default_value(o.folds),

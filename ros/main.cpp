@@ -4,6 +4,7 @@
 #include <ros/init.h>
 
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "ros/people_node_run.hpp"
 #include "ros/ros_parameters.hpp"
 
@@ -12,15 +13,15 @@ int main(int argc, char** argv) {
     namespace po = rdsf::cli::po;
     rdsf::PeopleNodeOptions o;
     po::options_description options("rdsf_people (ROS parameters ~NAME, or options --NAME)");
-    options.add_options()
-        ("model", po::value(&o.model)->default_value(o.model),
-         "model file, NAME (newest version) or NAME/vN (default: the shipped default model, synthetic data only)")
-        ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "where model NAMEs are looked up");
+    rdsf::cli::add_model_option(options, o.model,
+                                "the model that scores candidates (the default, 'people', is the shipped model, "
+                                "trained on synthetic data only)");
+    rdsf::cli::add_models_dir_option(options, o.models_dir);
     rdsf::cli::add_decision_options(options, o.pipeline);
+    rdsf::cli::add_threads_option(options, o.threads, "live workers analysing frames",
+                                  "at most one frame waits per worker, a newer one replaces the oldest waiting "
+                                  "(dropped, counted in /diagnostics)");
     options.add_options()
-        ("threads", po::value(&o.threads)->default_value(o.threads),
-         "live workers analysing frames (0: one per core); at most one frame waits per worker, a newer one replaces "
-         "the oldest waiting (dropped, counted in /diagnostics)")
         ("colour", po::value(&o.colour)->default_value(o.colour),
          "also subscribe to rgb/image (registered to the depth image, same size) and pair it by stamp: tracking "
          "compares colour histograms")
@@ -45,10 +46,6 @@ int main(int argc, char** argv) {
       return 0;
     }
     o.feature_spec_given = !values["feature-spec"].defaulted();
-    if (!(o.pipeline.probability_threshold > 0.0 && o.pipeline.probability_threshold < 1.0)) {
-      throw rdsf::cli::UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(o.pipeline.probability_threshold));
-    }
-    if (o.threads < 0) throw rdsf::cli::UsageError("--threads must be 0 (one per core) or more");
     if (!(o.colour_gap_ms >= 0)) throw rdsf::cli::UsageError("--colour-gap-ms must be 0 or more");
     if (!(o.diagnostics_period_s > 0)) throw rdsf::cli::UsageError("--diagnostics-period must be more than 0 s");
     return rdsf::run_people_node(o);

@@ -3,12 +3,14 @@
 // range is refused naming the row, and a recipe is read through the same rows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/recipe.hpp"
+#include "rdsf/tracking/tracker.hpp"
 #include "support/test_support.hpp"
 
 namespace rdsf {
@@ -24,13 +26,16 @@ void expect_sound(const ParameterTable<Params>& table) {
     EXPECT_FALSE(row.help.empty()) << row.name;
     Params p = defaults;
     EXPECT_NO_THROW(row.set(p, row.get(defaults))) << row.name << ": its default fails its own check";
-    if (row.thesis) EXPECT_NO_THROW(row.set(p, *row.thesis)) << row.name << ": its thesis value fails its check";
+    if (row.thesis) {
+      EXPECT_NO_THROW(row.set(p, *row.thesis)) << row.name << ": its thesis value fails its check";
+    }
   }
 }
 
 TEST(ParameterTable, EveryTableIsSound) {
   expect_sound(analyser_parameters());
   expect_sound(boost_training_parameters());
+  expect_sound(tracking_parameters());
 }
 
 TEST(ParameterTable, OutOfRangeValuesAreRefusedNamingTheRow) {
@@ -84,6 +89,45 @@ TEST(ParameterTable, ValuesAreShownAsShortAsTheyRoundTrip) {
   EXPECT_EQ(parameter_text(0.1 + 0.2), "0.30000000000000004");
   EXPECT_EQ(parameter_text(true), "1");
   EXPECT_EQ(parameter_key("near-far-boundary"), "near_far_boundary");
+}
+
+
+// The model file's training.parameters come from the rows (boost_training_parameters.cpp): the same keys,
+// order and texts the hand-written list gave, so models trained again are the same bytes.
+TEST(ParameterTable, ModelFileProvenanceComesFromTheRows) {
+  BoostTrainingParams p;  // the defaults: native, depth 2, learning rate 0.5, 5 folds
+  p.bins.count = 32;
+  const RecordedParameters native{{"backend", "native"}, {"rounds", "100"},     {"bins", "32"},
+                                  {"bin_min", "0"},      {"bin_max", "1"},      {"smoothing", "auto (1/N)"},
+                                  {"depth", "2"},        {"learning_rate", "0.5"}, {"calibration", "platt"},
+                                  {"folds", "5"},        {"weight_trim", "0"},  {"validation_fraction", "0.2"},
+                                  {"seed", "1"},         {"report_every", "10"}, {"early_stopping", "0"}};
+  EXPECT_EQ(parameter_values(boost_training_parameters(), p), native);
+
+  p.smoothing = 0.001;
+  p.histogram_subtraction = true;
+  p.folds = 0;
+  const RecordedParameters changed = parameter_values(boost_training_parameters(), p);
+  EXPECT_EQ(changed[5], (std::pair<std::string, std::string>("smoothing", "0.001")));
+  EXPECT_EQ(changed[8], (std::pair<std::string, std::string>("histogram_subtraction", "on")));
+  EXPECT_EQ(std::count_if(changed.begin(), changed.end(), [](const auto& kv) { return kv.first == "folds"; }), 0);
+
+  p.backend = BoostBackend::opencv;  // the native backend's options are not recorded
+  const RecordedParameters opencv{{"backend", "opencv"}, {"rounds", "100"},  {"calibration", "platt"},
+                                  {"weight_trim", "0"},  {"validation_fraction", "0.2"}, {"seed", "1"},
+                                  {"report_every", "10"}, {"early_stopping", "0"}};
+  EXPECT_EQ(parameter_values(boost_training_parameters(), p), opencv);
+}
+
+// The tracker's options are its table's rows: a value out of range is refused naming the option.
+TEST(ParameterTable, TrackingRowsCheckTheirValues) {
+  TrackingParams t;
+  EXPECT_EQ(test::error_message([&] { find_parameter(tracking_parameters(), "histogram-bins")->set(t, 0); }),
+            "histogram-bins must be in [1, 256]");
+  EXPECT_EQ(test::error_message([&] { find_parameter(tracking_parameters(), "max-missed-frames")->set(t, -1); }),
+            "max-missed-frames must be at least 0");
+  find_parameter(tracking_parameters(), "threshold-lkh")->set(t, 0.25);
+  EXPECT_EQ(t.threshold_lkh, 0.25);
 }
 
 }  // namespace

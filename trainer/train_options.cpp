@@ -1,6 +1,8 @@
 // rdsf-train's command-line options, bound to TrainOptions.
 #include "trainer/train_options.hpp"
 
+#include "cli/common_options.hpp"
+
 namespace rdsf {
 namespace {
 
@@ -28,7 +30,10 @@ po::options_description train_options(TrainOptions& o) {
       ("negatives", optional_into(o.negatives),
        "negatives to take (seeded subset; 0 = all). Default: the recipe's, else all")
       ("name", po::value(&o.name), "model name (default: the recipe's name); saved as MODELS/NAME/vN.yml")
-      ("models-dir", po::value(&o.models_dir)->default_value(o.models_dir), "folder of models and recipes/")
+      ;
+  cli::add_models_dir_option(what, o.models_dir, cli::ModelsDirUse::look_up_and_save,
+                             "; its recipes/NAME.yml are the recipes of --recipe NAME");
+  what.add_options()
       ("init", po::value(&o.init),
        "continue training MODEL (file, NAME or NAME/vN, e.g. the shipped 'people') on the given sets: --rounds "
        "more weak classifiers after its own, its bins; the new model holds both. Default: none (from nothing)")
@@ -50,7 +55,9 @@ po::options_description train_options(TrainOptions& o) {
        "positives augmented at training time: off, or a list of mirror, shift, scale, occlusion")
       ("augment-copies", po::value(&o.augment_copies)->default_value(o.augment_copies),
        "random variants per positive (shift / scale / occlusion), besides the mirror")
-      ("threads", po::value(&o.threads)->default_value(o.threads), "threads for features and histograms (0 = all cores)")
+      ;
+  cli::add_threads_option(how, o.threads, "threads for features and histograms");
+  how.add_options()
       ("feature-pool", po::value(&o.feature_pool)->default_value(o.feature_pool),
        "train on a seeded pool of this many of the spec's features (0 = all when the rows fit --memory-budget-mb, "
        "else as many as fit; rdsf-rect has 120,786)")

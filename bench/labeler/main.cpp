@@ -1,6 +1,7 @@
 // rdsf-labeler-bench: how few answers the labeler needs (active learning), how often its model answers are
 // wrong, how fast the review finds planted label errors; ground truth answers (labeler_bench.hpp).
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "labeler_bench.hpp"
 
 int main(int argc, char** argv) {
@@ -16,8 +17,8 @@ int main(int argc, char** argv) {
         ("accept", po::value(&o.accept)->default_value(o.accept), "model answers: P >= this is y")
         ("reject", po::value(&o.reject)->default_value(o.reject), "model answers: P <= this is n")
         ("flip", po::value(&o.flip_fraction)->default_value(o.flip_fraction), "review: share of labels flipped")
-        ("seed", po::value(&o.seed)->default_value(o.seed), "first batch, passive order, flips")
-        ("threads", po::value(&o.threads)->default_value(o.threads), "0: one per core");
+        ("seed", po::value(&o.seed)->default_value(o.seed), "first batch, passive order, flips");
+    rdsf::cli::add_threads_option(options, o.threads, "threads analysing and scoring the recordings");
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{"rdsf-labeler-bench", "--train DIR... --test DIR... [--batch N]",
                                       "The labeler's benchmark with ground truth as the oracle; prints Markdown."};

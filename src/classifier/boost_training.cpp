@@ -42,26 +42,10 @@ struct ValidationView {
   }
 };
 
-std::vector<std::pair<std::string, std::string>> parameter_record(const BoostTrainingParams& p) {
-  std::vector<std::pair<std::string, std::string>> out;
-  out.emplace_back("backend", p.backend.name());
-  out.emplace_back("rounds", std::to_string(p.rounds));
-  if (p.backend == BoostBackend::native) {
-    out.emplace_back("bins", std::to_string(p.bins.count));
-    out.emplace_back("bin_min", number_text(p.bins.min_value));
-    out.emplace_back("bin_max", number_text(p.bins.max_value));
-    out.emplace_back("smoothing", p.smoothing > 0.0 ? number_text(p.smoothing) : "auto (1/N)");
-    out.emplace_back("depth", std::to_string(p.depth));
-    out.emplace_back("learning_rate", number_text(p.learning_rate));
-    if (p.histogram_subtraction) out.emplace_back("histogram_subtraction", "on");
-  }
-  out.emplace_back("calibration", p.calibration);
-  if (p.folds > 0) out.emplace_back("folds", std::to_string(p.folds));
-  out.emplace_back("weight_trim", number_text(p.weight_trim));
-  out.emplace_back("validation_fraction", number_text(p.validation_fraction));
-  out.emplace_back("seed", std::to_string(p.seed));
-  out.emplace_back("report_every", std::to_string(p.report_every));
-  out.emplace_back("early_stopping", std::to_string(p.early_stopping));
+// The model file's training.parameters: the table's record of every row (boost_training_parameters.cpp),
+// then how many weak classifiers a continued model started from.
+RecordedParameters parameter_record(const BoostTrainingParams& p) {
+  RecordedParameters out = parameter_values(boost_training_parameters(), p);
   if (!p.init.empty()) out.emplace_back("init_weak_classifiers", std::to_string(p.init.size()));
   return out;
 }

@@ -10,7 +10,9 @@
 //   member  where the value lives (a member pointer, also through one nested struct);
 //   help    the line --help prints (the default is printed beside it, from the struct);
 //   check   an inclusive range [min, max] for numbers, or the words a text may be, or a function;
-//   thesis  the value under --thesis when the row is a departure from the thesis.
+//   thesis  the value under --thesis when the row is a departure from the thesis;
+//   record  (optional) what provenance records of the row, when not simply (key, text): nothing for a row
+//           that does not apply (a native-only option under another backend), or other text or pairs.
 // The command line (cli::table_options), --config (the same options), recipes (read_parameters),
 // the --thesis preset (thesis_values), --help and so docs/options.md (scripts/option-reference.sh) and
 // the programs' provenance are all made from the rows. A row's setter converts and checks: it throws
@@ -28,6 +30,9 @@ namespace rdsf {
 
 /// A value as the tables carry it: bool, integers, real numbers or text.
 using ParameterValue = std::variant<bool, int, std::int64_t, double, std::string>;
+
+/// (key, text) pairs: what a model file or manifest records of parameters.
+using RecordedParameters = std::vector<std::pair<std::string, std::string>>;
 
 /// "1"/"0" for bool, the shortest round-trip text of a number ("%g" up to 17 digits: 0.3, 1500), text as is.
 std::string parameter_text(const ParameterValue& value);
@@ -48,6 +53,8 @@ struct Parameter {
   std::function<void(Params&, const ParameterValue&)> set;
   std::optional<ParameterValue> thesis;  ///< under --thesis, when a departure from the thesis
   bool is_switch = false;                ///< a flag without a value on the command line (--relaxed)
+  /// What provenance records of this row; empty: (parameter_key(name), parameter_text(get(params))).
+  std::function<RecordedParameters(const Params&)> record;
 };
 
 template <typename Params>
@@ -164,6 +171,7 @@ ParameterTable<Outer> nested(const ParameterTable<Inner>& inner, Inner Outer::*m
     lifted.help = row.help;
     lifted.thesis = row.thesis;
     lifted.is_switch = row.is_switch;
+    if (row.record) lifted.record = [record = row.record, member](const Outer& o) { return record(o.*member); };
     lifted.get = [get = row.get, member](const Outer& o) { return get(o.*member); };
     lifted.set = [set = row.set, member](Outer& o, const ParameterValue& v) { set(o.*member, v); };
     out.push_back(std::move(lifted));
@@ -196,13 +204,30 @@ Params with_thesis_values(const ParameterTable<Params>& table, Params params) {
   return params;
 }
 
-/// (key, text) of every row, in table order: what a model file or manifest records.
+/// What provenance records of `params`, in table order: each row's (key, text), or what its `record` gives.
 template <typename Params>
-std::vector<std::pair<std::string, std::string>> parameter_values(const ParameterTable<Params>& table,
-                                                                  const Params& params) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const Parameter<Params>& row : table) out.emplace_back(parameter_key(row.name), parameter_text(row.get(params)));
+RecordedParameters parameter_values(const ParameterTable<Params>& table, const Params& params) {
+  RecordedParameters out;
+  for (const Parameter<Params>& row : table) {
+    if (row.record) {
+      const RecordedParameters recorded = row.record(params);
+      out.insert(out.end(), recorded.begin(), recorded.end());
+    } else {
+      out.emplace_back(parameter_key(row.name), parameter_text(row.get(params)));
+    }
+  }
   return out;
+}
+
+/// `row` with its `record` set to `text`'s answer: no pair when it gives none, else (key, text).
+template <typename Params>
+Parameter<Params> recorded_as(Parameter<Params> row, std::function<std::optional<std::string>(const Params&)> text) {
+  row.record = [key = parameter_key(row.name), text](const Params& p) {
+    RecordedParameters out;
+    if (const std::optional<std::string> t = text(p)) out.emplace_back(key, *t);
+    return out;
+  };
+  return row;
 }
 
 }  // namespace rdsf

@@ -13,6 +13,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/frame/camera_model.hpp"
 #include "rdsf/tracking/colour_histogram.hpp"
 
@@ -26,6 +27,10 @@ struct TrackingParams {
   /// Bins per colour channel of the histograms.
   int histogram_bins = 8;
 };
+
+/// The tracker's options (--threshold-lkh, --max-missed-frames, --histogram-bins), declared once
+/// (core/parameter_table.hpp): name, help and check of each member of TrackingParams.
+const ParameterTable<TrackingParams>& tracking_parameters();
 
 /// What the tracker needs of a detection.
 struct TrackInput {

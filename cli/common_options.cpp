@@ -1,0 +1,31 @@
+#include "cli/common_options.hpp"
+
+#include "cli/cli.hpp"
+
+namespace rdsf::cli {
+
+void add_models_dir_option(po::options_description& group, std::string& dir, ModelsDirUse use,
+                           const std::string& addition) {
+  std::string help = "where model NAMEs are looked up";
+  if (use == ModelsDirUse::look_up_and_save) help += " and saved";
+  if (!addition.empty()) help += addition;
+  group.add_options()("models-dir", po::value(&dir)->default_value(dir), help.c_str());
+}
+
+void add_model_option(po::options_description& group, std::string& model, const std::string& role) {
+  const std::string help = role + ": a model file, NAME (its newest version) or NAME/vN";
+  if (model.empty()) {
+    group.add_options()("model", po::value(&model), help.c_str());
+  } else {
+    group.add_options()("model", po::value(&model)->default_value(model), help.c_str());
+  }
+}
+
+void add_threads_option(po::options_description& group, int& threads, const std::string& role, const std::string& note) {
+  const std::string help = role + " (0: one per core)" + (note.empty() ? "" : "; " + note);
+  group.add_options()("threads", po::value(&threads)->default_value(threads)->notifier([](int n) {
+    if (n < 0) throw UsageError("--threads must be 0 (one per core) or more, got " + std::to_string(n));
+  }), help.c_str());
+}
+
+}  // namespace rdsf::cli

@@ -1,0 +1,31 @@
+#pragma once
+// The options several programs share, each declared once here: --models-dir, --model and --threads. A
+// program names what the option does for it (the role); the option's name, value, default, check and the
+// rest of its help are the same everywhere.
+//   --models-dir DIR  "where model NAMEs are looked up[ and saved]" (+ the program's addition);
+//   --model M         "<role>: a model file, NAME (its newest version) or NAME/vN"; a default is shown only
+//                     when there is one;
+//   --threads N       "<role> (0: one per core)[; <note>]"; N < 0 is a UsageError
+//                     ("--threads must be 0 (one per core) or more, got N").
+#include <string>
+
+#include <boost/program_options.hpp>
+
+namespace rdsf::cli {
+
+/// Whether a program only reads models from --models-dir or also saves the ones it makes there.
+enum class ModelsDirUse { look_up, look_up_and_save };
+
+/// --models-dir DIR bound to `dir` (its value now is the default shown).
+void add_models_dir_option(boost::program_options::options_description& group, std::string& dir,
+                           ModelsDirUse use = ModelsDirUse::look_up, const std::string& addition = "");
+
+/// --model M bound to `model`: `role` says what the program does with it.
+void add_model_option(boost::program_options::options_description& group, std::string& model, const std::string& role);
+
+/// --threads N bound to `threads`: `role` says what the threads do; `note` (optional) follows the default's
+/// meaning, e.g. that results do not depend on the count.
+void add_threads_option(boost::program_options::options_description& group, int& threads, const std::string& role,
+                        const std::string& note = "");
+
+}  // namespace rdsf::cli
