@@ -501,6 +501,14 @@ cv::Mat decode_png(const std::string& path, const unsigned char* data, std::size
   return image;
 }
 
+std::vector<unsigned char> png_zlib_stream(const std::string& path, const unsigned char* data, std::size_t size) {
+  std::vector<unsigned char> stream;
+  for (const auto& chunk : walk_chunks(path, data, size).idat) {
+    stream.insert(stream.end(), data + chunk.first, data + chunk.first + chunk.second);
+  }
+  return stream;
+}
+
 cv::Mat read_png_file(const std::string& path, const PngDecodeOptions& options) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) {
