@@ -299,8 +299,9 @@ void unpaeth_rows(unsigned char* first, std::size_t stride, const unsigned char*
     result_2 = result_1;
     result_1 = a;
     b_1 = b;
-    const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(a));
-    const auto high = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_unpackhi_epi64(a, a)));
+    std::uint64_t low, high;
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(&low), a);
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(&high), _mm_unpackhi_epi64(a, a));
     for (int k = 0; k < Rows; ++k) {
       const std::size_t q = p - 2 * k;
       if (!edge || (p >= static_cast<std::size_t>(2 * k) && q < pixels)) {
