@@ -4,6 +4,7 @@
 // with cv::imdecode alone (PngDecodeOptions::direct_path = false: what every read did before). Both
 // include reading the file and checking every chunk's CRC. Arg 0 = depth, 1 = colour, 2 = both.
 // BM_InflateOnly is the floor under the direct path: libdeflate's inflate of the same zlib streams alone.
+// BM_ReadFolderSource (issue 36): the PNG folder source's frames per second from files on 1 and 2 threads.
 // BM_EncodeCrop (issue 17): one sample crop, depth (64x128, 16-bit) and colour (8-bit BGR), to PNG bytes, per
 // crop: the candidates' crops of ../shared/realdata/empty (with colour; else of the synthetic frame above), in turn.
 // Args {0, 0}: cv::imencode level 1; {1, 0}: the direct zlib path (the same bytes); {2, L}: libdeflate at
@@ -11,7 +12,6 @@
 // Run: build/bench/bench_frame_io
 #include <benchmark/benchmark.h>
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -28,6 +28,7 @@
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_decoder.hpp"
 #include "rdsf/frame/png_encoder.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
@@ -80,17 +81,7 @@ BENCHMARK(BM_ReadPngImdecode)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisec
 std::vector<unsigned char> idat_stream(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::vector<unsigned char> stream;
-  for (std::size_t at = 8; at + 12 <= bytes.size();) {
-    const std::size_t length = (std::size_t{bytes[at]} << 24) | (std::size_t{bytes[at + 1]} << 16) |
-                               (std::size_t{bytes[at + 2]} << 8) | bytes[at + 3];
-    if (std::memcmp(&bytes[at + 4], "IDAT", 4) == 0) {
-      stream.insert(stream.end(), bytes.begin() + static_cast<std::ptrdiff_t>(at + 8),
-                    bytes.begin() + static_cast<std::ptrdiff_t>(at + 8 + length));
-    }
-    at += length + 12;
-  }
-  return stream;
+  return rdsf::png_zlib_stream(path, bytes.data(), bytes.size());
 }
 
 /// The floor of the direct path: libdeflate's inflate of the files' zlib streams alone (in memory, no CRC
@@ -115,6 +106,24 @@ void BM_InflateOnly(benchmark::State& state) {
   libdeflate_free_decompressor(inflater);
 }
 BENCHMARK(BM_InflateOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// The PNG folder frame source reading ../shared/realdata/people (else the synthetic frame above) from its
+// files, on 1 and 2 threads (issue 36): each thread reads every other frame with read_frame, as the
+// programs' workers do; frames_per_s is over the wall time, the page cache warm after the first pass.
+void BM_ReadFolderSource(benchmark::State& state) {
+  const auto people = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/people";
+  static const rdsf::PngFolderSource source(
+      std::filesystem::is_directory(people) ? people.string() : files().dir.string(), rdsf::CameraModel::kinect_v1());
+  const std::size_t frames = source.depth_paths().size();
+  std::size_t i = static_cast<std::size_t>(state.thread_index());
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(source.read_frame(i % frames).depth_mm.data);
+    i += static_cast<std::size_t>(state.threads());
+  }
+  state.counters["frames_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ReadFolderSource)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 struct CropPair {
   cv::Mat1w depth;

@@ -36,11 +36,22 @@ void put_chunk(Bytes& out, const char* type, const Bytes& data) {
 // The PNG rows of `image` (RGB order, big-endian samples) each filtered with filter (row + shift) % 5, the
 // straightforward way of the PNG specification.
 // The filter of row y: shifts 0..4 cycle through the five filters (no two Paeth rows in a row); 5 is Paeth
-// on every row; 6 mixes runs of 1, 2 and 3 Paeth rows with the others (the decoder pairs Paeth rows).
+// on every row; 6 mixes runs of 1, 2 and 3 Paeth rows with the others.
+// 7 gives runs of 1, 2, ..., 9 Paeth rows, each followed by one row of another filter (runs of 2 to 4 are
+// undone together as one wavefront, longer runs in several).
 int filter_of(int y, int shift) {
   static const int kRuns[] = {4, 2, 4, 4, 1, 4, 4, 4, 0, 3};
+  static const std::vector<int> kLongRuns = [] {
+    std::vector<int> filters;
+    for (int run = 1; run <= 9; ++run) {
+      filters.insert(filters.end(), static_cast<std::size_t>(run), 4);
+      filters.push_back(run % 4);
+    }
+    return filters;
+  }();
   if (shift == 5) return 4;
   if (shift == 6) return kRuns[y % 10];
+  if (shift == 7) return kLongRuns[static_cast<std::size_t>(y) % kLongRuns.size()];
   return (y + shift) % 5;
 }
 
@@ -210,10 +221,42 @@ TEST(PngDecoder, PaethTiesAndRowEndsSameAsImdecode) {
           }
         }
       }
-      for (int shift = 0; shift < 7; ++shift) {
+      for (int shift = 0; shift < 8; ++shift) {
         const Bytes png = build_png(image, shift, 1U << 20);
         const cv::Mat decoded = rdsf::decode_png("x.png", png.data(), png.size());
         EXPECT_TRUE(same(decoded, image)) << "type " << type << " cols " << cols << " shift " << shift;
+        EXPECT_TRUE(same(decoded, cv::imdecode(png, cv::IMREAD_UNCHANGED)));
+      }
+    }
+  }
+}
+
+// Runs of 1 to 9 Paeth rows (the decoder undoes runs of 2 to 4 rows as one wavefront, each row two pixels
+// behind the one above) on noise, where all three of Paeth's choices occur, and on a four-value alphabet
+// (ties), at widths shorter than the wavefront's start-up (a row starts 2 pixels after the one above) and
+// a frame's, every 8- and 16-bit type; the rows of each run start at each place of the pattern once.
+TEST(PngDecoder, PaethRunsOfEveryLengthSameAsImdecode) {
+  std::mt19937 rng(36);
+  const int alphabet[] = {0, 1, 128, 255};
+  for (const int type : kTypes) {
+    for (const int cols : {1, 2, 3, 4, 5, 6, 7, 9, 640}) {
+      for (const bool ties : {false, true}) {
+        cv::Mat image(54, cols, type);
+        const bool wide = image.depth() == CV_16U;
+        for (int y = 0; y < image.rows; ++y) {
+          for (int i = 0; i < cols * image.channels(); ++i) {
+            const unsigned v = ties ? static_cast<unsigned>(alphabet[rng() % 4]) : rng() % 256;
+            const unsigned w = ties ? static_cast<unsigned>(alphabet[rng() % 4]) : rng() % 256;
+            if (wide) {
+              image.ptr<std::uint16_t>(y)[i] = static_cast<std::uint16_t>(v << 8 | w);
+            } else {
+              image.ptr<std::uint8_t>(y)[i] = static_cast<std::uint8_t>(v);
+            }
+          }
+        }
+        const Bytes png = build_png(image, 7, 1U << 20);
+        const cv::Mat decoded = rdsf::decode_png("x.png", png.data(), png.size());
+        EXPECT_TRUE(same(decoded, image)) << "type " << type << " cols " << cols << " ties " << ties;
         EXPECT_TRUE(same(decoded, cv::imdecode(png, cv::IMREAD_UNCHANGED)));
       }
     }

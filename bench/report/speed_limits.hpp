@@ -24,10 +24,12 @@ struct SpeedLimits {
   double frame_pass_ms = 0;  ///< one pass over a 640x480 frame: 614,400 B read, 307,200 B written (1 thread)
   // PNG reading of one synthetic frame, one thread (ms)
   double png_depth_direct_ms = 0, png_depth_imdecode_ms = 0, png_colour_direct_ms = 0, png_colour_imdecode_ms = 0;
+  double png_inflate_ms = 0;  // libdeflate's inflate alone of both files' zlib streams (the direct path's floor)
   // ... and of the real frames, the mean per frame of the fastest pass over all of them (ms; 0: none)
   std::string real_frames_dir;
   int real_frames = 0;
   double real_depth_direct_ms = 0, real_depth_imdecode_ms = 0, real_colour_direct_ms = 0, real_colour_imdecode_ms = 0;
+  double real_inflate_ms = 0;  // ... per frame, depth and colour
   // Stages, one thread
   int frames = 0;
   long long candidates = 0;

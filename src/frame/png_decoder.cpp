@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include <libdeflate.h>
@@ -146,11 +147,11 @@ void unsub_row(unsigned char* row, std::size_t n) {
 // pb <= pc, else c. Each pixel needs the one just reconstructed on its left (a), so a row is a chain of
 // pixels; with SSE2 a pixel's bytes go through it together, in 16-bit lanes, without branches (the scalar
 // choice mispredicts on noisy rows: real colour frames are nearly all Paeth rows, and decoding them took 5
-// of their 7 ms). The chain's latency, not the work, bounds a row; two Paeth rows in a row (most of the
-// real frames' depth and colour rows) are done together, the lower one a pixel behind the upper one: its
-// pixel i - 1 needs the upper row's pixels i - 1 and i - 2, which are done, so both halves of one register
-// take a step at a time. Bytes outside a pixel are not written; up to 8 bytes past it are read.
-constexpr std::size_t kRowSlack = 16;  // readable bytes after the last row of `row` and `prior`
+// of their 7 ms). The chain's latency, not the work, bounds a row; runs of 2 to 4 Paeth rows (most of the
+// real frames' Paeth rows) are done together, each row two pixels behind the one above it, in one
+// register of 8-bit lanes (unpaeth_rows below). Bytes outside a pixel are not written; up to 8 bytes
+// past it are read.
+constexpr std::size_t kRowSlack = 32;  // readable bytes after the last row and after `prior`
 
 inline int paeth_predictor(int a, int b, int c) {
   const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
@@ -235,41 +236,85 @@ void unpaeth_row(unsigned char* row, const unsigned char* prior, std::size_t n) 
   unpaeth_bytes<Bpp>(row, prior, i, n);
 }
 
-// Two consecutive Paeth rows: `upper` (whose row above is `prior`) and `lower` (below it). Bpp <= 4: a
-// register holds the upper row's pixel i in lanes 0..3 and the lower row's pixel i - 1 in lanes 4..7; the
-// lower half's b and c are the upper half's last two results.
-template <int Bpp>
-void unpaeth_two_rows(unsigned char* upper, unsigned char* lower, const unsigned char* prior, std::size_t n) {
-  static_assert(Bpp <= 4, "a pixel of each row in one register");
-  const std::size_t pixels = n / Bpp;
 #ifdef __SSE2__
-  if (pixels >= 2) {
-    for (std::size_t i = 0; i < Bpp; ++i) upper[i] = static_cast<unsigned char>(upper[i] + prior[i]);
-    const __m128i zero = _mm_setzero_si128();
-    const auto lanes = [&](__m128i low, __m128i high) {  // 4 bytes each, to lanes 0..3 and 4..7
-      return _mm_unpacklo_epi8(_mm_unpacklo_epi32(low, high), zero);
-    };
-    // Pixel 0 of the lower row has a = c = 0 (outside the row): its predictor is b, as Paeth's.
-    __m128i a = lanes(load4(upper), zero);
-    __m128i c = lanes(load4(prior), zero);
-    __m128i b = _mm_unpacklo_epi64(_mm_unpacklo_epi8(load4(prior + Bpp), zero), a);
-    for (std::size_t p = 1; p < pixels; ++p) {
-      const __m128i x = lanes(load4(upper + p * Bpp), load4(lower + (p - 1) * Bpp));
-      a = paeth_lanes(a, b, c, x);
-      c = b;
-      b = _mm_unpacklo_epi64(_mm_unpacklo_epi8(load4(prior + (p + 1) * Bpp), zero), a);
-      const std::uint64_t out = low_bytes(a);
-      store_pixel<Bpp>(upper + p * Bpp, out);
-      store_pixel<Bpp>(lower + (p - 1) * Bpp, out >> 32);
-    }
-    // The lower row's last pixel, one byte at a time (a PNG row is whole pixels: n = pixels * Bpp).
-    unpaeth_bytes<Bpp>(lower, upper, (pixels - 1) * Bpp, n);
-    return;
-  }
+// The kernels below are called once per pixel: GCC must not leave them as calls.
+#if defined(__GNUC__)
+#define RDSF_PNG_INLINE inline __attribute__((always_inline))
+#define RDSF_PNG_INLINE_LAMBDA __attribute__((always_inline))
+#else
+#define RDSF_PNG_INLINE inline
+#define RDSF_PNG_INLINE_LAMBDA
 #endif
-  unpaeth_row<Bpp>(upper, prior, n);
-  unpaeth_row<Bpp>(lower, upper, n);
+// Paeth in 8-bit lanes: x + the predictor of a, b, c in each byte, given pa = |b - c| and the masks
+// b_ge_c (b >= c). With pb = |a - c|: when a - c and b - c have the same sign, pc = pa + pb >= pa, pb,
+// so the predictor is a when pa <= pb, else b. When they differ, pc = |pa - pb|: a when pa <= pb - pa,
+// else b when pb <= pa - pb, else c (pa <= pb and pb <= pb - pa would mean pa = 0: a). Every
+// difference here is taken only where it is not negative, so bytes and saturating subtraction hold it
+// exactly. Unsigned u <= v is (u - v saturated) == 0.
+RDSF_PNG_INLINE __m128i paeth_bytes(__m128i a, __m128i b, __m128i c, __m128i x, __m128i pa, __m128i b_ge_c) {
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i ac = _mm_subs_epu8(a, c), ca = _mm_subs_epu8(c, a);
+  const __m128i pb = _mm_or_si128(ac, ca);
+  const __m128i same_sign = _mm_cmpeq_epi8(_mm_cmpeq_epi8(ca, zero), b_ge_c);
+  const __m128i pa_over = _mm_subs_epu8(pa, pb), pb_over = _mm_subs_epu8(pb, pa);
+  const __m128i a_same = _mm_cmpeq_epi8(pa_over, zero);
+  const __m128i a_differ = _mm_cmpeq_epi8(_mm_subs_epu8(pa, pb_over), zero);
+  const __m128i b_differ = _mm_cmpeq_epi8(_mm_subs_epu8(pb, pa_over), zero);
+  const __m128i take_a = _mm_or_si128(_mm_and_si128(same_sign, a_same), _mm_andnot_si128(same_sign, a_differ));
+  const __m128i take_b = _mm_or_si128(same_sign, b_differ);
+  const __m128i b_or_c = _mm_or_si128(_mm_and_si128(take_b, b), _mm_andnot_si128(take_b, c));
+  return _mm_add_epi8(x, _mm_or_si128(_mm_and_si128(take_a, a), _mm_andnot_si128(take_a, b_or_c)));
 }
+
+// Rows consecutive Paeth rows (Rows <= 4, Bpp <= 4), the first at `first` with `prior` above it, each
+// `stride` bytes after the one before, done as a wavefront: at step p, row k takes its pixel q = p - 2k, in
+// bytes 4k..4k+3 of one register (bytes past Bpp are not stored). Its a is its own previous result; its b
+// (pixel q of the row above) is that row's result two steps before, its c (pixel q - 1 above) the b of
+// the step before: only a is carried from one step to the next (the chain that bounds Paeth), b and c
+// are ready a step early. The first row's b and c come from `prior`. Before a row starts its bytes are 0,
+// which Paeth of 0, 0, 0 and x = 0 keeps: pixel 0 sees a = c = 0, as outside the row; after a row ends
+// nothing of it is stored. Up to 24 bytes past a row (n) and past `prior` are read.
+template <int Bpp, int Rows>
+void unpaeth_rows(unsigned char* first, std::size_t stride, const unsigned char* prior, std::size_t n) {
+  static_assert(Bpp <= 4 && Rows <= 4, "a pixel of each row in one register");
+  const std::size_t pixels = n / Bpp;
+  __m128i a = _mm_setzero_si128(), result_1 = a, result_2 = a, b_1 = a;
+  unsigned char* row[4];
+  for (int k = 0; k < 4; ++k) row[k] = first + k * stride;
+  const auto step = [&](std::size_t p, bool edge) RDSF_PNG_INLINE_LAMBDA {
+    // x: row k's bytes at pixel q = p - 2k (0 before the row starts)
+    std::uint32_t x[4] = {0, 0, 0, 0};
+    for (int k = 0; k < Rows; ++k) {
+      if (!edge || p >= static_cast<std::size_t>(2 * k)) std::memcpy(&x[k], row[k] + (p - 2 * k) * Bpp, 4);
+    }
+    const __m128i xs = _mm_unpacklo_epi64(_mm_unpacklo_epi32(_mm_cvtsi32_si128(static_cast<int>(x[0])),
+                                                             _mm_cvtsi32_si128(static_cast<int>(x[1]))),
+                                          _mm_unpacklo_epi32(_mm_cvtsi32_si128(static_cast<int>(x[2])),
+                                                             _mm_cvtsi32_si128(static_cast<int>(x[3]))));
+    const __m128i b = _mm_or_si128(_mm_slli_si128(result_2, 4), load4(prior + p * Bpp));
+    const __m128i c = b_1;
+    const __m128i pa = _mm_or_si128(_mm_subs_epu8(b, c), _mm_subs_epu8(c, b));
+    const __m128i b_ge_c = _mm_cmpeq_epi8(_mm_subs_epu8(c, b), _mm_setzero_si128());
+    a = paeth_bytes(a, b, c, xs, pa, b_ge_c);
+    result_2 = result_1;
+    result_1 = a;
+    b_1 = b;
+    std::uint64_t low, high;
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(&low), a);
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(&high), _mm_unpackhi_epi64(a, a));
+    for (int k = 0; k < Rows; ++k) {
+      const std::size_t q = p - 2 * k;
+      if (!edge || (p >= static_cast<std::size_t>(2 * k) && q < pixels)) {
+        store_pixel<Bpp>(row[k] + q * Bpp, (k < 2 ? low : high) >> (32 * (k % 2)));
+      }
+    }
+  };
+  std::size_t p = 0;
+  for (; p < 2 * (Rows - 1); ++p) step(p, true);
+  for (; p < pixels; ++p) step(p, false);
+  for (; p < pixels + 2 * (Rows - 1); ++p) step(p, true);
+}
+#endif
 
 template <int Bpp>
 void unfilter_row(int filter, unsigned char* row, const unsigned char* prior, std::size_t n) {
@@ -300,13 +345,28 @@ void unfilter(int bpp, int filter, unsigned char* row, const unsigned char* prio
   }
 }
 
-void unpaeth_pair(int bpp, unsigned char* upper, unsigned char* lower, const unsigned char* prior, std::size_t n) {
+// `rows` (2..4) consecutive Paeth rows, the first at `first`, each `stride` bytes after the one before;
+// bpp <= 4.
+void unpaeth_group(int bpp, int rows, unsigned char* first, std::size_t stride, const unsigned char* prior,
+                   std::size_t n) {
+#ifdef __SSE2__
+  const auto with = [&](auto bpp_constant) {
+    constexpr int kBpp = decltype(bpp_constant)::value;
+    switch (rows) {
+      case 2: unpaeth_rows<kBpp, 2>(first, stride, prior, n); break;
+      case 3: unpaeth_rows<kBpp, 3>(first, stride, prior, n); break;
+      default: unpaeth_rows<kBpp, 4>(first, stride, prior, n); break;
+    }
+  };
   switch (bpp) {
-    case 1: unpaeth_two_rows<1>(upper, lower, prior, n); break;
-    case 2: unpaeth_two_rows<2>(upper, lower, prior, n); break;
-    case 3: unpaeth_two_rows<3>(upper, lower, prior, n); break;
-    default: unpaeth_two_rows<4>(upper, lower, prior, n); break;
+    case 1: with(std::integral_constant<int, 1>{}); break;
+    case 2: with(std::integral_constant<int, 2>{}); break;
+    case 3: with(std::integral_constant<int, 3>{}); break;
+    default: with(std::integral_constant<int, 4>{}); break;
   }
+#else
+  for (int k = 0; k < rows; ++k, prior = first, first += stride) unfilter(bpp, 4, first, prior, n);
+#endif
 }
 
 // One unfiltered PNG row to the cv::imdecode layout: 16-bit samples to host order, RGB(A) to BGR(A).
@@ -403,12 +463,16 @@ cv::Mat decode_direct(const unsigned char* bytes, const PngLayout& layout) {
     unsigned char* line = raw.data() + std::size_t{y} * (row_bytes + 1);
     const int filter = line[0];
     if (filter > 4) return {};
-    unsigned char* next = line + row_bytes + 1;
-    if (filter == 4 && bpp <= 4 && y + 1 < layout.height && next[0] == 4) {
-      unpaeth_pair(bpp, line + 1, next + 1, prior, row_bytes);
-      convert_row(line + 1, image.ptr(static_cast<int>(y)), layout.width, channels, layout.bit_depth);
-      ++y;
-      line = next;
+    // A run of 2 to 4 Paeth rows is undone together (their pixels side by side in one register).
+    std::uint32_t run = 0;
+    if (filter == 4 && bpp <= 4) {
+      while (run < 4 && y + run < layout.height && line[std::size_t{run} * (row_bytes + 1)] == 4) ++run;
+    }
+    if (run >= 2) {
+      unpaeth_group(bpp, static_cast<int>(run), line + 1, row_bytes + 1, prior, row_bytes);
+      for (std::uint32_t k = 0; k + 1 < run; ++k, ++y, line += row_bytes + 1) {
+        convert_row(line + 1, image.ptr(static_cast<int>(y)), layout.width, channels, layout.bit_depth);
+      }
     } else {
       unfilter(bpp, filter, line + 1, prior, row_bytes);
     }
@@ -436,6 +500,14 @@ cv::Mat decode_png(const std::string& path, const unsigned char* data, std::size
   }
   if (image.empty()) fail(path, "corrupt PNG (cannot be decoded)");
   return image;
+}
+
+std::vector<unsigned char> png_zlib_stream(const std::string& path, const unsigned char* data, std::size_t size) {
+  std::vector<unsigned char> stream;
+  for (const auto& chunk : walk_chunks(path, data, size).idat) {
+    stream.insert(stream.end(), data + chunk.first, data + chunk.first + chunk.second);
+  }
+  return stream;
 }
 
 cv::Mat read_png_file(const std::string& path, const PngDecodeOptions& options) {

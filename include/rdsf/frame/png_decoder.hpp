@@ -16,6 +16,7 @@
 // refused and their messages are the same as with cv::imdecode alone.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -32,6 +33,11 @@ struct PngDecodeOptions {
 /// "corrupt PNG (cannot be decoded)". Returns the image as cv::imdecode(IMREAD_UNCHANGED) would.
 cv::Mat decode_png(const std::string& path, const unsigned char* data, std::size_t size,
                    const PngDecodeOptions& options = {});
+
+/// The zlib stream of the PNG file bytes `data[0..size)`: its IDAT chunks' data joined, after the same
+/// chunk walk and CRC checks as decode_png (the same errors). For benchmarks that time libdeflate's
+/// inflate alone, the floor under the direct path.
+std::vector<unsigned char> png_zlib_stream(const std::string& path, const unsigned char* data, std::size_t size);
 
 /// Reads the whole file at `path` and decodes it as above. Throws Error naming `path` when it is missing,
 /// a folder or unreadable, and on the faults above.
