@@ -52,7 +52,8 @@ void run_step_program(const std::string& program, const std::vector<std::string>
 // truth must name only frames of the room (source or eval). Checked before anything is written.
 void check_room(const AdaptOptions& o, const BoostedModel& model) {
   std::set<std::string> names;
-  for (const std::string& spec : {o.source, o.eval, o.empty}) {
+  const std::pair<std::string, bool> specs[] = {{o.source, true}, {o.eval, true}, {o.empty, false}};
+  for (const auto& [spec, named_by_truth] : specs) {  // named_by_truth: --truth may name its frames
     if (spec.empty()) continue;
     auto frames = open_frame_source(spec);
     if (spec == o.source && o.empty.empty() && dynamic_cast<const PngFolderSource*>(frames.get()) == nullptr) {
@@ -79,7 +80,7 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
         }
         first = false;
       }
-      if (o.truth.empty() || spec == o.empty) break;  // the truth names frames of the source or eval
+      if (o.truth.empty() || !named_by_truth) break;  // the truth names frames of the source or eval
       names.insert(frame.name);
     }
     if (first) fail(spec, "no frames");
