@@ -18,6 +18,7 @@
 #include "rdsf/core/error.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/frame_source.hpp"
+#include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
 #include "rdsf/pipeline/room_presence.hpp"
 
@@ -51,9 +52,14 @@ void run_step_program(const std::string& program, const std::vector<std::string>
 // truth must name only frames of the room (source or eval). Checked before anything is written.
 void check_room(const AdaptOptions& o, const BoostedModel& model) {
   std::set<std::string> names;
-  for (const std::string& spec : {o.source, o.eval}) {
+  const std::pair<std::string, bool> specs[] = {{o.source, true}, {o.eval, true}, {o.empty, false}};
+  for (const auto& [spec, named_by_truth] : specs) {  // named_by_truth: --truth may name its frames
     if (spec.empty()) continue;
     auto frames = open_frame_source(spec);
+    if (spec == o.source && o.empty.empty() && dynamic_cast<const PngFolderSource*>(frames.get()) == nullptr) {
+      fail(spec, "without a recording of the room empty, the frames taken as empty are mined from the room's "
+                 "own frames, which must then be PNG frames (a folder or a list file)");
+    }
     DepthFrame frame;
     bool first = true;
     while (frames->next(frame)) {
@@ -74,7 +80,7 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
         }
         first = false;
       }
-      if (o.truth.empty()) break;
+      if (o.truth.empty() || !named_by_truth) break;  // the truth names frames of the source or eval
       names.insert(frame.name);
     }
     if (first) fail(spec, "no frames");
@@ -91,48 +97,48 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
 // A list file of the room's frames taken as empty (absolute paths), for rdsf-mine.
 std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presence) {
   std::map<std::string, std::string> path_of;  // frame name -> depth PNG
-  if (fs::is_directory(o.source)) {
-    for (const std::string& name : presence.frames) {
-      path_of[name] = fs::absolute(fs::path(o.source) / (name + ".depth.png")).string();
-    }
-  } else {  // a list file: its lines, relative to its folder
-    std::ifstream in(o.source);
-    for (std::string line; std::getline(in, line);) {
-      if (line.empty() || line[0] == '#') continue;
-      const fs::path p = fs::absolute(fs::path(o.source).parent_path() / line);
-      std::string stem = p.filename().string();
-      stem = stem.substr(0, stem.find(".depth.png"));
-      path_of[stem] = p.string();
-    }
+  const std::unique_ptr<FrameSource> source = open_frame_source(o.source);
+  const auto* pngs = dynamic_cast<const PngFolderSource*>(source.get());  // its list file read by the library
+  if (pngs == nullptr) {
+    fail(o.source, "the frames taken as empty are mined from PNG frames only (a folder or a list file): "
+                   "give a recording without people");
+  }
+  for (const std::string& path : pngs->depth_paths()) {
+    path_of[PngFolderSource::frame_name(path)] = fs::absolute(path).string();
   }
   const std::string list = (fs::path(o.out) / "empty-frames.txt").string();
   AtomicTextFile file(list, /*overwrite=*/true);
   for (std::size_t f = 0; f < presence.frames.size(); ++f) {
     if (presence.empty[f] == 0) continue;
     const auto it = path_of.find(presence.frames[f]);
-    if (it == path_of.end()) fail(o.source, "frame '" + presence.frames[f] + "': its file is not known (give a folder)");
+    if (it == path_of.end()) fail(o.source, "frame '" + presence.frames[f] + "': its file is not known");
     file.stream() << it->second << "\n";
   }
   file.commit();
   return list;
 }
 
+// An --empty recording with people in it is refused before anything is written: the model, with the
+// tracker, follows one person over PresenceParams::confident_track_frames frames (docs/adapting-to-your-room.md).
+void check_empty_recording(const AdaptOptions& o, const BoostedModel& model) {
+  if (o.empty.empty()) return;
+  const RoomPresence presence = scan_room_presence(o.empty, model, PipelineParams{}, CameraModel::kinect_v1());
+  const PresenceParams rule;
+  if (presence.longest_confident_track >= rule.confident_track_frames) {
+    fail(o.empty, "not empty: " + model_reference(model) + " follows a person over " +
+                      std::to_string(presence.longest_confident_track) + " frames with P(person) >= " +
+                      std::to_string(rule.confident_probability).substr(0, 4) + " (up to frame " +
+                      presence.confident_track_end + "); give a recording without people, or none");
+  }
+  say(o.empty + ": nobody followed over " + std::to_string(rule.confident_track_frames) + " frames (longest " +
+      std::to_string(presence.longest_confident_track) + ")");
+}
+
 // Step 1: the room's negatives, the model's false positives first.
 void room_negatives(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
-  const std::string scanned = o.empty.empty() ? o.source : o.empty;
-  const RoomPresence presence = scan_room_presence(scanned, model, PipelineParams{}, CameraModel::kinect_v1());
-  const PresenceParams rule;
-  std::string source = o.empty;
-  if (!o.empty.empty()) {
-    if (presence.longest_confident_track >= rule.confident_track_frames) {
-      fail(o.empty, "not empty: " + model_reference(model) + " follows a person over " +
-                        std::to_string(presence.longest_confident_track) + " frames with P(person) >= " +
-                        std::to_string(rule.confident_probability).substr(0, 4) + " (up to frame " +
-                        presence.confident_track_end + "); give a recording without people, or none");
-    }
-    say(o.empty + ": nobody followed over " + std::to_string(rule.confident_track_frames) + " frames (longest " +
-        std::to_string(presence.longest_confident_track) + ")");
-  } else {
+  std::string source = o.empty;  // checked by check_empty_recording
+  if (o.empty.empty()) {
+    const RoomPresence presence = scan_room_presence(o.source, model, PipelineParams{}, CameraModel::kinect_v1());
     say(std::to_string(presence.empty_frames()) + " of " + std::to_string(presence.frames.size()) +
         " frames taken as empty (no candidate with P >= 0.2 within 15 frames, runs of 10 frames or more)");
     if (!o.truth.empty()) {  // how often that took a person as empty
@@ -285,6 +291,7 @@ void step(AdaptState& state, const std::string& name, const std::function<void()
 int run_adapt(const AdaptOptions& o) {
   const BoostedModel model = BoostedModel::load(o.model, o.models_dir);
   check_room(o, model);  // bad input is refused before anything is written
+  check_empty_recording(o, model);
   AdaptState state(o.out);
   state.pin("room", fs::absolute(o.source).string());
   state.pin("name", o.name);

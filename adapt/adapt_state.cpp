@@ -1,24 +1,17 @@
 #include "adapt/adapt_state.hpp"
 
 #include <filesystem>
-#include <fstream>
 
 #include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/labeling/adapt_state_file.hpp"
 
 namespace rdsf {
 
 AdaptState::AdaptState(const std::string& out_dir)
     : path_((std::filesystem::path(out_dir) / "adapt-state.tsv").string()) {
   std::filesystem::create_directories(out_dir);
-  std::ifstream in(path_);
-  int number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++number;
-    const std::size_t tab = line.find('\t');
-    if (tab == std::string::npos || tab == 0) fail(path_, "line " + std::to_string(number) + ": not KEY<TAB>VALUE");
-    values_[line.substr(0, tab)] = line.substr(tab + 1);
-  }
+  values_ = read_adapt_state(path_);
 }
 
 std::string AdaptState::get(const std::string& key) const {
@@ -27,10 +20,13 @@ std::string AdaptState::get(const std::string& key) const {
 }
 
 void AdaptState::set(const std::string& key, const std::string& value) {
-  values_[key] = value;
+  std::map<std::string, std::string> values = values_;
+  values[key] = value;
+  const std::string text = adapt_state_text(values, path_);  // refuses what would not read back
   AtomicTextFile file(path_, /*overwrite=*/true);
-  for (const auto& [k, v] : values_) file.stream() << k << '\t' << v << '\n';
+  file.stream() << text;
   file.commit();
+  values_ = std::move(values);
 }
 
 void AdaptState::pin(const std::string& key, const std::string& value) {

@@ -1,6 +1,7 @@
 #pragma once
-// rdsf-adapt's state file, OUT/adapt-state.tsv: "key<TAB>value" lines, rewritten whole (temporary name,
-// synced, renamed: core/atomic_file) after every step, so that a killed run resumes at the first step not
+// rdsf-adapt's state file, OUT/adapt-state.tsv ("KEY<TAB>VALUE" lines, parsed by
+// rdsf/labeling/adapt_state_file.hpp), rewritten whole (temporary name, synced, renamed: core/atomic_file)
+// after every step, so that a killed run resumes at the first step not
 // marked done ("done.STEP" = yes) and a rerun with another room or model name into the same folder is
 // refused instead of mixing two rooms.
 #include <map>

@@ -28,8 +28,10 @@
 #include "rdsf/dataset/sample_set_manifest.hpp"
 #include "rdsf/dataset/sample_tsv.hpp"
 #include "rdsf/dataset/thesis_text.hpp"
+#include "rdsf/evaluation/adaptation_results.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/camera_file.hpp"
+#include "rdsf/labeling/adapt_state_file.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
 #include "rdsf/version.hpp"
 #if RDSF_WITH_ROSBAG
@@ -42,7 +44,7 @@ namespace rdsf::fuzz {
 inline const std::vector<std::string>& parser_names() {
   static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",   "thesis_text",
                                                  "model_file",   "answer_journal", "depth_crop", "model_writer",
-                                                 "recipe", "camera_yml"
+                                                 "recipe", "camera_yml", "adapt_state", "adaptation_results"
 #if RDSF_WITH_ROSBAG
                                                  , "bag"
 #endif
@@ -227,6 +229,31 @@ inline void parse_camera_yml_bytes(const std::string& bytes) {
   }
 }
 
+/// rdsf-adapt's state file, adapt-state.tsv (labeling/adapt_state_file.hpp); file-based reader: what it reads
+/// is written back and reads the same.
+inline void parse_adapt_state_bytes(const std::string& bytes) {
+  const std::string path = scratch().write(bytes);
+  const AdaptStateValues values = read_adapt_state(path);
+  try {
+    const std::string text = adapt_state_text(values, path);
+    require(parse_adapt_state(text, path) == values, "adapt-state.tsv: the values change when written back");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("adapt-state.tsv: written back, it no longer reads: ") + e.what());
+  }
+}
+
+/// The adaptation benchmark's results.tsv (evaluation/adaptation_results.hpp), read and drawn as rdsf-adapt
+/// --chart draws it.
+inline void parse_adaptation_results_bytes(const std::string& bytes) {
+  const std::vector<AdaptationResult> results = parse_adaptation_results(bytes, "fuzz/results.tsv");
+  for (const AdaptationResult& r : results) {
+    require(!r.mode.empty() && r.tar >= 0 && r.tar <= 1 && r.answers >= 0 && r.budget >= 0 && r.train_s >= 0,
+            "results.tsv: a value out of its range accepted");
+  }
+  const cv::Mat3b chart = draw_adaptation_chart(results);
+  require(!chart.empty(), "results.tsv: no chart drawn");
+}
+
 #if RDSF_WITH_ROSBAG
 /// A ROS 1 bag (frame/bag_source.hpp) read to its end: every frame delivered must be of its camera model's
 /// size, with colour (when any) of the same size; file-based reader (librosbag reads files).
@@ -259,6 +286,8 @@ inline void parse_bytes(const std::string& parser, const std::string& bytes) {
     if (parser == "model_writer") return parse_model_writer_bytes(bytes);
     if (parser == "recipe") return parse_recipe_bytes(bytes);
     if (parser == "camera_yml") return parse_camera_yml_bytes(bytes);
+    if (parser == "adapt_state") return parse_adapt_state_bytes(bytes);
+    if (parser == "adaptation_results") return parse_adaptation_results_bytes(bytes);
 #if RDSF_WITH_ROSBAG
     if (parser == "bag") return parse_bag_bytes(bytes);
 #endif

@@ -22,7 +22,7 @@ seconds="${FUZZ_SECONDS:-60}"
 jobs="${FUZZ_JOBS:-2}"
 build="${FUZZ_BUILD:-$source_dir/build-fuzz}"
 max_crashes="${FUZZ_MAX_CRASHES:-5}"
-all_targets=(ground_truth sample_tsv manifest thesis_text model_file answer_journal depth_crop model_writer recipe bag camera_yml)
+all_targets=(ground_truth sample_tsv manifest thesis_text model_file answer_journal depth_crop model_writer recipe bag camera_yml adapt_state adaptation_results)
 
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: FUZZ_SECONDS must be a whole number of seconds >= 1, not '$seconds'" >&2

@@ -1,14 +1,18 @@
-// rdsf-adapt: bad input refused with one line before anything is written (budget 0, another camera, a truth
-// naming frames not in the room, an "empty" recording with people), and a run stopped after its answers
+// rdsf-adapt: bad input refused with one line before anything is written (budget 0, another camera, depth
+// that is not millimetres, a truth naming frames not in the room, an "empty" recording with people), also on
+// the rerun of a run that has answers (nothing answered lost), and a run stopped after its answers
 // resumes without asking again, and a run killed (SIGKILL, the step's program with it) resumes. Small
 // synthetic rooms rendered by rdsf-synth; the shipped model people.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include <sys/wait.h>
@@ -34,6 +38,18 @@ test::RunResult render(const std::string& out, const std::string& extra) {
 }
 
 std::string models_dir() { return std::string(RDSF_SOURCE_DIR) + "/models"; }
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// `text` with its one `from` replaced by `to`.
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("'" + from + "' not in the command");
+  return text.replace(at, from.size(), to);
+}
 
 }  // namespace
 
@@ -69,6 +85,8 @@ TEST(Adapt, AnotherCameraAndATruthOfOtherFramesAreRefusedBeforeAnythingIsWritten
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+// How it is noticed: the model, with the tracker, follows one person over 5 frames at P(person) >= 0.7
+// (rdsf/pipeline/room_presence.hpp); refused before anything is written.
 TEST(Adapt, AnEmptyRecordingWithPeopleIsRefused) {
   test::TempDir dir;
   ASSERT_EQ(render(dir / "room", "--frames 30").exit_code, 0);
@@ -78,6 +96,8 @@ TEST(Adapt, AnEmptyRecordingWithPeopleIsRefused) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("not empty"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir / "room"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
@@ -103,6 +123,32 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   EXPECT_GT(human, 0);
   EXPECT_LE(human, 6);
   const auto journal_size = std::filesystem::file_size(journal);
+  const std::string state = slurp(dir / "out/adapt-state.tsv");
+  // Bad input on the rerun: refused with one line naming the file, and nothing answered is lost.
+  std::filesystem::create_directories(dir / "metres");
+  write_png_atomically(dir / "metres/000000.depth.png", cv::Mat1w(480, 640, static_cast<std::uint16_t>(3)));
+  std::ofstream(dir / "truth.csv") << "frame,person,x,y,w,h\n000003,1,100,100,50,100\nnot-a-frame,1,100,100,50,100\n";
+  const struct {
+    std::string command, names, says;
+    int exit_code;
+  } bad[] = {
+      {replace(common, "--budget 6", "--budget 0"), "--budget 0", "give 1 or more", 2},
+      {replace(common, "--truth " + test::quote(dir / "room/boxes.csv"), "--truth " + test::quote(dir / "truth.csv")),
+       dir / "truth.csv", "not-a-frame", 1},
+      {replace(common, "--source " + test::quote(dir / "room"), "--source " + test::quote(dir / "metres")),
+       dir / "metres", "not millimetres", 1},
+      {replace(common, "--empty " + test::quote(dir / "empty"), "--empty " + test::quote(dir / "room")),
+       dir / "room", "not empty", 1},
+  };
+  for (const auto& b : bad) {
+    r = test::run(b.command);
+    EXPECT_EQ(r.exit_code, b.exit_code) << b.command << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(b.names), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(b.says), std::string::npos) << r.err;
+    EXPECT_EQ(std::filesystem::file_size(journal), journal_size) << b.command;
+    EXPECT_EQ(slurp(dir / "out/adapt-state.tsv"), state) << b.command;
+  }
   r = test::run(common);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("answers: done before"), std::string::npos) << r.err;

@@ -1,12 +1,18 @@
 // rdsf-label --loop with the truth as the person (--truth-oracle): batches, a model trained and saved after
 // each, the model version recorded with the answers given under it, and the last model answering what it is
-// sure about at the end; plus the ordering pieces (most uncertain first, suspicion).
+// sure about at the end; the same loop with one answer per track (--per-track), and with keys that undo a
+// track's answer after a model was trained on it; plus the ordering pieces (most uncertain first, suspicion).
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
 #include <set>
 
 #include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/labeling/answer_journal.hpp"
+#include "rdsf/labeling/track_propagation.hpp"
 #include "rdsf/labeling/active_learning.hpp"
 #include "support/test_support.hpp"
 
@@ -65,4 +71,111 @@ TEST(LabelerLoop, BatchesRetrainRecordTheModelVersionAndTheLastModelAnswers) {
   EXPECT_GT(human, 20u);  // y and n stored (--loop keeps rejections); skips are not
   EXPECT_TRUE(versions.count("") && versions.count("loop/v1") && versions.count("loop/v2")) << versions.size();
   EXPECT_GT(by_model, 0u);
+}
+
+namespace {
+
+test::RunResult render_room(const std::filesystem::path& out) {
+  return test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(out) +
+                   " --frames 40 --people 1..2 --seed 5 --clip-frames 40");
+}
+
+}  // namespace
+
+// --loop with --per-track, the truth as the person: each human answer labels its track, the loop's models are
+// trained on the propagated samples too, and the budget counts human answers only.
+TEST(LabelerLoop, PerTrackAnswersLabelTheirTracksAndTheLoopTrainsOnThem) {
+  test::TempDir dir;
+  ASSERT_EQ(render_room(dir / "room").exit_code, 0);
+  const test::RunResult r = test::run(
+      test::quote(test::program("rdsf-label")) + " --source " + test::quote(dir / "room") + " --out " +
+      test::quote(dir / "set") + " --truth " + test::quote(dir / "room/boxes.csv") +
+      " --truth-oracle --loop --per-track --batch 10 --budget 30 --loop-answer-after 3 --threads 2 --models-dir " +
+      test::quote(dir / "models"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex("per track: ([0-9]+) labels propagated"))) << r.err;
+  const long propagated = std::stol(m[1]);
+  EXPECT_GT(propagated, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "models/loop/v1.yml")) << r.err;
+  // The first model trained after 10 human answers saw more than 10 samples: the tracks' labels.
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex("loop/v1 trained on ([0-9]+) samples"))) << r.err;
+  std::size_t human = 0, by_track = 0;
+  const SampleSet set = SampleSet::open_read(dir / "set");
+  for (const SampleRecord& s : set.records()) {
+    human += s.origin == "labeler" ? 1 : 0;
+    by_track += s.origin == "labeler-track" ? 1 : 0;
+  }
+  EXPECT_GT(std::stoul(m[1]), 10u) << r.err;
+  EXPECT_GT(by_track, 0u);
+  EXPECT_LE(human, 30u);  // the budget counts the person's answers, not the propagated labels
+  // Every propagated label names an answer in force as its seed (what undo takes back with it).
+  const AnswerJournal journal(dir / "set/labeler-answers.tsv");
+  std::set<std::string> seeds;
+  long journalled = 0;
+  for (const JournalEntry& e : journal.in_force()) {
+    if (e.by == "human") seeds.insert(track_answerer(e.key));
+  }
+  for (const JournalEntry& e : journal.in_force()) {
+    if (e.by.rfind("track ", 0) != 0) continue;
+    ++journalled;
+    EXPECT_TRUE(seeds.count(e.by)) << e.by;
+  }
+  EXPECT_EQ(journalled, propagated);
+}
+
+// Scripted keys: the tenth answer, given before the loop's first retrain, is undone after it (the frames
+// were scored again by the new model in between); its whole track goes with it, and the set keeps no sample
+// of it.
+TEST(LabelerLoop, PerTrackUndoAfterARetrainTakesTheWholeTrackBack) {
+  test::TempDir dir;
+  ASSERT_EQ(render_room(dir / "room").exit_code, 0);
+  std::ofstream(dir / "keys.txt") << "y n y n y n y n y n u q\n";
+  const test::RunResult r = test::run(
+      test::quote(test::program("rdsf-label")) + " --source " + test::quote(dir / "room") + " --out " +
+      test::quote(dir / "set") + " --answers " + test::quote(dir / "keys.txt") +
+      " --loop --per-track --batch 10 --loop-answer-after 1000 --threads 2 --models-dir " + test::quote(dir / "models"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(dir / "models/loop/v1.yml")) << r.err;  // trained before the undo
+  EXPECT_FALSE(std::filesystem::exists(dir / "models/loop/v2.yml")) << r.err;
+  EXPECT_NE(r.err.find("undone 1)"), std::string::npos) << r.err;
+  // The journal's lines: the human answers in file order, and the undo lines.
+  std::vector<JournalEntry> human;
+  long undo_lines = 0;
+  std::ifstream in(dir / "set/labeler-answers.tsv");
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string x; std::getline(fields, x, '\t');) f.push_back(x);
+    if (f.size() < 10 || f[0] == "time") continue;
+    if (f[7] == "u") ++undo_lines;
+    if (f[7] != "u" && f[9] == "human") {
+      human.push_back({{f[1], f[2], {std::stoi(f[3]), std::stoi(f[4]), std::stoi(f[5]), std::stoi(f[6])}}, f[7][0]});
+    }
+  }
+  ASSERT_EQ(human.size(), 10u) << r.err;
+  const AnswerJournal journal(dir / "set/labeler-answers.tsv");
+  const std::string undone_by = track_answerer(human.back().key);
+  EXPECT_EQ(journal.answer_of(human.back().key), '\0');  // the tenth answer is no longer in force
+  long track_in_force = 0, propagated_in_force = 0;
+  for (const JournalEntry& e : journal.in_force()) {
+    track_in_force += e.by == undone_by ? 1 : 0;
+    propagated_in_force += e.by.rfind("track ", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(track_in_force, 0);
+  // Undo lines: the answer and each label of its track.
+  std::ifstream again(dir / "set/labeler-answers.tsv");
+  long track_lines = 0;
+  for (std::string line; std::getline(again, line);) {
+    track_lines += line.size() >= undone_by.size() && line.compare(line.size() - undone_by.size(), undone_by.size(), undone_by) == 0 &&
+                           line.find("\tu\t") == std::string::npos ? 1 : 0;
+  }
+  EXPECT_EQ(undo_lines, 1 + track_lines) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex("per track: ([0-9]+) labels propagated"))) << r.err;
+  EXPECT_EQ(std::stol(m[1]), propagated_in_force);
+  std::size_t by_track = 0;
+  const SampleSet set = SampleSet::open_read(dir / "set");
+  for (const SampleRecord& s : set.records()) by_track += s.origin == "labeler-track" ? 1 : 0;
+  EXPECT_EQ(by_track, static_cast<std::size_t>(propagated_in_force));  // --loop keeps y and n: every label stored
 }

@@ -1,6 +1,6 @@
 // Track propagation (labeling/track_propagation.hpp) on hand-built sequences: a person walking is labelled
 // from one answer both ways; two people crossing stop the track where it is unsure (those are asked); a
-// score gate; undo of the answer through the journal removes every propagated label; the labelling session
+// score gate; frames where the track's candidate is missing stepped over (max_gap_frames); undo of the answer through the journal removes every propagated label; the labelling session
 // with per_track on a rendered room.
 #include <gtest/gtest.h>
 
@@ -60,20 +60,57 @@ TEST(TrackPropagation, TwoPeopleCrossingStopTheTrackAndAreAsked) {
 }
 
 TEST(TrackPropagation, GatesStopAtADepthJumpAScoreAndAnotherAnswer) {
+  PropagationParams no_gap;  // stops at the first frame where nothing passes (by default one is stepped over)
+  no_gap.max_gap_frames = 0;
   auto frames = walking(10);
   frames[6][0].depth_mm = 3200;  // a jump of 70 cm: another object
-  PropagatedTrack t = propagate_track(frames, {2, 0}, 'y', {}, CameraModel{});
+  PropagatedTrack t = propagate_track(frames, {2, 0}, 'y', no_gap, CameraModel{});
   EXPECT_EQ(t.labelled.size(), 5u);  // frames 0, 1, 3, 4, 5
+  frames[7][0].depth_mm = 3200;  // two frames: stepped over by neither rule
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'y', {}, CameraModel{}).labelled.size(), 5u);
   frames = walking(10);
   frames[6][0].probability = 0.01;  // the model rejects it surely: a 'y' track does not enter it ...
-  EXPECT_EQ(propagate_track(frames, {2, 0}, 'y', {}, CameraModel{}).labelled.size(), 5u);
-  EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', {}, CameraModel{}).labelled.size(), 9u);  // ... an 'n' one does
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'y', no_gap, CameraModel{}).labelled.size(), 5u);
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', no_gap, CameraModel{}).labelled.size(), 9u);  // ... an 'n' one does
   // An answer given otherwise stops it; the same answer is gone through without relabelling.
   frames = walking(10);
   t = propagate_track(frames, {2, 0}, 'y', {}, CameraModel{}, [](const TrackLink& l) {
     return l.frame == 4 ? 'y' : l.frame == 7 ? 'n' : '\0';
   });
   EXPECT_EQ(t.labelled.size(), 5u);  // 0, 1, 3, 5, 6 (4 was answered y already, 7 n)
+}
+
+TEST(TrackPropagation, FramesWhereNothingPassesAreSteppedOverUpToMaxGapFrames) {
+  auto missing = [](std::vector<int> gone) {  // the person's candidate moved away (nothing overlaps there)
+    auto frames = walking(20);
+    for (int f : gone) frames[f][0] = {cv::Rect(0, 400, 30, 40), 1500, 0.5};
+    return frames;
+  };
+  PropagationParams stop, one, two;
+  stop.max_gap_frames = 0;
+  one.max_gap_frames = 1;
+  two.max_gap_frames = 2;
+  EXPECT_EQ(PropagationParams{}.max_gap_frames, 1);
+  EXPECT_EQ(propagate_track(missing({6}), {2, 0}, 'y', stop, CameraModel{}).labelled.size(), 5u);  // 0, 1, 3-5
+  PropagatedTrack t = propagate_track(missing({6}), {2, 0}, 'y', one, CameraModel{});
+  ASSERT_EQ(t.labelled.size(), 18u);  // 0, 1, 3-5, 7-19: frame 6 stepped over, nothing there labelled
+  for (const TrackLink& l : t.labelled) EXPECT_TRUE(l.frame != 6 && l.index == 0) << l.frame;
+  EXPECT_EQ(propagate_track(missing({6}), {15, 0}, 'y', one, CameraModel{}).labelled.size(), 18u);  // backwards too
+  EXPECT_EQ(propagate_track(missing({6, 7}), {2, 0}, 'y', one, CameraModel{}).labelled.size(), 5u);
+  EXPECT_EQ(propagate_track(missing({6, 7}), {2, 0}, 'y', two, CameraModel{}).labelled.size(), 17u);
+  // A candidate there that fails a gate (a depth glitch of one frame) is stepped over the same way, unlabelled.
+  auto glitch = walking(20);
+  glitch[6][0].depth_mm = 3200;
+  t = propagate_track(glitch, {2, 0}, 'y', one, CameraModel{});
+  EXPECT_EQ(t.labelled.size(), 18u);
+  for (const TrackLink& l : t.labelled) EXPECT_NE(l.frame, 6u);
+  // Where something passes but is ambiguous, the track stops there as before (two people crossing).
+  std::vector<std::vector<TrackCandidate>> crossing(41);
+  for (int f = 0; f <= 40; ++f) {
+    crossing[f].push_back({cv::Rect(200 + 6 * f, 150, 60, 120), 2500, 0.7});
+    crossing[f].push_back({cv::Rect(440 - 6 * f, 150, 60, 120), 2550, 0.7});
+  }
+  for (const TrackLink& l : propagate_track(crossing, {0, 0}, 'y', two, CameraModel{}).labelled) EXPECT_LT(l.frame, 20u);
 }
 
 TEST(TrackPropagation, UndoOfTheAnswerRemovesEveryPropagatedLabel) {

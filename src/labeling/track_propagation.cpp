@@ -67,9 +67,17 @@ PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& 
     TrackLink at = seed;
     for (int followed = 0; params.max_frames <= 0 || followed < params.max_frames; ++followed) {
       if ((step < 0 && at.frame == 0) || (step > 0 && at.frame + 1 >= frames.size())) break;
-      const std::size_t next_frame = at.frame + step;
+      std::size_t next_frame = at.frame + step;
       const TrackCandidate& from = frames[at.frame][at.index];
-      const Best forward = best_match(from, frames[next_frame], answer, params, camera);
+      Best forward = best_match(from, frames[next_frame], answer, params, camera);
+      // No candidate there passes the gates (the object's candidate missing, or failing a gate, in that frame):
+      // up to max_gap_frames such frames are stepped over, to the next frame where one does.
+      for (int gap = 1; gap <= params.max_gap_frames && forward.passing.empty(); ++gap) {
+        const long later = static_cast<long>(next_frame) + step;
+        if (later < 0 || later >= static_cast<long>(frames.size())) break;
+        next_frame = static_cast<std::size_t>(later);
+        forward = best_match(from, frames[next_frame], answer, params, camera);
+      }
       bool sure = forward.sure;
       if (sure) {  // and back: t must be c's best among t's frame, as clearly
         const Best back = best_match(frames[next_frame][*forward.index], frames[at.frame], answer, params, camera);
