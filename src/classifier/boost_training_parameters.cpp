@@ -1,5 +1,6 @@
 // The table of BoostTrainingParams (core/parameter_table.hpp): rdsf-train's boosting options, recipe keys,
-// --thesis values and range checks, each declared once. The order is --help's.
+// --thesis values and range checks, each declared once. The order is --help's. The native backend's rows
+// name members of RealAdaBoostSettings, the base, hence their explicit <P, type>.
 #include "rdsf/classifier/boost_training.hpp"
 
 namespace rdsf {
@@ -26,26 +27,26 @@ const ParameterTable<BoostTrainingParams>& boost_training_parameters() {
       parameter("seed", &P::seed, "seed of the subsets and the validation split"),
       parameter("validation-fraction", &P::validation_fraction,
                 "fraction of each class held out for validation (0 = none)", Range::from_below(0, 1)),
-      parameter("weight-trim", &P::weight_trim,
-                "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05)",
-                Range::from_below(0, 1)),
+      parameter<P, double>("weight-trim", &P::weight_trim,
+                           "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05)",
+                           Range::from_below(0, 1)),
       parameter("early-stopping", &P::early_stopping,
                 "stop after this many rounds without a better validation AUC, keep the best (0 = off)",
                 Range::at_least(0)),
       parameter("report-every", &P::report_every, "rounds between the figures kept in the model file",
                 Range::at_least(1)),
-      parameter("depth", &P::depth,
-                "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees)",
-                Range::between(1, 4), std::optional<int>(1)),
-      parameter("learning-rate", &P::learning_rate, "native: shrinkage of every response, in (0, 1]",
-                Range::above_to(0, 1), std::optional<double>(1.0)),
+      parameter<P, int>("depth", &P::depth,
+                        "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees)",
+                        Range::between(1, 4), std::optional<int>(1)),
+      parameter<P, double>("learning-rate", &P::learning_rate, "native: shrinkage of every response, in (0, 1]",
+                           Range::above_to(0, 1), std::optional<double>(1.0)),
       computed_parameter<P, bool>(
           "histogram-subtraction",
           "native trees: count one child of two, the other is parent - sibling (faster; ties may break otherwise)",
           [](const P& p) { return p.histogram_subtraction; }, [](P& p, const bool& on) { p.histogram_subtraction = on; },
           std::nullopt, /*is_switch=*/true),
-      parameter("smoothing", &P::smoothing, "native: eps of the responses (0 = 1 / training samples)",
-                Range::at_least(0)),
+      parameter<P, double>("smoothing", &P::smoothing, "native: eps of the responses (0 = 1 / training samples)",
+                           Range::at_least(0)),
       parameter("calibration", &P::calibration,
                 "platt (fit P(person) on the validation samples) or none (P = 1 / (1 + exp(-2 H)))", {},
                 std::optional<std::string>(),
