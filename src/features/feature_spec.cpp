@@ -90,13 +90,13 @@ FeatureSpec FeatureSpec::from_canonical(const std::string& text) {
       R"(rdsf-rect/1 window=(\d{1,5})x(\d{1,5}) squares=(\d{1,5})\.\.(\d{1,5})step(\d{1,5}) stride=(\d{1,5}) )"
       R"(order=side-then-row-major bins=nodata\+\d{1,5}x(\d{1,5})mm clamp=(\d{1,5})mm hist=integral-area-normalised )"
       R"(pairs=upper-row-major crop=nearest-masked)");
-  // The fields each form's numbers fill, in the order of its groups (the bin count is derived).
+  // The fields each form's numbers fill, in the order of its groups.
   using F = FeatureSpec;
   static const std::vector<int F::*> cell_fields = {&F::window_width_px, &F::window_height_px, &F::cell_px,
                                                     &F::bin_width_mm, &F::max_depth_mm};
   static const std::vector<int F::*> rect_fields = {&F::window_width_px, &F::window_height_px, &F::rect_min_px,
-                                                    &F::rect_max_px,     &F::rect_step_px,     &F::rect_stride_px,
-                                                    &F::bin_width_mm,    &F::max_depth_mm};
+                                                    &F::rect_max_px, &F::rect_step_px, &F::rect_stride_px,
+                                                    &F::bin_width_mm, &F::max_depth_mm};
   std::smatch m;
   FeatureSpec spec;
   const std::vector<int F::*>* fields = nullptr;
