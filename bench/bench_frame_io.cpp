@@ -23,6 +23,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "bench/bench_scene.hpp"
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_png.hpp"
 #include "rdsf/frame/frame_source.hpp"
@@ -44,13 +45,7 @@ struct PngPair {
 
 const PngPair& files() {
   static const PngPair pair = [] {
-    rdsf::synth::SynthParams p;
-    p.frames = 1;
-    p.people_min = 2;
-    p.people_max = 4;
-    p.seed = 11;
-    p.rgb = true;
-    rdsf::synth::SynthSequence sequence(p);
+    rdsf::synth::SynthSequence sequence(rdsf::bench::bench_scene(1, /*rgb=*/true));
     const rdsf::synth::SynthFrame frame = sequence.frame(0);
     const auto dir = std::filesystem::temp_directory_path() / ("rdsf-bench-frame-io-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);

@@ -5,19 +5,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "bench/bench_scene.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
 namespace {
 
-rdsf::synth::SynthParams bench_params(bool rgb) {
-  rdsf::synth::SynthParams p;
-  p.frames = 100000;
-  p.people_min = 2;
-  p.people_max = 4;
-  p.seed = 11;
-  p.rgb = rgb;
-  return p;
-}
+rdsf::synth::SynthParams bench_params(bool rgb) { return rdsf::bench::bench_scene(100000, rgb); }
 
 void BM_SynthRenderDepth(benchmark::State& state) {
   rdsf::synth::SynthSequence sequence(bench_params(false));

@@ -19,6 +19,7 @@
 
 #include <libdeflate.h>
 
+#include "bench/bench_scene.hpp"
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
 #include "rdsf/frame/depth_png.hpp"
@@ -162,13 +163,7 @@ SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
   }
 
   say("PNG reading: direct path and cv::imdecode on the same synthetic frame");
-  synth::SynthParams colour_params;
-  colour_params.frames = 1;
-  colour_params.people_min = 2;
-  colour_params.people_max = 4;
-  colour_params.seed = 11;
-  colour_params.rgb = true;
-  const synth::SynthFrame shown = synth::SynthSequence(colour_params).frame(0);
+  const synth::SynthFrame shown = synth::SynthSequence(bench::bench_scene(1, /*rgb=*/true)).frame(0);
   const auto dir = std::filesystem::temp_directory_path() / ("rdsf-speed-limits-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string depth_png = (dir / "0.depth.png").string(), colour_png = (dir / "0.rgb.png").string();

@@ -306,12 +306,7 @@ Boosted boost_native(const cv::Mat1f& rows, const TrainingSide& side, const Boos
   }
   const BinnedMatrix binned(rows, params.bins, local_index, params.threads);
   RealAdaBoostParams rp;
-  rp.smoothing = params.smoothing;
-  rp.weight_trim = params.weight_trim;
-  rp.threads = params.threads;
-  rp.depth = params.depth;
-  rp.learning_rate = params.learning_rate;
-  rp.histogram_subtraction = params.histogram_subtraction;
+  static_cast<RealAdaBoostSettings&>(rp) = params;
   rp.shards = owners.distributed() ? owners.shards : nullptr;
   RealAdaBoost booster(binned, local_labels, rp);
   if (!params.init.empty()) booster.start_from_scores(init_scores(rows, local_index, params));

@@ -3,6 +3,7 @@
 // The order is --help's and the model file's. Options of the native backend alone (bins, smoothing, depth,
 // learning rate, histogram subtraction) are recorded only when the backend is native; smoothing 0 is
 // recorded as "auto (1/N)", histogram subtraction only when on ("on"), folds only when K-fold validation is on.
+// The native backend's rows name members of RealAdaBoostSettings, the base, hence their explicit <P, type>.
 #include "rdsf/classifier/boost_training.hpp"
 
 namespace rdsf {
@@ -48,13 +49,13 @@ const ParameterTable<BoostTrainingParams>& boost_training_parameters() {
         };
         return bins;
       }(),
-      native_only(parameter("smoothing", &P::smoothing, "native: eps of the responses (0 = 1 / training samples)",
+      native_only(parameter<P, double>("smoothing", &P::smoothing, "native: eps of the responses (0 = 1 / training samples)",
                             Range::at_least(0)),
                   [](const P& p) { return p.smoothing > 0.0 ? parameter_text(p.smoothing) : "auto (1/N)"; }),
-      native_only(parameter("depth", &P::depth,
+      native_only(parameter<P, int>("depth", &P::depth,
                             "native: levels of look-up tables per weak classifier (1 = one table as the thesis; 2-4 = trees)",
                             Range::between(1, 4), std::optional<int>(1))),
-      native_only(parameter("learning-rate", &P::learning_rate, "native: shrinkage of every response, in (0, 1]",
+      native_only(parameter<P, double>("learning-rate", &P::learning_rate, "native: shrinkage of every response, in (0, 1]",
                             Range::above_to(0, 1), std::optional<double>(1.0))),
       native_only(computed_parameter<P, bool>(
                       "histogram-subtraction",
@@ -77,7 +78,7 @@ const ParameterTable<BoostTrainingParams>& boost_training_parameters() {
                                  return k == 0 || (k >= 2 && k <= 20) ? "" : "must be 0 (off) or 2-20";
                                })),
                      [](const P& p) { return p.folds > 0 ? std::optional<std::string>(parameter_text(p.folds)) : std::nullopt; }),
-      parameter("weight-trim", &P::weight_trim,
+      parameter<P, double>("weight-trim", &P::weight_trim,
                 "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05)",
                 Range::from_below(0, 1)),
       parameter("validation-fraction", &P::validation_fraction,

@@ -327,11 +327,9 @@ void abandon(int fd, const std::string& temporary) {
   io::unlink(temporary);
 }
 
-}  // namespace
-
-void write_synced(const std::string& path, std::string_view bytes, Sync sync) {
-  const int fd = io::open(path, O_WRONLY | O_CREAT | O_TRUNC);
-  if (fd < 0) fail(path, "cannot be created: " + errno_text(errno));
+/// Writes `bytes` into `fd`, just opened on `path` by the caller, fdatasyncs it (Sync::now) and closes
+/// it; on any failure removes `path` and throws Error naming it.
+void fill_and_close(int fd, const std::string& path, std::string_view bytes, Sync sync) {
   try {
     write_all(fd, bytes.data(), bytes.size(), path, "write failed");
     if (sync == Sync::now) sync_data(fd, path);
@@ -346,23 +344,21 @@ void write_synced(const std::string& path, std::string_view bytes, Sync sync) {
   }
 }
 
+}  // namespace
+
+void write_synced(const std::string& path, std::string_view bytes, Sync sync) {
+  const int fd = io::open(path, O_WRONLY | O_CREAT | O_TRUNC);
+  if (fd < 0) fail(path, "cannot be created: " + errno_text(errno));
+  fill_and_close(fd, path, bytes, sync);
+}
+
 void write_new_file_unsynced(const std::string& path, std::string_view bytes) {
   const int fd = io::open(path, O_WRONLY | O_CREAT | O_EXCL);
   if (fd < 0) {
     fail(path, errno == EEXIST ? std::string("already exists (never overwritten)")
                                : "cannot be created: " + errno_text(errno));
   }
-  try {
-    write_all(fd, bytes.data(), bytes.size(), path, "write failed");
-  } catch (...) {
-    abandon(fd, path);
-    throw;
-  }
-  if (io::close(fd) != 0) {
-    const int error = errno;
-    io::unlink(path);
-    fail(path, "write failed on close: " + errno_text(error));
-  }
+  fill_and_close(fd, path, bytes, Sync::later);
 }
 
 void write_file_durably(const std::string& path, std::string_view bytes, Replace replace) {

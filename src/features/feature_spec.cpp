@@ -3,6 +3,7 @@
 #include <charconv>
 #include <map>
 #include <regex>
+#include <vector>
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/stable_hash.hpp"
@@ -89,29 +90,26 @@ FeatureSpec FeatureSpec::from_canonical(const std::string& text) {
       R"(rdsf-rect/1 window=(\d{1,5})x(\d{1,5}) squares=(\d{1,5})\.\.(\d{1,5})step(\d{1,5}) stride=(\d{1,5}) )"
       R"(order=side-then-row-major bins=nodata\+\d{1,5}x(\d{1,5})mm clamp=(\d{1,5})mm hist=integral-area-normalised )"
       R"(pairs=upper-row-major crop=nearest-masked)");
+  // The fields each form's numbers fill, in the order of its groups.
+  using F = FeatureSpec;
+  static const std::vector<int F::*> cell_fields = {&F::window_width_px, &F::window_height_px, &F::cell_px,
+                                                    &F::bin_width_mm, &F::max_depth_mm};
+  static const std::vector<int F::*> rect_fields = {&F::window_width_px, &F::window_height_px, &F::rect_min_px,
+                                                    &F::rect_max_px, &F::rect_step_px, &F::rect_stride_px,
+                                                    &F::bin_width_mm, &F::max_depth_mm};
   std::smatch m;
   FeatureSpec spec;
-  auto number = [&](int k) { return parse_number(m[k].str(), "number"); };
-  bool matched = false;
+  const std::vector<int F::*>* fields = nullptr;
+  if (std::regex_match(text, m, cells)) {
+    fields = &cell_fields;
+  } else if (std::regex_match(text, m, rects)) {
+    spec.layout = Layout::Rects;
+    fields = &rect_fields;
+  }
+  bool matched = fields != nullptr;
   try {
-    if (std::regex_match(text, m, cells)) {
-      spec.window_width_px = number(1);
-      spec.window_height_px = number(2);
-      spec.cell_px = number(3);
-      spec.bin_width_mm = number(4);
-      spec.max_depth_mm = number(5);
-      matched = true;
-    } else if (std::regex_match(text, m, rects)) {
-      spec.layout = Layout::Rects;
-      spec.window_width_px = number(1);
-      spec.window_height_px = number(2);
-      spec.rect_min_px = number(3);
-      spec.rect_max_px = number(4);
-      spec.rect_step_px = number(5);
-      spec.rect_stride_px = number(6);
-      spec.bin_width_mm = number(7);
-      spec.max_depth_mm = number(8);
-      matched = true;
+    for (std::size_t k = 0; matched && k < fields->size(); ++k) {
+      spec.*(*fields)[k] = parse_number(m[static_cast<int>(k) + 1].str(), "number");
     }
     if (matched) spec.validate();
   } catch (const Error&) {

@@ -3,22 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rdsf/synth/angle.hpp"
+
 namespace rdsf::synth {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
-
-double wrap(double angle) {
-  while (angle > pi) angle -= 2 * pi;
-  while (angle < -pi) angle += 2 * pi;
-  return angle;
-}
 
 /// Where a person who stops turns: mostly to face the room (the camera) or away from it, some keep
 /// their heading (often sideways to the camera).
 double standing_yaw(Rng& rng, double yaw) {
   const double facing = rng.uniform();
-  if (facing < 0.5) return wrap(pi + rng.uniform(-0.8, 0.8));
+  if (facing < 0.5) return wrap_angle(pi + rng.uniform(-0.8, 0.8));
   if (facing < 0.88) return rng.uniform(-0.8, 0.8);
   return yaw;
 }
@@ -147,7 +141,7 @@ bool plan_companion(Rng& rng, const Room& room, const PeopleParams& params, cons
     } else if (face_leader && l.gait_amount < 0.1) {
       wanted = std::atan2(l.position.x - x, l.position.z - z);
     }
-    yaw = wrap(yaw + std::clamp(wrap(wanted - yaw), -2.9 * dt, 2.9 * dt));
+    yaw = wrap_angle(yaw + std::clamp(wrap_angle(wanted - yaw), -2.9 * dt, 2.9 * dt));
     gait = moving ? std::min(1.0, gait + 3.0 * dt) : std::max(0.0, gait - 3.0 * dt);
     phase = std::fmod(phase + 2 * pi * step / stride, 2 * pi);
     PersonPose& pose = track.poses[f];
@@ -258,11 +252,11 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
         const double dx = target_x - x, dz = target_z - z;
         const double remaining = std::hypot(dx, dz);
         const double wanted = std::atan2(dx, dz);
-        const double turn = std::clamp(wrap(wanted - yaw), -3.0 * dt, 3.0 * dt);
-        yaw = wrap(yaw + turn);
+        const double turn = std::clamp(wrap_angle(wanted - yaw), -3.0 * dt, 3.0 * dt);
+        yaw = wrap_angle(yaw + turn);
         gait = std::min(1.0, gait + 3.0 * dt);
         // slow down while turning sharply, so paths stay smooth
-        const double step = speed * dt * gait * std::max(0.2, std::cos(wrap(wanted - yaw)));
+        const double step = speed * dt * gait * std::max(0.2, std::cos(wrap_angle(wanted - yaw)));
         const double nx = x + step * std::sin(yaw), nz = z + step * std::cos(yaw);
         if (free_spot(room, params, nx, nz)) {
           x = nx;
@@ -283,7 +277,7 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
         --stand_frames;
         gait = std::max(0.0, gait - 3.0 * dt);
         phase = std::fmod(phase + 2 * pi * speed * dt * gait / stride, 2 * pi);
-        yaw = wrap(yaw + std::clamp(wrap(target_yaw - yaw), -2.0 * dt, 2.0 * dt));
+        yaw = wrap_angle(yaw + std::clamp(wrap_angle(target_yaw - yaw), -2.0 * dt, 2.0 * dt));
       }
       PersonPose& pose = track.poses[static_cast<std::size_t>(f)];
       pose.position = {x, 0, z};

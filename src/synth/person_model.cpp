@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rdsf/synth/angle.hpp"
+
 namespace rdsf::synth {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 cv::Vec3b colour(Rng& rng, int low, int high) {
   return {static_cast<unsigned char>(rng.integer(low, high)),

@@ -3,16 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rdsf/synth/angle.hpp"
+
 namespace rdsf::synth {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
-
-double wrap_angle(double a) {
-  while (a > pi) a -= 2 * pi;
-  while (a < -pi) a += 2 * pi;
-  return a;
-}
 
 cv::Vec3b grey(Rng& rng, int low, int high) {
   const int v = rng.integer(low, high);

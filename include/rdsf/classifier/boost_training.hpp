@@ -18,31 +18,30 @@
 #include "rdsf/classifier/bin_scheme.hpp"
 #include "rdsf/classifier/boost_backend.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/real_adaboost.hpp"
 #include "rdsf/core/parameter_table.hpp"
 #include "rdsf/classifier/row_shards.hpp"
 #include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf {
 
-struct BoostTrainingParams {
+/// The native backend's settings (smoothing, weight_trim, threads, depth, learning_rate,
+/// histogram_subtraction) are RealAdaBoostSettings' (real_adaboost.hpp), with other defaults here; the
+/// opencv backend reads weight_trim (and trains stumps whatever depth says). histogram_subtraction is
+/// recorded in the model file only when on (off keeps the models the same bits).
+struct BoostTrainingParams : RealAdaBoostSettings {
+  /// Depth 2 and learning rate 0.5: chosen by the quality report (docs/quality.md); --thesis gives 1 and 1.
+  BoostTrainingParams() {
+    depth = 2;
+    learning_rate = 0.5;
+  }
   BoostBackend backend = BoostBackend::native;  ///< native (Real AdaBoost, LUT) or opencv (cv::ml::Boost REAL stumps)
   int rounds = 100;                 ///< boosting rounds (weak classifiers)
   BinScheme bins;                   ///< native: 64 equal bins over [0, 1]
-  double smoothing = 0.0;           ///< native: eps of the responses; 0 = 1 / training samples
-  double weight_trim = 0.0;         ///< fraction of the weight trimmed per round; 0 = off
-  int threads = 0;                  ///< native: 0 = all cores (does not change the result)
   double validation_fraction = 0.2; ///< held out per class when no separate validation rows are given
   std::uint64_t seed = 1;           ///< validation split
   int report_every = 10;            ///< rounds between the figures kept in the model file (last always kept)
   int early_stopping = 0;           ///< stop after this many rounds without a better validation AUC, keep the best; 0 = off
-  /// native: levels of look-up tables per weak classifier (1 = one table, the thesis's; 2-4 = trees; the
-  /// opencv backend trains stumps whatever this says).
-  /// Default 2 and learning rate 0.5: chosen by the quality report (docs/quality.md); --thesis gives 1 and 1.
-  int depth = 2;
-  double learning_rate = 0.5;       ///< native: shrinkage nu in (0, 1]
-  /// native trees: one child of two counted, the other parent - sibling (RealAdaBoostParams; issue 17).
-  /// Off keeps the models the same bits; recorded in the model file only when on.
-  bool histogram_subtraction = false;
   std::string calibration = "platt";  ///< "platt" (fitted on the validation samples) or "none" (P = sigmoid(2 H))
   /// K-fold validation by group (2-20; 0 = off): K models each trained without one fold of whole groups
   /// and scored on it; their pooled out-of-fold scores give every validation figure and the calibration

@@ -26,14 +26,16 @@
 
 namespace rdsf {
 
-struct RealAdaBoostParams {
+/// The learner's settings (what its rounds are), apart from where the rows are: also the native backend's
+/// part of BoostTrainingParams, which derives from it with its own defaults (depth 2, learning rate 0.5).
+struct RealAdaBoostSettings {
   /// eps in the responses; 0 means 1 / (number of training samples).
   double smoothing = 0.0;
   /// Weight trimming: each round the lightest samples holding this fraction of the total weight are left
   /// out of the histograms (they are still reweighted and can come back). 0 = off; 0.05 is OpenCV's
   /// weight_trim_rate 0.95.
   double weight_trim = 0.0;
-  /// Threads for the per-feature histograms; 0 = all cores.
+  /// Threads for the per-feature histograms; 0 = all cores (does not change the result).
   int threads = 0;
   /// Levels of look-up tables per weak classifier: 1 = one table (the thesis's kind of weak learner),
   /// 2-4 = trees of tables.
@@ -47,6 +49,9 @@ struct RealAdaBoostParams {
   /// are rounded differently, so a near tie can choose another feature: models are then not the same
   /// bits as without it. Off by default.
   bool histogram_subtraction = false;
+};
+
+struct RealAdaBoostParams : RealAdaBoostSettings {
   /// Data-parallel training (row_shards.hpp): the data are this rank's rows; the per-bin sums of every
   /// feature and node, the class counts, node weights and the weights' normaliser are summed over the
   /// ranks (in rank order) so that every rank picks the same weak classifier. Null: one process.
