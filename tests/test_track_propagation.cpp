@@ -60,7 +60,7 @@ TEST(TrackPropagation, TwoPeopleCrossingStopTheTrackAndAreAsked) {
 }
 
 TEST(TrackPropagation, GatesStopAtADepthJumpAScoreAndAnotherAnswer) {
-  PropagationParams no_gap;  // stops at the first frame where nothing passes (by default one is stepped over)
+  PropagationParams no_gap;  // stops at the first frame where nothing passes (the default)
   no_gap.max_gap_frames = 0;
   auto frames = walking(10);
   frames[6][0].depth_mm = 3200;  // a jump of 70 cm: another object
@@ -90,7 +90,7 @@ TEST(TrackPropagation, FramesWhereNothingPassesAreSteppedOverUpToMaxGapFrames) {
   stop.max_gap_frames = 0;
   one.max_gap_frames = 1;
   two.max_gap_frames = 2;
-  EXPECT_EQ(PropagationParams{}.max_gap_frames, 1);
+  EXPECT_EQ(PropagationParams{}.max_gap_frames, 0);
   EXPECT_EQ(propagate_track(missing({6}), {2, 0}, 'y', stop, CameraModel{}).labelled.size(), 5u);  // 0, 1, 3-5
   PropagatedTrack t = propagate_track(missing({6}), {2, 0}, 'y', one, CameraModel{});
   ASSERT_EQ(t.labelled.size(), 18u);  // 0, 1, 3-5, 7-19: frame 6 stepped over, nothing there labelled

@@ -319,7 +319,10 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables_sharded(
   std::vector<double> candidates;  // per node: Z, feature
   for (std::size_t node = 0; node < nodes; ++node) {
     double* node_sums = sums.data() + node * features * width;
-    const auto [f0, f1] = shards.sum_own_block(node_sums, features, width);
+    // The block as named variables, not a structured binding: the lambda below captures them (clang 14 refuses
+    // a captured binding in C++17).
+    const std::pair<std::size_t, std::size_t> block = shards.sum_own_block(node_sums, features, width);
+    const std::size_t f0 = block.first, f1 = block.second;
     std::vector<double> z(f1 - f0);
     parallel_chunks(z.size(), threads_, [&](std::size_t k0, std::size_t k1) {
       for (std::size_t k = k0; k < k1; ++k) z[k] = table_z(node_sums + (f0 + k) * width, split);

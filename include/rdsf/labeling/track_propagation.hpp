@@ -46,8 +46,9 @@ struct PropagationParams {
   int max_frames = 0;                ///< frames followed in each direction (0: no limit)
   /// Frames in a row where no candidate passes the gates that a track steps over (the rule above); 0: it
   /// stops at the first. On the 16 synthetic rooms (docs/adapting-to-your-room.md) 1 asked 554 questions
-  /// instead of 655 with the same 3 wrong labels (0.30 % of 1,014); 2 asked 512 with 5 wrong (0.47 %).
-  int max_gap_frames = 1;
+  /// instead of 655 with the same 3 wrong labels (0.30 % of 1,014); 2 asked 512 with 5 wrong (0.47 %). Default
+  /// 0: in the benchmark the real lab's adapted model fell from 0.833 to 0.667 with 1 (docs/adapting-to-your-room.md).
+  int max_gap_frames = 0;
 };
 
 /// What propagation needs of a candidate.
