@@ -49,6 +49,17 @@ void run_step_program(const std::string& program, const std::vector<std::string>
 }
 
 // The room must come from the camera the model's crops were cut from (640x480 depth in millimetres), and the
+// The room's frames as PNG frames: without a recording of the room empty, the frames taken as empty are
+// mined from the room's own frames, by file (write_empty_frames). Throws Error naming `path` otherwise.
+const PngFolderSource& room_pngs(const FrameSource& frames, const std::string& path) {
+  const auto* pngs = dynamic_cast<const PngFolderSource*>(&frames);
+  if (pngs == nullptr) {
+    fail(path, "without a recording of the room empty, the frames taken as empty are mined from the room's "
+               "own frames, which must then be PNG frames (a folder or a list file)");
+  }
+  return *pngs;
+}
+
 // truth must name only frames of the room (source or eval). Checked before anything is written.
 void check_room(const AdaptOptions& o, const BoostedModel& model) {
   std::set<std::string> names;
@@ -56,10 +67,7 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
   for (const auto& [spec, named_by_truth] : specs) {  // named_by_truth: --truth may name its frames
     if (spec.empty()) continue;
     auto frames = open_frame_source(spec);
-    if (spec == o.source && o.empty.empty() && dynamic_cast<const PngFolderSource*>(frames.get()) == nullptr) {
-      fail(spec, "without a recording of the room empty, the frames taken as empty are mined from the room's "
-                 "own frames, which must then be PNG frames (a folder or a list file)");
-    }
+    if (spec == o.source && o.empty.empty()) room_pngs(*frames, spec);
     DepthFrame frame;
     bool first = true;
     while (frames->next(frame)) {
@@ -98,12 +106,7 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
 std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presence) {
   std::map<std::string, std::string> path_of;  // frame name -> depth PNG
   const std::unique_ptr<FrameSource> source = open_frame_source(o.source);
-  const auto* pngs = dynamic_cast<const PngFolderSource*>(source.get());  // its list file read by the library
-  if (pngs == nullptr) {
-    fail(o.source, "the frames taken as empty are mined from PNG frames only (a folder or a list file): "
-                   "give a recording without people");
-  }
-  for (const std::string& path : pngs->depth_paths()) {
+  for (const std::string& path : room_pngs(*source, o.source).depth_paths()) {  // its list file read by the library
     path_of[PngFolderSource::frame_name(path)] = fs::absolute(path).string();
   }
   const std::string list = (fs::path(o.out) / "empty-frames.txt").string();

@@ -29,8 +29,7 @@ po::options_description train_options(TrainOptions& o) {
        "positives to take (seeded subset; 0 = all). Default: the recipe's, else all")
       ("negatives", optional_into(o.negatives),
        "negatives to take (seeded subset; 0 = all). Default: the recipe's, else all")
-      ("name", po::value(&o.name), "model name (default: the recipe's name); saved as MODELS/NAME/vN.yml")
-      ;
+      ("name", po::value(&o.name), "model name (default: the recipe's name); saved as MODELS/NAME/vN.yml");
   cli::add_models_dir_option(what, o.models_dir, cli::ModelsDirUse::look_up_and_save,
                              "; its recipes/NAME.yml are the recipes of --recipe NAME");
   what.add_options()
@@ -54,8 +53,7 @@ po::options_description train_options(TrainOptions& o) {
       ("augment", po::value(&o.augment)->default_value(o.augment),
        "positives augmented at training time: off, or a list of mirror, shift, scale, occlusion")
       ("augment-copies", po::value(&o.augment_copies)->default_value(o.augment_copies),
-       "random variants per positive (shift / scale / occlusion), besides the mirror")
-      ;
+       "random variants per positive (shift / scale / occlusion), besides the mirror");
   cli::add_threads_option(how, o.threads, "threads for features and histograms");
   how.add_options()
       ("feature-pool", po::value(&o.feature_pool)->default_value(o.feature_pool),
