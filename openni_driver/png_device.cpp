@@ -56,7 +56,7 @@ oni::driver::StreamBase* PngDevice::createStream(OniSensorType sensor_type) {
                                 sequence_.folder().c_str(), static_cast<int>(sensor_type));
     return nullptr;
   }
-  auto* stream = new PngStream(*this, sensor_type, *mode, options_.cropping);
+  auto* stream = new PngStream(*this, sensor_type, *mode, options_.cropping, options_.hfov_deg);
   std::lock_guard<std::mutex> lock(mutex_);
   streams_.push_back(stream);
   return stream;

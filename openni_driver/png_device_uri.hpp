@@ -5,7 +5,11 @@
 //   fps=N       frames per second, 1..1000 (default 30, as a Kinect);
 //   depth=off   offer no depth stream (a colour-only camera; needs NAME.rgb.png);
 //   crop=off    do not offer the cropping property, as OpenNI2's Dummy device: recordings then lack it and
-//               OpenNI2's file player delivers none of their frames (kept to test that diagnosis).
+//               OpenNI2's file player delivers none of their frames (kept to test that diagnosis);
+//   hfov=DEG    the horizontal field of view both streams report, in degrees, (0, 180) exclusive (default:
+//               a Kinect v1's registered stream, a focal length of 525 px at 640 px wide, 62.7 degrees);
+//               the vertical one follows from square pixels: vfov = 2 atan(height / 2 / f), f = width / 2 /
+//               tan(hfov / 2).
 #include <string>
 
 namespace rdsf::openni_driver {
@@ -17,6 +21,7 @@ struct PngDeviceUri {
   int fps = 30;
   bool depth = true;
   bool cropping = true;
+  double hfov_deg = 0.0;  ///< 0: a focal length of 525 px at 640 px wide, scaled with the width
 };
 
 /// True when `uri` starts with the virtual sensor's scheme.

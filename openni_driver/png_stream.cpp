@@ -32,8 +32,13 @@ bool take(const void* data, int data_size, T& value) {
 }  // namespace
 
 PngStream::PngStream(PngDevice& device, OniSensorType sensor_type, const OniVideoMode& mode,
-                     bool offers_cropping)
-    : device_(device), sensor_type_(sensor_type), mode_(mode), offers_cropping_(offers_cropping) {}
+                     bool offers_cropping, double hfov_deg)
+    : device_(device),
+      sensor_type_(sensor_type),
+      mode_(mode),
+      offers_cropping_(offers_cropping),
+      focal_px_(hfov_deg > 0.0 ? mode.resolutionX / 2.0 / std::tan(hfov_deg * M_PI / 360.0)
+                               : kFocalPxAt640 * mode.resolutionX / 640.0) {}
 
 PngStream::~PngStream() { stop(); }
 
@@ -75,14 +80,10 @@ OniStatus PngStream::getProperty(int property_id, void* data, int* data_size) {
       cropping.height = mode_.resolutionY;
       return put(data, data_size, cropping);
     }
-    case ONI_STREAM_PROPERTY_HORIZONTAL_FOV: {
-      const double focal_px = kFocalPxAt640 * mode_.resolutionX / 640.0;
-      return put(data, data_size, static_cast<float>(2.0 * std::atan(mode_.resolutionX / (2.0 * focal_px))));
-    }
-    case ONI_STREAM_PROPERTY_VERTICAL_FOV: {
-      const double focal_px = kFocalPxAt640 * mode_.resolutionX / 640.0;
-      return put(data, data_size, static_cast<float>(2.0 * std::atan(mode_.resolutionY / (2.0 * focal_px))));
-    }
+    case ONI_STREAM_PROPERTY_HORIZONTAL_FOV:
+      return put(data, data_size, static_cast<float>(2.0 * std::atan(mode_.resolutionX / (2.0 * focal_px_))));
+    case ONI_STREAM_PROPERTY_VERTICAL_FOV:
+      return put(data, data_size, static_cast<float>(2.0 * std::atan(mode_.resolutionY / (2.0 * focal_px_))));
     case ONI_STREAM_PROPERTY_STRIDE: return put(data, data_size, mode_.resolutionX * bytes_per_pixel());
     case ONI_STREAM_PROPERTY_MIRRORING: return put(data, data_size, OniBool{FALSE});
     case ONI_STREAM_PROPERTY_MAX_VALUE:

@@ -16,8 +16,10 @@ class PngDevice;
 class PngStream : public oni::driver::StreamBase {
  public:
   /// `mode`: the one video mode of the stream (pixel format DEPTH_1_MM or RGB888); `offers_cropping`:
-  /// whether the cropping property is offered (always, except to reproduce the playback fault).
-  PngStream(PngDevice& device, OniSensorType sensor_type, const OniVideoMode& mode, bool offers_cropping);
+  /// whether the cropping property is offered (always, except to reproduce the playback fault);
+  /// `hfov_deg`: the horizontal field of view reported (0: 525 px focal length at 640 px wide).
+  PngStream(PngDevice& device, OniSensorType sensor_type, const OniVideoMode& mode, bool offers_cropping,
+            double hfov_deg);
   ~PngStream() override;
   PngStream(const PngStream&) = delete;
   PngStream& operator=(const PngStream&) = delete;
@@ -42,6 +44,7 @@ class PngStream : public oni::driver::StreamBase {
   OniSensorType sensor_type_;
   OniVideoMode mode_;
   bool offers_cropping_;
+  double focal_px_;  // from hfov_deg, or 525 px at 640 px wide; square pixels
   std::atomic<bool> started_{false};
 };
 

@@ -94,10 +94,14 @@ TEST(OpenNIRecorder, CtrlCBeforeTheFirstFrameWritesNothing) {
   test::TempDir dir;
   fs::create_directory(dir / "png");
   write_sequence(dir / "png", 2, false);
-  // One frame per second: SIGINT after 0.5 s comes before the first frame.
+  // One frame per second: SIGINT as soon as the recorder says it is recording comes before the first frame.
+  // (A fixed sleep instead raced the program's start on a loaded machine: SIGINT before its handler.)
+  const std::string err = dir / "err.txt";
   const auto r = test::run("{ " + test::quote(test::program("rdsf-record")) + " --device " +
                            test::quote(device_uri(dir / "png", "fps=1")) + " --out " + test::quote(dir / "take.oni") +
-                           " & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; }");
+                           " 2>" + test::quote(err) + " & pid=$!; for i in $(seq 1500); do grep -q 'rdsf-record: recording' " +
+                           test::quote(err) + " && break; sleep 0.02; done; kill -INT $pid; wait $pid; rc=$?; cat " +
+                           test::quote(err) + " >&2; exit $rc; }");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("stopped before the first frame; nothing written"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "take.oni"));
@@ -145,7 +149,7 @@ TEST(OpenNIBadRecording, TruncatedRecordingIsAnErrorNotAHang) {
   std::string message;
   int frames = 0;
   try {
-    OpenNISource source(cut, CameraModel::kinect_v1(), 1000);
+    OpenNISource source(cut, FrameSourceOptions{}, 1000);
     DepthFrame frame;
     while (source.next(frame)) {
       EXPECT_TRUE(identical(frame.depth_mm, depth_for(frames))) << "frame " << frames;
@@ -176,7 +180,7 @@ std::size_t third_frame_record(const std::string& bytes) {
 std::pair<int, std::string> play(const std::string& path) {
   int frames = 0;
   try {
-    OpenNISource source(path, CameraModel::kinect_v1(), 500);
+    OpenNISource source(path, FrameSourceOptions{}, 500);
     DepthFrame frame;
     while (source.next(frame)) {
       EXPECT_TRUE(identical(frame.depth_mm, depth_for(frames))) << "frame " << frames;
@@ -248,4 +252,6 @@ TEST(OpenNIBadRecording, BadVirtualSensorAddressesAreOneLineErrors) {
   expect_error([&] { drain(device_uri(dir.path().string())); }, {"no NAME.depth.png"});
   write_sequence(dir.path().string(), 1, false);
   expect_error([&] { drain(device_uri(dir.path().string(), "fps=0")); }, {"unknown option 'fps=0'"});
+  expect_error([&] { drain(device_uri(dir.path().string(), "hfov=180")); }, {"unknown option 'hfov=180'"});
+  expect_error([&] { drain(device_uri(dir.path().string(), "hfov=60x")); }, {"unknown option 'hfov=60x'"});
 }

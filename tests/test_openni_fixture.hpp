@@ -47,11 +47,11 @@ inline std::string frame_stem(int i) {
   return stem;
 }
 
-/// Writes `count` frames NAME.depth.png (and NAME.rgb.png with `colour`) into `folder`.
-inline void write_sequence(const std::string& folder, int count, bool colour) {
+/// Writes `count` frames NAME.depth.png (and NAME.rgb.png with `colour`) of `size` into `folder`.
+inline void write_sequence(const std::string& folder, int count, bool colour, cv::Size size = {640, 480}) {
   for (int i = 0; i < count; ++i) {
-    write_png_atomically(folder + "/" + frame_stem(i) + ".depth.png", depth_for(i));
-    if (colour) write_png_atomically(folder + "/" + frame_stem(i) + ".rgb.png", colour_for(i));
+    write_png_atomically(folder + "/" + frame_stem(i) + ".depth.png", depth_for(i, size));
+    if (colour) write_png_atomically(folder + "/" + frame_stem(i) + ".rgb.png", colour_for(i, size));
   }
 }
 

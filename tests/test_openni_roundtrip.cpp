@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -191,6 +192,50 @@ TEST(OpenNIRoundTrip, LiveVirtualSensorServesThePngs) {
     ASSERT_TRUE(frame.has_colour());
     EXPECT_TRUE(identical(frame.bgr, colour_for(match)));
     last = match;
+  }
+}
+
+// A sensor of another size and field of view (a Kinect v2's depth: 512x424, 70.6 degrees wide): its frames,
+// live and recorded, carry the model of that field of view without any option; a model the user gives wins.
+TEST(OpenNIRoundTrip, CameraModelComesFromTheFieldOfViewTheSensorReports) {
+  test::TempDir dir;
+  for (const bool colour : {false, true}) {
+    const fs::path png = dir / (colour ? "colour" : "depth");
+    fs::create_directory(png);
+    write_sequence(png.string(), 3, colour, {512, 424});
+    const double focal_px = 256.0 / std::tan(70.6 / 2.0 * M_PI / 180.0);  // 361.6 px
+    const auto expect_kinect_v2 = [&](const DepthFrame& frame, const std::string& where) {
+      EXPECT_EQ(frame.camera.width_px, 512) << where;
+      EXPECT_EQ(frame.camera.height_px, 424) << where;
+      EXPECT_NEAR(frame.camera.fx_px, focal_px, 0.01) << where;
+      EXPECT_EQ(frame.camera.fy_px, frame.camera.fx_px) << where;
+      EXPECT_EQ(frame.camera.cx_px, 255.5) << where;
+      EXPECT_EQ(frame.camera.cy_px, 211.5) << where;
+    };
+    const std::string uri = device_uri(png.string(), "hfov=70.6");
+    DepthFrame frame;
+    {
+      auto live = open_frame_source(uri);
+      ASSERT_TRUE(live->next(frame));
+      expect_kinect_v2(frame, "live");
+      const std::string stream = colour ? "colour stream (depth registered to colour)" : "depth stream";
+      EXPECT_NE(live->description().find("camera model from OpenNI2's field of view of the " + stream),
+                std::string::npos) << live->description();
+    }
+    const fs::path oni = dir / (colour ? "colour.oni" : "depth.oni");
+    const auto r = record("--device " + test::quote(uri) + " --frames 3" + (colour ? " --color" : "") + " --out " +
+                          test::quote(oni));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto recorded = open_frame_source(oni.string());
+    ASSERT_TRUE(recorded->next(frame));
+    expect_kinect_v2(frame, "recorded");
+
+    FrameSourceOptions given;
+    given.camera_given = true;  // e.g. --fx on the command line: the user's model, scaled to the frame
+    auto with_model = open_frame_source(oni.string(), given);
+    ASSERT_TRUE(with_model->next(frame));
+    EXPECT_EQ(frame.camera, CameraModel::kinect_v1().scaled_to(512, 424));
+    EXPECT_NE(with_model->description().find("camera model given"), std::string::npos) << with_model->description();
   }
 }
 

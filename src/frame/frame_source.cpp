@@ -30,7 +30,7 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const Ca
 std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const FrameSourceOptions& options) {
   if (is_openni_spec(spec)) {
 #if RDSF_WITH_OPENNI
-    return std::make_unique<OpenNISource>(spec, options.camera);
+    return std::make_unique<OpenNISource>(spec, options);
 #else
     fail(spec, "this build has no OpenNI2 (reconfigure with -DRDSF_WITH_OPENNI=ON, libopenni2-dev installed)");
 #endif

@@ -1,6 +1,7 @@
 #include "rdsf/frame/openni_source.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
@@ -146,6 +147,24 @@ bool reports_cropping(const openni::VideoStream& stream) {
   return stream.getProperty(openni::STREAM_PROPERTY_CROPPING, &cropping) == openni::STATUS_OK;
 }
 
+// The camera model of an image `width` x `height` whose horizontal field of view is `hfov_rad`, as ROS's
+// openni2_camera takes it: f = width / 2 / tan(hfov / 2) along both axes (square pixels; a sensor's
+// reported vertical field of view is often rounded differently), rounded to 0.001 px (the property is a
+// float), and the principal point at the centre ((width - 1) / 2, (height - 1) / 2). Nothing when the
+// angle is not in (0, pi).
+std::optional<CameraModel> camera_from_field_of_view(float hfov_rad, int width, int height) {
+  if (!(hfov_rad > 0.0f && hfov_rad < static_cast<float>(M_PI)) || width <= 0 || height <= 0) return std::nullopt;
+  const double focal_px = std::round(width / 2.0 / std::tan(hfov_rad / 2.0) * 1000.0) / 1000.0;
+  CameraModel camera;
+  camera.width_px = width;
+  camera.height_px = height;
+  camera.fx_px = focal_px;
+  camera.fy_px = focal_px;
+  camera.cx_px = (width - 1) / 2.0;
+  camera.cy_px = (height - 1) / 2.0;
+  return camera;
+}
+
 }  // namespace
 
 struct OpenNISource::Impl {
@@ -154,6 +173,7 @@ struct OpenNISource::Impl {
   bool is_file = false;
   int wait_timeout_ms = 2000;
   CameraModel camera;
+  std::string camera_note;  // where the camera model came from, for description()
   openni::Device device;
   openni::VideoStream depth;
   openni::VideoStream colour;
@@ -175,6 +195,39 @@ struct OpenNISource::Impl {
   int reopened_for_frame = 0;  // files: recoveries since the last frame delivered
 
   ~Impl() { close_all(); }
+
+  // The camera model frames carry: the user's when given, else the one of OpenNI2's field of view of the
+  // stream whose geometry the depth image has. That is the colour stream when depth is registered to
+  // colour: a live device is set so above when it can be; a recording with a colour stream is taken as
+  // registered when OpenNI2's player does not report the registration (as rdsf-record records). Else it
+  // is the depth stream (a Kinect v1's unregistered depth: about 58 degrees, f about 575 px; registered,
+  // 62.7 degrees, f 525 px). A stream that reports no usable angle leaves the fallback model.
+  void choose_camera(const FrameSourceOptions& options) {
+    if (options.camera_given) {
+      camera_note = "camera model given (" + camera.describe() + ")";
+      return;
+    }
+    openni::ImageRegistrationMode registration = openni::IMAGE_REGISTRATION_OFF;
+    const bool reported = device.getProperty(openni::DEVICE_PROPERTY_IMAGE_REGISTRATION, &registration) ==
+                          openni::STATUS_OK;
+    const bool registered =
+        has_colour && (reported ? registration == openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR : is_file);
+    const openni::VideoStream& geometry = registered ? colour : depth;
+    const openni::VideoMode mode = depth.getVideoMode();
+    float hfov_rad = 0.0f;
+    std::optional<CameraModel> model;
+    if (geometry.getProperty(openni::STREAM_PROPERTY_HORIZONTAL_FOV, &hfov_rad) == openni::STATUS_OK) {
+      model = camera_from_field_of_view(hfov_rad, mode.getResolutionX(), mode.getResolutionY());
+    }
+    if (!model) {
+      camera_note = "no field of view reported, camera model " + camera.describe();
+      return;
+    }
+    camera = *model;
+    camera_note = std::string("camera model from OpenNI2's field of view of the ") +
+                  (registered ? "colour stream (depth registered to colour)" : "depth stream") + " (" +
+                  camera.describe() + ")";
+  }
 
   // Stops and releases streams, device and address; the counters stay (reopen_recording uses them).
   void close_all() {
@@ -307,11 +360,11 @@ struct OpenNISource::Impl {
   }
 };
 
-OpenNISource::OpenNISource(const std::string& spec, const CameraModel& camera, int wait_timeout_ms)
+OpenNISource::OpenNISource(const std::string& spec, const FrameSourceOptions& options, int wait_timeout_ms)
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.spec = spec;
-  s.camera = camera;
+  s.camera = options.camera;
   s.wait_timeout_ms = wait_timeout_ms;
   s.is_file = spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".oni") == 0;
   s.where = s.is_file ? spec : (spec == "openni" ? std::string("OpenNI2 device") : "OpenNI2 device " + spec);
@@ -382,6 +435,7 @@ OpenNISource::OpenNISource(const std::string& spec, const CameraModel& camera, i
     }
   }
 
+  s.choose_camera(options);
   if (s.depth.start() != openni::STATUS_OK) fail(s.where, "cannot start depth stream: " + openni_error());
   if (s.has_colour && s.colour.start() != openni::STATUS_OK) {
     s.colour.destroy();
@@ -430,6 +484,7 @@ std::string OpenNISource::description() const {
   if (s.is_file) text += " (" + std::to_string(s.total_frames) + " frames)";
   text += s.has_colour ? ", depth and colour" : ", depth only";
   if (!s.colour_note.empty()) text += " (" + s.colour_note + ")";
+  text += ", " + s.camera_note;
   return text;
 }
 

@@ -12,6 +12,10 @@
 // sources may be open on one file at once, each playing independently.
 // Live devices: the newest depth frame and the newest colour frame at each call.
 // Every wait is bounded by `wait_timeout_ms`; a recording that stops early (truncated) ends in an Error.
+// Camera model: the user's when FrameSourceOptions::camera_given; else from OpenNI2's horizontal field of
+// view of the stream whose geometry the depth image has (the colour stream when depth is registered to
+// colour, else the depth stream): f = width / 2 / tan(hfov / 2) for fx and fy, centre (w - 1) / 2,
+// (h - 1) / 2, as ROS's openni2_camera does; description() says which.
 #include <memory>
 #include <string>
 
@@ -26,7 +30,7 @@ class OpenNISource : public FrameSource {
  public:
   /// `spec`: a path to an .oni file, "openni" for the first attached device, or a device URI.
   /// Throws Error naming the file or device when it cannot be opened or delivers no depth.
-  OpenNISource(const std::string& spec, const CameraModel& camera, int wait_timeout_ms = 2000);
+  OpenNISource(const std::string& spec, const FrameSourceOptions& options, int wait_timeout_ms = 2000);
   ~OpenNISource() override;
   OpenNISource(const OpenNISource&) = delete;
   OpenNISource& operator=(const OpenNISource&) = delete;
