@@ -11,11 +11,11 @@ using namespace rdsf;
 
 namespace {
 
-// The defaults with the fitted box at the layer's extent alone (fit_min_width_ratio 0): most tests here
+// The defaults with the fitted box at the layer's extent alone (fit.min_width_ratio 0): most tests here
 // check that extent; FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight checks the widening on top of it.
 AnalyserParams extent() {
   AnalyserParams p;
-  p.candidates.fit_min_width_ratio = 0;
+  p.candidates.fit.min_width_ratio = 0;
   return p;
 }
 
@@ -43,16 +43,16 @@ void paint_person(DepthFrame& frame, int left, int body_px, int depth_mm = 2000)
 // The wide-object cuts alone (heads off).
 AnalyserParams splitting() {
   AnalyserParams p = extent();
-  p.candidates.split_head_drop_cm = 0;
-  p.candidates.split_valley_cm = 15;
-  p.candidates.split_step_cm = 30;
-  p.candidates.split_depth_jump_mm = 250;
+  p.candidates.split_head.drop_cm = 0;
+  p.candidates.split.valley_cm = 15;
+  p.candidates.split.step_cm = 30;
+  p.candidates.split.depth_jump_mm = 250;
   return p;
 }
 
 AnalyserParams splitting_off() {
   AnalyserParams p = extent();
-  p.candidates.split_head_drop_cm = 0;
+  p.candidates.split_head.drop_cm = 0;
   return p;
 }
 
@@ -100,7 +100,7 @@ TEST(CandidateShapes, FittedBoxIsAtLeastTheMinimumWidthRatioOfItsHeight) {
   }
   // A box already wider than the ratio keeps its extent.
   AnalyserParams wide;  // the defaults but a ratio of 0.1
-  wide.candidates.fit_min_width_ratio = 0.1;
+  wide.candidates.fit.min_width_ratio = 0.1;
   EXPECT_EQ(at_depth(frame, 2000, wide)[1].fitted_box, cv::Rect(300, 60, 60, 400));
 }
 
@@ -112,7 +112,7 @@ TEST(CandidateShapes, FittedBoxReachesOverArmsHeldOut) {
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(230, 100, 130, 360));
   AnalyserParams no_reach = extent();
-  no_reach.candidates.fit_reach_cm = 0;
+  no_reach.candidates.fit.reach_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, no_reach)[0].fitted_box, cv::Rect(300, 100, 60, 360));
 }
 
@@ -124,12 +124,12 @@ TEST(CandidateShapes, FittedBoxReachesAnArmBehindSomethingNearer) {
   test::paint(frame, {360, 160, 90, 20}, 3000);   // the arm
   test::paint(frame, {370, 40, 20, 440}, 1500);   // the post, in front of the arm's columns 370-389
   AnalyserParams on = extent();
-  on.candidates.fit_occlusion_gap_cm = 15;
+  on.candidates.fit.occlusion_gap_cm = 15;
   const auto found = at_depth(frame, 3000, on);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(300, 100, 150, 360));  // to the hand
   EXPECT_EQ(at_depth(frame, 3000)[0].fitted_box, cv::Rect(300, 100, 70, 360));  // off (the default): stops at the post
-  on.candidates.fit_occlusion_gap_cm = 5;  // 8 columns at 3 m, and column_gap's 6: the post's 20 are too many
+  on.candidates.fit.occlusion_gap_cm = 5;  // 8 columns at 3 m, and column_gap's 6: the post's 20 are too many
   EXPECT_EQ(at_depth(frame, 3000, on)[0].fitted_box, cv::Rect(300, 100, 70, 360));
   const auto thesis = at_depth(frame, 3000, thesis_params());
   ASSERT_EQ(thesis.size(), 1u);
@@ -149,7 +149,7 @@ TEST(CandidateShapes, FittedBoxDoesNotJumpASmallNearerThingToAnotherObject) {
     return frame;
   };
   AnalyserParams on = extent();
-  on.candidates.fit_occlusion_gap_cm = 15;
+  on.candidates.fit.occlusion_gap_cm = 15;
   const auto big = at_depth(scene(40), 3000, on);
   ASSERT_EQ(big.size(), 1u);
   EXPECT_EQ(big[0].fitted_box, cv::Rect(300, 100, 110, 360));
@@ -187,7 +187,7 @@ TEST(CandidateShapes, TwoPeopleSideBySideAtOneDepthGiveTwoCandidates) {
   EXPECT_GE(best_iou(split, left, BoxKind::fitted), 0.8);
   EXPECT_GE(best_iou(split, right, BoxKind::fitted), 0.8);
   AnalyserParams both = splitting();
-  both.candidates.split_keep_whole = true;
+  both.candidates.split.keep_whole = true;
   EXPECT_EQ(at_depth(frame, 2000, both).size(), 3u);
 }
 
@@ -207,15 +207,15 @@ TEST(CandidateShapes, PeopleOverlappingAtOneDepthAreCutBetweenTheirHeads) {
   EXPECT_GE(best_iou(found, left, BoxKind::fitted), 0.8);
   EXPECT_GE(best_iou(found, right, BoxKind::fitted), 0.8);
   AnalyserParams keep = extent();
-  keep.candidates.split_head_keep_whole = true;
+  keep.candidates.split_head.keep_whole = true;
   const auto with_whole = at_depth(frame, 2000, keep);
   ASSERT_EQ(with_whole.size(), 3u);
   EXPECT_GE(best_iou(with_whole, both, BoxKind::fitted), 0.95);
   AnalyserParams shallow = extent();  // shoulders less than 25 cm below the heads: no heads
-  shallow.candidates.split_head_drop_cm = 25;
+  shallow.candidates.split_head.drop_cm = 25;
   EXPECT_EQ(at_depth(frame, 2000, shallow).size(), 1u);
   AnalyserParams far = extent();  // heads only in layers nearer than split_head_layers_below
-  far.candidates.split_head_layers_below_mm = 2000;
+  far.candidates.split_head.layers_below_mm = 2000;
   EXPECT_EQ(at_depth(frame, 2000, far).size(), 1u);
 }
 
@@ -235,7 +235,7 @@ TEST(CandidateShapes, PiecesCutBetweenHeadsFitAcrossTheCutOverAnArmHeldOut) {
   EXPECT_EQ(found[0].fitted_box, cv::Rect(150, 100, 156, 360));
   EXPECT_EQ(found[1].fitted_box, right_with_arm);
   AnalyserParams at_cut = extent();  // each piece within its side of the cut
-  at_cut.candidates.fit_across_head_cut = false;
+  at_cut.candidates.fit.across_head_cut = false;
   const auto cut = at_depth(frame, 2000, at_cut);
   ASSERT_EQ(cut.size(), 2u);
   EXPECT_EQ(cut[0].fitted_box.br().x, cut[1].fitted_box.x);  // they meet at the cut, inside the arm
@@ -255,7 +255,7 @@ TEST(CandidateShapes, ARaisedHandIsNoHead) {
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].fitted_box, cv::Rect(280, 90, 200, 370));
   AnalyserParams any_width = extent();  // without the narrowest head top, the hand is a second head
-  any_width.candidates.split_head_min_width_cm = 0;
+  any_width.candidates.split_head.min_width_cm = 0;
   EXPECT_EQ(at_depth(frame, 2000, any_width).size(), 2u);
 }
 
@@ -330,16 +330,16 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   EXPECT_EQ(t.candidates.occlusion_gap_cm, 0);
   EXPECT_EQ(t.candidates.floor_tolerance_mm, 0);
   EXPECT_FALSE(t.candidates.height_at_column_depth);
-  EXPECT_EQ(t.candidates.fit_reach_cm, 0);
-  EXPECT_EQ(t.candidates.fit_occlusion_gap_cm, 0);
-  EXPECT_EQ(t.candidates.fit_min_width_ratio, 0);
-  EXPECT_FALSE(t.candidates.join_pieces);
+  EXPECT_EQ(t.candidates.fit.reach_cm, 0);
+  EXPECT_EQ(t.candidates.fit.occlusion_gap_cm, 0);
+  EXPECT_EQ(t.candidates.fit.min_width_ratio, 0);
+  EXPECT_FALSE(t.candidates.join.pieces);
   EXPECT_EQ(t.candidates.max_object_width_cm, 0);
   EXPECT_EQ(t.candidates.min_fitted_width_cm, 0);
-  EXPECT_EQ(t.candidates.narrow_fitted_width_cm, 0);
-  EXPECT_EQ(t.candidates.split_depth_jump_mm + t.candidates.split_valley_cm + t.candidates.split_step_cm, 0);
-  EXPECT_EQ(t.candidates.split_head_drop_cm, 0);
-  EXPECT_FALSE(t.candidates.fit_across_head_cut);
+  EXPECT_EQ(t.candidates.narrow.fitted_width_cm, 0);
+  EXPECT_EQ(t.candidates.split.depth_jump_mm + t.candidates.split.valley_cm + t.candidates.split.step_cm, 0);
+  EXPECT_EQ(t.candidates.split_head.drop_cm, 0);
+  EXPECT_FALSE(t.candidates.fit.across_head_cut);
   EXPECT_EQ(t.reported_box, BoxKind::strict);
   EXPECT_EQ(AnalyserParams().reported_box, BoxKind::fitted);
 }

@@ -217,11 +217,11 @@ std::vector<DepthFrame> candidate_frames() {
 // the objects and those whose fitted extent reaches beyond their passing columns.
 void expect_same_fitted_extents(const LayerView& view, const CandidateParams& params, int& objects, int& widened) {
   const LayerObjects found = layer_objects(view, params);
-  const int reach = static_cast<int>(params.fit_reach_cm * 10.0 * view.camera->fx_px / std::max(1.0, view.depth_mm_mean));
+  const int reach = static_cast<int>(params.fit.reach_cm * 10.0 * view.camera->fx_px / std::max(1.0, view.depth_mm_mean));
   for (const LayerObject& o : found.objects) {
     const test::FittedExtent reference = test::fitted_extent_reference(
         *view.labels, *view.depth_mm, view.label, found.passing, o.first, o.last, o.top, o.bottom, reach,
-        params.column_gap, params.fit_depth_step_mm, 0, view.labels->cols - 1);
+        params.column_gap, params.fit.depth_step_mm, 0, view.labels->cols - 1);
     EXPECT_EQ(o.fit_first, reference.first) << "layer " << view.label << " object at column " << o.first;
     EXPECT_EQ(o.fit_last, reference.last) << "layer " << view.label << " object at column " << o.first;
     EXPECT_EQ(o.fit_top, reference.top) << "layer " << view.label << " object at column " << o.first;
@@ -294,11 +294,11 @@ TEST(CandidatesReference, FittedExtentsSameOnRandomMaps) {
       labels(static_cast<int>(rng() % rows), static_cast<int>(rng() % cols)) = 0;
     }
     CandidateParams params;
-    params.join_pieces = false;
-    params.split_head_drop_cm = 0;
+    params.join.pieces = false;
+    params.split_head.drop_cm = 0;
     params.column_gap = static_cast<int>(rng() % 21);
-    params.fit_reach_cm = 10.0 + static_cast<double>(rng() % 80);
-    params.fit_depth_step_mm = static_cast<double>(rng() % 3) * 150.0;
+    params.fit.reach_cm = 10.0 + static_cast<double>(rng() % 80);
+    params.fit.depth_step_mm = static_cast<double>(rng() % 3) * 150.0;
     const auto runs = column_runs(labels, 2, params.k);
     const LayerView view{&runs[1], &labels, &depth, 1, 3000.0, 3500.0, &camera};
     expect_same_fitted_extents(view, params, objects, widened);
@@ -309,8 +309,8 @@ TEST(CandidatesReference, FittedExtentsSameOnRandomMaps) {
 
 TEST(CandidatesReference, FittedExtentsAndCropsSameOnFrames) {
   CandidateParams params;
-  params.join_pieces = false;
-  params.split_head_drop_cm = 0;
+  params.join.pieces = false;
+  params.split_head.drop_cm = 0;
   int objects = 0, widened = 0, candidates = 0;
   for (const DepthFrame& frame : candidate_frames()) {
     const Segmentation s = segment_depth(frame.depth_mm, {});

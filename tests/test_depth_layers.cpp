@@ -63,6 +63,21 @@ TEST(DepthLayers, NoSeedsNoLayers) {
   EXPECT_EQ(cv::countNonZero(s.labels), 0);
 }
 
+// The seeds: positive, ascending, each once, the nearest 254 (kmeans_layers() and the reference in
+// tests/support/reference_segmentation.hpp both start from them).
+TEST(DepthLayers, SeedsArePositiveAscendingDistinctAndAtMost254) {
+  EXPECT_EQ(kmeans_seeds({3000.0, 0.0, 1000.0, 3000.0, -5.0, 2000.5}), (std::vector<double>{1000.0, 2000.5, 3000.0}));
+  EXPECT_TRUE(kmeans_seeds({0.0, -1.0}).empty());
+  std::vector<double> many;
+  for (int i = 300; i >= 1; --i) many.push_back(10.0 * i);
+  const std::vector<double> seeds = kmeans_seeds(many);
+  ASSERT_EQ(seeds.size(), 254u);
+  EXPECT_EQ(seeds.front(), 10.0);
+  EXPECT_EQ(seeds.back(), 2540.0);
+  const Segmentation s = kmeans_layers(cv::Mat1w(4, 4, std::uint16_t{2000}), many, 30);
+  EXPECT_EQ(s.seeds_mm, seeds);
+}
+
 // The histogram k-means must give the same layers as the thesis's cv::kmeans with initial labels.
 TEST(DepthLayers, SameLayersAsOpenCvKmeansOnRealFrames) {
   RDSF_REQUIRE_REALDATA();

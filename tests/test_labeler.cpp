@@ -173,7 +173,7 @@ TEST(Labeler, AssistedModeAgreesWithGroundTruth) {
 TEST(Labeler, TruthLabelsByTheExtentNotTheWidenedFittedBox) {
   // Each frame's person is a slab 40 px wide: its fitted box is widened to 0.3 of its height (108 and 114
   // px, IoU 0.37 and 0.35 with the truth), its extent is the truth. Labelling by overlap uses the extent,
-  // so both are positives and the walls negatives, whatever fit_min_width_ratio says.
+  // so both are positives and the walls negatives, whatever fit.min_width_ratio says.
   test::TempDir dir;
   write_two_frames(dir);
   std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\na,1,300,100,40,360\nb,1,200,80,40,380\n";

@@ -120,8 +120,8 @@ TEST(ObjectJoin, PiecesWhoseFittedExtentsTouchJoinUpToAPersonsWidth) {
 }
 
 // Two pieces of 3 cm (columns 10..12, 16..18, fitted extents touching at 14 | 15), each narrower than
-// min_width_cm: they join only in a layer nearer than join_narrow_layers_below_mm, and with
-// join_narrow_passing only when their 6 passing columns reach narrow_passing_width_cm.
+// min_width_cm: they join only in a layer nearer than join.narrow_layers_below_mm, and with
+// join.narrow_passing only when their 6 passing columns reach narrow.passing_width_cm.
 TEST(ObjectJoin, NarrowPiecesJoinOnlyNearAndWithEnoughPassingColumns) {
   HandLayer l(100, 40);
   l.block(10, 12, 20, 79);
@@ -136,18 +136,18 @@ TEST(ObjectJoin, NarrowPiecesJoinOnlyNearAndWithEnoughPassingColumns) {
     return join_pieces(shape, {a, b}).size() == 1;
   };
   CandidateParams p = l.params;
-  ASSERT_EQ(p.join_narrow_layers_below_mm, 3500.0);  // the default: 5,250 mm is too far
+  ASSERT_EQ(p.join.narrow_layers_below_mm, 3500.0);  // the default: 5,250 mm is too far
   EXPECT_FALSE(joined(p, 18));
   EXPECT_TRUE(joined(p, 30));  // one of them wide: depth and passing columns do not matter
-  p.join_narrow_layers_below_mm = 5251.0;
+  p.join.narrow_layers_below_mm = 5251.0;
   EXPECT_TRUE(joined(p, 18));
-  p.narrow_passing_width_cm = 6.0;  // exactly the 6 passing columns
+  p.narrow.passing_width_cm = 6.0;  // exactly the 6 passing columns
   EXPECT_TRUE(joined(p, 18));
-  p.narrow_passing_width_cm = 7.0;
+  p.narrow.passing_width_cm = 7.0;
   EXPECT_FALSE(joined(p, 18));
-  p.join_narrow_passing = false;
+  p.join.narrow_passing = false;
   EXPECT_TRUE(joined(p, 18));
-  p.join_narrow_layers_below_mm = 5250.0;  // the layer's own depth is not nearer
+  p.join.narrow_layers_below_mm = 5250.0;  // the layer's own depth is not nearer
   EXPECT_FALSE(joined(p, 18));
 }
 
@@ -163,13 +163,13 @@ TEST(NarrowPerson, PassingCmLeavesTheGapsOut) {
   EXPECT_DOUBLE_EQ(shape.cm(o.last - o.first + 1), 10.0);
 }
 
-// An object in columns 10..13 from row `top`; the band above it is narrow_clear_above_cm = 10 rows of 4
+// An object in columns 10..13 from row `top`; the band above it is narrow.clear_above_cm = 10 rows of 4
 // columns (40 pixels), of which `other` rows (the lowest ones) hold layer `label`.
 bool clear_with(int top, int other_rows, int label) {
   HandLayer l(100, 20);
   l.block(10, 13, top, 99);
   l.labels(cv::Range(top - other_rows, top), cv::Range(10, 14)).setTo(label);  // not layer 1's runs
-  l.params.narrow_clear_above_cm = 10.0;
+  l.params.narrow.clear_above_cm = 10.0;
   const LayerView view = l.view();
   const LayerShape shape(view, l.params);
   return clear_above(shape, shape.span(10, 13));
@@ -198,8 +198,8 @@ struct NarrowScene {
     l.block(5, 38, 10, 39);
     l.block(18, 25, 10, 99);
     l.block(18, 25, 0, 9, 6000, 2);
-    l.params.narrow_fitted_width_cm = 20.0;
-    l.params.narrow_layers_below_mm = 6000.0;  // 5,000 by default
+    l.params.narrow.fitted_width_cm = 20.0;
+    l.params.narrow.layers_below_mm = 6000.0;  // 5,000 by default
     const LayerView view = l.view();
     person = LayerShape(view, l.params).span(18, 25);
     person.fit_first = 5;
@@ -215,32 +215,32 @@ struct NarrowScene {
 TEST(NarrowPerson, KeptOnlyWithAPersonsWidthHeightDepthAndBackground) {
   NarrowScene s;
   CandidateParams p = s.l.params;
-  ASSERT_EQ(p.narrow_min_height_cm, 90.0);  // exactly its height
+  ASSERT_EQ(p.narrow.min_height_cm, 90.0);  // exactly its height
   EXPECT_TRUE(s.narrow(p));
   const auto without = [&](auto change) {
     CandidateParams q = p;
     change(q);
     return s.narrow(q);
   };
-  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow_fitted_width_cm = 0; }));     // the rule off
-  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow_fitted_width_cm = 35; }));    // fitted 34 cm
-  EXPECT_TRUE(without([](CandidateParams& q) { q.narrow_fitted_width_cm = 34; }));
-  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow_passing_width_cm = 9; }));    // legs 8 cm
-  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow_layers_below_mm = 5250; }));  // too far
-  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow_min_height_cm = 91; }));      // too short
+  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow.fitted_width_cm = 0; }));     // the rule off
+  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow.fitted_width_cm = 35; }));    // fitted 34 cm
+  EXPECT_TRUE(without([](CandidateParams& q) { q.narrow.fitted_width_cm = 34; }));
+  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow.passing_width_cm = 9; }));    // legs 8 cm
+  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow.layers_below_mm = 5250; }));  // too far
+  EXPECT_FALSE(without([](CandidateParams& q) { q.narrow.min_height_cm = 91; }));      // too short
   s.l.labels(cv::Range(0, 10), cv::Range(18, 26)).setTo(0);                           // nothing above
   EXPECT_FALSE(s.narrow(p));
 }
 
 TEST(ObjectKeep, WideEnoughOrANarrowPerson) {
   NarrowScene s;
-  s.l.params.narrow_fitted_width_cm = 0;  // off: 8 cm of passing columns are too narrow
+  s.l.params.narrow.fitted_width_cm = 0;  // off: 8 cm of passing columns are too narrow
   const LayerView view = s.l.view();
   EXPECT_FALSE(keep_object(LayerShape(view, s.l.params), s.person));
-  s.l.params.narrow_fitted_width_cm = 20.0;
+  s.l.params.narrow.fitted_width_cm = 20.0;
   EXPECT_TRUE(keep_object(LayerShape(view, s.l.params), s.person));
   s.l.params.min_width_cm = 8.0;  // wide enough without the rule
-  s.l.params.narrow_fitted_width_cm = 0;
+  s.l.params.narrow.fitted_width_cm = 0;
   EXPECT_TRUE(keep_object(LayerShape(view, s.l.params), s.person));
 }
 
@@ -275,24 +275,24 @@ TEST(ObjectKeep, NotAWallNorAPostUnlessAtTheBorder) {
 
 TEST(ObjectSplit, EnabledByItsParameters) {
   CandidateParams p;
-  EXPECT_FALSE(split_wide_enabled(p));
-  p.split_valley_cm = 1;
-  EXPECT_TRUE(split_wide_enabled(p));
+  EXPECT_FALSE(split_wide_enabled(p.split));
+  p.split.valley_cm = 1;
+  EXPECT_TRUE(split_wide_enabled(p.split));
   p = {};
-  p.split_depth_jump_mm = 1;
-  EXPECT_TRUE(split_wide_enabled(p));
+  p.split.depth_jump_mm = 1;
+  EXPECT_TRUE(split_wide_enabled(p.split));
   p = {};
-  p.split_step_cm = 1;
-  EXPECT_TRUE(split_wide_enabled(p));
+  p.split.step_cm = 1;
+  EXPECT_TRUE(split_wide_enabled(p.split));
 
   const HandLayer l(100, 10);
   const LayerView view = l.view();  // at 5,250 mm
   p = l.params;
-  ASSERT_GT(p.split_head_drop_cm, 0);
-  EXPECT_FALSE(split_heads_enabled(LayerShape(view, p)));  // split_head_layers_below_mm 4,000 by default
-  p.split_head_layers_below_mm = 5251.0;
+  ASSERT_GT(p.split_head.drop_cm, 0);
+  EXPECT_FALSE(split_heads_enabled(LayerShape(view, p)));  // split_head.layers_below_mm 4,000 by default
+  p.split_head.layers_below_mm = 5251.0;
   EXPECT_TRUE(split_heads_enabled(LayerShape(view, p)));
-  p.split_head_drop_cm = 0;
+  p.split_head.drop_cm = 0;
   EXPECT_FALSE(split_heads_enabled(LayerShape(view, p)));
 }
 
@@ -303,7 +303,7 @@ struct TwoPeople {
   TwoPeople() {
     l.block(10, 49, 20, 99, 5250);
     l.block(50, 89, 20, 99, 5600);
-    l.params.split_depth_jump_mm = 200.0;
+    l.params.split.depth_jump_mm = 200.0;
     l.params.max_person_width_cm = 60.0;
     l.params.min_part_width_cm = 25.0;
   }
@@ -327,9 +327,9 @@ TEST(ObjectSplit, AWideObjectSplitsIntoTwoPeople) {
   std::vector<LayerObject> out;
   split_object(shape, whole, out);
   EXPECT_EQ(extents(out), (Extents{{10, 49}, {50, 89}}));
-  // split_keep_whole: the whole first.
+  // split.keep_whole: the whole first.
   CandidateParams keep = t.l.params;
-  keep.split_keep_whole = true;
+  keep.split.keep_whole = true;
   out.clear();
   split_object(LayerShape(view, keep), whole, out);
   EXPECT_EQ(extents(out), (Extents{{10, 89}, {10, 49}, {50, 89}}));
@@ -378,11 +378,11 @@ TEST(ObjectSplit, EachPieceIsCutAgain) {
 TEST(ObjectSplit, TwoHeadsCutAnObjectOfAnyWidth) {
   HandLayer l(100, 40);
   for (int c = 10; c <= 30; ++c) l.block(c, c, c >= 12 && c <= 15 ? 20 : c >= 24 && c <= 27 ? 22 : 30, 79);
-  l.params.split_head_width_cm = 6.0;
-  l.params.split_head_min_width_cm = 2.0;
-  l.params.split_head_drop_cm = 8.0;
+  l.params.split_head.width_cm = 6.0;
+  l.params.split_head.min_width_cm = 2.0;
+  l.params.split_head.drop_cm = 8.0;
   l.params.min_part_width_cm = 5.0;
-  l.params.split_head_layers_below_mm = 6000.0;
+  l.params.split_head.layers_below_mm = 6000.0;
   const LayerView view = l.view();
   const LayerShape shape(view, l.params);
   const LayerObject whole = shape.span(10, 30);
@@ -391,10 +391,10 @@ TEST(ObjectSplit, TwoHeadsCutAnObjectOfAnyWidth) {
   EXPECT_EQ(extents(found.pieces), (Extents{{10, 19}, {20, 30}}));
   std::vector<LayerObject> out;
   CandidateParams p = l.params;
-  p.split_keep_whole = true;  // for cuts of wide objects only
+  p.split.keep_whole = true;  // for cuts of wide objects only
   split_object(LayerShape(view, p), whole, out);
   EXPECT_EQ(extents(out), (Extents{{10, 19}, {20, 30}}));
-  p.split_head_keep_whole = true;
+  p.split_head.keep_whole = true;
   out.clear();
   split_object(LayerShape(view, p), whole, out);
   EXPECT_EQ(extents(out), (Extents{{10, 30}, {10, 19}, {20, 30}}));
@@ -433,7 +433,7 @@ TEST(LayerObjects, JoinsKeepsAndSplitsInOrder) {
   l.block(280, 291, 20, 99);
   l.params.max_object_width_cm = 90.0;
   l.params.max_person_width_cm = 60.0;
-  l.params.split_depth_jump_mm = 200.0;
+  l.params.split.depth_jump_mm = 200.0;
   const LayerObjects found = layer_objects(l.view(), l.params);
   EXPECT_EQ(extents(found.objects), (Extents{{10, 39}, {180, 219}, {220, 259}}));
   ASSERT_EQ(found.objects.size(), 3u);
@@ -446,7 +446,7 @@ TEST(LayerObjects, JoinsKeepsAndSplitsInOrder) {
     EXPECT_EQ(found.objects[static_cast<std::size_t>(i)].object, 1);  // the wall was no object
   }
   // Without joining, the person's two pieces are objects (fitted over the arm, both 20 cm wide).
-  l.params.join_pieces = false;
+  l.params.join.pieces = false;
   EXPECT_EQ(extents(layer_objects(l.view(), l.params).objects), (Extents{{10, 19}, {30, 39}, {180, 219}, {220, 259}}));
 }
 

@@ -100,7 +100,7 @@ SetDigest digest_of(const std::string& dir) {
 }
 
 SetDigest mine_into(const std::string& dir, const std::string& source, int threads, int sync_every,
-                    bool join_narrow_passing = rdsf::CandidateParams{}.join_narrow_passing,
+                    bool join_narrow_passing = rdsf::CandidateParams{}.join.narrow_passing,
                     const rdsf::PngEncodeOptions& crop_png = rdsf::kSampleCropPng) {
   rdsf::SampleSetWriter writer =
       rdsf::SampleSetWriter::open_or_create(dir, rdsf::FeatureSpec{}, rdsf::CameraModel::kinect_v1(), "test");
@@ -108,7 +108,7 @@ SetDigest mine_into(const std::string& dir, const std::string& source, int threa
   params.sources = {source};
   params.threads = threads;
   params.sync_every_frames = sync_every;
-  params.analyser.candidates.join_narrow_passing = join_narrow_passing;
+  params.analyser.candidates.join.narrow_passing = join_narrow_passing;
   params.crop_png = crop_png;
   std::vector<std::int64_t> reported;
   rdsf::mine_negatives(params, writer, [&](const rdsf::MineStats& s) {
@@ -129,7 +129,7 @@ TEST(MinerOutput, RealFramesGiveTheRowsAndPixelsOfBeforeTheFasterMiner) {
   RDSF_REQUIRE_REALDATA();
   rdsf::test::TempDir dir{"rdsf-miner-output"};
   // rdsf-mine --source ../shared/realdata/empty on main at ae93907 (cv::imencode crops, a flush per frame),
-  // whose candidates are today's with join_narrow_passing off (issue 14 removed one of them since): its
+  // whose candidates are today's with join.narrow_passing off (issue 14 removed one of them since): its
   // rows and crop pixels; the crop bytes are libdeflate's since issue 17.
   const std::string empty = (rdsf::test::realdata_dir() / "empty").string();
   const SetDigest mined = mine_into(dir / "set", empty, 2, 16, /*join_narrow_passing=*/false);

@@ -1,4 +1,4 @@
-// Narrow people (CandidateParams::narrow_fitted_width_cm, step 4 of include/rdsf/candidates/layer_objects.hpp)
+// Narrow people (CandidateParams::narrow.fitted_width_cm, step 4 of include/rdsf/candidates/layer_objects.hpp)
 // on hand-built depth maps: a person whose only passing columns (the legs, together) are narrower than
 // min_width_cm stays a candidate; narrow things that are not person-like (reaching the top of the image,
 // holes above them, too short, too far) do not.
@@ -14,10 +14,10 @@ using namespace rdsf;
 
 namespace {
 
-// The rule is off by default (narrow_fitted_width_cm = 0, see candidate_params.hpp); these tests turn it on.
+// The rule is off by default (narrow.fitted_width_cm = 0, see candidate_params.hpp); these tests turn it on.
 AnalyserParams narrow_on() {
   AnalyserParams p;
-  p.candidates.narrow_fitted_width_cm = 20;
+  p.candidates.narrow.fitted_width_cm = 20;
   return p;
 }
 
@@ -52,11 +52,11 @@ TEST(NarrowPeople, PersonWhosePassingColumnsAreNarrowerThanMinWidthIsACandidate)
   EXPECT_LT(found[0].width_cm, 10.0);  // its passing columns: narrower than min_width_cm
   // Off (the default, and in the thesis preset): the thesis's min_width_cm drops it.
   AnalyserParams off = narrow_on();
-  off.candidates.narrow_fitted_width_cm = 0;
+  off.candidates.narrow.fitted_width_cm = 0;
   EXPECT_TRUE(at_depth(frame, 3000, off).empty());
   EXPECT_TRUE(at_depth(frame, 3000, AnalyserParams{}).empty());
   EXPECT_TRUE(at_depth(frame, 3000, thesis_params()).empty());
-  EXPECT_EQ(thesis_params().candidates.narrow_fitted_width_cm, 0);
+  EXPECT_EQ(thesis_params().candidates.narrow.fitted_width_cm, 0);
 }
 
 TEST(NarrowPeople, NarrowObjectReachingTheTopOfTheImageIsNot) {
@@ -84,14 +84,14 @@ TEST(NarrowPeople, NarrowObjectTooShortOrTooFarIsNot) {
   AnalyserParams relaxed = narrow_on();
   relaxed.candidates.mode = HeightMode::relaxed;
   EXPECT_TRUE(at_depth(chair, 3000, relaxed).empty());
-  relaxed.candidates.narrow_min_height_cm = 0;
+  relaxed.candidates.narrow.min_height_cm = 0;
   EXPECT_EQ(at_depth(chair, 3000, relaxed).size(), 1u);
-  // The person beyond narrow_layers_below_mm (5 m) is not kept.
+  // The person beyond narrow.layers_below_mm (5 m) is not kept.
   DepthFrame far = test::wall_frame(7000);
   paint_narrow_person(far, 160, 5500);
   AnalyserParams strict = narrow_on();
   EXPECT_TRUE(at_depth(far, 5500, strict).empty());
-  strict.candidates.narrow_layers_below_mm = 6000;
+  strict.candidates.narrow.layers_below_mm = 6000;
   EXPECT_EQ(at_depth(far, 5500, strict).size(), 1u);
 }
 
@@ -99,10 +99,10 @@ TEST(NarrowPeople, NarrowPassingColumnsMustBeWideEnoughAndTheBodyAPersonsWidth) 
   DepthFrame frame = test::wall_frame(5000);
   paint_narrow_person(frame, 160);
   AnalyserParams wider_body = narrow_on();
-  wider_body.candidates.narrow_fitted_width_cm = 45;  // the body is 40 cm
+  wider_body.candidates.narrow.fitted_width_cm = 45;  // the body is 40 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_body).empty());
   AnalyserParams wider_legs = narrow_on();
-  wider_legs.candidates.narrow_passing_width_cm = 9;  // the legs are 8 cm
+  wider_legs.candidates.narrow.passing_width_cm = 9;  // the legs are 8 cm
   EXPECT_TRUE(at_depth(frame, 3000, wider_legs).empty());
 }
 
@@ -113,9 +113,9 @@ TEST(NarrowPeople, JoinNarrowPassingJoinsLegsButNotTheSlatsOfAChairBack) {
   test::paint(chair, {298, 200, 70, 20}, 1400);
   for (int x : {300, 330, 362}) test::paint(chair, {x, 220, 3, 230}, 1400);
   AnalyserParams any;
-  any.candidates.join_narrow_passing = false;
+  any.candidates.join.narrow_passing = false;
   EXPECT_EQ(at_depth(chair, 1400, any).size(), 1u);  // joined: 17 cm over its passing columns
-  const AnalyserParams passing;  // join_narrow_passing: 2.4 cm of passing columns, below 5 cm
+  const AnalyserParams passing;  // join.narrow_passing: 2.4 cm of passing columns, below 5 cm
   EXPECT_TRUE(at_depth(chair, 1400, passing).empty());
   // Two legs of 20 px (5.3 cm) under a torso 48 cm high (failing 50 cm alone) still join into one person.
   DepthFrame legs = test::wall_frame(4000);

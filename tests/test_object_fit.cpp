@@ -31,10 +31,10 @@ struct Layer {
     params.mode = HeightMode::relaxed;
     params.near_height_cm = 50.0;
     params.height_at_column_depth = false;
-    params.fit_reach_cm = 60.0;
-    params.fit_depth_step_mm = 150.0;
+    params.fit.reach_cm = 60.0;
+    params.fit.depth_step_mm = 150.0;
     params.column_gap = 6;
-    params.fit_occlusion_gap_cm = 0.0;
+    params.fit.occlusion_gap_cm = 0.0;
   }
   LayerView view() const { return {&runs, &labels, &depth, 1, 5250.0, 5750.0, &camera}; }
 };
@@ -83,7 +83,7 @@ TEST(ObjectFit, StopsAtTheLimitsAndWithoutReach) {
     EXPECT_EQ(o.fit_top, 20);  // column 17 not reached
   }
   {
-    l.fill(24, 30, 40, 5300);  // now within fit_depth_step_mm, after 4 empty columns (20..23)
+    l.fill(24, 30, 40, 5300);  // now within fit.depth_step_mm, after 4 empty columns (20..23)
     l.params.column_gap = 3;
     const LayerShape shape(view, l.params);
     LayerObject o = shape.span(10, 14);
@@ -96,7 +96,7 @@ TEST(ObjectFit, StopsAtTheLimitsAndWithoutReach) {
     EXPECT_EQ(p.fit_last, 24);
   }
   {
-    l.params.fit_reach_cm = 0.0;
+    l.params.fit.reach_cm = 0.0;
     const LayerShape shape(view, l.params);
     LayerObject o = shape.span(10, 14);
     fit_object(shape, o, 0, 39);
@@ -120,9 +120,9 @@ TEST(ObjectFit, NearerInBandCountsNearerLayersEveryOtherRow) {
 
 // Head parameters for the tests below: heads 2..6 cm wide, 8 cm above their shoulders, pieces of 5 cm.
 void head_params(CandidateParams& params) {
-  params.split_head_width_cm = 6.0;
-  params.split_head_min_width_cm = 2.0;
-  params.split_head_drop_cm = 8.0;
+  params.split_head.width_cm = 6.0;
+  params.split_head.min_width_cm = 2.0;
+  params.split_head.drop_cm = 8.0;
   params.min_part_width_cm = 5.0;
 }
 
@@ -171,9 +171,9 @@ TEST(ObjectCut, DepthJumpThenValley) {
   Layer l;
   l.labels.setTo(0);
   for (ColumnRun& r : l.runs) r = ColumnRun{};
-  l.params.split_depth_jump_mm = 200.0;
-  l.params.split_valley_cm = 20.0;
-  l.params.split_step_cm = 0.0;
+  l.params.split.depth_jump_mm = 200.0;
+  l.params.split.valley_cm = 20.0;
+  l.params.split.step_cm = 0.0;
   for (int c = 10; c <= 30; ++c) l.fill(c, 30, 79, c < 20 ? 5250 : 5600);
   const LayerView view = l.view();
   {
@@ -188,7 +188,7 @@ TEST(ObjectCut, DepthJumpThenValley) {
   EXPECT_DOUBLE_EQ(profile_cm(shape, o, 19), 20.0);
   EXPECT_DOUBLE_EQ(profile_cm(shape, o, 10), 50.0);
   EXPECT_EQ(cut_wide(shape, o, 5), 20);  // the middle of 19..21
-  l.params.split_valley_cm = 31.0;       // deeper than the valley's 30 cm
+  l.params.split.valley_cm = 31.0;       // deeper than the valley's 30 cm
   const LayerShape shallow(view, l.params);
   EXPECT_EQ(cut_wide(shallow, o, 5), -1);
 }

@@ -62,7 +62,7 @@ TEST(ParameterTable, ThesisValuesComeFromTheRows) {
   const AnalyserParams thesis = thesis_params();
   EXPECT_FALSE(thesis.segmentation.left_border_jump);
   EXPECT_EQ(thesis.reported_box, BoxKind::strict);
-  EXPECT_EQ(thesis.candidates.fit_min_width_ratio, 0.0);
+  EXPECT_EQ(thesis.candidates.fit.min_width_ratio, 0.0);
   EXPECT_EQ(thesis.candidates.k, CandidateParams{}.k);  // the thesis's own parameters keep their defaults
   const BoostTrainingParams boost = with_thesis_values(boost_training_parameters(), BoostTrainingParams{});
   EXPECT_EQ(boost.depth, 1);

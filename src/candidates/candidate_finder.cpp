@@ -66,7 +66,7 @@ void sample_window(const DepthFrame& frame, const cv::Mat1b& labels, int layer, 
   }
 }
 
-// `box` widened about its centre to lround(ratio * height) columns when narrower (fit_min_width_ratio;
+// `box` widened about its centre to lround(ratio * height) columns when narrower (fit.min_width_ratio;
 // the caller clips it to the image); unchanged when ratio <= 0 or it is wide enough.
 cv::Rect at_least_wide(cv::Rect box, double ratio) {
   const int wanted = static_cast<int>(std::lround(ratio * box.height));
@@ -133,7 +133,7 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       const cv::Rect extent(object.fit_first, object.fit_top, object.fit_last - object.fit_first + 1,
                             bottom - object.fit_top + 1);
       candidate.extent_box = extent & image;
-      candidate.fitted_box = at_least_wide(extent, params.fit_min_width_ratio) & image;
+      candidate.fitted_box = at_least_wide(extent, params.fit.min_width_ratio) & image;
       const double cx = strict.x + strict.width / 2.0;
       const double cy = strict.y + strict.height / 2.0;
       const int window_width = std::max(1, static_cast<int>(std::lround(strict.width * params.window_scale)));

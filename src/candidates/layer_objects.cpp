@@ -12,7 +12,7 @@ LayerObjects layer_objects(const LayerView& layer, const CandidateParams& params
   const LayerShape shape(layer, params);
   std::vector<LayerObject> found = join_columns(shape);                     // the thesis's objects
   for (LayerObject& o : found) fit_object(shape, o, 0, shape.width() - 1);  // 1. fitted extent
-  if (params.join_pieces) found = join_pieces(shape, found);               // 2. joining pieces
+  if (params.join.pieces) found = join_pieces(shape, found);               // 2. joining pieces
   LayerObjects objects{{}, shape.passing()};
   int object = 0;
   for (LayerObject& o : found) {

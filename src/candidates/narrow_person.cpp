@@ -13,7 +13,7 @@ double passing_cm(const LayerShape& shape, const LayerObject& o) {
 
 bool clear_above(const LayerShape& shape, const LayerObject& o) {
   const LayerView& layer = shape.layer();
-  const int band = std::max(1, shape.px(shape.params().narrow_clear_above_cm));
+  const int band = std::max(1, shape.px(shape.params().narrow.clear_above_cm));
   int other = 0, total = 0;
   for (int y = o.top - band; y < o.top; ++y) {
     const std::uint8_t* label = y >= 0 ? layer.labels->ptr<std::uint8_t>(y) : nullptr;
@@ -25,13 +25,13 @@ bool clear_above(const LayerShape& shape, const LayerObject& o) {
 }
 
 bool narrow_person(const LayerShape& shape, const LayerObject& o) {
-  const CandidateParams& params = shape.params();
+  const NarrowPersonParams& narrow = shape.params().narrow;
   const LayerView& layer = shape.layer();
-  if (params.narrow_fitted_width_cm <= 0) return false;
-  if (shape.cm(o.fit_last - o.fit_first + 1) < params.narrow_fitted_width_cm) return false;
-  if (shape.cm(o.last - o.first + 1) < params.narrow_passing_width_cm) return false;
-  if (layer.depth_mm_mean >= params.narrow_layers_below_mm) return false;
-  if (layer.camera->height_cm(o.bottom - o.fit_top + 1, layer.depth_mm_mean) < params.narrow_min_height_cm) return false;
+  if (narrow.fitted_width_cm <= 0) return false;
+  if (shape.cm(o.fit_last - o.fit_first + 1) < narrow.fitted_width_cm) return false;
+  if (shape.cm(o.last - o.first + 1) < narrow.passing_width_cm) return false;
+  if (layer.depth_mm_mean >= narrow.layers_below_mm) return false;
+  if (layer.camera->height_cm(o.bottom - o.fit_top + 1, layer.depth_mm_mean) < narrow.min_height_cm) return false;
   return clear_above(shape, o);
 }
 

@@ -21,12 +21,13 @@ double profile_cm(const LayerShape& shape, const LayerObject& o, int c) {
 // the largest step between the mean heights of a person-wide band on each side.
 int cut_wide(const LayerShape& shape, const LayerObject& o, int min_piece) {
   const CandidateParams& params = shape.params();
+  const WideSplitParams& split = params.split;
   const int a = o.fit_first, b = o.fit_last;
   if (b - a + 1 < 2 * min_piece) return -1;
   const int lo = a + min_piece, hi = b - min_piece + 1;  // cut columns leaving both pieces wide enough
-  if (params.split_depth_jump_mm > 0) {
+  if (split.depth_jump_mm > 0) {
     int best = -1;
-    double best_jump = params.split_depth_jump_mm;
+    double best_jump = split.depth_jump_mm;
     double previous = shape.column_depth_mm(lo - 1);
     for (int c = lo; c <= hi; ++c) {
       const double depth = shape.column_depth_mm(c);
@@ -41,7 +42,7 @@ int cut_wide(const LayerShape& shape, const LayerObject& o, int min_piece) {
   std::vector<double> h(static_cast<std::size_t>(b - a + 1));
   for (int c = a; c <= b; ++c) h[static_cast<std::size_t>(c - a)] = profile_cm(shape, o, c);
   auto at = [&](int c) { return h[static_cast<std::size_t>(c - a)]; };
-  if (params.split_valley_cm > 0) {
+  if (split.valley_cm > 0) {
     std::vector<double> left(h.size()), right(h.size());
     for (std::size_t i = 0; i < h.size(); ++i) left[i] = std::max(h[i], i > 0 ? left[i - 1] : 0.0);
     for (std::size_t i = h.size(); i-- > 0;) right[i] = std::max(h[i], i + 1 < h.size() ? right[i + 1] : 0.0);
@@ -50,7 +51,7 @@ int cut_wide(const LayerShape& shape, const LayerObject& o, int min_piece) {
       const std::size_t i = static_cast<std::size_t>(c - a);
       deepest = std::max(deepest, std::min(left[i], right[i]) - h[i]);
     }
-    if (deepest >= params.split_valley_cm) {
+    if (deepest >= split.valley_cm) {
       // The middle of the columns within 2 cm of the deepest point of the valley.
       return middle_of(lo, hi, [&](int c) {
         const std::size_t i = static_cast<std::size_t>(c - a);
@@ -58,10 +59,10 @@ int cut_wide(const LayerShape& shape, const LayerObject& o, int min_piece) {
       });
     }
   }
-  if (params.split_step_cm > 0) {
+  if (split.step_cm > 0) {
     const int band = std::max(1, shape.px(params.min_part_width_cm));
     int best = -1;
-    double best_step = params.split_step_cm;
+    double best_step = split.step_cm;
     for (int c = lo; c <= hi; ++c) {
       double sum_left = 0, sum_right = 0;
       int n_left = 0, n_right = 0;

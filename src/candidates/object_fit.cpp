@@ -40,11 +40,12 @@ bool nearer_in_band(const LayerView& layer, int c, int row_lo, int row_hi, int n
 
 void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi) {
   const LayerView& layer = shape.layer();
-  const CandidateParams& params = shape.params();
+  const FitParams& fit = shape.params().fit;
+  const int column_gap = shape.params().column_gap;
   o.fit_first = o.first;
   o.fit_last = o.last;
   o.fit_top = o.top;
-  const int reach = shape.px(params.fit_reach_cm);
+  const int reach = shape.px(fit.reach_cm);
   if (reach <= 0) return;
   const int row_lo = std::max(0, o.top - reach);
   const int row_hi = std::min(layer.labels->rows - 1, o.top + 3 * (o.bottom - o.top) / 4);
@@ -67,18 +68,18 @@ void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi) {
       return b.count > 0 ? static_cast<double>(b.depth_sum) / b.count : 0.0;
     };
     // First the columns a walk that takes none needs (most objects have nothing attached), then kBandChunk more.
-    gather(1 + std::min(kBandChunk, std::max(1, params.column_gap + 1)));
-    // A piece continues the object: its mean depth is within fit_depth_step_mm of the last column taken.
+    gather(1 + std::min(kBandChunk, std::max(1, column_gap + 1)));
+    // A piece continues the object: its mean depth is within fit.depth_step_mm of the last column taken.
     double previous_depth = mean_depth(0);
     int edge = start, gap = 0, occluded = 0, top = o.fit_top;
     int previous_count = band[0].count;
-    const int occlusion_gap = shape.px(params.fit_occlusion_gap_cm);
+    const int occlusion_gap = shape.px(fit.occlusion_gap_cm);
     for (int step = 1; step < n; ++step) {
       if (step >= gathered) gather(step + kBandChunk);
       const int c = start + direction * step;
       const BandColumn& b = band[static_cast<std::size_t>(step)];
-      const bool continues = b.count >= 2 && (previous_depth <= 0 || params.fit_depth_step_mm <= 0 ||
-                                              std::abs(mean_depth(step) - previous_depth) <= params.fit_depth_step_mm);
+      const bool continues = b.count >= 2 && (previous_depth <= 0 || fit.depth_step_mm <= 0 ||
+                                              std::abs(mean_depth(step) - previous_depth) <= fit.depth_step_mm);
       if (continues) {
         edge = c;
         gap = 0;
@@ -88,7 +89,7 @@ void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi) {
         previous_count = b.count;
       } else if (occluded < occlusion_gap && nearer_in_band(layer, c, row_lo, row_hi, std::max(2, previous_count / 2))) {
         ++occluded;
-      } else if (++gap > params.column_gap) {
+      } else if (++gap > column_gap) {
         break;
       }
     }

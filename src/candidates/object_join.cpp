@@ -33,14 +33,14 @@ std::vector<LayerObject> join_pieces(const LayerShape& shape, const std::vector<
     if (!joined.empty()) {
       LayerObject& previous = joined.back();
       // Pieces each too narrow to be a candidate alone join only in near layers (farther they are the
-      // legs of furniture more often than a person's), with join_narrow_passing only when their passing
-      // columns are together at least narrow_passing_width_cm wide (legs, not a chair's slats).
+      // legs of furniture more often than a person's), with join.narrow_passing only when their passing
+      // columns are together at least narrow.passing_width_cm wide (legs, not a chair's slats).
       const bool narrow = !shape.wide_enough(previous) && !shape.wide_enough(o);
       const bool touch =
           o.fit_first <= previous.fit_last + 1 &&
-          (!narrow || (depth_mm_mean < params.join_narrow_layers_below_mm &&
-                       (!params.join_narrow_passing ||
-                        passing_cm(shape, previous) + passing_cm(shape, o) >= params.narrow_passing_width_cm)));
+          (!narrow || (depth_mm_mean < params.join.narrow_layers_below_mm &&
+                       (!params.join.narrow_passing ||
+                        passing_cm(shape, previous) + passing_cm(shape, o) >= params.narrow.passing_width_cm)));
       if (touch && shape.cm(o.fit_last - previous.fit_first + 1) <= params.max_person_width_cm) {
         const int fit_first = previous.fit_first, fit_top = std::min(previous.fit_top, o.fit_top);
         previous = shape.span(previous.first, o.last);

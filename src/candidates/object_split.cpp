@@ -20,7 +20,7 @@ void cut_into_pieces(const LayerShape& shape, const LayerObject& whole, std::vec
   int c = split_heads_enabled(shape) ? cut_between_heads(shape, whole, min_piece) : -1;
   const bool heads = c >= 0;
   if (by_heads != nullptr) *by_heads = heads;
-  if (c < 0 && split_wide_enabled(params) && shape.cm(whole.fit_last - whole.fit_first + 1) > params.max_person_width_cm) {
+  if (c < 0 && split_wide_enabled(params.split) && shape.cm(whole.fit_last - whole.fit_first + 1) > params.max_person_width_cm) {
     c = cut_wide(shape, whole, min_piece);
   }
   if (c < 0) return;
@@ -34,8 +34,8 @@ void cut_into_pieces(const LayerShape& shape, const LayerObject& whole, std::vec
     if (first < 0) continue;
     LayerObject piece = shape.span(first, last);
     // Between heads the columns around the cut may hold an arm either person holds out: with
-    // fit_across_head_cut each piece reaches over them up to the other piece's passing columns.
-    if (heads && params.fit_across_head_cut) {
+    // fit.across_head_cut each piece reaches over them up to the other piece's passing columns.
+    if (heads && params.fit.across_head_cut) {
       fit_object(shape, piece, whole.fit_first, whole.fit_last);
     } else {
       fit_object(shape, piece, lo, hi);
@@ -51,18 +51,18 @@ void cut_into_pieces(const LayerShape& shape, const LayerObject& whole, std::vec
 
 }  // namespace
 
-bool split_wide_enabled(const CandidateParams& params) {
-  return params.split_valley_cm > 0 || params.split_depth_jump_mm > 0 || params.split_step_cm > 0;
+bool split_wide_enabled(const WideSplitParams& split) {
+  return split.valley_cm > 0 || split.depth_jump_mm > 0 || split.step_cm > 0;
 }
 
 bool split_heads_enabled(const LayerShape& shape) {
-  const CandidateParams& params = shape.params();
-  return params.split_head_drop_cm > 0 && shape.layer().depth_mm_mean < params.split_head_layers_below_mm;
+  const HeadSplitParams& heads = shape.params().split_head;
+  return heads.drop_cm > 0 && shape.layer().depth_mm_mean < heads.layers_below_mm;
 }
 
 ObjectPieces object_pieces(const LayerShape& shape, const LayerObject& whole) {
   ObjectPieces found;
-  if (split_wide_enabled(shape.params()) || split_heads_enabled(shape)) {
+  if (split_wide_enabled(shape.params().split) || split_heads_enabled(shape)) {
     cut_into_pieces(shape, whole, found.pieces, 0, &found.by_heads);
   }
   return found;
@@ -71,7 +71,7 @@ ObjectPieces object_pieces(const LayerShape& shape, const LayerObject& whole) {
 void split_object(const LayerShape& shape, const LayerObject& whole, std::vector<LayerObject>& out) {
   const CandidateParams& params = shape.params();
   const ObjectPieces found = object_pieces(shape, whole);
-  if (found.pieces.empty() || (found.by_heads ? params.split_head_keep_whole : params.split_keep_whole)) {
+  if (found.pieces.empty() || (found.by_heads ? params.split_head.keep_whole : params.split.keep_whole)) {
     out.push_back(whole);
   }
   out.insert(out.end(), found.pieces.begin(), found.pieces.end());

@@ -66,6 +66,17 @@ cv::Mat1b Segmentation::mask(int label) const {
   return out;
 }
 
+std::vector<double> kmeans_seeds(const std::vector<double>& centres_mm) {
+  std::vector<double> centres;
+  for (double c : centres_mm) {
+    if (c > 0) centres.push_back(c);
+  }
+  std::sort(centres.begin(), centres.end());
+  centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
+  if (centres.size() > 254) centres.resize(254);  // labels are 8-bit; 0 is "no reading"
+  return centres;
+}
+
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
                            int max_iterations) {
   return kmeans_layers(depth_mm, depth_histogram(depth_mm), centres_mm, max_iterations);
@@ -75,13 +86,7 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const DepthHistogram& hist
                            const std::vector<double>& centres_mm, int max_iterations) {
   Segmentation result;
 
-  std::vector<double> centres;
-  for (double c : centres_mm) {
-    if (c > 0) centres.push_back(c);
-  }
-  std::sort(centres.begin(), centres.end());
-  centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
-  if (centres.size() > 254) centres.resize(254);  // labels are 8-bit; 0 is "no reading"
+  std::vector<double> centres = kmeans_seeds(centres_mm);
   result.seeds_mm = centres;
   if (centres.empty()) {
     result.labels = cv::Mat1b::zeros(depth_mm.size());

@@ -1,7 +1,8 @@
 #pragma once
 // The straightforward k-means over the depth histogram (as it was before the interval version in
 // src/segmentation/depth_layers.cpp): every iteration assigns every depth value to its nearest centre and
-// sums per cluster. Kept as the reference the tests compare kmeans_layers() with, bit for bit.
+// sums per cluster. Kept as the reference the tests compare kmeans_layers() with, bit for bit; it starts
+// from the library's kmeans_seeds().
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -28,13 +29,7 @@ inline Segmentation kmeans_layers_reference(const cv::Mat1w& depth_mm, const std
   Segmentation result;
   result.labels = cv::Mat1b::zeros(depth_mm.size());
 
-  std::vector<double> centres;
-  for (double c : centres_mm) {
-    if (c > 0) centres.push_back(c);
-  }
-  std::sort(centres.begin(), centres.end());
-  centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
-  if (centres.size() > 254) centres.resize(254);  // labels are 8-bit; 0 is "no reading"
+  std::vector<double> centres = kmeans_seeds(centres_mm);  // the seeds are the library's (tested apart)
   result.seeds_mm = centres;
   if (centres.empty()) return result;
 

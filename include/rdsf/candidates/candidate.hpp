@@ -13,7 +13,7 @@ struct Candidate {
   /// strict box's rows); inside the image. Labelling by overlap with true boxes uses it (labelling_box()):
   /// a candidate is a positive when the layer's pixels, which its crop shows, are mostly the person.
   cv::Rect extent_box;
-  /// The "fitted box": extent_box widened about its centre to CandidateParams::fit_min_width_ratio of its
+  /// The "fitted box": extent_box widened about its centre to CandidateParams::fit.min_width_ratio of its
   /// height when narrower (a person's limbs swung out of the layer), clipped to the image. What detections
   /// report by default (BoxKind::fitted); the strict box and window stay what the crop is cut from.
   cv::Rect fitted_box;
@@ -49,7 +49,7 @@ inline const cv::Rect& reported_box(const Candidate& candidate, BoxKind kind) {
 
 /// The box a candidate is labelled by (its overlap with true boxes): the strict box with BoxKind::strict,
 /// else its extent (Candidate::extent_box), not the fitted box's widening, so that what labels the
-/// training crops does not change with fit_min_width_ratio (docs/candidates.md).
+/// training crops does not change with fit.min_width_ratio (docs/candidates.md).
 inline const cv::Rect& labelling_box(const Candidate& candidate, BoxKind kind) {
   return kind == BoxKind::strict ? candidate.strict_box : candidate.extent_box;
 }

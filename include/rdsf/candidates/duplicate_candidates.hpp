@@ -1,6 +1,6 @@
 #pragma once
 // Duplicates among scored candidates: a whole object and a piece cut out of it (CandidateParams's
-// split_head_keep_whole, split_keep_whole) show the same pixels, so as detections they would count one
+// split_head.keep_whole, split.keep_whole) show the same pixels, so as detections they would count one
 // person twice (one detection, one false positive) or give the tracker two people where there is one.
 //
 // The rule, greedy by score (highest first, ties in candidate order): a candidate is a duplicate when a

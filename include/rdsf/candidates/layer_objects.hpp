@@ -4,26 +4,26 @@
 // when it fails at the layer's mean), then the departures that make every person an object of their own with a box
 // that fits (each one a parameter of CandidateParams that can be turned off):
 //   1. fitted extent: an object reaches out over the columns attached to it (the layer's pixels beside it,
-//      within its rows, such as arms, which are too short to pass threshold_height) - fit_reach_cm - also
-//      across something nearer standing before them (an arm behind a nearer person) - fit_occlusion_gap_cm;
+//      within its rows, such as arms, which are too short to pass threshold_height) - fit.reach_cm - also
+//      across something nearer standing before them (an arm behind a nearer person) - fit.occlusion_gap_cm;
 //   2. joining pieces: objects whose fitted extents touch and that together are no wider than a person
 //      are one object (a person whose torso columns fail the height test because the legs part) -
 //      join_pieces (pieces each narrower than min_width_cm: in layers nearer than
-//      join_narrow_layers_below_mm, and with join_narrow_passing when their passing columns alone are
-//      together at least narrow_passing_width_cm);
+//      join.narrow_layers_below_mm, and with join.narrow_passing when their passing columns alone are
+//      together at least narrow.passing_width_cm);
 //   3. splitting: an object of any width with two heads on top of its profile (the highest pixel per
 //      column) is cut between them at the lowest point (people overlapping in the image at one depth:
-//      split_head_drop_cm; the whole stays one too, split_head_keep_whole; each piece's fitted extent
-//      reaches across the cut to the other's passing columns, fit_across_head_cut); else an object wider than a
-//      person is cut where the layer's depth jumps between neighbouring columns (split_depth_jump_mm), at
-//      deep valleys of its column-height profile (split_valley_cm) or at steps (split_step_cm); the pieces
-//      become objects, and the whole stays one too when split_keep_whole is set;
+//      split_head.drop_cm; the whole stays one too, split_head.keep_whole; each piece's fitted extent
+//      reaches across the cut to the other's passing columns, fit.across_head_cut); else an object wider than a
+//      person is cut where the layer's depth jumps between neighbouring columns (split.depth_jump_mm), at
+//      deep valleys of its column-height profile (split.valley_cm) or at steps (split.step_cm); the pieces
+//      become objects, and the whole stays one too when split.keep_whole is set;
 //   4. narrow people: an object narrower than min_width_cm over its passing columns stays one when its
-//      fitted extent is at least narrow_fitted_width_cm wide, its passing columns at least
-//      narrow_passing_width_cm, its layer nearer than narrow_layers_below_mm, its height (fitted top to
-//      lowest row) at least narrow_min_height_cm, and at least half of the narrow_clear_above_cm band above
+//      fitted extent is at least narrow.fitted_width_cm wide, its passing columns at least
+//      narrow.passing_width_cm, its layer nearer than narrow.layers_below_mm, its height (fitted top to
+//      lowest row) at least narrow.min_height_cm, and at least half of the narrow.clear_above_cm band above
 //      its top over its passing columns holds other layers' readings (no missing readings, no border: the
-//      background above a head) - narrow_fitted_width_cm.
+//      background above a head) - narrow.fitted_width_cm.
 // Objects wider than max_object_width_cm (walls) and, unless they touch the left or right border, objects
 // whose fitted extent is narrower than min_fitted_width_cm (posts, furniture legs) are dropped.
 // Each step is a unit of its own, applied in this order: the thesis's objects (object_join.hpp), 1

@@ -1,5 +1,5 @@
 #pragma once
-// Step 1 of layer_objects() (layer_objects.hpp, fit_reach_cm): the fitted extent of an object.
+// Step 1 of layer_objects() (layer_objects.hpp, fit.reach_cm): the fitted extent of an object.
 #include "rdsf/candidates/layer_shape.hpp"
 
 namespace rdsf {
@@ -7,12 +7,12 @@ namespace rdsf {
 /// Sets o.fit_first, o.fit_last, o.fit_top. The fitted extent reaches over the columns beside the object
 /// that hold its pieces (an arm, a hand): a column continues the object when the band - the layer's
 /// pixels in rows max(0, top - reach) .. min(rows - 1, top + 3 (bottom - top) / 4), every other one -
-/// holds at least two of them whose mean depth is within fit_depth_step_mm of the column last taken.
-/// Gaps of up to column_gap columns are allowed, at most reach = px(fit_reach_cm) columns each side,
+/// holds at least two of them whose mean depth is within fit.depth_step_mm of the column last taken.
+/// Gaps of up to column_gap columns are allowed, at most reach = px(fit.reach_cm) columns each side,
 /// never into a passing column nor beyond lo..hi. The fitted top rises to the highest band pixel taken.
 /// A column that does not continue but shows something nearer (nearer_in_band() with at least
 /// max(2, count of the column last taken / 2)) does not count towards the gap, for up to
-/// px(fit_occlusion_gap_cm) such columns in a row. Invariants: fit_first <= first, fit_last >= last,
+/// px(fit.occlusion_gap_cm) such columns in a row. Invariants: fit_first <= first, fit_last >= last,
 /// fit_top <= top; reach <= 0 leaves first..last, top.
 void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi);
 

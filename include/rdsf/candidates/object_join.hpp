@@ -18,8 +18,8 @@ std::vector<LayerObject> join_columns(const LayerShape& shape);
 /// already be a join) when their fitted extents touch (o.fit_first <= previous.fit_last + 1) and together
 /// they are at most max_person_width_cm wide (cm(o.fit_last - previous.fit_first + 1)). When both are
 /// narrower than min_width_cm (!wide_enough) they join only in a layer nearer than
-/// join_narrow_layers_below_mm and, with join_narrow_passing, when passing_cm(previous) + passing_cm(o) >=
-/// narrow_passing_width_cm (narrow_person.hpp). The joined object is span(previous.first, o.last) with the
+/// join.narrow_layers_below_mm and, with join.narrow_passing, when passing_cm(previous) + passing_cm(o) >=
+/// narrow.passing_width_cm (narrow_person.hpp). The joined object is span(previous.first, o.last) with the
 /// fitted extent previous.fit_first..o.fit_last and fit_top the highest (smallest) of both fit_tops and its
 /// top. Objects that join nothing are returned unchanged; the result is left to right.
 std::vector<LayerObject> join_pieces(const LayerShape& shape, const std::vector<LayerObject>& objects);

@@ -1,5 +1,5 @@
 #pragma once
-// Step 3 of layer_objects() (layer_objects.hpp): an object is cut between two heads (split_head_drop_cm,
+// Step 3 of layer_objects() (layer_objects.hpp): an object is cut between two heads (split_head.drop_cm,
 // object_heads.hpp) or, wider than a person, where cut_wide() says (object_cut.hpp), and each piece again.
 #include <vector>
 
@@ -7,10 +7,10 @@
 
 namespace rdsf {
 
-/// split_depth_jump_mm, split_valley_cm or split_step_cm > 0: objects wider than a person may be cut.
-bool split_wide_enabled(const CandidateParams& params);
+/// depth_jump_mm, valley_cm or step_cm > 0: objects wider than a person may be cut.
+bool split_wide_enabled(const WideSplitParams& split);
 
-/// split_head_drop_cm > 0 and the layer's depth_mm_mean < split_head_layers_below_mm: objects of this layer
+/// split_head.drop_cm > 0 and the layer's depth_mm_mean < split_head.layers_below_mm: objects of this layer
 /// may be cut between heads.
 bool split_heads_enabled(const LayerShape& shape);
 
@@ -25,13 +25,13 @@ struct ObjectPieces {
 /// cm(whole.fit_last - whole.fit_first + 1) > max_person_width_cm, cut_wide(); none (-1): not cut. Each
 /// side, fit_first..c - 1 and c..fit_last, becomes span() of its passing columns (none: no piece), fitted
 /// by fit_object() within that side - within the whole's fitted extent after a cut between heads with
-/// fit_across_head_cut - with part = true and object = whole.object; a piece narrower than min_width_cm
+/// fit.across_head_cut - with part = true and object = whole.object; a piece narrower than min_width_cm
 /// (!wide_enough) is dropped, the others are cut again (at most 5 cuts deep) and stand in the result by
 /// their own pieces, or themselves when not cut.
 ObjectPieces object_pieces(const LayerShape& shape, const LayerObject& whole);
 
 /// Appends what `whole` becomes among the layer's objects: itself when object_pieces() finds none, else
-/// its pieces, after itself when split_head_keep_whole (first cut between heads) or split_keep_whole
+/// its pieces, after itself when split_head.keep_whole (first cut between heads) or split.keep_whole
 /// (otherwise) is set.
 void split_object(const LayerShape& shape, const LayerObject& whole, std::vector<LayerObject>& out);
 

@@ -161,22 +161,36 @@ Parameter<Params> computed_parameter(std::string name, std::string help, std::fu
   parameter_detail::refuse(name, problem);
 }
 
+/// A row of the struct held as `member`, lifted into the struct that holds it.
+template <typename Outer, typename Inner>
+Parameter<Outer> nested(const Parameter<Inner>& row, Inner Outer::*member) {
+  Parameter<Outer> lifted;
+  lifted.name = row.name;
+  lifted.help = row.help;
+  lifted.thesis = row.thesis;
+  lifted.is_switch = row.is_switch;
+  if (row.record) lifted.record = [record = row.record, member](const Outer& o) { return record(o.*member); };
+  lifted.get = [get = row.get, member](const Outer& o) { return get(o.*member); };
+  lifted.set = [set = row.set, member](Outer& o, const ParameterValue& v) { set(o.*member, v); };
+  return lifted;
+}
+
 /// The rows of `inner`'s table lifted into the struct that holds it as `member`.
 template <typename Outer, typename Inner>
 ParameterTable<Outer> nested(const ParameterTable<Inner>& inner, Inner Outer::*member) {
   ParameterTable<Outer> out;
-  for (const Parameter<Inner>& row : inner) {
-    Parameter<Outer> lifted;
-    lifted.name = row.name;
-    lifted.help = row.help;
-    lifted.thesis = row.thesis;
-    lifted.is_switch = row.is_switch;
-    if (row.record) lifted.record = [record = row.record, member](const Outer& o) { return record(o.*member); };
-    lifted.get = [get = row.get, member](const Outer& o) { return get(o.*member); };
-    lifted.set = [set = row.set, member](Outer& o, const ParameterValue& v) { set(o.*member, v); };
-    out.push_back(std::move(lifted));
-  }
+  for (const Parameter<Inner>& row : inner) out.push_back(nested(row, member));
   return out;
+}
+
+/// parameter() bound to `member` of the struct held as `group` (a group of a struct's members, such as
+/// CandidateParams::narrow): the row is the group's, lifted by nested().
+template <typename Params, typename Group, typename T>
+Parameter<Params> parameter(std::string name, Group Params::*group, T Group::*member, std::string help,
+                            Range range = {}, std::optional<T> thesis = std::nullopt,
+                            std::function<std::string(const T&)> check = {}) {
+  return nested(parameter(std::move(name), member, std::move(help), range, std::move(thesis), std::move(check)),
+                group);
 }
 
 /// `table`'s rows followed by `more`'s.

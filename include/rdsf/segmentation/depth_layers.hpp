@@ -41,6 +41,10 @@ struct Segmentation {
   cv::Mat1b mask(int label) const;
 };
 
+/// The centres k-means starts from: the positive ones of `centres_mm`, ascending, each once, at most 254
+/// of them (the nearest: labels are 8-bit and 0 is "no reading"). Segmentation::seeds_mm.
+std::vector<double> kmeans_seeds(const std::vector<double>& centres_mm);
+
 /// Runs k-means over the valid depths of `depth_mm` from the given centres (mm, any order, zeros ignored).
 /// At most 254 centres are used (the nearest ones).
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
