@@ -47,6 +47,9 @@ cameras=(
   "d435:848x480:87x58:RealSense D435 (87 x 58 degrees):1"
   "d435-hd:1280x720:87x58:RealSense D435 HD (87 x 58 degrees):"
   "orbbec:640x400:91x66:Orbbec Gemini 2 (91 x 66 degrees):1"
+  # the Kinect v1's pixels (fx = fy = 525) on a frame extended down or to the sides: the field of view alone
+  "taller:640x576:62.73x57.50:Kinect v1 pixels, frame extended to 57.5 degrees high:"
+  "wider:880x480:79.94x49.13:Kinect v1 pixels, frame extended to 79.9 degrees wide:"
 )
 out=out/resolution
 test_frames=960
@@ -185,6 +188,7 @@ camera_tables shipped "$model"
 
 if ((lever)); then
   step "lever: render the training recordings through the training cameras"
+  rendered_new=0  # only new training recordings make the sample sets and models again
   mix=()
   for c in "${cameras[@]}"; do
     IFS=: read -r name size fov _ in_mix <<<"$c"
