@@ -35,7 +35,7 @@ Usage: scripts/resolution-report.sh [--out DIR] [--test-frames N] [--model M] [-
   --seeds N        the lever's final models trained with training seeds 1..N (default 3): their spread shows
                    how much of a difference between the two models one training run can make
 Cameras (name, size, field of view; the training mix of the lever marked *):
-$(for c in "${cameras[@]}"; do IFS=: read -r n s f t m <<<"$c"; printf '  %-12s %-9s %-9s %1s %s\n' "$n" "$s" "$f" "${m:+*}" "$t"; done)
+$(for c in "${cameras[@]}"; do IFS=: read -r n s f t m <<<"$c"; printf '  %-12s %-9s %-12s %1s %s\n' "$n" "$s" "$f" "${m:+*}" "$t"; done)
 USAGE
 }
 # name:size:fov (rdsf-synth --fov; kinect = the Kinect v1's fx = fy = 525 px at 640x480, scaled):title:in the
