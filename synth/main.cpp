@@ -21,6 +21,10 @@ int main(int argc, char** argv) {
         ("seed", po::value(&o.params.seed)->default_value(o.params.seed), "random seed (same seed, same bytes)")
         ("empty", po::bool_switch(&o.params.empty), "render the same rooms without people (negatives)")
         ("size", po::value(&o.size)->default_value(o.size), "image size WIDTHxHEIGHT, multiples of 8")
+        ("fov", po::value(&o.fov)->default_value(o.fov),
+         "field of view HORIZONTALxVERTICAL degrees (e.g. 70.6x60 Kinect v2 at 512x424, 87x58 RealSense D435; "
+         "20..150), centred pinhole, written to camera.yml; kinect: the Kinect v1's fx = fy = 525 px at "
+         "640x480 scaled to --size (no camera.yml)")
         ("rgb", po::bool_switch(&o.params.rgb), "also write the registered colour image NNNNNN.rgb.png")
         ("clip-frames", po::value(&o.params.clip_frames)->default_value(o.params.clip_frames),
          "frames per clip: each clip has a new room, camera pose and people")

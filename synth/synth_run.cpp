@@ -15,6 +15,7 @@ namespace rdsf {
 int run_synth(SynthOptions o) {
   synth::parse_people_range(o.people, o.params.people_min, o.params.people_max);
   synth::parse_image_size(o.size, o.params.width_px, o.params.height_px);
+  synth::parse_field_of_view(o.fov, o.params.fov_h_deg, o.params.fov_v_deg);
   synth::SynthParams& p = o.params;
   synth::parse_real_range("--camera-height", o.camera_height, p.room.camera_height_min_m, p.room.camera_height_max_m);
   synth::parse_real_range("--camera-pitch", o.camera_pitch, p.room.pitch_min_deg, p.room.pitch_max_deg);

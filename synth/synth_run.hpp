@@ -10,6 +10,7 @@ struct SynthOptions {
   std::string out_dir;
   std::string people = "0..3";  ///< MIN..MAX
   std::string size = "640x480";
+  std::string fov = "kinect";  ///< --fov: HxV degrees, or kinect (the Kinect v1's model scaled to --size)
   // variety (issue 13), as given on the command line; parsed into params by run_synth
   std::string camera_height = "0.5..1.6";
   std::string camera_pitch = "-3..6";

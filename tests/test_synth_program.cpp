@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -68,6 +70,40 @@ TEST(SynthProgram, WritesAFrameSourceWithBoxesAndItsRecipe) {
   EXPECT_DOUBLE_EQ(frame.camera.fx_px, 262.5);
 }
 
+TEST(SynthProgram, FieldOfViewGivesACentredPinholeInCameraYmlAndTheSameScenes) {
+  TempDir dir("rdsf-synth");
+  const std::string common = " --frames 4 --clip-frames 2 --people 2..3 --seed 5";
+  ASSERT_EQ(run(synth("--out " + quote(dir / "k") + common + " --size 320x240")).exit_code, 0);
+  const auto r = run(synth("--out " + quote(dir / "d") + common + " --size 424x240 --fov 87x58"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "k/camera.yml")) << "the Kinect v1's model needs no camera.yml";
+  ASSERT_TRUE(fs::exists(dir / "d/camera.yml"));
+  auto source = rdsf::open_frame_source(dir / "d");
+  rdsf::DepthFrame frame;
+  ASSERT_TRUE(source->next(frame));
+  EXPECT_EQ(frame.depth_mm.cols, 424);
+  const double pi = 3.14159265358979323846;
+  EXPECT_NEAR(frame.camera.fx_px, 212.0 / std::tan(43.5 * pi / 180.0), 1e-9);  // 223.40 px
+  EXPECT_NEAR(frame.camera.fy_px, 120.0 / std::tan(29.0 * pi / 180.0), 1e-9);  // 216.49 px
+  EXPECT_DOUBLE_EQ(frame.camera.cx_px, 211.5);
+  EXPECT_DOUBLE_EQ(frame.camera.cy_px, 119.5);
+  // the same rooms and people, seen wider: every track of the Kinect v1's view is in the wider one
+  const auto tracks = [&](const std::string& set) {
+    std::set<std::string> ids;
+    std::istringstream rows(slurp(dir / (set + "/boxes.csv")));
+    std::string row;
+    std::getline(rows, row);
+    while (std::getline(rows, row)) ids.insert(row.substr(row.rfind(',') + 1));
+    return ids;
+  };
+  const std::set<std::string> kinect = tracks("k"), wide = tracks("d");
+  EXPECT_FALSE(kinect.empty());
+  for (const std::string& id : kinect) EXPECT_EQ(wide.count(id), 1U) << "track " << id;
+  // a re-render with --force and without --fov takes the old camera.yml away
+  ASSERT_EQ(run(synth("--out " + quote(dir / "d") + common + " --size 424x240 --force")).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir / "d/camera.yml"));
+}
+
 TEST(SynthProgram, SameSeedSameBytesOtherSeedOtherBytes) {
   TempDir dir("rdsf-synth");
   const std::string args = " --frames 4 --people 1..2 --size 320x240 --rgb --seed ";
@@ -93,7 +129,8 @@ TEST(SynthProgram, ImpossibleArgumentsGiveOneLineAndTouchNothing) {
         "--camera-pitch 6..-3", "--camera-roll 45", "--camera-yaw -5", "--moving-camera 1.5", "--camera-speed 3",
         "--clutter 50", "--clutter 2.5", "--corridors 0.7 --open-plan 0.7", "--eight-bit -0.1",
         "--eight-bit-step 0..10", "--xtion 2", "--children 1.1", "--sitting -1", "--groups 1.2", "--outfits yes",
-        "--poses 0", "--bodies x", "--room-kinds none", "--coherent-holes 9", "--coherent-holes -1"}) {
+        "--poses 0", "--bodies x", "--room-kinds none", "--coherent-holes 9", "--coherent-holes -1",
+        "--fov 87", "--fov 10x58", "--fov 87x160", "--fov wide"}) {
     const auto r = run(synth("--out " + quote(dir / "x") + " " + bad));
     EXPECT_NE(r.exit_code, 0) << bad;
     EXPECT_EQ(count_lines(r.err), 1) << bad << ": " << r.err;

@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/synth/angle.hpp"
 
 namespace rdsf::synth {
 namespace {
@@ -28,6 +29,13 @@ bool parse_real(const std::string& text, double& value) {
     return false;
   }
   return used == text.size() && std::isfinite(value);
+}
+
+/// "AxB" -> (A, B), each read by `parse`; false for anything else.
+template <typename T, typename Parse>
+bool parse_pair(const std::string& text, T& a, T& b, Parse parse) {
+  const std::size_t x = text.find('x');
+  return x != std::string::npos && parse(text.substr(0, x), a) && parse(text.substr(x + 1), b);
 }
 
 std::string number(double value) {
@@ -112,10 +120,31 @@ void parse_people_range(const std::string& text, int& people_min, int& people_ma
   people_max = high;
 }
 
+void parse_field_of_view(const std::string& text, double& fov_h_deg, double& fov_v_deg) {
+  if (text == "kinect") {
+    fov_h_deg = fov_v_deg = 0;
+    return;
+  }
+  if (!parse_pair(text, fov_h_deg, fov_v_deg, parse_real)) {
+    fail("--fov " + text, "expected HORIZONTALxVERTICAL in degrees, e.g. 87x58, or kinect");
+  }
+}
+
+CameraModel SynthParams::camera() const {
+  if (fov_h_deg <= 0 && fov_v_deg <= 0) return CameraModel::kinect_v1().scaled_to(width_px, height_px);
+  CameraModel model;
+  model.width_px = width_px;
+  model.height_px = height_px;
+  model.fx_px = 0.5 * width_px / std::tan(0.5 * fov_h_deg * pi / 180.0);
+  model.fy_px = 0.5 * height_px / std::tan(0.5 * fov_v_deg * pi / 180.0);
+  model.cx_px = 0.5 * (width_px - 1);
+  model.cy_px = 0.5 * (height_px - 1);
+  return model;
+}
+
 void parse_image_size(const std::string& text, int& width_px, int& height_px) {
-  const std::size_t x = text.find('x');
   int w = 0, h = 0;
-  if (x == std::string::npos || !parse_int(text.substr(0, x), w) || !parse_int(text.substr(x + 1), h)) {
+  if (!parse_pair(text, w, h, parse_int)) {
     fail("--size " + text, "expected WIDTHxHEIGHT in pixels, e.g. 640x480");
   }
   width_px = w;
@@ -133,6 +162,11 @@ void SynthParams::validate() const {
   if (width_px % 8 != 0 || height_px % 8 != 0) fail(size, "width and height must be multiples of 8");
   if (width_px < 64 || height_px < 48 || width_px > 1920 || height_px > 1440) {
     fail(size, "must be between 64x48 and 1920x1440");
+  }
+  if (fov_h_deg != 0 || fov_v_deg != 0) {
+    if (!(fov_h_deg >= 20 && fov_h_deg <= 150 && fov_v_deg >= 20 && fov_v_deg <= 150)) {
+      fail("--fov " + number(fov_h_deg) + "x" + number(fov_v_deg), "each angle must lie in 20..150 degrees");
+    }
   }
   if (clip_frames < 1) fail("--clip-frames " + std::to_string(clip_frames), "must be at least 1");
   need_range("--camera-height", room.camera_height_min_m, room.camera_height_max_m, 0.2, 2.5, "m");

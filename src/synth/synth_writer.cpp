@@ -9,6 +9,7 @@
 
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/frame/camera_file.hpp"
 
 namespace rdsf::synth {
 namespace fs = std::filesystem;
@@ -40,7 +41,8 @@ void prepare_output_folder(const std::string& dir, bool force) {
   int foreign_frames = 0;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, ours) || name == "boxes.csv" || name == "synth.yml") {
+    if (std::regex_match(name, ours) || name == "boxes.csv" || name == "synth.yml" ||
+        name == CameraFile::kFileName) {
       our_files.push_back(entry.path());
     } else if (ends_with(name, ".depth.png") || ends_with(name, ".rgb.png")) {
       ++foreign_frames;
@@ -55,7 +57,7 @@ void prepare_output_folder(const std::string& dir, bool force) {
     fail(dir,
          "holds " + std::to_string(foreign_frames) +
              " depth/colour images not named like rdsf-synth output; only NNNNNN.depth.png, NNNNNN.rgb.png, "
-             "boxes.csv and synth.yml are ever replaced: empty the folder yourself");
+             "boxes.csv, synth.yml and camera.yml are ever replaced: empty the folder yourself");
   }
   for (const fs::path& path : our_files) {
     fs::remove(path, ec);
@@ -143,6 +145,11 @@ std::string SynthWriter::describe(const SynthParams& p, const std::string& comma
 }
 
 void SynthWriter::commit(const std::string& command_line) {
+  if (params_.fov_h_deg > 0) {  // a camera other than the scaled Kinect v1: readers take it from camera.yml
+    AtomicTextFile camera((fs::path(dir_) / CameraFile::kFileName).string(), force_);
+    camera.stream() << camera_file_text(CameraFile{params_.camera(), 1.0});
+    camera.commit();
+  }
   AtomicTextFile info((fs::path(dir_) / "synth.yml").string(), force_);
   info.stream() << describe(params_, command_line);
   info.commit();

@@ -24,9 +24,16 @@ struct SynthParams {
   RoomParams room;
   PeopleParams people;
   KinectSensorParams sensor;
+  /// Field of view of the depth image, degrees across the width and the height (--fov); both 0: the
+  /// Kinect v1's intrinsics (fx = fy = 525 px at 640x480, 62.7 x 49.1 degrees) scaled to the image size.
+  /// Only the camera changes: rooms, poses, people and sensor profiles are drawn the same (same seed).
+  double fov_h_deg = 0;
+  double fov_v_deg = 0;
 
-  /// Kinect v1 intrinsics scaled to the image size.
-  CameraModel camera() const { return CameraModel::kinect_v1().scaled_to(width_px, height_px); }
+  /// The depth image's pinhole model. With a field of view: fx = (width_px / 2) / tan(fov_h_deg / 2),
+  /// fy = (height_px / 2) / tan(fov_v_deg / 2), principal point at the centre ((width_px - 1) / 2,
+  /// (height_px - 1) / 2); else the Kinect v1's intrinsics scaled to the image size.
+  CameraModel camera() const;
   /// Throws Error (one line naming the option) for impossible values.
   void validate() const;
   /// Turns off everything issue 13 added (the generator of before: camera 0.7-1.2 m without roll, turn or
@@ -42,6 +49,9 @@ bool parse_on_off(const std::string& option, const std::string& text);
 
 /// "1..3" -> (1, 3); "2" -> (2, 2). Throws Error naming --people for anything else or MIN > MAX.
 void parse_people_range(const std::string& text, int& people_min, int& people_max);
+/// "87x58" -> (87, 58) degrees; "kinect" -> (0, 0), the Kinect v1's. Throws Error naming --fov for
+/// anything else (the range, 20..150 degrees, is checked by SynthParams::validate).
+void parse_field_of_view(const std::string& text, double& fov_h_deg, double& fov_v_deg);
 /// "640x480" -> (640, 480). Throws Error naming --size for a bad form or a size not a multiple of 8.
 void parse_image_size(const std::string& text, int& width_px, int& height_px);
 

@@ -4,6 +4,8 @@
 //   DIR/NNNNNN.rgb.png    registered colour (with rgb)
 //   DIR/boxes.csv         frame,person,x,y,w,h,visible_fraction,track - one row per visible person
 //   DIR/synth.yml         how the set was made: seed, options, camera, sensor model
+//   DIR/camera.yml        the camera model (rdsf/frame/camera_file.hpp), only with a field of view (--fov);
+//                         without it readers scale the Kinect v1's model to the size, as the renderer does
 // Every file is written under a temporary name and renamed into place; boxes.csv and synth.yml appear
 // only when the whole set is written. A folder that already holds frames is refused unless `force`.
 #include <memory>
@@ -16,7 +18,7 @@ namespace rdsf::synth {
 
 /// Checks that `dir` can take a new set: creates it when missing; throws Error when it already holds
 /// frames, boxes.csv or synth.yml and `force` is false. With `force`, removes the files of an earlier set
-/// (NNNNNN.depth.png, NNNNNN.rgb.png, boxes.csv, synth.yml) and throws when other depth images remain.
+/// (NNNNNN.depth.png, NNNNNN.rgb.png, boxes.csv, synth.yml, camera.yml) and throws when other depth images remain.
 void prepare_output_folder(const std::string& dir, bool force);
 
 class SynthWriter {
@@ -24,7 +26,7 @@ class SynthWriter {
   /// Call prepare_output_folder first.
   SynthWriter(std::string dir, const SynthParams& params, bool force);
   void write(const SynthFrame& frame);
-  /// Writes synth.yml and puts boxes.csv in place.
+  /// Writes camera.yml (with a field of view) and synth.yml and puts boxes.csv in place.
   void commit(const std::string& command_line);
 
   /// The text of synth.yml for `params`.
