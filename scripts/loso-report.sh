@@ -25,7 +25,8 @@ Usage: scripts/loso-report.sh [--out DIR] [--real DIR] [--model M]
                models/L4-mirror) and regularisation sweep (sweep/models) are evaluated when present; the
                runs and the table go to DIR/loso (TABLE.md)
   --real DIR   real frames with boxes.csv (default ../shared/realdata/people)
-  --model M    the model evaluated with each candidate option (default people/v2, from models/)
+  --model M    the model evaluated with each candidate option: NAME/vN in models/ or a model file
+               (default people/v2)
 Needs rdsf-detect and rdsf-synth built (cmake --build build --target rdsf-detect rdsf-synth; another build
 folder with RDSF_BUILD_DIR); trains nothing.
 USAGE
@@ -76,7 +77,10 @@ evaluate() {
   (($#)) && shift && opts=("$@")
   # A run is reused when the same binary, model files and options made it (its .command).
   local m stamp files=("$detect")
-  for m in "${args[@]}"; do [ "$m" = --model ] || files+=("$models_dir/${m%.yml}.yml"); done
+  for m in "${args[@]}"; do
+    [ "$m" = --model ] && continue
+    if [ -f "$m" ]; then files+=("$m"); else files+=("$models_dir/${m%.yml}.yml"); fi
+  done
   stamp="$(cat "${files[@]}" | md5sum | cut -c1-12) ${args[*]} ${opts[*]}"
   for set in $sets_; do
     [ -f "$dir/$set/summary.md" ] && [ "$(cat "$dir/$set/.command" 2>/dev/null)" = "$stamp" ] && continue
@@ -230,6 +234,7 @@ cells() {  # summary.md -> "recall | TAR 0.1 (ci) | TAR 0.5 (ci) | AUC"
   echo "| --- | --- | --- | --- | --- |"
 } > "$table"
 declare -A flags_a flags_b
+lever_notes=()
 for s in real-lab real-home; do
   fa="" fb=""
   # option:config of the other value:the option's default:the other value:which value must gain (the
@@ -252,10 +257,18 @@ for s in real-lab real-home; do
   if ((have_levers)); then
     res=$(mirror_choice "$s"); read -r a b <<<"$res"
     echo "| $(title "$s") | mirrored positives (lever size) | $a | $b | mirror |" >> "$table"
+    for w in a b; do
+      c=$a; [ "$w" = b ] && c=$b
+      [ "$c" = mirror ] || lever_notes+=("$(title "$s"), ($w): mirroring off without it; $model was trained with it and not retrained: not leave-one-source-out for mirroring")
+    done
   fi
   if ((have_sweep)); then
     res=$(sweep_choice "$s"); read -r a b <<<"$res"
     echo "| $(title "$s") | regularisation (sweep) | $a | $b | base |" >> "$table"
+    for w in a b; do
+      c=$a; [ "$w" = b ] && c=$b
+      [ "$c" = base ] || lever_notes+=("$(title "$s"), ($w): regularisation $c without it; $model was not retrained with it: not leave-one-source-out for the regularisation")
+    done
   fi
   flags_a[$s]=$fa flags_b[$s]=$fb
 done
@@ -288,6 +301,8 @@ if [ -n "$f" ]; then
   evaluate "$loso/options/$name" synthetic models --model "$model" -- "${opts[@]}"
 fi
 echo "| 16 synthetic rooms | ${f:-$defaults_text} | no: (a)'s own tuning set | $(cells "$(summary "$name" synthetic)") |" >> "$table"
+if ((${#lever_notes[@]})); then echo >> "$table"; fi
+for n in "${lever_notes[@]}"; do echo "Note: $n." >> "$table"; done
 {
   echo
   echo "What each value gives (the evidence of the choices): 16 rooms: TAR at FPPF <= 0.1 / best MOTA / people with a"
