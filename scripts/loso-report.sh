@@ -13,7 +13,7 @@
 #      sweep's models (scripts/regularisation-sweep.sh), evaluated on each source
 #   4. the table: per source, the choices made without it and its figures (candidate recall, TAR at
 #      FPPF <= 0.1 and <= 0.5 with their 95 % intervals over the people, candidate AUC) under today's
-#      defaults and under the choices made without it; written to --out/loso/TABLE.md and printed
+#      defaults and under the choices made without it; written to --out/loso/MODEL/TABLE.md and printed
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,7 +23,7 @@ Usage: scripts/loso-report.sh [--out DIR] [--real DIR] [--model M]
   --out DIR    a quality report's output folder (default out/quality): its held-out sequence
                data/test-960 is reused (rendered there when absent), its lever models (models/L3-trees,
                models/L4-mirror) and regularisation sweep (sweep/models) are evaluated when present; the
-               runs and the table go to DIR/loso (TABLE.md)
+               runs and the table go to DIR/loso/MODEL (MODEL: --model with '/' as '-', e.g. people-v2)
   --real DIR   real frames with boxes.csv (default ../shared/realdata/people)
   --model M    the model evaluated with each candidate option: NAME/vN in models/ or a model file
                (default people/v2)
@@ -49,7 +49,8 @@ done
 [ -f "$real/boxes.csv" ] || { echo "loso-report: $real/boxes.csv not found (--real DIR names the real frames)" >&2; exit 1; }
 started=$(date +%s)
 step() { printf '== %s (%ds)\n' "$1" "$(( $(date +%s) - started ))" >&2; }
-loso=$out/loso logs=$out/loso/logs test=test-960
+tag=$(echo "${model%.yml}" | sed 's|^\./||; s|/|-|g')
+loso=$out/loso/$tag logs=$out/loso/$tag/logs test=test-960
 mkdir -p "$logs"
 
 step "the held-out synthetic sequence ($out/data/$test)"
