@@ -64,6 +64,10 @@ else
 fi
 source scripts/real-sources.sh
 real_source_sets "$real" "$out" >/dev/null
+for s in lab home; do
+  [ -s "$out/real-sources/real-$s/frames.txt" ] ||
+    { echo "loso-report: $real has no ${s}_* frames: leaving one source out needs both sources" >&2; exit 1; }
+done
 sets=(synthetic real-lab real-home)
 source_of() { case "$1" in synthetic) echo "$out/data/$test" ;; *) echo "$out/real-sources/$1/frames.txt" ;; esac; }
 truth_of() { case "$1" in synthetic) echo "$out/data/$test/boxes.csv" ;; *) echo "$out/real-sources/$1/boxes.csv" ;; esac; }
@@ -236,6 +240,17 @@ cells() {  # summary.md -> "recall | TAR 0.1 (ci) | TAR 0.5 (ci) | AUC"
 } > "$table"
 declare -A flags_a flags_b
 lever_notes=()
+# lever_row HELD-OUT CHOICE DEFAULT "A B": one row of the choices table; a training choice made without the
+# source that is not the default gets a note (the model was not retrained with it).
+lever_row() {
+  local s=$1 choice=$2 dflt=$3 a b w c
+  read -r a b <<<"$4"
+  echo "| $(title "$s") | $choice | $a | $b | $dflt |" >> "$table"
+  for w in a b; do
+    c=$a; [ "$w" = b ] && c=$b
+    [ "$c" = "$dflt" ] || lever_notes+=("$(title "$s"), ($w): $choice $c without it; $model was trained with $dflt and not retrained: not leave-one-source-out for this choice")
+  done
+}
 for s in real-lab real-home; do
   fa="" fb=""
   # option:config of the other value:the option's default:the other value:which value must gain (the
@@ -256,20 +271,10 @@ for s in real-lab real-home; do
   [ "$a" = 0.3 ] || fa+=" --fit-min-width-ratio $a"
   [ "$b" = 0.3 ] || fb+=" --fit-min-width-ratio $b"
   if ((have_levers)); then
-    res=$(mirror_choice "$s"); read -r a b <<<"$res"
-    echo "| $(title "$s") | mirrored positives (lever size) | $a | $b | mirror |" >> "$table"
-    for w in a b; do
-      c=$a; [ "$w" = b ] && c=$b
-      [ "$c" = mirror ] || lever_notes+=("$(title "$s"), ($w): mirroring off without it; $model was trained with it and not retrained: not leave-one-source-out for mirroring")
-    done
+    res=$(mirror_choice "$s"); lever_row "$s" "mirrored positives (lever size)" mirror "$res"
   fi
   if ((have_sweep)); then
-    res=$(sweep_choice "$s"); read -r a b <<<"$res"
-    echo "| $(title "$s") | regularisation (sweep) | $a | $b | base |" >> "$table"
-    for w in a b; do
-      c=$a; [ "$w" = b ] && c=$b
-      [ "$c" = base ] || lever_notes+=("$(title "$s"), ($w): regularisation $c without it; $model was not retrained with it: not leave-one-source-out for the regularisation")
-    done
+    res=$(sweep_choice "$s"); lever_row "$s" "regularisation (sweep)" base "$res"
   fi
   flags_a[$s]=$fa flags_b[$s]=$fb
 done
@@ -320,26 +325,22 @@ for n in "${lever_notes[@]}"; do echo "Note: $n." >> "$table"; done
     done
     echo "$line |"
   done
-  if ((have_levers)); then
-    for m in L3-trees L4-mirror; do
-      sm=$loso/levers/synthetic/summary.md
-      line="| $m | lever size, $out/models | $(fig "$sm" "$m v1" tar01) / $(fig "$sm" "$m v1" mota) / AUC $(fig "$sm" "$m v1" auc)"
-      for s in real-lab real-home; do
-        sm=$loso/levers/$s/summary.md
-        line+=" | $(fig "$sm" "$m v1" found01) / $(fig "$sm" "$m v1" found05) / AUC $(fig "$sm" "$m v1" auc)"
-      done
-      echo "$line |"
+  # model_row DIR MODEL LABEL: a trained model's row, from its evaluation in DIR/SET.
+  model_row() {
+    local sm=$1/synthetic/summary.md set line
+    line="| $3 | $(fig "$sm" "$2 v1" tar01) / $(fig "$sm" "$2 v1" mota) / AUC $(fig "$sm" "$2 v1" auc)"
+    for set in real-lab real-home; do
+      sm=$1/$set/summary.md
+      line+=" | $(fig "$sm" "$2 v1" found01) / $(fig "$sm" "$2 v1" found05) / AUC $(fig "$sm" "$2 v1" auc)"
     done
+    echo "$line |"
+  }
+  if ((have_levers)); then
+    for m in L3-trees L4-mirror; do model_row "$loso/levers" "$m" "$m | lever size, $out/models"; done
   fi
   if ((have_sweep)); then
     for m in "${sweep_names[@]}"; do
-      sm=$loso/sweep/synthetic/summary.md
-      line="| sweep $m | $(cat "$out/sweep/logs/train-$m.secs" 2>/dev/null || echo '?') s to train | $(fig "$sm" "$m v1" tar01) / $(fig "$sm" "$m v1" mota) / AUC $(fig "$sm" "$m v1" auc)"
-      for s in real-lab real-home; do
-        sm=$loso/sweep/$s/summary.md
-        line+=" | $(fig "$sm" "$m v1" found01) / $(fig "$sm" "$m v1" found05) / AUC $(fig "$sm" "$m v1" auc)"
-      done
-      echo "$line |"
+      model_row "$loso/sweep" "$m" "sweep $m | $(cat "$out/sweep/logs/train-$m.secs" 2>/dev/null || echo '?') s to train"
     done
   fi
   echo
