@@ -80,7 +80,7 @@ evaluate() {
   local args=() opts=() set
   while (($#)) && [ "$1" != -- ]; do args+=("$1"); shift; done
   (($#)) && shift && opts=("$@")
-  # A run is reused when the same binary, model files and options made it (its .command).
+  # A run is reused when the same binary, model files, options, frame list and truth made it (.command).
   local m stamp files=("$detect")
   for m in "${args[@]}"; do
     [ "$m" = --model ] && continue
@@ -88,11 +88,14 @@ evaluate() {
   done
   stamp="$(cat "${files[@]}" | md5sum | cut -c1-12) ${args[*]} ${opts[*]}"
   for set in $sets_; do
-    [ -f "$dir/$set/summary.md" ] && [ "$(cat "$dir/$set/.command" 2>/dev/null)" = "$stamp" ] && continue
+    local inputs=("$(truth_of "$set")") key
+    [ "$set" = synthetic ] || inputs+=("$(source_of "$set")")
+    key="$(cat "${inputs[@]}" | md5sum | cut -c1-12) $stamp"
+    [ -f "$dir/$set/summary.md" ] && [ "$(cat "$dir/$set/.command" 2>/dev/null)" = "$key" ] && continue
     "$detect" --source "$(source_of "$set")" --truth "$(truth_of "$set")" --report-dir "$dir/$set" \
       --models-dir "$models_dir" "${args[@]}" "${opts[@]}" --force >/dev/null 2>"$logs/detect.log" ||
       { cat "$logs/detect.log" >&2; exit 1; }
-    echo "$stamp" > "$dir/$set/.command"
+    echo "$key" > "$dir/$set/.command"
   done
 }
 # fig SUMMARY.md ROW FIELD: one figure of a summary row (ROW: the model column, e.g. "people v2").
