@@ -123,23 +123,8 @@ fi
 # frames with a colour image (the PCL peer needs colour; the shipped models are evaluated on them too).
 real_sets=()
 if ((have_real)); then
-  real_abs=$(cd "$real" && pwd)
-  for source in lab home; do
-    for kind in all colour; do
-      name=real-$source; [ "$kind" = colour ] && name=real-$source-colour
-      dir=$out/real-sources/$name
-      mkdir -p "$dir"
-      (cd "$real_abs" && for f in "$source"_*.depth.png; do
-         [ -f "$f" ] || continue
-         [ "$kind" = colour ] && [ ! -f "${f%.depth.png}.rgb.png" ] && continue
-         echo "$real_abs/$f"
-       done) > "$dir/frames.txt"
-      awk -F, -v p="${source}_" -v list="$dir/frames.txt" '
-        BEGIN { while ((getline f < list) > 0) { sub(/.*\//, "", f); sub(/\.depth\.png$/, "", f); keep[f] = 1 } }
-        NR == 1 || (index($1, p) == 1 && ($1 in keep))' "$real/boxes.csv" > "$dir/boxes.csv"
-      if [ -s "$dir/frames.txt" ]; then real_sets+=("$name"); fi
-    done
-  done
+  source scripts/real-sources.sh
+  mapfile -t real_sets < <(real_source_sets "$real" "$out")
 fi
 
 step "mine negatives and label positives"

@@ -22,14 +22,17 @@ cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
-Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick]
+Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick] [--candidates 'OPTIONS']
   --out DIR    work folder (default out/default-model): data/, sets/, models/people/v2.yml
   --install    copy the trained model to models/people/v2.yml
   --force      with --install: replace an existing models/people/v2.yml
   --quick      a small model from few frames, trained twice in a temporary folder, compared byte for byte
+  --candidates 'OPTIONS'  candidate options for mining and labelling (default none: the defaults), e.g.
+               the options chosen without a real source (docs/quality.md, "Leave one source out"); use
+               another --out, and not with --install
 USAGE
 }
-out=out/default-model install=0 force=0 quick=0
+out=out/default-model install=0 force=0 quick=0 candidates=""
 target=models/people/v2.yml  # the file this script trains and installs
 while (($#)); do
   case "$1" in
@@ -37,11 +40,14 @@ while (($#)); do
     --install) install=1; shift ;;
     --force) force=1; shift ;;
     --quick) quick=1; shift ;;
+    --candidates) candidates="$2"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "train-default-model: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
+if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
+read -r -a candidate_options <<<"$candidates"
 if ((install && !force)) && [ -e "$target" ]; then
   echo "train-default-model: $target exists (give --force to replace it)" >&2
   exit 1
@@ -65,12 +71,12 @@ train_once() {  # work folder -> prints the model path
     "$bin/synth/rdsf-synth" --out "$w/data/train" --force --frames "$frames_train" --people 1..4 --seed 11 --clip-frames 15 >&2
   [ -f "$w/data/empty/synth.yml" ] ||
     "$bin/synth/rdsf-synth" --out "$w/data/empty" --force --frames "$frames_empty" --people 1..4 --seed 11 --empty --clip-frames 15 >&2
-  "$bin/miner/rdsf-mine" --source "$w/data/empty" --out "$w/sets/negatives" --threads 2 >&2
+  "$bin/miner/rdsf-mine" --source "$w/data/empty" --out "$w/sets/negatives" --threads 2 "${candidate_options[@]}" >&2
   # --fit-across-head-cut 0: the candidates v2 was labelled with. The default since (docs/candidates.md)
   # makes 15 more of these candidates positives (11,609 instead of 11,594) and so another model; the miner
   # does not read the fitted box, so its negatives are the same either way.
   "$bin/labeler/rdsf-label" --source "$w/data/train" --out "$w/sets/people" --truth "$w/data/train/boxes.csv" \
-    --answers /dev/null --keep-rejected --fit-across-head-cut 0 >&2
+    --answers /dev/null --keep-rejected --fit-across-head-cut 0 "${candidate_options[@]}" >&2
   # The shipped v1 beside it, so that the model trained is version 2 of 'people' in its own file too.
   rm -rf "$w/models/people"
   mkdir -p "$w/models/people"
