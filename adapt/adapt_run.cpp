@@ -183,7 +183,7 @@ Answers count_answers(const std::string& room_set) {
   const AnswerJournal answers(journal.string());
   for (const JournalEntry& e : answers.in_force()) {
     a.human += e.by == "human" ? 1 : 0;
-    a.propagated += e.by.rfind("track ", 0) == 0 ? 1 : 0;
+    a.propagated += e.by.rfind("track ", 0) == 0 || e.by.rfind("place ", 0) == 0 ? 1 : 0;
   }
   return a;
 }
@@ -195,7 +195,7 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
     std::vector<std::string> args{"--source", o.source, "--out", paths.room, "--model", o.model, "--models-dir",
                                   o.models_dir, "--ask", "uncertain", "--keep-rejected", "--budget",
                                   std::to_string(left), "--threads", std::to_string(o.threads)};
-    if (!o.per_candidate) args.push_back("--per-track");
+    if (!o.per_candidate) args.insert(args.end(), {"--per-track", "--per-place", o.per_place ? "on" : "off"});
     if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
     if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
     const bool window = o.truth.empty() && o.answers.empty();

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
         ("rounds", po::value(&o.rounds)->default_value(o.rounds), "boosting rounds (0: 10 continuing, 100 retraining)")
         ("base-pos", po::value(&o.base_pos)->multitoken(), "the synthetic base's positive sample set(s)")
         ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)");
+    rdsf::cli::add_per_place_option(options, o.per_place);
     rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
     options.add_options()
         ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")

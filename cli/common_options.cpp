@@ -28,4 +28,12 @@ void add_threads_option(po::options_description& group, int& threads, const std:
   }), help.c_str());
 }
 
+void add_per_place_option(po::options_description& group, bool& per_place) {
+  group.add_options()("per-place", po::value(&per_place)->default_value(per_place, per_place ? "on" : "off"),
+                      "one answer per place, with one answer per track (on or off): an n also labels n the "
+                      "candidates of other frames at the same place (strict box IoU >= 0.65, layer within "
+                      "150 mm, the depth of the box's pixels unchanged: the camera did not move); undone with "
+                      "the answer (docs/adapting-to-your-room.md)");
+}
+
 }  // namespace rdsf::cli

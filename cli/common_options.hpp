@@ -7,6 +7,8 @@
 //                     when there is one;
 //   --threads N       "<role> (0: one per core)[; <note>]"; N < 0 is a UsageError
 //                     ("--threads must be 0 (one per core) or more, got N").
+//   --per-place on|off one answer per place for n answers (rdsf-label --per-track, rdsf-adapt); the default
+//                     is the library's (PropagationParams::per_place).
 #include <string>
 
 #include <boost/program_options.hpp>
@@ -27,5 +29,8 @@ void add_model_option(boost::program_options::options_description& group, std::s
 /// meaning, e.g. that results do not depend on the count.
 void add_threads_option(boost::program_options::options_description& group, int& threads, const std::string& role,
                         const std::string& note = "");
+
+/// --per-place on|off bound to `per_place` (its value now is the default shown).
+void add_per_place_option(boost::program_options::options_description& group, bool& per_place);
 
 }  // namespace rdsf::cli

@@ -222,7 +222,7 @@ class Labeler {
     ScreenStatus status = status_of(session_, p, start_, message_);
     status.zoom = zoom_;
     cv::Mat3b screen = render_label_screen(p, status);
-    if (o_.session.per_track) screen = add_track_strip(screen, p, session_.track_preview('y'));
+    if (o_.session.per_track) screen = add_track_strip(screen, p, session_.track_preview('y'), session_.place_preview());
     cv::imshow(kWindow, screen);
     if (key_time_) latency_.add(*key_time_);
     char key = label_keys::kNone;
@@ -321,6 +321,16 @@ void Labeler::report(bool with_truth) const {
                    st.propagated_in_band);
     }
     std::fprintf(stderr, "\n");
+    if (o_.session.propagation.per_place) {  // a part of the line above: the labels an n gave at its place
+      std::fprintf(stderr, "rdsf-label: per place: %ld of those n labels at the answer's place beyond its track",
+                   st.placed_negatives);
+      if (with_truth) {
+        std::fprintf(stderr, "; the truth contradicts %ld (%.2f%%), %ld in its uncertain band", st.placed_wrong,
+                     st.placed_negatives ? 100.0 * static_cast<double>(st.placed_wrong) / static_cast<double>(st.placed_negatives) : 0.0,
+                     st.placed_in_band);
+      }
+      std::fprintf(stderr, "\n");
+    }
   }
   std::fprintf(stderr, "rdsf-label: %s\n", latency_.summary().c_str());
   std::fprintf(stderr, "rdsf-label: sample set %s now holds %zu samples\n", o_.out_set.c_str(), writer_.records().size());

@@ -115,28 +115,38 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
 }
 
 cv::Mat3b add_track_strip(const cv::Mat3b& screen, const PresentedCandidate& asked,
-                          const std::vector<PresentedCandidate>& track) {
-  if (track.empty()) return screen;
-  std::vector<gui::StripCrop> crops;
-  std::size_t asked_at = 0;
-  bool placed = false;
-  for (const PresentedCandidate& t : track) {
-    if (!placed && t.frame->ordinal > asked.frame->ordinal) {
+                          const std::vector<PresentedCandidate>& track, const std::vector<PresentedCandidate>& place) {
+  if (track.empty() && place.empty()) return screen;
+  cv::Mat3b out = screen;
+  if (!track.empty()) {
+    std::vector<gui::StripCrop> crops;
+    std::size_t asked_at = 0;
+    bool placed = false;
+    for (const PresentedCandidate& t : track) {
+      if (!placed && t.frame->ordinal > asked.frame->ordinal) {
+        asked_at = crops.size();
+        crops.push_back({asked.candidate().depth_crop, asked.frame->frame.name});
+        placed = true;
+      }
+      crops.push_back({t.candidate().depth_crop, t.frame->frame.name});
+    }
+    if (!placed) {
       asked_at = crops.size();
       crops.push_back({asked.candidate().depth_crop, asked.frame->frame.name});
-      placed = true;
     }
-    crops.push_back({t.candidate().depth_crop, t.frame->frame.name});
+    char title[200];
+    std::snprintf(title, sizeof title, "track: %zu candidates in frames %s .. %s   y: all are this person   n: none is",
+                  crops.size(), crops.front().frame.c_str(), crops.back().frame.c_str());
+    cv::vconcat(out, gui::render_track_strip(crops, asked_at, title, screen.cols), out);
   }
-  if (!placed) {
-    asked_at = crops.size();
-    crops.push_back({asked.candidate().depth_crop, asked.frame->frame.name});
+  if (!place.empty()) {  // an n labels these too; none of them is the asked one
+    std::vector<gui::StripCrop> crops;
+    for (const PresentedCandidate& c : place) crops.push_back({c.candidate().depth_crop, c.frame->frame.name});
+    char title[200];
+    std::snprintf(title, sizeof title, "same place: %zu more in frames %s .. %s   n: none of these is a person either",
+                  crops.size(), crops.front().frame.c_str(), crops.back().frame.c_str());
+    cv::vconcat(out, gui::render_track_strip(crops, crops.size(), title, screen.cols), out);
   }
-  char title[200];
-  std::snprintf(title, sizeof title, "track: %zu candidates in frames %s .. %s   y: all are this person   n: none is",
-                crops.size(), crops.front().frame.c_str(), crops.back().frame.c_str());
-  cv::Mat3b out;
-  cv::vconcat(screen, gui::render_track_strip(crops, asked_at, title, screen.cols), out);
   return out;
 }
 

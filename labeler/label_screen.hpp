@@ -34,8 +34,11 @@ cv::Mat3b zoom_around(const cv::Mat3b& view, const cv::Rect& box, double zoom);
 cv::Mat3b render_label_screen(const PresentedCandidate& presented, const ScreenStatus& status);
 
 /// `screen` with the strip of the track one answer to `asked` would label (`track`, frame order, asked not
-/// among them) below it (gui/track_strip.hpp); `screen` itself when the track is empty.
+/// among them) below it (gui/track_strip.hpp), and below that, when `place` is not empty, the strip of the
+/// candidates of other frames an n labels at the same place beyond its track (one answer per place);
+/// `screen` itself when both are empty.
 cv::Mat3b add_track_strip(const cv::Mat3b& screen, const PresentedCandidate& asked,
-                          const std::vector<PresentedCandidate>& track);
+                          const std::vector<PresentedCandidate>& track,
+                          const std::vector<PresentedCandidate>& place = {});
 
 }  // namespace rdsf

@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
          "one answer per track (needs --ask uncertain): a y or n is given to the candidates on the same person's "
          "track in the frames before and after while the track is sure (docs/adapting-to-your-room.md); the window "
          "shows the track as a strip of crops; u undoes the whole track");
+    rdsf::cli::add_per_place_option(options, o.session.propagation.per_place);
     options.add(rdsf::cli::camera_options(o.session.camera, calibration));
     options.add(rdsf::cli::analyser_options(o.session.analyser));
     po::variables_map values;

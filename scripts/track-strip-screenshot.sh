@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # The picture of docs/adapting-to-your-room.md: rdsf-label --per-track's window (the asked candidate and the
-# strip of its track) on a synthetic room, under Xvfb, dumped with xwd and converted to PNG.
-# Usage: scripts/track-strip-screenshot.sh OUT.png   (needs xvfb-run, xdotool, xwd, python3)
+# strip of its track) on a synthetic room, under Xvfb, dumped with xwd and converted to PNG. rdsf-synth options
+# after OUT.png replace the room's "--people 2..2 --seed 31": docs/adapt-place-strip.png is made with
+# "--people 1..1 --seed 31 --moving-camera 0 --empty" (a still camera, no people: the strip of the question's
+# place, one answer per place, is shown under its track's).
+# Usage: scripts/track-strip-screenshot.sh OUT.png [RDSF-SYNTH OPTION...]   (needs xvfb-run, xdotool, xwd, python3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[ $# = 1 ] || { echo "usage: scripts/track-strip-screenshot.sh OUT.png" >&2; exit 2; }
+[ $# -ge 1 ] || { echo "usage: scripts/track-strip-screenshot.sh OUT.png [RDSF-SYNTH OPTION...]" >&2; exit 2; }
 png=$(realpath -m "$1")
+shift
 bin=${RDSF_BUILD_DIR:-build}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$bin/synth/rdsf-synth" --out "$work/room" --frames 60 --people 2..2 --seed 31 --clip-frames 60 --rgb >/dev/null 2>&1
+room=(--people 2..2 --seed 31)  # the room of docs/adapt-track-strip.png; options given replace these
+[ $# -eq 0 ] || room=("$@")
+"$bin/synth/rdsf-synth" --out "$work/room" --frames 60 --clip-frames 60 --rgb "${room[@]}" >/dev/null 2>&1
 xvfb-run -a -s "-screen 0 1200x1000x24" bash -c '
   "$0/labeler/rdsf-label" --source "$1/room" --out "$1/set" --model people --ask uncertain --per-track \
     --keep-rejected --threads 2 2>"$1/label.log" &

@@ -104,7 +104,7 @@ TEST(LabelerLoop, PerTrackAnswersLabelTheirTracksAndTheLoopTrainsOnThem) {
   const SampleSet set = SampleSet::open_read(dir / "set");
   for (const SampleRecord& s : set.records()) {
     human += s.origin == "labeler" ? 1 : 0;
-    by_track += s.origin == "labeler-track" ? 1 : 0;
+    by_track += s.origin == "labeler-track" || s.origin == "labeler-place" ? 1 : 0;
   }
   EXPECT_GT(std::stoul(m[1]), 10u) << r.err;
   EXPECT_GT(by_track, 0u);
@@ -114,10 +114,10 @@ TEST(LabelerLoop, PerTrackAnswersLabelTheirTracksAndTheLoopTrainsOnThem) {
   std::set<std::string> seeds;
   long journalled = 0;
   for (const JournalEntry& e : journal.in_force()) {
-    if (e.by == "human") seeds.insert(track_answerer(e.key));
+    if (e.by == "human") seeds.insert({track_answerer(e.key), place_answerer(e.key)});
   }
-  for (const JournalEntry& e : journal.in_force()) {
-    if (e.by.rfind("track ", 0) != 0) continue;
+  for (const JournalEntry& e : journal.in_force()) {  // along a track, or to the answer's place (per place)
+    if (e.by.rfind("track ", 0) != 0 && e.by.rfind("place ", 0) != 0) continue;
     ++journalled;
     EXPECT_TRUE(seeds.count(e.by)) << e.by;
   }
@@ -155,27 +155,30 @@ TEST(LabelerLoop, PerTrackUndoAfterARetrainTakesTheWholeTrackBack) {
   }
   ASSERT_EQ(human.size(), 10u) << r.err;
   const AnswerJournal journal(dir / "set/labeler-answers.tsv");
-  const std::string undone_by = track_answerer(human.back().key);
+  // Its labels: along its track, and (an n, per place) at its place.
+  const std::string undone_by[] = {track_answerer(human.back().key), place_answerer(human.back().key)};
+  const auto by_undone = [&](const std::string& by) { return by == undone_by[0] || by == undone_by[1]; };
   EXPECT_EQ(journal.answer_of(human.back().key), '\0');  // the tenth answer is no longer in force
   long track_in_force = 0, propagated_in_force = 0;
   for (const JournalEntry& e : journal.in_force()) {
-    track_in_force += e.by == undone_by ? 1 : 0;
-    propagated_in_force += e.by.rfind("track ", 0) == 0 ? 1 : 0;
+    track_in_force += by_undone(e.by) ? 1 : 0;
+    propagated_in_force += e.by.rfind("track ", 0) == 0 || e.by.rfind("place ", 0) == 0 ? 1 : 0;
   }
   EXPECT_EQ(track_in_force, 0);
-  // Undo lines: the answer and each label of its track.
+  // Undo lines: the answer and each label of its track and place.
   std::ifstream again(dir / "set/labeler-answers.tsv");
   long track_lines = 0;
   for (std::string line; std::getline(again, line);) {
-    track_lines += line.size() >= undone_by.size() && line.compare(line.size() - undone_by.size(), undone_by.size(), undone_by) == 0 &&
-                           line.find("\tu\t") == std::string::npos ? 1 : 0;
+    const std::string by = line.substr(line.rfind('\t') + 1);
+    track_lines += by_undone(by) && line.find("\tu\t") == std::string::npos ? 1 : 0;
   }
+  EXPECT_GT(track_lines, 0) << r.err;
   EXPECT_EQ(undo_lines, 1 + track_lines) << r.err;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.err, m, std::regex("per track: ([0-9]+) labels propagated"))) << r.err;
   EXPECT_EQ(std::stol(m[1]), propagated_in_force);
   std::size_t by_track = 0;
   const SampleSet set = SampleSet::open_read(dir / "set");
-  for (const SampleRecord& s : set.records()) by_track += s.origin == "labeler-track" ? 1 : 0;
+  for (const SampleRecord& s : set.records()) by_track += s.origin == "labeler-track" || s.origin == "labeler-place" ? 1 : 0;
   EXPECT_EQ(by_track, static_cast<std::size_t>(propagated_in_force));  // --loop keeps y and n: every label stored
 }

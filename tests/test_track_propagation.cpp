@@ -1,7 +1,7 @@
 // Track propagation (labeling/track_propagation.hpp) on hand-built sequences: a person walking is labelled
 // from one answer both ways; two people crossing stop the track where it is unsure (those are asked); a
 // score gate; frames where the track's candidate is missing stepped over (max_gap_frames); undo of the answer through the journal removes every propagated label; the labelling session
-// with per_track on a rendered room.
+// with per_track on a rendered room, and with one answer per place on a room seen by a still camera.
 #include <gtest/gtest.h>
 
 #include "rdsf/candidates/crop_provenance.hpp"
@@ -22,6 +22,31 @@ std::vector<std::vector<TrackCandidate>> walking(int frames) {
     out[f].push_back({cv::Rect(500, 250, 50, 80), 3000, 0.3});
   }
   return out;
+}
+
+// A synthetic room rendered into DIR/room (rdsf-synth with `args`), the shipped model, and the session's
+// per-track settings on the room (uncertain order, n answers stored).
+void render_room(const test::TempDir& dir, const std::string& args) {
+  const test::RunResult r =
+      test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") + " --force " + args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+}
+
+BoostedModel shipped_model() { return BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml"); }
+
+LabelingConfig per_track_config(const test::TempDir& dir) {
+  LabelingConfig config;
+  config.sources = {dir / "room"};
+  config.ask = AskOrder::uncertain;
+  config.per_track = true;
+  config.keep_rejected = true;
+  config.threads = 2;
+  return config;
+}
+
+SampleSetWriter open_set(const std::string& path, const LabelingConfig& config) {
+  return SampleSetWriter::open_or_create(path, config.analyser.features, config.camera, "test",
+                                         crop_provenance(config.analyser.candidates));
 }
 
 }  // namespace
@@ -141,18 +166,10 @@ TEST(TrackPropagation, UndoOfTheAnswerRemovesEveryPropagatedLabel) {
 // would show is what an answer labels, and undo takes the answer and its whole track back.
 TEST(TrackPropagation, SessionLabelsTheTrackAndUndoTakesItAllBack) {
   test::TempDir dir;
-  const test::RunResult r = test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
-                                      " --force --frames 30 --people 2..2 --clip-frames 30 --seed 5");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
-  LabelingConfig config;
-  config.sources = {dir / "room"};
-  config.ask = AskOrder::uncertain;
-  config.per_track = true;
-  config.keep_rejected = true;
-  config.threads = 2;
-  SampleSetWriter writer = SampleSetWriter::open_or_create(dir / "set", config.analyser.features, config.camera, "test",
-                                                           crop_provenance(config.analyser.candidates));
+  ASSERT_NO_FATAL_FAILURE(render_room(dir, "--frames 30 --people 2..2 --clip-frames 30 --seed 5"));
+  const BoostedModel model = shipped_model();
+  const LabelingConfig config = per_track_config(dir);
+  SampleSetWriter writer = open_set(dir / "set", config);
   LabelingSession session(config, writer, &model, nullptr);
   // The first question whose track reaches other frames (answered n until then).
   std::size_t preview = 0;
@@ -172,4 +189,49 @@ TEST(TrackPropagation, SessionLabelsTheTrackAndUndoTakesItAllBack) {
   EXPECT_EQ(session.stats().propagated_positives, 0);
   EXPECT_EQ(session.journal().answers_in_force(), in_force);
   EXPECT_EQ(SampleSet::open_read(dir / "set").records().size(), samples);  // retracted samples are left out
+}
+
+// One answer per place (test_place_propagation.cpp for the rule): the session on a rendered room with a still camera and the shipped model: the first n whose place reaches
+// other frames labels what place_preview() showed (the window's second strip), as propagated negatives of
+// origin labeler-place; u takes the answer, its track and its place back. With per_place off nothing is.
+TEST(TrackPropagation, SessionLabelsThePlaceAndUndoTakesItAllBack) {
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(render_room(dir, "--frames 40 --people 1..2 --clip-frames 40 --seed 5 --moving-camera 0"));
+  const BoostedModel model = shipped_model();
+  LabelingConfig config = per_track_config(dir);
+  for (const bool per_place : {false, true}) {
+    config.propagation.per_place = per_place;
+    const std::string set = dir / (per_place ? "set-place" : "set-track");
+    SampleSetWriter writer = open_set(set, config);
+    LabelingSession session(config, writer, &model, nullptr);
+    std::size_t place = 0;
+    for (int asked = 0; asked < 60 && session.current() != nullptr; ++asked) {
+      place = session.place_preview().size();
+      if (place > 0) break;
+      ASSERT_TRUE(session.answer('s'));
+    }
+    if (!per_place) {
+      EXPECT_EQ(place, 0u);
+      EXPECT_EQ(session.stats().placed_negatives, 0);
+      continue;
+    }
+    ASSERT_GT(place, 0u) << "no question with a place beyond its track in 60";
+    const std::size_t track = session.track_preview('n').size();
+    const std::size_t in_force = session.journal().answers_in_force();
+    const std::size_t samples = writer.records().size();
+    ASSERT_TRUE(session.answer('n'));
+    EXPECT_EQ(static_cast<std::size_t>(session.stats().placed_negatives), place);
+    EXPECT_EQ(static_cast<std::size_t>(session.stats().propagated_negatives), track + place);
+    EXPECT_EQ(session.journal().answers_in_force(), in_force + 1 + track + place);
+    std::size_t by_place = 0;
+    for (const SampleRecord& s : writer.records()) by_place += s.origin == "labeler-place" ? 1 : 0;
+    EXPECT_EQ(by_place, place);
+    EXPECT_EQ(writer.records().size(), samples + 1 + track + place);
+    ASSERT_TRUE(session.answer('u'));
+    EXPECT_EQ(session.stats().placed_negatives, 0);
+    EXPECT_EQ(session.stats().propagated_negatives, 0);
+    EXPECT_EQ(session.journal().answers_in_force(), in_force);
+    EXPECT_EQ(SampleSet::open_read(set).records().size(), samples);  // retracted samples are left out
+    EXPECT_EQ(session.place_preview().size(), place);  // asked again, the same place shown again
+  }
 }

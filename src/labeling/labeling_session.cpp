@@ -331,6 +331,7 @@ bool LabelingSession::answer(char key) {
       if (e.sample_id >= 0) writer_.retract(e.sample_id);
       journal_.record_undo(e);
       --(e.answer == 'y' ? stats_.propagated_positives : e.answer == 'n' ? stats_.propagated_negatives : stats_.propagated_skips);
+      stats_.placed_negatives -= e.by.rfind("place ", 0) == 0 ? 1 : 0;
       queue_.push_back(last.track[k]);
     }
     if (last.entry.sample_id >= 0) writer_.retract(last.entry.sample_id);
@@ -370,13 +371,14 @@ bool LabelingSession::answer(char key) {
   return true;
 }
 
-PropagatedTrack LabelingSession::follow(const PresentedCandidate& p, char answer, std::size_t& first_frame) const {
+LabelingSession::Followed LabelingSession::follow(const PresentedCandidate& p, char answer, bool with_place) const {
   // The frames of p's source (frames_ holds the session's frames in order, ordinal 1, 2, ...).
   const auto at = static_cast<std::size_t>(p.frame->ordinal - 1);
   std::size_t first = at, last = at;
   while (first > 0 && frames_[first - 1]->source == p.frame->source) --first;
   while (last + 1 < frames_.size() && frames_[last + 1]->source == p.frame->source) ++last;
   std::vector<std::vector<TrackCandidate>> frames;
+  std::vector<cv::Mat1w> depth;
   for (std::size_t f = first; f <= last; ++f) {
     const LoadedFrame& lf = *frames_[f];
     std::vector<TrackCandidate> candidates;
@@ -385,34 +387,49 @@ PropagatedTrack LabelingSession::follow(const PresentedCandidate& p, char answer
       candidates.push_back({c.strict_box, c.layer_depth_mm, lf.probabilities.empty() ? -1.0 : lf.probabilities[i]});
     }
     frames.push_back(std::move(candidates));
+    if (with_place) depth.push_back(lf.frame.depth_mm);
   }
-  first_frame = first;
   const AnswerOf answer_of = [&](const TrackLink& l) {
     return journal_.answer_of(PresentedCandidate{frames_[first + l.frame], l.index}.key());
   };
-  return propagate_track(frames, {at - first, p.index}, answer, config_.propagation, config_.camera, answer_of);
+  Followed followed;
+  followed.first_frame = first;
+  const TrackLink seed{at - first, p.index};
+  followed.track = propagate_track(frames, seed, answer, config_.propagation, config_.camera, answer_of);
+  if (with_place && config_.propagation.per_place) {
+    const std::vector<TrackLink>& on_track = followed.track.labelled;
+    const AnswerOf unanswered_off_track = [&](const TrackLink& l) {  // the track's own are labelled by it
+      return std::find(on_track.begin(), on_track.end(), l) != on_track.end() ? answer : answer_of(l);
+    };
+    followed.place = propagate_place(frames, depth, seed, answer, config_.propagation, unanswered_off_track);
+  }
+  return followed;
 }
 
 std::vector<PresentedCandidate> LabelingSession::track_preview(char answer) const {
   std::vector<PresentedCandidate> track;
   if (!config_.per_track || queue_.empty() || frames_.empty()) return track;
-  std::size_t first = 0;
-  for (const TrackLink& l : follow(queue_.front(), answer, first).labelled) {
-    track.push_back({frames_[first + l.frame], l.index});
-  }
+  const Followed f = follow(queue_.front(), answer, /*with_place=*/false);
+  for (const TrackLink& l : f.track.labelled) track.push_back({frames_[f.first_frame + l.frame], l.index});
   return track;
+}
+
+std::vector<PresentedCandidate> LabelingSession::place_preview() const {
+  std::vector<PresentedCandidate> place;
+  if (!config_.per_track || !config_.propagation.per_place || queue_.empty() || frames_.empty()) return place;
+  const Followed f = follow(queue_.front(), 'n', /*with_place=*/true);
+  for (const TrackLink& l : f.place) place.push_back({frames_[f.first_frame + l.frame], l.index});
+  return place;
 }
 
 void LabelingSession::propagate(Given& given) {
   if (frames_.empty()) return;
-  std::size_t first = 0;
-  const PropagatedTrack track = follow(given.presented, given.entry.answer, first);
-  const std::string by = track_answerer(given.entry.key);
+  const Followed followed = follow(given.presented, given.entry.answer, /*with_place=*/true);
   std::set<std::pair<const LoadedFrame*, std::size_t>> labelled;
-  for (const TrackLink& l : track.labelled) {
-    const PresentedCandidate p{frames_[first + l.frame], l.index};
-    const bool yes = given.entry.answer == 'y', skip = given.entry.answer == 's';
-    const std::int64_t id = skip ? -1 : yes || config_.keep_rejected ? store(p, yes ? 1 : 0, "labeler-track") : -1;
+  const auto label = [&](const TrackLink& l, const std::string& by, const std::string& origin) {
+    const PresentedCandidate p{frames_[followed.first_frame + l.frame], l.index};
+    const bool yes = given.entry.answer == 'y', skip = given.entry.answer == 's', placed = origin == "labeler-place";
+    const std::int64_t id = skip ? -1 : yes || config_.keep_rejected ? store(p, yes ? 1 : 0, origin) : -1;
     const JournalEntry e{p.key(), given.entry.answer, id, by};
     journal_.record(e);
     given.track.push_back(p);
@@ -420,18 +437,24 @@ void LabelingSession::propagate(Given& given) {
     labelled.insert({p.frame.get(), p.index});
     if (skip) {
       ++stats_.propagated_skips;
-      continue;
+      return;
     }
     ++(yes ? stats_.propagated_positives : stats_.propagated_negatives);
+    stats_.placed_negatives += placed ? 1 : 0;
     if (const char truth = oracle_key(p); truth == 's') {
       ++stats_.propagated_in_band;
+      stats_.placed_in_band += placed ? 1 : 0;
     } else if (truth != '\0' && truth != given.entry.answer) {
       ++stats_.propagated_wrong;
+      stats_.placed_wrong += placed ? 1 : 0;
     }
-  }
-  // The track's candidates leave the queue; where it became unsure is asked next.
+  };
+  const std::string by_track = track_answerer(given.entry.key), by_place = place_answerer(given.entry.key);
+  for (const TrackLink& l : followed.track.labelled) label(l, by_track, "labeler-track");
+  for (const TrackLink& l : followed.place) label(l, by_place, "labeler-place");
+  // The labelled candidates leave the queue; where the track became unsure is asked next.
   std::set<std::pair<const LoadedFrame*, std::size_t>> ask;
-  for (const TrackLink& l : track.ask) ask.insert({frames_[first + l.frame].get(), l.index});
+  for (const TrackLink& l : followed.track.ask) ask.insert({frames_[followed.first_frame + l.frame].get(), l.index});
   std::deque<PresentedCandidate> front, rest;
   for (const PresentedCandidate& p : queue_) {
     const std::pair<const LoadedFrame*, std::size_t> id{p.frame.get(), p.index};

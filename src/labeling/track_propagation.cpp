@@ -1,6 +1,8 @@
 #include "rdsf/labeling/track_propagation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 
@@ -101,17 +103,71 @@ PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& 
   return track;
 }
 
-std::string track_answerer(const CandidateKey& seed) {
-  char box[96];
-  std::snprintf(box, sizeof box, " %d,%d,%d,%d", seed.box.x, seed.box.y, seed.box.width, seed.box.height);
-  return "track " + seed.frame + box;
+double depth_agreement(const cv::Mat1w& a, const cv::Mat1w& b, const cv::Rect& box, double max_change,
+                       double min_valid_share) {
+  if (a.size() != b.size() || box.area() <= 0) return -1;
+  // Every step-th pixel in both directions, at most about 64 x 64 of them (a person's box is 90,000 pixels).
+  const int step = std::max(1, static_cast<int>(std::ceil(std::sqrt(box.area() / 4096.0))));
+  long sampled = 0, valid = 0, agreeing = 0;
+  for (int y = box.y; y < box.br().y; y += step) {
+    for (int x = box.x; x < box.br().x; x += step) {
+      ++sampled;
+      if (y < 0 || y >= a.rows || x < 0 || x >= a.cols) continue;  // outside the image: no reading
+      const int da = a(y, x), db = b(y, x);
+      if (da == 0 || db == 0) continue;
+      ++valid;
+      agreeing += std::abs(da - db) <= max_change * std::min(da, db) ? 1 : 0;
+    }
+  }
+  if (valid == 0 || static_cast<double>(valid) < min_valid_share * static_cast<double>(sampled)) return -1;
+  return static_cast<double>(agreeing) / static_cast<double>(valid);
 }
 
+std::vector<TrackLink> propagate_place(const std::vector<std::vector<TrackCandidate>>& frames,
+                                       const std::vector<cv::Mat1w>& depth_mm, const TrackLink& seed, char answer,
+                                       const PropagationParams& params, const AnswerOf& answer_of) {
+  std::vector<TrackLink> labelled;
+  if (!params.per_place || answer != 'n' || depth_mm.size() != frames.size()) return labelled;
+  const TrackCandidate& s = frames[seed.frame][seed.index];
+  const cv::Mat1w& seen = depth_mm[seed.frame];
+  for (std::size_t g = 0; g < frames.size(); ++g) {
+    if (g == seed.frame || depth_mm[g].empty() || depth_mm[g].size() != seen.size()) continue;
+    std::optional<bool> same_view;  // computed once per frame, when a candidate needs it
+    for (std::size_t i = 0; i < frames[g].size(); ++i) {
+      const TrackCandidate& c = frames[g][i];
+      if (iou(s.box, c.box) < params.place_min_iou) continue;
+      if (std::abs(s.depth_mm - c.depth_mm) > params.place_max_depth_step_mm) continue;
+      if (c.probability >= 0 && c.probability > params.max_no_probability) continue;
+      if (answer_of && answer_of({g, i}) != '\0') continue;
+      if (!same_view) {
+        same_view = depth_agreement(seen, depth_mm[g], s.box, params.place_pixel_change, params.place_min_valid_share) >=
+                    params.place_min_agreeing;
+      }
+      if (*same_view) labelled.push_back({g, i});
+    }
+  }
+  return labelled;
+}
+
+namespace {
+
+std::string answerer(const char* rule, const CandidateKey& seed) {
+  char box[96];
+  std::snprintf(box, sizeof box, " %d,%d,%d,%d", seed.box.x, seed.box.y, seed.box.width, seed.box.height);
+  return rule + seed.frame + box;
+}
+
+}  // namespace
+
+std::string track_answerer(const CandidateKey& seed) { return answerer("track ", seed); }
+
+std::string place_answerer(const CandidateKey& seed) { return answerer("place ", seed); }
+
 std::vector<JournalEntry> propagated_from(const AnswerJournal& journal, const CandidateKey& seed) {
-  const std::string by = track_answerer(seed);
+  const std::string track = track_answerer(seed), place = place_answerer(seed);
   std::vector<JournalEntry> entries;
   for (const JournalEntry& e : journal.in_force()) {
-    if (e.by == by && e.key.source == seed.source) entries.push_back(e);
+    if ((e.by == track || e.by == place) && e.key.source == seed.source) entries.push_back(e);
   }
   return entries;
 }

@@ -23,6 +23,10 @@
 // of the track gets the same answer (origin "labeler-track", journalled with by = "track FRAME X,Y,W,H");
 // the candidates where the track became unsure are presented next. Undo of the answer undoes them all. A
 // skip (s) is propagated too: the track is not presented again, nothing is stored.
+// One answer per place (per_track with propagation.per_place): a human n also labels n the candidates of
+// other frames of the same source at the same place (track_propagation.hpp, propagate_place), beyond its
+// track: origin "labeler-place", journalled with by = "place FRAME X,Y,W,H"; they count as propagated
+// labels and are undone with the answer, as its track is.
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -118,6 +122,9 @@ struct LabelingStats {
   /// its uncertain band
   long propagated_positives = 0, propagated_negatives = 0, propagated_wrong = 0, propagated_in_band = 0;
   long propagated_skips = 0;  ///< per_track: candidates skipped with a skipped one (nothing stored)
+  /// per place: of the propagated negatives (and of the wrong and in-band ones), those labelled at the
+  /// answer's place beyond its track
+  long placed_negatives = 0, placed_wrong = 0, placed_in_band = 0;
   long unanswered = 0;      ///< presented but left without an answer (answers ran out)
   std::int64_t frames_loaded = 0;
   long answers() const { return positives + negatives + skipped; }
@@ -171,6 +178,9 @@ class LabelingSession {
   /// per_track: the candidates an answer `answer` to the current candidate would label too (the track the
   /// window shows as a strip), frame order; empty otherwise.
   std::vector<PresentedCandidate> track_preview(char answer = 'y') const;
+  /// per_track with propagation.per_place: the candidates an 'n' to the current candidate would label at
+  /// its place beyond its 'n' track (the window's second strip), frame order; empty otherwise.
+  std::vector<PresentedCandidate> place_preview() const;
 
  private:
   struct Given {
@@ -179,8 +189,14 @@ class LabelingSession {
     std::vector<PresentedCandidate> track;  ///< per_track: labelled by propagation from this answer
     std::vector<JournalEntry> track_entries;
   };
-  /// per_track: the track of `p` answered `answer` over the frames of its source.
-  PropagatedTrack follow(const PresentedCandidate& p, char answer, std::size_t& first_frame) const;
+  /// per_track: the track of `p` answered `answer` over the frames of its source and, with per_place, the
+  /// candidates labelled at its place beyond the track (links index the source's frames from first_frame).
+  struct Followed {
+    std::size_t first_frame = 0;
+    PropagatedTrack track;
+    std::vector<TrackLink> place;
+  };
+  Followed follow(const PresentedCandidate& p, char answer, bool with_place) const;
   /// per_track: labels the track of the answer just given (`given`), presents its unsure ends next.
   void propagate(Given& given);
   std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread: read_next + analyse_loaded

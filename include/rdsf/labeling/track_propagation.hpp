@@ -22,6 +22,19 @@
 // candidate answered otherwise before (answer_of gives another answer), and goes through (without
 // relabelling) one answered the same. Frames are one recording in time order; a gap (another recording,
 // a skipped frame) must be a frame without candidates.
+//
+// One answer per place (per_place, for 'n' answers only: a person moves, furniture does not): the seed s,
+// answered 'n' in frame f, also labels 'n' every candidate c of every OTHER frame g of the recording (any
+// distance in time, not only along the track) that is the same static thing seen from the same place:
+//     IoU(s.box, c.box) >= place_min_iou                                  (the same pixels)
+//     |s.depth_mm - c.depth_mm| <= place_max_depth_step_mm                (the same layer)
+//     the camera did not move and nothing came in front: of the pixels of s.box with a reading in both
+//       frames' depth images (at least place_min_valid_share of the box), at least place_min_agreeing
+//       differ by at most place_pixel_change x the nearer depth (sensor noise and disparity steps grow with
+//       depth: 1.2 mm x z^2 and z^2 / 348 mm, z in m, about 3 % at 4 m together)  (the same view)
+//     c.probability <= max_no_probability, as an 'n' track                (score)
+// and c has no answer yet (answer_of gives '\0'). A person who stands where the thing stood changes the
+// depth of the box's pixels; a camera that moved changes them all.
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -49,6 +62,13 @@ struct PropagationParams {
   /// instead of 655 with the same 3 wrong labels (0.30 % of 1,014); 2 asked 512 with 5 wrong (0.47 %). Default
   /// 0: in the benchmark the real lab's adapted model fell from 0.833 to 0.667 with 1 (docs/adapting-to-your-room.md).
   int max_gap_frames = 0;
+  /// One answer per place (the rule above) for 'n' answers; off: only the track is labelled.
+  bool per_place = true;
+  double place_min_iou = 0.65;              ///< strict boxes of the answered candidate and the labelled one
+  double place_max_depth_step_mm = 150;     ///< their layer depths
+  double place_pixel_change = 0.03;         ///< a pixel agrees when its depths differ by at most this x depth
+  double place_min_agreeing = 0.6;          ///< share of the box's pixels valid in both frames that agree
+  double place_min_valid_share = 0.5;       ///< share of the box's pixels valid in both frames, at least
 };
 
 /// What propagation needs of a candidate.
@@ -81,12 +101,30 @@ PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& 
                                 char answer, const PropagationParams& params, const CameraModel& camera,
                                 const AnswerOf& answer_of = {});
 
-/// The journal's "by" of labels propagated from the answer to `seed`: "track FRAME X,Y,W,H" (the seed's
-/// frame and strict box; the source is the entry's own). Undoing the seed's answer undoes every entry
-/// journalled with this "by" (propagated_from()).
-std::string track_answerer(const CandidateKey& seed);
+/// Of the pixels of `box` with a reading (> 0) in both depth images `a` and `b` (the same size), the share
+/// whose depths differ by at most `max_change` x the nearer of the two; -1 when those pixels are fewer than
+/// `min_valid_share` of the box (pixels outside the images have no reading: nothing to judge by). 1 for two
+/// identical images. Pixels are taken every s-th row and column, s = ceil(sqrt(box area / 4096)) (all of a
+/// box up to 4,096 pixels; about 64 x 64 of a larger one), so the cost is bounded whatever the box.
+double depth_agreement(const cv::Mat1w& a, const cv::Mat1w& b, const cv::Rect& box, double max_change,
+                       double min_valid_share);
 
-/// The entries in force in `journal` propagated from the answer to `seed`, oldest first.
+/// One answer per place (the rule above): the candidates of frames other than the seed's that the answer
+/// `answer` to `seed` labels, frame order; empty unless params.per_place and answer == 'n'. `depth_mm` holds
+/// each frame's depth image (millimetres, 0: no reading), as many as `frames`; a frame whose image is empty
+/// or of another size than the seed's is not labelled.
+std::vector<TrackLink> propagate_place(const std::vector<std::vector<TrackCandidate>>& frames,
+                                       const std::vector<cv::Mat1w>& depth_mm, const TrackLink& seed, char answer,
+                                       const PropagationParams& params, const AnswerOf& answer_of = {});
+
+/// The journal's "by" of labels propagated from the answer to `seed`: "track FRAME X,Y,W,H" (the seed's
+/// frame and strict box; the source is the entry's own), and "place FRAME X,Y,W,H" for those one answer per
+/// place gave. Undoing the seed's answer undoes every entry journalled with either "by" (propagated_from()).
+std::string track_answerer(const CandidateKey& seed);
+std::string place_answerer(const CandidateKey& seed);
+
+/// The entries in force in `journal` propagated from the answer to `seed` (along its track and to its
+/// place), oldest first.
 std::vector<JournalEntry> propagated_from(const AnswerJournal& journal, const CandidateKey& seed);
 
 }  // namespace rdsf
