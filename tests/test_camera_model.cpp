@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/camera_model.hpp"
 
@@ -27,6 +29,20 @@ TEST(CameraModel, EmpiricalCalibrationGivesEquivalentFocalLengths) {
 TEST(CameraModel, EmpiricalCalibrationRejectsNonPositiveValues) {
   EXPECT_THROW(CameraModel::from_empirical({0.0, 183.0, 2000.0}), rdsf::Error);
   EXPECT_THROW(CameraModel::from_empirical({244.0, 183.0, -1.0}), rdsf::Error);
+}
+
+TEST(CameraModel, FieldOfViewGivesACentredPinhole) {
+  // 90 degrees across 640 px: the half width, 320 px, is the focal length.
+  const CameraModel square = CameraModel::from_field_of_view(640, 400, 90.0);
+  EXPECT_NEAR(square.fx_px, 320.0, 1e-9);
+  EXPECT_EQ(square.fy_px, square.fx_px) << "no vertical angle: square pixels";
+  EXPECT_EQ(square.cx_px, 319.5);
+  EXPECT_EQ(square.cy_px, 199.5);
+  const CameraModel both = CameraModel::from_field_of_view(848, 480, 87.0, 58.0);
+  EXPECT_NEAR(both.fx_px, 424.0 / std::tan(43.5 * M_PI / 180.0), 1e-9);
+  EXPECT_NEAR(both.fy_px, 240.0 / std::tan(29.0 * M_PI / 180.0), 1e-9);
+  // The whole width at depth d spans 2 d tan(hfov / 2).
+  EXPECT_NEAR(square.width_cm(640, 1000), 200.0, 1e-9);
 }
 
 TEST(CameraModel, ScalingKeepsRealSizes) {

@@ -1,5 +1,6 @@
 #include "rdsf/frame/camera_model.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "rdsf/core/error.hpp"
@@ -18,6 +19,18 @@ CameraModel CameraModel::from_empirical(const EmpiricalCalibration& c, int width
   model.fy_px = height_px * c.distance_mm / (c.surface_height_cm * 10.0);
   model.cx_px = (width_px - 1) / 2.0;
   model.cy_px = (height_px - 1) / 2.0;
+  return model;
+}
+
+CameraModel CameraModel::from_field_of_view(int width_px, int height_px, double hfov_deg, double vfov_deg) {
+  constexpr double kPi = 3.14159265358979323846;
+  CameraModel model;
+  model.width_px = width_px;
+  model.height_px = height_px;
+  model.fx_px = 0.5 * width_px / std::tan(0.5 * hfov_deg * kPi / 180.0);
+  model.fy_px = vfov_deg > 0 ? 0.5 * height_px / std::tan(0.5 * vfov_deg * kPi / 180.0) : model.fx_px;
+  model.cx_px = 0.5 * (width_px - 1);
+  model.cy_px = 0.5 * (height_px - 1);
   return model;
 }
 

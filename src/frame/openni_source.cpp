@@ -148,20 +148,13 @@ bool reports_cropping(const openni::VideoStream& stream) {
 }
 
 // The camera model of an image `width` x `height` whose horizontal field of view is `hfov_rad`, as ROS's
-// openni2_camera takes it: f = width / 2 / tan(hfov / 2) along both axes (square pixels; a sensor's
-// reported vertical field of view is often rounded differently), rounded to 0.001 px (the property is a
-// float), and the principal point at the centre ((width - 1) / 2, (height - 1) / 2). Nothing when the
-// angle is not in (0, pi).
+// openni2_camera takes it: square pixels (a sensor's reported vertical field of view is often rounded
+// differently), focal length rounded to 0.001 px (the property is a float), the principal point at the
+// centre (CameraModel::from_field_of_view). Nothing when the angle is not in (0, pi).
 std::optional<CameraModel> camera_from_field_of_view(float hfov_rad, int width, int height) {
   if (!(hfov_rad > 0.0f && hfov_rad < static_cast<float>(M_PI)) || width <= 0 || height <= 0) return std::nullopt;
-  const double focal_px = std::round(width / 2.0 / std::tan(hfov_rad / 2.0) * 1000.0) / 1000.0;
-  CameraModel camera;
-  camera.width_px = width;
-  camera.height_px = height;
-  camera.fx_px = focal_px;
-  camera.fy_px = focal_px;
-  camera.cx_px = (width - 1) / 2.0;
-  camera.cy_px = (height - 1) / 2.0;
+  CameraModel camera = CameraModel::from_field_of_view(width, height, hfov_rad * 180.0 / M_PI);
+  camera.fx_px = camera.fy_px = std::round(camera.fx_px * 1000.0) / 1000.0;
   return camera;
 }
 

@@ -6,7 +6,6 @@
 #include <exception>
 
 #include "rdsf/core/error.hpp"
-#include "rdsf/synth/angle.hpp"
 
 namespace rdsf::synth {
 namespace {
@@ -132,14 +131,7 @@ void parse_field_of_view(const std::string& text, double& fov_h_deg, double& fov
 
 CameraModel SynthParams::camera() const {
   if (fov_h_deg <= 0 && fov_v_deg <= 0) return CameraModel::kinect_v1().scaled_to(width_px, height_px);
-  CameraModel model;
-  model.width_px = width_px;
-  model.height_px = height_px;
-  model.fx_px = 0.5 * width_px / std::tan(0.5 * fov_h_deg * pi / 180.0);
-  model.fy_px = 0.5 * height_px / std::tan(0.5 * fov_v_deg * pi / 180.0);
-  model.cx_px = 0.5 * (width_px - 1);
-  model.cy_px = 0.5 * (height_px - 1);
-  return model;
+  return CameraModel::from_field_of_view(width_px, height_px, fov_h_deg, fov_v_deg);
 }
 
 void parse_image_size(const std::string& text, int& width_px, int& height_px) {

@@ -40,6 +40,11 @@ struct CameraModel {
   double width_cm(double pixels, double depth_mm) const { return pixels * depth_mm / fx_px / 10.0; }
   double height_cm(double pixels, double depth_mm) const { return pixels * depth_mm / fy_px / 10.0; }
 
+  /// A centred pinhole of the given fields of view (degrees across the width and the height):
+  /// fx = (width_px / 2) / tan(hfov_deg / 2), fy = (height_px / 2) / tan(vfov_deg / 2), principal point at
+  /// the centre ((width_px - 1) / 2, (height_px - 1) / 2). vfov_deg <= 0: square pixels, fy = fx.
+  static CameraModel from_field_of_view(int width_px, int height_px, double hfov_deg, double vfov_deg = 0);
+
   /// The same model for an image of another size (intrinsics scale with the image).
   CameraModel scaled_to(int new_width_px, int new_height_px) const;
 
