@@ -14,6 +14,9 @@
 # held-out synthetic rooms of the quality report (seed 31, 60 frames each: 30 + 30, the same rooms rendered
 # empty as --empty). The base: the synthetic recording of seed 11 (--base-frames, default 600 frames, and
 # 300 empty), mined and labelled in assisted mode, far smaller than the shipped model's 18,000 frames.
+# --base DIR takes the base from a folder of sample sets instead (DIR/people and DIR/negatives, e.g. the sets
+# scripts/train-default-model.sh makes for the shipped model: the default model's size, its positives from
+# people/ and its negatives from both, as that script trains); --modes picks rows.
 # Writes out/adaptation/REPORT.md (a table) and curve.png (answers against TAR); rerunning reuses the
 # recordings and sets, and each rdsf-adapt run resumes.
 set -euo pipefail
@@ -21,26 +24,41 @@ cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
-Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B ..."] [--real DIR]
+Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B ..."] [--real DIR] [--base DIR]
+                                      [--modes "M ..."]
   --out DIR        work folder (default out/adaptation)
   --synthetic N    synthetic held-out rooms to use, 0-16 (default 4)
   --budgets "..."  answer budgets of the per-candidate and per-track runs (default "10 50")
   --real DIR       real frames with boxes.csv (default ../shared/realdata/people; its ../empty for the lab)
+  --base DIR       the synthetic base's sample sets DIR/people and DIR/negatives (default: render and label a
+                   small one, seed 11, 600 frames and 300 empty, under the work folder)
+  --modes "..."    rows to run besides "none", of: track candidate retrain negatives (default all four)
 USAGE
 }
-out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people
+out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people base="" modes="track candidate retrain negatives"
 while (($#)); do
   case "$1" in
     --out) out="$2"; shift 2 ;;
     --synthetic) synthetic="$2"; shift 2 ;;
     --budgets) budgets="$2"; shift 2 ;;
     --real) real="$2"; shift 2 ;;
+    --base) base="$2"; shift 2 ;;
+    --modes) modes="$2"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "adaptation-benchmark: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
 case "$synthetic" in ''|*[!0-9]*) echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2 ;; esac
 ((synthetic <= 16)) || { echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2; }
+for m in $modes; do
+  case "$m" in track|candidate|retrain|negatives) ;; *) echo "adaptation-benchmark: --modes: unknown mode '$m'" >&2; exit 2 ;; esac
+done
+wants() { [[ " $modes " == *" $1 "* ]]; }
+if [ -n "$base" ]; then
+  for s in people negatives; do
+    [ -f "$base/$s/manifest.yml" ] || { echo "adaptation-benchmark: --base $base: no sample set $s/ there" >&2; exit 2; }
+  done
+fi
 
 bin=${RDSF_BUILD_DIR:-build}
 synth=$bin/synth/rdsf-synth mine=$bin/miner/rdsf-mine label=$bin/labeler/rdsf-label
@@ -51,9 +69,13 @@ threads=2
 step() { printf '\n== %s\n' "$1" >&2; }
 
 step "the synthetic base and held-out rooms (reused when present)"
-[ -f "$data/base-train/synth.yml" ] ||
+# With --base, the negatives are both sets' (the people set's candidates that are nobody included), as
+# scripts/train-default-model.sh trains the shipped model; the small base gives its mined negatives only.
+base_pos=$sets/base-pos base_neg=("$sets/base-neg")
+[ -z "$base" ] || { base_pos=$base/people base_neg=("$base/negatives" "$base/people"); }
+[ -n "$base" ] || [ -f "$data/base-train/synth.yml" ] ||
   "$synth" --out "$data/base-train" --force --frames 600 --people 1..4 --seed 11 --clip-frames 15 >/dev/null 2>&1
-[ -f "$data/base-empty/synth.yml" ] ||
+[ -n "$base" ] || [ -f "$data/base-empty/synth.yml" ] ||
   "$synth" --out "$data/base-empty" --force --frames 300 --people 1..4 --seed 11 --empty --clip-frames 15 >/dev/null 2>&1
 if ((synthetic > 0)); then
   [ -f "$data/heldout/synth.yml" ] ||
@@ -61,9 +83,9 @@ if ((synthetic > 0)); then
   [ -f "$data/heldout-empty/synth.yml" ] ||
     "$synth" --out "$data/heldout-empty" --force --frames 960 --people 1..4 --seed 31 --empty --clip-frames 60 >/dev/null 2>&1
 fi
-[ -f "$sets/base-neg/manifest.yml" ] || "$mine" --source "$data/base-empty" --out "$sets/base-neg" --threads $threads 2>/dev/null
-[ -f "$sets/base-pos/manifest.yml" ] ||
-  "$label" --source "$data/base-train" --out "$sets/base-pos" --truth "$data/base-train/boxes.csv" --answers /dev/null \
+[ -n "$base" ] || [ -f "$sets/base-neg/manifest.yml" ] || "$mine" --source "$data/base-empty" --out "${base_neg[0]}" --threads $threads 2>/dev/null
+[ -n "$base" ] || [ -f "$sets/base-pos/manifest.yml" ] ||
+  "$label" --source "$data/base-train" --out "$base_pos" --truth "$data/base-train/boxes.csv" --answers /dev/null \
     --keep-rejected 2>/dev/null
 
 # A room: NAME, then files adapt.txt, eval.txt, truth.csv and optionally empty.txt in $rooms/NAME.
@@ -129,12 +151,13 @@ for room in "${room_names[@]}"; do
   printf '%s\tnone\t0\t0\t0\t0\t%s\t0\n' "$room" "$before" >> "$results"
   for budget in $budgets; do
     for mode in track candidate; do
+      wants "$mode" || continue
       run=$w/$mode-$budget
       flags=()
       [ "$mode" = candidate ] && flags=(--per-candidate)
       "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
         --name "$room-$mode-$budget" --models-dir "$models" --budget "$budget" --threads $threads \
-        --base-pos "$sets/base-pos" --base-neg "$sets/base-neg" "${flags[@]}" 2>"$run.log" ||
+        --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${flags[@]}" 2>"$run.log" ||
         { tail -3 "$run.log" >&2; exit 1; }
       state=$run/adapt-state.tsv
       wrong=$(sed -n 's/.*the truth contradicts \([0-9]*\) .*/\1/p' "$run/logs/answers.log" | tail -1)
@@ -145,19 +168,22 @@ for room in "${room_names[@]}"; do
     done
   done
   # Retrained from nothing (100 rounds) on the per-track answers of the largest budget, to compare.
-  budget=${budgets##* } run=$w/retrain-${budgets##* }
-  "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
-    --name "$room-retrain-$budget" --models-dir "$models" --budget "$budget" --threads $threads --retrain \
-    --base-pos "$sets/base-pos" --base-neg "$sets/base-neg" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
-  state=$run/adapt-state.tsv
-  printf '%s\tretrain\t%s\t%s\t%s\t0\t%s\t%s\n' "$room" "$budget" "$(field "$state" answers.human)" \
-    "$(field "$state" answers.propagated)" "$(field "$state" tar_after)" "$(field "$state" train_seconds)" >> "$results"
-  # Negatives only: the same training on the room's negatives and the base, no answers.
+  if wants retrain; then
+    budget=${budgets##* } run=$w/retrain-${budgets##* }
+    "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
+      --name "$room-retrain-$budget" --models-dir "$models" --budget "$budget" --threads $threads --retrain \
+      --base-pos "$base_pos" --base-neg "${base_neg[@]}" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
+    state=$run/adapt-state.tsv
+    printf '%s\tretrain\t%s\t%s\t%s\t0\t%s\t%s\n' "$room" "$budget" "$(field "$state" answers.human)" \
+      "$(field "$state" answers.propagated)" "$(field "$state" tar_after)" "$(field "$state" train_seconds)" >> "$results"
+  fi
+  # Negatives only: the same training on the room's negatives (mined by the per-track run) and the base.
+  wants negatives || continue
   negatives=$w/track-${budgets%% *}/sets/room-negatives
   if [ -f "$negatives/manifest.yml" ]; then
     start=$(date +%s.%N)
     "$train" --models-dir "$models" --name "$room-negatives" --init people --rounds 10 --folds 0 \
-      --pos "$sets/base-pos" --neg "$negatives" "$sets/base-neg" >/dev/null 2>"$w/negatives-train.log"
+      --pos "$base_pos" --neg "$negatives" "${base_neg[@]}" >/dev/null 2>"$w/negatives-train.log"
     seconds=$(echo "$(date +%s.%N) - $start" | bc)
     printf '%s\tnegatives\t0\t0\t0\t0\t%s\t%.1f\n' "$room" "$(tar_of "$room-negatives" "$room")" "$seconds" >> "$results"
   else

@@ -330,6 +330,15 @@ TEST_F(TrainerProgram, InitContinuesAModelOnNewSetsAndRefusesOneThatDoesNotFit) 
   }
   EXPECT_TRUE(recorded);
 
+  // A feature pool (as the default memory budget draws for a large base) gets the init model's features
+  // added, so its scores come from the rows; the model names the spec's features.
+  const test::RunResult pooled = train(more + " --name lab5 --init base --rounds 2 --feature-pool 20");
+  ASSERT_EQ(pooled.exit_code, 0) << pooled.err;
+  EXPECT_NE(pooled.err.find("more that the --init model reads"), std::string::npos) << pooled.err;
+  const BoostedModel lab5 = BoostedModel::load("lab5", models);
+  ASSERT_EQ(lab5.weak_classifiers().size(), 5u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_TRUE(lab5.weak_classifiers()[k] == base.weak_classifiers()[k]) << k;
+
   test::RunResult bad = train(more + " --name lab2 --init base --bins 64");
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("differs from the --init model's 32"), std::string::npos) << bad.err;

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "rdsf/classifier/binned_matrix.hpp"
+#include "rdsf/classifier/features_read.hpp"
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_file.hpp"
@@ -520,9 +521,29 @@ TEST(ContinuedTraining, ContinuingAModelEqualsTrainingItLonger) {
   opencv.backend = BoostBackend::opencv;
   EXPECT_NE(message_of([&] { train_boosted_model(rows, labels, opencv); }).find("needs the native backend"),
             std::string::npos);
+
+  // Rows of a feature pool that holds every feature the longer training reads (the init's among them):
+  // continuing on them chooses the same, and the model names the spec's features, not the pool's columns.
   BoostTrainingParams pool = more;
-  pool.feature_columns = {0, 1, 2, 3};
-  EXPECT_NE(message_of([&] { train_boosted_model(rows, labels, pool); }).find("--feature-pool 0"), std::string::npos);
+  pool.feature_columns = features_read(longer);
+  const auto pool_rows = [&rows](const std::vector<int>& columns) {
+    cv::Mat1f out(rows.rows, static_cast<int>(columns.size()));
+    for (std::size_t c = 0; c < columns.size(); ++c) rows.col(columns[c]).copyTo(out.col(static_cast<int>(c)));
+    return out;
+  };
+  ASSERT_LT(pool.feature_columns.size(), 40u);
+  const BoostedModel pooled = train_boosted_model(pool_rows(pool.feature_columns), labels, pool);
+  ASSERT_EQ(pooled.weak_classifiers().size(), 8u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_TRUE(pooled.weak_classifiers()[k] == first.weak_classifiers()[k]) << k;
+  const std::vector<double> c = pooled.score(rows);
+  for (int r = 0; r < rows.rows; ++r) ASSERT_NEAR(c[static_cast<std::size_t>(r)], b[static_cast<std::size_t>(r)], 1e-6) << r;
+
+  // A pool without a feature the init model reads is refused.
+  const int needed = features_read(first).front();
+  pool.feature_columns.erase(std::find(pool.feature_columns.begin(), pool.feature_columns.end(), needed));
+  EXPECT_NE(message_of([&] { train_boosted_model(pool_rows(pool.feature_columns), labels, pool); })
+                .find("reads feature " + std::to_string(needed) + ", which the rows' feature pool does not hold"),
+            std::string::npos);
 }
 
 }  // namespace

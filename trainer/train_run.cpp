@@ -11,6 +11,7 @@
 
 #include "rdsf/candidates/crop_provenance.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/features_read.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "cli/cli.hpp"
 #include "rdsf/core/error.hpp"
@@ -211,9 +212,11 @@ ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const
 }
 
 /// Every rank reads its share of the training (and validation) rows; the ranks must agree on what they read.
-void read_samples(const TrainOptions& o, const Recipe& recipe, const RowShards& shards, ChosenSamples& train,
-                  ChosenSamples& validation) {
+/// A feature pool holds every feature the --init model reads (its scores come from the rows).
+void read_samples(const TrainOptions& o, const Recipe& recipe, const RowShards& shards,
+                  const std::optional<BoostedModel>& init, ChosenSamples& train, ChosenSamples& validation) {
   SampleChoice train_choice = training_choice(recipe, o);
+  if (init) train_choice.required_features = features_read(*init);
   train_choice.shard = shards.rank();
   train_choice.shards = shards.size();
   on_every_rank(shards, "reading its share of the training sets",
@@ -347,7 +350,7 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
             << " rounds\n";
   const std::optional<BoostedModel> init = read_init_model(o, recipe, shards);
   ChosenSamples train, validation;
-  read_samples(o, recipe, shards, train, validation);
+  read_samples(o, recipe, shards, init, train, validation);
 
   const bool separate = !validation.labels.empty();
   const TrainingRowInfo info = row_info(train, validation, shards);

@@ -6,6 +6,7 @@
 #include "rdsf/classifier/seeded_sampling.hpp"
 #include "cli/progress.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/ordered_pool.hpp"
 #include "rdsf/core/stable_hash.hpp"
 #include "rdsf/dataset/sample_groups.hpp"
 #include "rdsf/dataset/sample_set.hpp"
@@ -122,6 +123,19 @@ void append_rows(const ClassPick& pick, int label, const FeatureSubset* subset, 
   }
 }
 
+// Positives with a crop among this rank's (augmentation copies them), in append_rows' order of ranks.
+std::size_t positives_with_crop_here(const ClassPick& pick, const SampleChoice& choice) {
+  std::size_t k = 0, count = 0;
+  for (std::size_t s = 0; s < pick.sets.size(); ++s) {
+    for (const PoolEntry& e : pick.chosen) {
+      if (e.set != s) continue;
+      const bool here = block_owner(k++, pick.chosen.size(), choice.shards) == choice.shard;
+      if (here && pick.sets[s].records()[e.record].has_crop) ++count;
+    }
+  }
+  return count;
+}
+
 }  // namespace
 
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads) {
@@ -146,8 +160,14 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
     for (const std::size_t f : seeded_subset(dimension, pool, choice.seed ^ fnv1a64("feature pool"))) {
       out.columns.push_back(static_cast<int>(f));
     }
+    const std::size_t drawn = out.columns.size();
+    out.columns.insert(out.columns.end(), choice.required_features.begin(), choice.required_features.end());
+    std::sort(out.columns.begin(), out.columns.end());
+    out.columns.erase(std::unique(out.columns.begin(), out.columns.end()), out.columns.end());
     log << "rdsf-train: feature pool of " << out.columns.size() << " of the " << dimension << " features of "
-        << out.spec.name() << " (seeded; --feature-pool)\n";
+        << out.spec.name() << " (seeded; --feature-pool";
+    if (out.columns.size() > drawn) log << "; " << out.columns.size() - drawn << " more that the --init model reads";
+    log << ")\n";
   }
   const RdsfExtractor extractor(out.spec);
   std::optional<FeatureSubset> subset;
@@ -168,8 +188,14 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   for (const std::size_t count : {pos.chosen.size(), neg.chosen.size()}) {
     for (std::size_t k = 0; k < count; ++k) here += block_owner(k, count, choice.shards) == choice.shard ? 1 : 0;
   }
-  out.rows.create(static_cast<int>(here), columns);
   choice.augmentation.validate();
+  // The augmented copies' rows follow the originals in the same matrix, allocated once (rows of a large
+  // base are gigabytes: growing them would copy every row again).
+  const std::size_t per_crop = choice.augmentation.enabled() ? (choice.augmentation.mirror ? 1u : 0u) +
+                                                                   static_cast<std::size_t>(choice.augmentation.copies)
+                                                             : 0u;
+  const std::size_t here_augmented = per_crop * positives_with_crop_here(pos, choice);
+  out.rows.create(static_cast<int>(here + here_augmented), columns);
   int row = 0, local = 0;
   cli::Progress progress(log, "samples", static_cast<std::int64_t>(samples));
   std::vector<SampleOrigin> origins;
@@ -183,28 +209,31 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   if (choice.augmentation.enabled()) {
     // Variants of every positive with a crop, after the originals, with their original's origin (group).
     // With ranks, each computes the copies of its own positives; every rank knows how many each has.
-    const std::size_t per_crop = (choice.augmentation.mirror ? 1u : 0u) + static_cast<std::size_t>(choice.augmentation.copies);
-    std::vector<float> values(static_cast<std::size_t>(columns));
-    cv::Mat1f extra(0, columns);
     std::vector<SampleOrigin> extra_origins;
     std::vector<int> extra_owners;
+    std::vector<std::size_t> mine;  // positives (of pos_sources) whose copies are computed here, in row order
     for (std::size_t k = 0; k < pos_sources.size(); ++k) {
       const SampleSet& set = pos.sets[pos_sources[k].first];
-      const SampleRecord& record = set.records()[pos_sources[k].second];
-      if (!record.has_crop) continue;
+      if (!set.records()[pos_sources[k].second].has_crop) continue;
       const int owner = out.owner.empty() ? 0 : out.owner[k];
       extra_origins.insert(extra_origins.end(), per_crop, origins[k]);
       extra_owners.insert(extra_owners.end(), per_crop, owner);
-      if (owner != choice.shard) continue;
-      const std::vector<cv::Mat1w> copies =
-          augmented_crops(set.depth_crop(pos_sources[k].second), choice.augmentation, record.id);
-      if (copies.size() != per_crop) fail(set.dir(), "augmentation gave another number of copies than expected");
-      for (const cv::Mat1w& crop : copies) {
-        compute_row(crop, values.data());
-        extra.push_back(cv::Mat1f(1, columns, values.data()));
-      }
+      if (owner == choice.shard) mine.push_back(k);
     }
-    if (!extra.empty()) cv::vconcat(out.rows, extra, out.rows);
+    if (mine.size() * per_crop != here_augmented) fail(pos.sets.front().dir(), "the augmented rows were miscounted");
+    // Each copy depends on its crop and the sample's id only: the rows are the same with any thread count.
+    parallel_for_chunks(mine.size(), 64, threads, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t m = begin; m < end; ++m) {
+        const SampleSet& set = pos.sets[pos_sources[mine[m]].first];
+        const std::size_t record = pos_sources[mine[m]].second;
+        const std::vector<cv::Mat1w> copies =
+            augmented_crops(set.depth_crop(record), choice.augmentation, set.records()[record].id);
+        if (copies.size() != per_crop) fail(set.dir(), "augmentation gave another number of copies than expected");
+        for (std::size_t c = 0; c < per_crop; ++c) {
+          compute_row(copies[c], out.rows.ptr<float>(static_cast<int>(here + m * per_crop + c)));
+        }
+      }
+    });
     out.labels.insert(out.labels.end(), extra_origins.size(), 1);
     out.augmented.insert(out.augmented.end(), extra_origins.size(), true);
     origins.insert(origins.end(), extra_origins.begin(), extra_origins.end());

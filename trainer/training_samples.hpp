@@ -33,6 +33,9 @@ struct SampleChoice {
   /// 0: every feature when the rows fit in memory_budget_mb, else a seeded pool of as many as fit;
   /// N: a seeded pool of N features (all when the spec has no more).
   std::size_t feature_pool = 0;
+  /// Features every pool must hold besides its seeded draw (continued training: the --init model's, whose
+  /// scores are computed from the rows); ignored when the rows hold every feature.
+  std::vector<int> required_features;
   std::size_t memory_budget_mb = 4096;  ///< for the float rows and their 8-bit bins (5 bytes per value)
   /// Validation groups: recording and block of this many consecutive frames (dataset/sample_groups.hpp);
   /// 0 = no groups (the validation split is by sample).

@@ -187,8 +187,20 @@ TrainingSide training_side(const std::vector<int>& labels, const std::vector<std
 // Continued training: the score F0 of params.init (H(x) of a model of those weak classifiers) on each of
 // `rows`' rows in `index`.
 // Scores of the --init model: of `rows`' rows `index` lists (indices into `rows`).
+// params.init with its features numbered as the rows' columns (the pool's, when the rows hold one: every
+// feature it reads is in the pool, validate_training_params checks).
+std::vector<WeakClassifier> init_on_rows(const BoostTrainingParams& params) {
+  std::vector<WeakClassifier> init = params.init;
+  if (!params.feature_columns.empty()) {
+    std::map<int, int> column_of;
+    for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
+    renumber_features(init, [&column_of](int feature) { return column_of.at(feature); });
+  }
+  return init;
+}
+
 std::vector<double> init_scores(const cv::Mat1f& rows, const std::vector<std::size_t>& index, const BoostTrainingParams& params) {
-  const BoostedModel init(params.feature_spec, params.bins, params.init);
+  const BoostedModel init(params.feature_spec, params.bins, init_on_rows(params));
   std::vector<double> scores(index.size(), 0.0);
   for (std::size_t k = 0; k < index.size(); ++k) scores[k] = init.score(rows[static_cast<int>(index[k])]);
   return scores;
@@ -389,7 +401,8 @@ BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const 
     }
   }
 
-  weak.insert(weak.begin(), params.init.begin(), params.init.end());  // continued training: its model first
+  const std::vector<WeakClassifier> init = init_on_rows(params);
+  weak.insert(weak.begin(), init.begin(), init.end());  // continued training: its model first, on the rows' columns
   BoostedModel model(params.feature_spec, params.bins, std::move(weak));
   if (validation.has_both_classes()) {
     const std::vector<double> final_scores =
@@ -441,8 +454,11 @@ void validate_training_params(const BoostTrainingParams& p) {
   p.feature_spec.validate();
   if (!p.init.empty()) {
     if (p.backend != BoostBackend::native) throw Error("continued training (--init) needs the native backend");
-    if (!p.feature_columns.empty()) {
-      throw Error("continued training (--init) needs every feature of the spec in the rows (--feature-pool 0)");
+    for (const int f : p.feature_columns.empty() ? std::vector<int>{} : features_read(p.init)) {
+      if (std::find(p.feature_columns.begin(), p.feature_columns.end(), f) == p.feature_columns.end()) {
+        throw Error("continued training (--init): the model reads feature " + std::to_string(f) +
+                    ", which the rows' feature pool does not hold");
+      }
     }
     for (const WeakClassifier& w : p.init) {
       if (w.feature < 0 || w.feature >= p.feature_spec.dimension()) {
