@@ -1,0 +1,217 @@
+#include "rdsf/segmentation/background_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "rdsf/core/durable_io.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/frame/camera_file.hpp"
+#include "rdsf/frame/depth_png.hpp"
+
+namespace rdsf {
+
+namespace fs = std::filesystem;
+
+const ParameterTable<BackgroundParams>& background_parameters() {
+  using P = BackgroundParams;
+  static const ParameterTable<P> table = {
+      parameter("background-margin", &P::margin_mm,
+                "with --background: a pixel is in front of the room when nearer than its background by more than "
+                "this (mm) ...",
+                Range::at_least(0)),
+      parameter("background-relative", &P::margin_relative,
+                "... and by more than this fraction of the background's depth (Kinect noise grows with depth)",
+                Range::between(0, 1)),
+  };
+  return table;
+}
+
+void BackgroundModel::check_fits(const DepthFrame& frame) const {
+  const std::string where = "background " + (path.empty() ? std::string("(in memory)") : path);
+  if (frame.depth_mm.cols != far_mm.cols || frame.depth_mm.rows != far_mm.rows) {
+    fail(where, "learned from " + std::to_string(far_mm.cols) + "x" + std::to_string(far_mm.rows) + " frames, but frame " +
+                    frame.name + " is " + std::to_string(frame.depth_mm.cols) + "x" + std::to_string(frame.depth_mm.rows));
+  }
+  if (!(frame.camera == camera)) {
+    fail(where, "learned with camera " + camera.describe() + ", but frame " + frame.name + " has " +
+                    frame.camera.describe());
+  }
+}
+
+namespace {
+
+// Per background value b the nearest depth that is still background, rounded up: a reading d is in front
+// of b exactly when d < nearest_background(b) (for integer d, d < b - margin <=> d < ceil(b - margin)).
+// One table per thread, made again only when the margins change.
+const std::uint16_t* nearest_background(const BackgroundParams& params) {
+  thread_local std::vector<std::uint16_t> limit;
+  thread_local BackgroundParams made_for{-1.0, -1.0};
+  if (limit.empty() || made_for.margin_mm != params.margin_mm || made_for.margin_relative != params.margin_relative) {
+    limit.assign(65536, 0);
+    for (std::size_t b = 1; b < limit.size(); ++b) {
+      const double margin = std::max(params.margin_mm, params.margin_relative * static_cast<double>(b));
+      const double nearest = static_cast<double>(b) - margin;
+      limit[b] = nearest <= 0 ? 0 : static_cast<std::uint16_t>(std::ceil(nearest));
+    }
+    made_for = params;
+  }
+  return limit.data();
+}
+
+inline bool in_front(std::uint16_t d, std::uint16_t b, const std::uint16_t* nearest) {
+  return d != 0 && (b == 0 || d < nearest[b]);
+}
+
+}  // namespace
+
+cv::Mat1b foreground_mask(const cv::Mat1w& depth_mm, const cv::Mat1w& background_mm, const BackgroundParams& params) {
+  if (depth_mm.size() != background_mm.size()) fail("foreground_mask", "depth and background differ in size");
+  const std::uint16_t* const nearest = nearest_background(params);
+  cv::Mat1b mask(depth_mm.size());
+  for (int r = 0; r < depth_mm.rows; ++r) {
+    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
+    const std::uint16_t* b = background_mm.ptr<std::uint16_t>(r);
+    std::uint8_t* m = mask.ptr<std::uint8_t>(r);
+    for (int c = 0; c < depth_mm.cols; ++c) m[c] = in_front(d[c], b[c], nearest) ? 255 : 0;
+  }
+  return mask;
+}
+
+Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& depth_mm, const cv::Mat1w& background_mm,
+                         const BackgroundParams& params) {
+  if (depth_mm.size() != background_mm.size() || depth_mm.size() != segmentation.labels.size()) {
+    fail("in_front_of", "depth, background and labels differ in size");
+  }
+  const std::uint16_t* const nearest_bg = nearest_background(params);
+  Segmentation out;
+  out.layers = segmentation.layers;
+  out.seeds_mm = segmentation.seeds_mm;
+  out.iterations = segmentation.iterations;
+  out.labels.create(segmentation.labels.size());
+  const std::size_t count = out.layers.size() + 1;
+  std::vector<std::uint64_t> sum(count, 0);
+  std::vector<std::int64_t> pixels(count, 0);
+  std::vector<std::uint16_t> nearest(count, 65535), farthest(count, 0);
+  for (int r = 0; r < depth_mm.rows; ++r) {
+    const std::uint8_t* in = segmentation.labels.ptr<std::uint8_t>(r);
+    const std::uint16_t* b = background_mm.ptr<std::uint16_t>(r);
+    const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
+    std::uint8_t* label = out.labels.ptr<std::uint8_t>(r);
+    for (int c = 0; c < depth_mm.cols; ++c) {
+      const std::size_t k = in[c];  // 0: no reading
+      label[c] = 0;
+      if (k == 0 || k >= count || !in_front(d[c], b[c], nearest_bg)) continue;
+      label[c] = static_cast<std::uint8_t>(k);
+      sum[k] += d[c];
+      ++pixels[k];
+      nearest[k] = std::min(nearest[k], d[c]);
+      farthest[k] = std::max(farthest[k], d[c]);
+    }
+  }
+  for (DepthLayer& layer : out.layers) {
+    const auto k = static_cast<std::size_t>(layer.label);
+    if (k >= count) continue;
+    layer.pixel_count = pixels[k];
+    if (pixels[k] == 0) continue;
+    layer.mean_depth_mm = static_cast<double>(sum[k]) / static_cast<double>(pixels[k]);
+    layer.min_depth_mm = nearest[k];
+    layer.max_depth_mm = farthest[k];
+  }
+  return out;
+}
+
+BackgroundLearner::BackgroundLearner(double quantile) : quantile_(quantile) {
+  if (!(quantile >= 0.0 && quantile <= 1.0)) fail("background", "the quantile must be in [0, 1]");
+}
+
+void BackgroundLearner::add(const DepthFrame& frame) {
+  if (frame.depth_mm.empty()) fail("frame " + frame.name, "has no depth image");
+  if (frames_.empty()) {
+    camera_ = frame.camera;
+    first_name_ = frame.name;
+  } else if (frame.depth_mm.size() != frames_.front().size() || !(frame.camera == camera_)) {
+    fail("frame " + frame.name, std::to_string(frame.depth_mm.cols) + "x" + std::to_string(frame.depth_mm.rows) + " " +
+                                    frame.camera.describe() + ", but the background is learned from " +
+                                    first_name_ + "'s " + camera_.describe());
+  }
+  frames_.push_back(frame.depth_mm.clone());
+}
+
+BackgroundModel BackgroundLearner::model() const {
+  if (frames_.empty()) fail("background", "no frames to learn from");
+  BackgroundModel model;
+  model.camera = camera_;
+  const cv::Size size = frames_.front().size();
+  model.far_mm.create(size);
+  std::vector<std::uint16_t> readings;
+  readings.reserve(frames_.size());
+  for (int r = 0; r < size.height; ++r) {
+    std::uint16_t* out = model.far_mm.ptr<std::uint16_t>(r);
+    for (int c = 0; c < size.width; ++c) {
+      readings.clear();
+      for (const cv::Mat1w& frame : frames_) {
+        const std::uint16_t d = frame.ptr<std::uint16_t>(r)[c];
+        if (d != 0) readings.push_back(d);
+      }
+      if (readings.empty()) {
+        out[c] = 0;
+        continue;
+      }
+      const auto rank = static_cast<std::ptrdiff_t>(std::floor(quantile_ * static_cast<double>(readings.size() - 1)));
+      std::nth_element(readings.begin(), readings.begin() + rank, readings.end());
+      out[c] = readings[static_cast<std::size_t>(rank)];
+    }
+  }
+  return model;
+}
+
+std::vector<std::int64_t> evenly_spaced(std::int64_t total, std::int64_t count) {
+  std::vector<std::int64_t> out;
+  if (total <= 0 || count <= 0) return out;
+  if (count >= total) {
+    for (std::int64_t i = 0; i < total; ++i) out.push_back(i);
+    return out;
+  }
+  if (count == 1) return {0};
+  for (std::int64_t i = 0; i < count; ++i) {
+    out.push_back(static_cast<std::int64_t>(std::llround(static_cast<double>(i) * static_cast<double>(total - 1) /
+                                                         static_cast<double>(count - 1))));
+  }
+  return out;
+}
+
+void write_background(const std::string& dir, const BackgroundModel& model, bool overwrite) {
+  const std::string depth = (fs::path(dir) / BackgroundModel::kDepthFileName).string();
+  const std::string camera = (fs::path(dir) / CameraFile::kFileName).string();
+  if (!overwrite) {
+    for (const std::string& file : {depth, camera}) {
+      if (fs::exists(file)) fail(file, "already exists");
+    }
+  }
+  if (model.far_mm.empty() || model.far_mm.cols != model.camera.width_px || model.far_mm.rows != model.camera.height_px) {
+    fail(dir, "the background's image is not of its camera model's size");
+  }
+  create_folders_durably(dir);
+  write_png_atomically(depth, model.far_mm);
+  write_file_durably(camera, camera_file_text(CameraFile{model.camera, 1.0}));
+}
+
+BackgroundModel read_background(const std::string& dir) {
+  BackgroundModel model;
+  model.path = dir;
+  const std::string camera = (fs::path(dir) / CameraFile::kFileName).string();
+  if (!fs::is_regular_file(camera)) fail(camera, "missing (a background folder holds " + std::string(BackgroundModel::kDepthFileName) + " and camera.yml)");
+  const CameraFile file = read_camera_file(camera);
+  if (file.depth_unit_mm != 1.0) fail(camera, "a background is stored in millimetres (depth_unit_mm 1)");
+  model.camera = file.camera;
+  const std::string depth = (fs::path(dir) / BackgroundModel::kDepthFileName).string();
+  model.far_mm = read_depth_png(depth);
+  if (model.far_mm.cols != model.camera.width_px || model.far_mm.rows != model.camera.height_px) {
+    fail(depth, std::to_string(model.far_mm.cols) + "x" + std::to_string(model.far_mm.rows) + ", but " + camera + " says " +
+                    model.camera.describe());
+  }
+  return model;
+}
+
+}  // namespace rdsf
