@@ -16,13 +16,15 @@ std::size_t add_foreground_candidates(const DepthFrame& frame, const Segmentatio
   for (Candidate& c : found) {
     double best = 0.0;
     const Candidate* nearest = nullptr;
+    bool duplicate = false;
     for (std::size_t i = 0; i < layer_candidates; ++i) {
       const Candidate& other = candidates[i];
       if (other.layer != c.layer) continue;
       const double overlap = iou(c.strict_box, other.strict_box);
+      duplicate = duplicate || (overlap >= kDuplicateIou && iou(c.fitted_box, other.fitted_box) >= kDuplicateIou);
       if (overlap > best) best = overlap, nearest = &other;
     }
-    if (best >= kDuplicateIou) continue;
+    if (duplicate) continue;
     c.foreground = true;
     if (nearest != nullptr && best >= kPieceIou) {
       c.object = nearest->object;

@@ -6,13 +6,17 @@
 // their box reaches the floor instead of the waist, or exists at all where they joined the wall.
 //
 // Each added candidate has Candidate::foreground set, its crops hold only the foreground pixels of its layer
-// (cut from the foreground segmentation's labels), and against the layers' candidates of the same layer
-// (strict boxes' IoU):
-//   IoU >= kDuplicateIou   the same object found twice: not added;
-//   IoU >= kPieceIou       a piece of that candidate's object (Candidate::object its, part = true), so
-//                          that of the two, as detections, only the higher-scoring one counts
-//                          (duplicate_candidates.hpp: a whole object and a piece of it);
-//   else                   an object of its own (Candidate::object after every layer object's).
+// (cut from the foreground segmentation's labels), and against the layers' candidates of the same layer:
+//   strict boxes' IoU and fitted boxes' IoU both >= kDuplicateIou
+//                          the same object found twice: not added (a candidate whose strict box is the
+//                          same but whose fitted box differs is kept: the layer's object reached over the
+//                          wall or a neighbour beside the person, which the foreground leaves out);
+//   else, the candidate of the largest strict-box IoU, when >= kPieceIou
+//                          its object's piece (Candidate::object its, part = true), so that of the two, as
+//                          detections, only the higher-scoring one counts (duplicate_candidates.hpp: a
+//                          whole object and a piece of it);
+//   else                   an object of its own (Candidate::object after every layer object's; pieces of
+//                          one foreground object share one).
 #include <vector>
 
 #include <opencv2/core.hpp>

@@ -17,9 +17,10 @@
 //
 // The foreground of a frame (foreground_mask): a pixel with a reading d > 0 is in front of the background
 // b when
-//   b == 0   or   d < b - max(margin_mm, margin_relative * b)
-// (Kinect v1 noise grows with depth squared, about 1.2 mm * z[m]^2 of sigma, plus 8-bit captures' steps
-// of 1-3 cm: the relative margin keeps the far wall's noise out, margin_mm the near one's).
+//   b == 0   or   d + max(M, round(margin_relative * b)) < b        (millimetres, whole numbers)
+// with M = round(margin_mm), the relative part computed in steps of 1/65536 ((b * round(margin_relative *
+// 65536) + 32768) >> 16). Kinect v1 noise grows with depth squared (about 1.2 mm * z[m]^2 of sigma) and
+// 8-bit captures step by 1-3 cm: the relative margin keeps the far wall's noise out, M the near one's.
 //
 // Stored as a one-frame folder that the PNG frame source reads (rdsf-detect --source DIR shows it):
 // DIR/background.depth.png (16-bit, millimetres, 0 = never seen) and DIR/camera.yml (the camera model of
@@ -39,7 +40,8 @@ namespace rdsf {
 
 /// The foreground rule's margins (background_parameters(): --background-margin, --background-relative).
 struct BackgroundParams {
-  /// A pixel is in front of the background when nearer by more than max(margin_mm, margin_relative * b).
+  /// A pixel is in front of the background when nearer by more than max(margin_mm, margin_relative * b)
+  /// (both rounded to whole millimetres; the rule above).
   double margin_mm = 100.0;
   double margin_relative = 0.03;
 };
