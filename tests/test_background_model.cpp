@@ -127,6 +127,25 @@ TEST(BackgroundModel, PersonAgainstAWallIsACandidateOnlyWithTheBackground) {
   EXPECT_EQ(cv::countNonZero(on.in_front.labels), kPerson.height * kPerson.width - 40 * (kPerson.width - 24));
 }
 
+TEST(BackgroundModel, ColourCropsCutLaterUseTheForegroundLabels) {
+  DepthFrame frame = person_frame(kPerson, kPersonMm);
+  frame.bgr = cv::Mat3b(frame.depth_mm.size(), cv::Vec3b(200, 100, 50));
+  AnalyserParams params;
+  params.background = wall_background();
+  const FrameAnalysis a = FrameAnalyser(params).analyse(frame, false, CropColour::cut);
+  const auto person = std::find_if(a.candidates.begin(), a.candidates.end(), [](const Candidate& c) { return c.foreground; });
+  ASSERT_NE(person, a.candidates.end());
+  const cv::Mat3b cut = person->colour_crop.clone();
+  Candidate later = *person;
+  later.colour_crop = cv::Mat3b();  // a buffer of its own (a copied Candidate shares its crops' pixels)
+  cut_colour_crop(frame, a.in_front.labels, later);  // what PeoplePipeline does for a foreground detection
+  EXPECT_EQ(cv::norm(later.colour_crop, cut, cv::NORM_L1), 0.0);
+  EXPECT_EQ(cv::sum(cut)[0], 200.0 * cv::countNonZero(person->depth_crop));  // only the person's pixels
+  later.colour_crop = cv::Mat3b();
+  cut_colour_crop(frame, a.segmentation.labels, later);  // the layer's labels would colour the wall too
+  EXPECT_GT(cv::sum(later.colour_crop)[0], cv::sum(cut)[0]);
+}
+
 TEST(BackgroundModel, AFreeStandingPersonKeepsItsCandidateAndGetsNoDuplicate) {
   const cv::Rect body(300, 40, 90, 420);  // 1.60 m tall at 2 m
   const DepthFrame frame = person_frame(body, 2000);  // 1 m in front of the wall: a layer of its own

@@ -36,7 +36,7 @@ struct AnalyserParams {
   double reference_focal_px = 525.0;
   /// A background model of the room, for a static camera (segmentation/background_model.hpp): when set,
   /// the objects in front of it are added as candidates beside the layers' (foreground_candidates.hpp).
-  /// Null (the default, and under --thesis): off. Shared and never changed, so analyse() stays const and
+  /// Null: off (the default; --thesis sets none). Shared and never changed, so analyse() stays const and
   /// thread-safe. A frame of another size or camera model than the background's is an Error.
   std::shared_ptr<const BackgroundModel> background;
   /// The foreground rule's margins (used only with a background).
