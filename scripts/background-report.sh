@@ -10,7 +10,7 @@
 # Sets: wallsS = rdsf-synth --seed S --frames 480 --clip-frames 60 --moving-camera 0 --wall-clearance 0.25
 # --people 1..4 (51 tunes, 41 is held out) and the same with --empty; heldout = the quality report's
 # held-out rendering (seed 31, 960 frames, 16 clips; only its static clips: those whose empty frames lie
-# less than 2 % in front of their own background); real = ../shared/realdata/people's home_ frames and
+# less than 10 % in front of their own background: static synthetic rooms give 0.1-6 %, moving cameras 17-58 %); real = ../shared/realdata/people's home_ frames and
 # lab_height frames (one static camera each; the other lab recordings have 2-3 frames, too few to learn a
 # room from, and stay without a background in the lab's pooled row). Defaults: --out out/background,
 # --margin 100, --relative 0.03, --quantile 0.8. Runs already made are reused.
@@ -69,8 +69,8 @@ part() {  # RUN LIST BOXES [BACKGROUND]: one rdsf-detect evaluation into $out/ru
     "${extra[@]}" > /dev/null 2> "$dir/detect.err" || { tail -3 "$dir/detect.err" >&2; exit 1; }
 }
 
-static_clip() {  # BACKGROUND_ERR: true when the clip's empty frames lie < 2 % in front of their background
-  awk '/lie in front/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "%") { exit !($i < 2.0) } }' "$1"
+static_clip() {  # BACKGROUND_ERR: true when the clip's empty frames lie < 10 % in front of their background
+  awk '/lie in front/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "%") { exit !($i < 10.0) } }' "$1"
 }
 
 pool() { python3 scripts/background-pool.py "$@"; }
