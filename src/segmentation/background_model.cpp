@@ -20,7 +20,7 @@ const ParameterTable<BackgroundParams>& background_parameters() {
       parameter("background-margin", &P::margin_mm,
                 "with --background: a pixel is in front of the room when nearer than its background by more than "
                 "this (mm) ...",
-                Range::at_least(0)),
+                Range::between(0, 10000)),
       parameter("background-relative", &P::margin_relative,
                 "... and by more than this fraction of the background's depth (Kinect noise grows with depth)",
                 Range::between(0, 1)),

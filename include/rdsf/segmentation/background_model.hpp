@@ -46,8 +46,8 @@ struct BackgroundParams {
   double margin_relative = 0.03;
 };
 
-/// The rows of BackgroundParams (core/parameter_table.hpp); no thesis values: the whole stage is off
-/// under --thesis (no background is given).
+/// The rows of BackgroundParams (core/parameter_table.hpp): margin_mm in [0, 10000], margin_relative in
+/// [0, 1]. No thesis values: the stage runs only when a background is given, and --thesis gives none.
 const ParameterTable<BackgroundParams>& background_parameters();
 
 struct BackgroundModel {
