@@ -4,12 +4,15 @@
 // classifier). Issue 17: a 100-round model scored from only the features it reads < 5 us per candidate
 // (BM_ScoreModelFeaturesOnly/rdsf), the full 8128 vector < 20 us (BM_RdsfPerCandidate); issue 13: the
 // rdsf-rect spec scored at most at the old full-vector cost, about 64 us (BM_ScoreModelFeaturesOnly/rect).
-// BM_CandidateShapingSynthetic and BM_SegmentationSynthetic run on the performance report's 48 synthetic frames.
+// BM_CandidateShapingSynthetic and BM_SegmentationSynthetic run on the performance report's 48 synthetic frames;
+// BM_AnalyseWithBackground times segmentation and candidates with and without a background model (issue 34).
 // Run: build/bench/bench_core
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <random>
@@ -19,6 +22,7 @@
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
+#include "rdsf/segmentation/background_model.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
 
@@ -103,6 +107,39 @@ BENCHMARK(BM_CandidateShapingSynthetic)->Arg(0)->Arg(1)->Unit(benchmark::kMillis
 
 void BM_SegmentationSynthetic(benchmark::State& state) { segment_frames(state, synthetic_frames()); }
 BENCHMARK(BM_SegmentationSynthetic)->Unit(benchmark::kMillisecond);
+
+// Segmentation and candidates per frame with a background model of the room (issue 34: rdsf-detect
+// --background) against without, on one static synthetic room with people against its walls (48 frames,
+// seed 41's first clip of `rdsf-synth --moving-camera 0 --wall-clearance 0.25 --people 1..4`), the
+// background learned from the same room rendered empty. 0: without, 1: with.
+void BM_AnalyseWithBackground(benchmark::State& state) {
+  static const auto scene = [] {
+    rdsf::synth::SynthParams p;
+    p.frames = 48, p.clip_frames = 48, p.people_min = 1, p.people_max = 4, p.seed = 41;
+    p.room.moving_share = 0.0, p.people.clearance_m = 0.25;
+    std::pair<std::vector<rdsf::DepthFrame>, std::shared_ptr<const rdsf::BackgroundModel>> made;
+    rdsf::synth::SynthSequence people(p);
+    for (int i = 0; i < p.frames; ++i) made.first.push_back(people.frame(i).depth_frame(p.camera()));
+    p.empty = true;
+    rdsf::synth::SynthSequence room(p);
+    rdsf::BackgroundLearner learner;
+    for (int i = 0; i < p.frames; ++i) learner.add(room.frame(i).depth_frame(p.camera()));
+    made.second = std::make_shared<const rdsf::BackgroundModel>(learner.model());
+    return made;
+  }();
+  rdsf::AnalyserParams params;
+  if (state.range(0) == 1) params.background = scene.second;
+  const rdsf::FrameAnalyser analyser(params);
+  std::size_t i = 0;
+  std::int64_t candidates = 0;
+  for (auto _ : state) {
+    const auto a = analyser.analyse(scene.first[i++ % scene.first.size()], false, rdsf::CropColour::later);
+    candidates += static_cast<std::int64_t>(a.candidates.size());
+    benchmark::DoNotOptimize(a.candidates.data());
+  }
+  state.counters["candidates_per_frame"] = static_cast<double>(candidates) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_AnalyseWithBackground)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 const std::vector<cv::Mat1w>& crops() {
   static const std::vector<cv::Mat1w> all = [] {

@@ -143,6 +143,20 @@ po::options_description analyser_options(AnalyserParams& p) {
   return all;
 }
 
+po::options_description background_options(std::string& dir, BackgroundParams& params) {
+  po::options_description group("Background model of the room (static camera only; off by default)");
+  group.add_options()("background", po::value(&dir),
+                      "a background model learned by rdsf-background (a folder): whatever stands in front of the room "
+                      "is also a candidate, beside the depth layers' candidates");
+  add_table_options(group, background_parameters(), params);
+  return group;
+}
+
+void apply_background(const std::string& dir, AnalyserParams& analyser) {
+  if (dir.empty()) return;
+  analyser.background = std::make_shared<const BackgroundModel>(read_background(dir));
+}
+
 po::options_description feature_spec_options(FeatureSpec& spec) {
   po::options_description features("Features");
   features.add_options()(

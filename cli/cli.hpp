@@ -70,6 +70,12 @@ void apply_overrides(const ParameterTable<Params>& table, Params& params,
 /// Options of the frame analyser (segmentation, candidates: analyser_parameters()), bound to `params`.
 po::options_description analyser_options(AnalyserParams& params);
 
+/// --background DIR (a background model of the room, rdsf-background; off when not given) bound to `dir`, and
+/// the foreground rule's margins (background_parameters()) bound to `params`.
+po::options_description background_options(std::string& dir, BackgroundParams& params);
+/// `analyser` with the background model of the folder `dir` (read_background; unchanged when `dir` is empty).
+void apply_background(const std::string& dir, AnalyserParams& analyser);
+
 /// --feature-spec NAME[:key=value,...] bound to `spec` (part of detector_options; rdsf-train adds it alone).
 /// A name or parameter that is not known is a UsageError.
 po::options_description feature_spec_options(FeatureSpec& spec);

@@ -47,7 +47,7 @@ configure_file(${PROJECT_SOURCE_DIR}/cmake/rdsf.pc.in ${PROJECT_BINARY_DIR}/rdsf
 install(FILES ${PROJECT_BINARY_DIR}/rdsf.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 # Programs (the bench/ ones and the doc-picture helper rdsf-side-by-side stay in the build tree).
-foreach(program rdsf-detect rdsf-synth rdsf-mine rdsf-samples rdsf-label rdsf-train rdsf-record)
+foreach(program rdsf-detect rdsf-background rdsf-synth rdsf-mine rdsf-samples rdsf-label rdsf-train rdsf-record)
   if(TARGET ${program})
     install(TARGETS ${program} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   endif()

@@ -137,6 +137,7 @@ void check_outputs(const DetectOptions& o) {
 /// the same crops in their own specs.
 PipelineParams pipeline_params_for(const DetectOptions& o, const std::vector<BoostedModel>& models) {
   PipelineParams params = o.pipeline;
+  cli::apply_background(o.background, params.analyser);
   if (!models.empty() && !o.feature_spec_given) params.analyser.features = models.front().feature_spec();
   // The evaluation sweeps tracking over every candidate's colour histogram, not only the detections'.
   params.colour_crops_of_all = !o.truth_csv.empty();

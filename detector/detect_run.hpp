@@ -27,6 +27,8 @@ struct DetectOptions {
   CameraModel camera;
   FrameSourceOptions frames;  ///< the camera model above, whether it was given, a bag's topics
   PipelineParams pipeline;
+  /// --background: the folder of a background model of the room (empty: off).
+  std::string background;
   /// --feature-spec was given: the first model must have that spec (else the detector takes the model's).
   bool feature_spec_given = false;
   /// Threads analysing frames (0: one per core); the results do not depend on it.

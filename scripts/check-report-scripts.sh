@@ -13,7 +13,7 @@ expect() {  # exit code, pattern of stderr/stdout, command...
   grep -qE -e "$pattern" <<<"$output" || fail "$* printed no line matching '$pattern': $output"
 }
 empty=$(mktemp -d); trap 'rm -rf "$empty"' EXIT
-for s in quality-report regularisation-sweep adaptation-benchmark loso-report; do
+for s in quality-report regularisation-sweep adaptation-benchmark loso-report background-report; do
   expect 0 "default" "scripts/$s.sh" --help
   expect 2 "unknown argument '--bogus'" "scripts/$s.sh" --bogus
 done

@@ -18,7 +18,7 @@ done
 
 # folder/program under the build folder, in the order of the workflow.
 programs="synth/rdsf-synth recorder/rdsf-record miner/rdsf-mine labeler/rdsf-label miner/rdsf-samples
-trainer/rdsf-train detector/rdsf-detect review/rdsf-review bench/report/rdsf-perf-report ros/rdsf_people adapt/rdsf-adapt"
+trainer/rdsf-train detector/rdsf-detect detector/rdsf-background review/rdsf-review bench/report/rdsf-perf-report ros/rdsf_people adapt/rdsf-adapt"
 
 reference() {
   cat <<'EOF'

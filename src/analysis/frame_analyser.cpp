@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "rdsf/candidates/candidate_finder.hpp"
+#include "rdsf/candidates/foreground_candidates.hpp"
 #include "rdsf/core/error.hpp"
 
 namespace rdsf {
@@ -53,6 +54,7 @@ FrameAnalyser::FrameAnalyser(AnalyserParams params) : params_(params), extractor
 
 FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features, CropColour colour) const {
   if (frame.depth_mm.empty()) throw Error("frame " + frame.name + ": empty depth image");
+  if (params_.background) params_.background->check_fits(frame);
   FrameAnalysis analysis;
   auto start = std::chrono::steady_clock::now();
   const AnalyserParams p = params_for_camera(params_, frame.camera);
@@ -62,6 +64,10 @@ FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features
   start = std::chrono::steady_clock::now();
   const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
   analysis.candidates = find_candidates(frame, analysis.segmentation, p.candidates, crop, colour);
+  if (params_.background) {
+    analysis.in_front = in_front_of(analysis.segmentation, frame.depth_mm, params_.background->far_mm, params_.in_front);
+    add_foreground_candidates(frame, analysis.in_front, p.candidates, crop, colour, analysis.candidates);
+  }
   analysis.times.candidates_ms = milliseconds_since(start);
 
   if (with_features) {

@@ -60,7 +60,9 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   for (std::size_t i = 0; i < n; ++i) {
     if (out.scores[i] < threshold || out.duplicate[i] != 0) continue;
     Candidate& c = out.analysis.candidates[i];
-    if (!params_.colour_crops_of_all) cut_colour_crop(frame, out.analysis.segmentation.labels, c);
+    if (!params_.colour_crops_of_all) {
+      cut_colour_crop(frame, c.foreground ? out.analysis.in_front.labels : out.analysis.segmentation.labels, c);
+    }
     out.histograms[i] = ColourHistogram::of(c.colour_crop, c.depth_crop, params_.tracking.histogram_bins);
   }
   out.times.tracking_ms = milliseconds_since(start);

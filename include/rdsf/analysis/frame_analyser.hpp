@@ -3,6 +3,7 @@
 // candidates and their features, not detections (those come from PeoplePipeline):
 //   depth frame -> segmentation (depth layers) -> candidates (boxes, 64x128 crops) -> RDSF features
 // Classification and tracking build on its output.
+#include <memory>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -14,6 +15,7 @@
 #include "rdsf/features/feature_spec.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
 #include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/segmentation/background_model.hpp"
 #include "rdsf/segmentation/depth_layers.hpp"
 #include "rdsf/segmentation/segmentation_params.hpp"
 
@@ -32,6 +34,13 @@ struct AnalyserParams {
   /// (row_step, k: along columns), rounded, at least 1, so that they span the same angle (issue 36: other
   /// resolutions and sensors). 0: pixel counts as given, whatever the camera.
   double reference_focal_px = 525.0;
+  /// A background model of the room, for a static camera (segmentation/background_model.hpp): when set,
+  /// the objects in front of it are added as candidates beside the layers' (foreground_candidates.hpp).
+  /// Null: off (the default; --thesis sets none). Shared and never changed, so analyse() stays const and
+  /// thread-safe. A frame of another size or camera model than the background's is an Error.
+  std::shared_ptr<const BackgroundModel> background;
+  /// The foreground rule's margins (used only with a background).
+  BackgroundParams in_front;
 };
 
 /// The table of AnalyserParams: the segmentation's and candidates' rows, then the reported box
@@ -49,6 +58,9 @@ AnalyserParams thesis_params(AnalyserParams params = {});
 
 struct FrameAnalysis {
   Segmentation segmentation;
+  /// With a background model: the segmentation restricted to the pixels in front of it (in_front_of()),
+  /// the labels the candidates with Candidate::foreground were cut from; else empty.
+  Segmentation in_front;
   std::vector<Candidate> candidates;
   cv::Mat1f features;  ///< one row of RDSF values per candidate (empty when not asked for)
   StageTimes times;  ///< segmentation, candidates and features (the classifier and tracking stay 0)

@@ -27,6 +27,9 @@ struct Candidate {
   double width_cm = 0;        ///< real width of the object (its passing columns)
   int highest_column = 0;     ///< image column of the highest point
   bool part = false;          ///< a piece split off a wider object (CandidateParams::split_*)
+  /// Found among the pixels in front of a background model of the room (foreground_candidates.hpp): its
+  /// crops hold only those pixels of its layer (FrameAnalysis::in_front's labels, not the layer's).
+  bool foreground = false;
   /// The object it is, or was cut from: unique in the frame, shared by a whole object and its pieces
   /// (duplicate_candidates.hpp), in find_candidates()'s order of layers and objects.
   int object = 0;
