@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     options.add(rdsf::cli::camera_options(o.camera, calibration));
     options.add(rdsf::cli::frame_source_options(o.frames));
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
-    options.add(rdsf::cli::background_options(o.background, o.pipeline.analyser.in_front));
+    options.add(rdsf::cli::background_options(o.background, o.pipeline.analyser.background_margins));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{

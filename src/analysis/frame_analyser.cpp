@@ -65,7 +65,7 @@ FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features
   const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
   analysis.candidates = find_candidates(frame, analysis.segmentation, p.candidates, crop, colour);
   if (params_.background) {
-    analysis.in_front = in_front_of(analysis.segmentation, frame.depth_mm, params_.background->far_mm, params_.in_front);
+    analysis.in_front = in_front_of(analysis.segmentation, frame.depth_mm, params_.background->far_mm, params_.background_margins);
     add_foreground_candidates(frame, analysis.in_front, p.candidates, crop, colour, analysis.candidates);
   }
   analysis.times.candidates_ms = milliseconds_since(start);

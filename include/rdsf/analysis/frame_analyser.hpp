@@ -40,7 +40,7 @@ struct AnalyserParams {
   /// thread-safe. A frame of another size or camera model than the background's is an Error.
   std::shared_ptr<const BackgroundModel> background;
   /// The foreground rule's margins (used only with a background).
-  BackgroundParams in_front;
+  BackgroundParams background_margins;
 };
 
 /// The table of AnalyserParams: the segmentation's and candidates' rows, then the reported box
