@@ -17,8 +17,8 @@ int main(int argc, char** argv) {
          "learn from at most this many frames, spread evenly over the source (its first ones when its length is "
          "not known); each is kept in memory (640x480: 0.6 MB)")
         ("quantile", po::value(&o.quantile)->default_value(o.quantile, rdsf::cli::shortest_text(o.quantile)),
-         "per pixel the room's depth is this quantile of the frames' readings, near to far, no reading counting "
-         "as farthest: anything nearer in fewer than 1 - this of the frames (people passing) is left out")
+         "per pixel the room's depth is this quantile of its readings in the frames, near to far (frames without "
+         "a reading there left out): anything nearer in fewer than 1 - this of them (people passing) is left out")
         ("force", po::bool_switch(&o.force), "replace a background already in --out");
     options.add(rdsf::cli::camera_options(o.camera, calibration));
     options.add(rdsf::cli::frame_source_options(o.frame_options));

@@ -13,7 +13,7 @@ struct BackgroundOptions {
   std::string source;
   std::string out;            ///< the folder written: background.depth.png and camera.yml
   std::int64_t frames = 200;  ///< learn from at most this many frames, spread evenly over the source
-  double quantile = 0.8;      ///< per pixel, this quantile of the readings (no reading counts as farthest)
+  double quantile = 0.8;      ///< per pixel, this quantile of its readings (frames without one left out)
   bool force = false;         ///< replace an existing background in --out
   CameraModel camera;
   FrameSourceOptions frame_options;
