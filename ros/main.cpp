@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
         ("diagnostics-period", po::value(&o.diagnostics_period_s)->default_value(o.diagnostics_period_s),
          "seconds between /diagnostics messages (drops, latency percentiles)");
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
+    std::string background;
+    options.add(rdsf::cli::background_options(background, o.pipeline.analyser.background_margins));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
     const rdsf::cli::ProgramInfo info{
         "rdsf_people", "[ROS remappings] [--NAME VALUE ...]   (rosrun: _NAME:=VALUE)",
@@ -48,6 +50,7 @@ int main(int argc, char** argv) {
     o.feature_spec_given = !values["feature-spec"].defaulted();
     if (!(o.colour_gap_ms >= 0)) throw rdsf::cli::UsageError("--colour-gap-ms must be 0 or more");
     if (!(o.diagnostics_period_s > 0)) throw rdsf::cli::UsageError("--diagnostics-period must be more than 0 s");
+    rdsf::cli::apply_background(background, o.pipeline.analyser);
     return rdsf::run_people_node(o);
   });
 }

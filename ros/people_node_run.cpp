@@ -71,6 +71,9 @@ class PeopleNode {
     try {
       frame.depth_mm = depth_mm_of(*image, depth_.getTopic());
       frame.camera = camera_model_of(*info, frame.depth_mm.cols, frame.depth_mm.rows, depth_.getInfoTopic());
+      // A background model of the room (~background) of another size or camera: the frame is refused here.
+      const auto& background = detector_.params().analyser.background;
+      if (background) background->check_fits(frame);
     } catch (const Error& e) {
       refuse(e.what());
       return;

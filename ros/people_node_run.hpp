@@ -11,7 +11,7 @@ namespace rdsf {
 struct PeopleNodeOptions {
   std::string model = kDefaultModelName;  ///< a file, NAME or NAME/vN (rdsf-detect's --model)
   std::string models_dir = "models";
-  PipelineParams pipeline;
+  PipelineParams pipeline;  ///< its analyser's background: ~background (cli::apply_background), or none
   bool feature_spec_given = false;  ///< else the model's feature spec
   int threads = 0;                  ///< live workers (0: one per core)
   bool colour = false;              ///< subscribe to rgb/image and pair it with the depth images
