@@ -29,11 +29,13 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct Paths {
-  std::string negatives, room, logs;
+  std::string negatives, room, logs, base;
   explicit Paths(const std::string& out)
       : negatives((fs::path(out) / "sets" / "room-negatives").string()),
         room((fs::path(out) / "sets" / "room").string()),
-        logs((fs::path(out) / "logs").string()) {}
+        logs((fs::path(out) / "logs").string()),
+        base((fs::path(out) / "base").string()) {}
+  std::string base_part(const std::string& part) const { return (fs::path(base) / part).string(); }
   std::string log(const std::string& step) const { return (fs::path(logs) / (step + ".log")).string(); }
 };
 
@@ -135,6 +137,30 @@ void check_empty_recording(const AdaptOptions& o, const BoostedModel& model) {
   }
   say(o.empty + ": nobody followed over " + std::to_string(rule.confident_track_frames) + " frames (longest " +
       std::to_string(presence.longest_confident_track) + ")");
+}
+
+// Step 0, without base sets: the benchmark's small synthetic base (docs/adapting-to-your-room.md, "The
+// base"): rdsf-synth's seed 11, --base-frames frames of 1-4 people in rooms of 15 frames and half as many of
+// the same rooms empty; its people labelled from the generator's truth (assisted, no question asked) and its
+// empty frames mined. The same options give the same sets.
+void render_base(const AdaptOptions& o, const Paths& paths) {
+  const std::string frames = paths.base_part("frames"), empty = paths.base_part("empty");
+  const std::string count = std::to_string(o.base_frames), empty_count = std::to_string(std::max(1, o.base_frames / 2));
+  const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15", "--force"};
+  std::vector<std::string> args{"--out", frames, "--frames", count};
+  args.insert(args.end(), scene.begin(), scene.end());
+  run_step_program("rdsf-synth", args, paths.log("base"));
+  args = {"--out", empty, "--frames", empty_count, "--empty"};
+  args.insert(args.end(), scene.begin(), scene.end());
+  run_step_program("rdsf-synth", args, paths.log("base"));
+  run_step_program("rdsf-label", {"--source", frames, "--out", paths.base_part("people"), "--truth",
+                                  (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null", "--keep-rejected",
+                                  "--threads", std::to_string(o.threads)},
+                   paths.log("base"));
+  run_step_program("rdsf-mine", {"--source", empty, "--out", paths.base_part("negatives"), "--threads",
+                                 std::to_string(o.threads)},
+                   paths.log("base"));
+  say("a synthetic base rendered in " + paths.base + " (" + count + " frames with people, " + empty_count + " empty)");
 }
 
 // Step 1: the room's negatives, the model's false positives first.
@@ -300,9 +326,15 @@ int run_adapt(const AdaptOptions& o) {
   state.pin("name", o.name);
   const Paths paths(o.out);
   fs::create_directories(paths.logs);
+  AdaptOptions with_base = o;
+  if (o.base_pos.empty() && o.base_neg.empty() && o.base_frames > 0) {
+    step(state, "base", [&] { render_base(o, paths); });
+    with_base.base_pos = {paths.base_part("people")};
+    with_base.base_neg = {paths.base_part("negatives")};
+  }
   step(state, "negatives", [&] { room_negatives(o, model, state, paths); });
   step(state, "answers", [&] { room_answers(o, state, paths); });
-  step(state, "train", [&] { train_room_model(o, model, state, paths); });
+  step(state, "train", [&] { train_room_model(with_base, model, state, paths); });
   step(state, "report", [&] { report(o, state, paths); });
   return 0;
 }

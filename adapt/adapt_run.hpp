@@ -1,6 +1,8 @@
 #pragma once
 // rdsf-adapt's work: a room's own detector from the fewest answers, in steps that each run one of the
 // workbench's programs (docs/adapting-to-your-room.md), resumable after a kill (adapt_state.hpp):
+//   0. base       without --base-pos/--base-neg: a small synthetic base rendered and labelled here (rdsf-synth,
+//                 rdsf-label from its truth, rdsf-mine), so that the room's few samples never train alone
 //   1. negatives  the room's people-free frames mined (rdsf-mine): the --empty recording, the shipped
 //                 model's false positives (hard negatives) first; without one, the stretches of the room
 //                 recording where the model and the tracker see nobody (pipeline/room_presence.hpp)
@@ -33,6 +35,9 @@ struct AdaptOptions {
   bool retrain = false;        ///< train from nothing instead of continuing the model
   int rounds = 0;              ///< 0: 10 continuing (30 made the lab room worse), 100 retraining
   std::vector<std::string> base_pos, base_neg;  ///< the synthetic base sample sets
+  /// Without base sets: frames with people of the base rendered here (and half as many empty); 0: no base
+  /// (the room's samples alone).
+  int base_frames = 600;
   int threads = 0;
 };
 

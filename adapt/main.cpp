@@ -30,7 +30,10 @@ int main(int argc, char** argv) {
         ("retrain", po::bool_switch(&o.retrain), "train from nothing instead of continuing --model")
         ("rounds", po::value(&o.rounds)->default_value(o.rounds), "boosting rounds (0: 10 continuing, 100 retraining)")
         ("base-pos", po::value(&o.base_pos)->multitoken(), "the synthetic base's positive sample set(s)")
-        ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)");
+        ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)")
+        ("base-frames", po::value(&o.base_frames)->default_value(o.base_frames),
+         "without --base-pos/--base-neg: render a synthetic base of this many frames with people (and half as "
+         "many empty) in DIR/base, once; 0: train on the room's samples alone (they can make the model worse)");
     rdsf::cli::add_per_place_option(options, o.per_place);
     rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
     options.add_options()
@@ -39,9 +42,10 @@ int main(int argc, char** argv) {
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-adapt", "--source ROOM [--empty EMPTY] --out DIR --name NAME [--budget N] [--truth boxes.csv [--eval HELD_OUT]]",
-        "Adapts a model to a room in four resumable steps, each one of the workbench's programs: negatives\n"
-        "(rdsf-mine), the person's answers, one per track (rdsf-label --per-track), training (rdsf-train --init),\n"
-        "report (rdsf-detect). Killed, it resumes at the step it was in; nothing answered is lost.\n"
+        "Adapts a model to a room in resumable steps, each one of the workbench's programs: a synthetic base when\n"
+        "none is given (rdsf-synth, rdsf-label, rdsf-mine), negatives (rdsf-mine), the person's answers, one per\n"
+        "track (rdsf-label --per-track), training (rdsf-train --init), report (rdsf-detect). Killed, it resumes at\n"
+        "the step it was in; nothing answered is lost.\n"
         "docs/adapting-to-your-room.md"};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     if (!chart.empty()) {
@@ -56,6 +60,7 @@ int main(int argc, char** argv) {
     if (!o.eval.empty() && o.truth.empty()) throw rdsf::cli::UsageError("--eval needs --truth");
     if (!o.truth.empty() && !o.answers.empty()) throw rdsf::cli::UsageError("give --truth (the truth answers) or --answers, not both");
     if (o.rounds < 0) throw rdsf::cli::UsageError("--rounds must be 0 (the default) or more");
+    if (o.base_frames < 0) throw rdsf::cli::UsageError("--base-frames must be 0 (no base) or more");
     return rdsf::run_adapt(o);
   });
 }

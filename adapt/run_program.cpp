@@ -19,7 +19,8 @@ std::string sibling_program(const std::string& name) {
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe").parent_path();
   // The build tree's program folders (docs/architecture.md).
   const std::string folder = name == "rdsf-mine" ? "miner" : name == "rdsf-label" ? "labeler"
-                             : name == "rdsf-train" ? "trainer" : name == "rdsf-detect" ? "detector" : "";
+                             : name == "rdsf-train" ? "trainer" : name == "rdsf-detect" ? "detector"
+                             : name == "rdsf-synth" ? "synth" : "";
   std::vector<std::filesystem::path> tried{self / name};
   if (!folder.empty()) tried.push_back(self.parent_path() / folder / name);
   for (const std::filesystem::path& p : tried) {

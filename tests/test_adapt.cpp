@@ -21,6 +21,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/frame/depth_png.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
 #include "support/depth_scenes.hpp"
@@ -109,7 +110,8 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
   const std::string common = adapt() + " --source " + test::quote(dir / "room") + " --empty " + test::quote(dir / "empty") +
                              " --truth " + test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
-                             " --name room --budget 6 --rounds 3 --threads 2 --models-dir " + test::quote(models.string());
+                             " --name room --budget 6 --rounds 3 --threads 2 --base-frames 60 --models-dir " +
+                             test::quote(models.string());
   // The first run fails at training (a base set that does not exist), after its negatives and answers.
   test::RunResult r = test::run(common + " --base-pos " + test::quote(dir / "missing"));
   ASSERT_EQ(r.exit_code, 1) << r.err;
@@ -159,6 +161,12 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   EXPECT_NE(text.find("adapted_room"), std::string::npos);
   EXPECT_NE(text.find("adapted_from"), std::string::npos);
   EXPECT_NE(text.find("init"), std::string::npos);  // continued from people/v2
+  // Without base sets the rerun rendered its own (60 frames with people, 30 empty) and trained with them.
+  EXPECT_NE(r.err.find("a synthetic base rendered in"), std::string::npos) << r.err;
+  EXPECT_NE(text.find(dir / "out/base/people"), std::string::npos);
+  EXPECT_NE(text.find(dir / "out/base/negatives"), std::string::npos);
+  EXPECT_GT(SampleSet::open_read(dir / "out/base/people").records().size(), 20u);
+  EXPECT_GT(SampleSet::open_read(dir / "out/base/negatives").records().size(), 30u);
 }
 
 TEST(Adapt, AKilledRunResumes) {
@@ -169,7 +177,7 @@ TEST(Adapt, AKilledRunResumes) {
   std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
   const std::string command = adapt() + " --source " + test::quote(dir / "room") + " --truth " +
                               test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
-                              " --name room --budget 8 --rounds 3 --threads 2 --models-dir " +
+                              " --name room --budget 8 --rounds 3 --threads 2 --base-frames 0 --models-dir " +
                               test::quote(models.string());
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
