@@ -147,12 +147,15 @@ void render_base(const AdaptOptions& o, const Paths& paths) {
   const std::string frames = paths.base_part("frames"), empty = paths.base_part("empty");
   const std::string count = std::to_string(o.base_frames), empty_count = std::to_string(std::max(1, o.base_frames / 2));
   const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15", "--force"};
+  say("base: rendering " + count + " frames with people and " + empty_count + " empty (rdsf-synth; about 50 s on 2 cores; "
+      "progress in " + paths.log("base") + ")");
   std::vector<std::string> args{"--out", frames, "--frames", count};
   args.insert(args.end(), scene.begin(), scene.end());
   run_step_program("rdsf-synth", args, paths.log("base"));
   args = {"--out", empty, "--frames", empty_count, "--empty"};
   args.insert(args.end(), scene.begin(), scene.end());
   run_step_program("rdsf-synth", args, paths.log("base"));
+  say("base: labelling its people from the generator's truth (rdsf-label) and mining its empty frames (rdsf-mine)");
   run_step_program("rdsf-label", {"--source", frames, "--out", paths.base_part("people"), "--truth",
                                   (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null", "--keep-rejected",
                                   "--threads", std::to_string(o.threads)},
