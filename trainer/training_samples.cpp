@@ -191,9 +191,7 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   choice.augmentation.validate();
   // The augmented copies' rows follow the originals in the same matrix, allocated once (rows of a large
   // base are gigabytes: growing them would copy every row again).
-  const std::size_t per_crop = choice.augmentation.enabled() ? (choice.augmentation.mirror ? 1u : 0u) +
-                                                                   static_cast<std::size_t>(choice.augmentation.copies)
-                                                             : 0u;
+  const auto per_crop = static_cast<std::size_t>(choice.augmentation.variants_per_crop());
   const std::size_t here_augmented = per_crop * positives_with_crop_here(pos, choice);
   out.rows.create(static_cast<int>(here + here_augmented), columns);
   int row = 0, local = 0;

@@ -184,23 +184,20 @@ TrainingSide training_side(const std::vector<int>& labels, const std::vector<std
   return side;
 }
 
-// Continued training: the score F0 of params.init (H(x) of a model of those weak classifiers) on each of
-// `rows`' rows in `index`.
-// Scores of the --init model: of `rows`' rows `index` lists (indices into `rows`).
-// params.init with its features numbered as the rows' columns (the pool's, when the rows hold one: every
-// feature it reads is in the pool, validate_training_params checks).
-std::vector<WeakClassifier> init_on_rows(const BoostTrainingParams& params) {
-  std::vector<WeakClassifier> init = params.init;
-  if (!params.feature_columns.empty()) {
-    std::map<int, int> column_of;
-    for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
-    renumber_features(init, [&column_of](int feature) { return column_of.at(feature); });
-  }
-  return init;
+// `weak` (naming the spec's features) with its features numbered as the rows' columns: the pool's position
+// of each, when the rows hold a pool (every feature `weak` reads must be in it), else unchanged.
+std::vector<WeakClassifier> on_row_columns(std::vector<WeakClassifier> weak, const BoostTrainingParams& params) {
+  if (params.feature_columns.empty()) return weak;
+  std::map<int, int> column_of;
+  for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
+  renumber_features(weak, [&column_of](int feature) { return column_of.at(feature); });
+  return weak;
 }
 
+// Continued training: the score F0 of params.init (H(x) of a model of those weak classifiers) on each of
+// `rows`' rows in `index` (indices into `rows`); every feature it reads is in the rows (validate_training_params).
 std::vector<double> init_scores(const cv::Mat1f& rows, const std::vector<std::size_t>& index, const BoostTrainingParams& params) {
-  const BoostedModel init(params.feature_spec, params.bins, init_on_rows(params));
+  const BoostedModel init(params.feature_spec, params.bins, on_row_columns(params.init, params));
   std::vector<double> scores(index.size(), 0.0);
   for (std::size_t k = 0; k < index.size(); ++k) scores[k] = init.score(rows[static_cast<int>(index[k])]);
   return scores;
@@ -401,7 +398,7 @@ BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const 
     }
   }
 
-  const std::vector<WeakClassifier> init = init_on_rows(params);
+  const std::vector<WeakClassifier> init = on_row_columns(params.init, params);
   weak.insert(weak.begin(), init.begin(), init.end());  // continued training: its model first, on the rows' columns
   BoostedModel model(params.feature_spec, params.bins, std::move(weak));
   if (validation.has_both_classes()) {
@@ -454,10 +451,12 @@ void validate_training_params(const BoostTrainingParams& p) {
   p.feature_spec.validate();
   if (!p.init.empty()) {
     if (p.backend != BoostBackend::native) throw Error("continued training (--init) needs the native backend");
-    for (const int f : p.feature_columns.empty() ? std::vector<int>{} : features_read(p.init)) {
-      if (std::find(p.feature_columns.begin(), p.feature_columns.end(), f) == p.feature_columns.end()) {
-        throw Error("continued training (--init): the model reads feature " + std::to_string(f) +
-                    ", which the rows' feature pool does not hold");
+    if (!p.feature_columns.empty()) {
+      for (const int f : features_read(p.init)) {
+        if (std::find(p.feature_columns.begin(), p.feature_columns.end(), f) == p.feature_columns.end()) {
+          throw Error("continued training (--init): the model reads feature " + std::to_string(f) +
+                      ", which the rows' feature pool does not hold");
+        }
       }
     }
     for (const WeakClassifier& w : p.init) {
@@ -569,12 +568,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
     };
     const BoostedModel model = train_boosted_model(fold_rows, fold_labels, inner, fold_progress, nullptr, nullptr, fold_info);
     // The model names the spec's features; the rows hold the pool's columns (when there is a pool).
-    std::vector<WeakClassifier> weak_on_rows = model.weak_classifiers();
-    if (!params.feature_columns.empty()) {
-      std::map<int, int> column_of;
-      for (std::size_t c = 0; c < params.feature_columns.size(); ++c) column_of[params.feature_columns[c]] = static_cast<int>(c);
-      renumber_features(weak_on_rows, [&column_of](int feature) { return column_of.at(feature); });
-    }
+    const std::vector<WeakClassifier> weak_on_rows = on_row_columns(model.weak_classifiers(), params);
     // With continued training the fold's model starts with params.init: the rounds are the new ones.
     const std::size_t first = params.init.size();
     const std::size_t rounds = weak_on_rows.size() - first;

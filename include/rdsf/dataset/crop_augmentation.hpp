@@ -28,6 +28,8 @@ struct CropAugmentation {
   double max_occluded = 0.35;    ///< largest fraction of the crop's height (bottom band) or width (side band)
   std::uint64_t seed = 1;
 
+  /// Variants augmented_crops() makes of each positive: the mirror (when on) and the copies.
+  int variants_per_crop() const { return (mirror ? 1 : 0) + copies; }
   bool enabled() const { return mirror || copies > 0; }
   /// Throws Error naming the parameter when a value would leave the window or makes no sense.
   void validate() const;
