@@ -67,6 +67,24 @@ TEST(CandidateFinder, PersonBeforeWall) {
   EXPECT_EQ(a.candidates[2].strict_box, cv::Rect(370, 0, 240, 480));
 }
 
+// The strict box is half as wide as tall in metres: with pixels 1.25 times as wide as tall in the scene
+// (fx = 1.25 fy), 360 rows make lround(360 * 1.25 / 2) = 225 columns, the window 281 x 450 about the same
+// centre: the crop shows the person as wide, in metres, as on square pixels.
+TEST(CandidateFinder, StrictBoxIsHalfAsWideAsTallInMetresOnNonSquarePixels) {
+  DepthFrame frame = test::wall_frame(4000);
+  frame.camera.fx_px = 1.25 * frame.camera.fy_px;
+  test::paint(frame, {290, 100, 61, 360}, 2000);  // 61 columns: 18.6 cm at 2 m
+  const FrameAnalysis a = analyse(frame);
+  const Candidate* person = find_at_depth(a.candidates, 2000, 320);
+  ASSERT_NE(person, nullptr);
+  EXPECT_EQ(person->strict_box, cv::Rect(208, 100, 225, 360));
+  EXPECT_EQ(person->window_unclipped.size(), cv::Size(281, 450));
+  EXPECT_NEAR(person->width_cm, 61 * 2000.0 / (1.25 * 525.0) / 10.0, 1e-9);
+  // 61 of the window's 281 columns: 14 of the crop's 64 (17 of 64 in a 225-column window, height_px / 2).
+  ASSERT_EQ(person->depth_crop.size(), cv::Size(64, 128));
+  EXPECT_NEAR(cv::countNonZero(person->depth_crop.row(64)), 61.0 * 64 / 281, 1.0);
+}
+
 TEST(CandidateFinder, TwoPeopleAtOneDepth) {
   DepthFrame frame = test::wall_frame(4000);
   test::paint(frame, {150, 100, 40, 360}, 2000);

@@ -66,10 +66,11 @@ void sample_window(const DepthFrame& frame, const cv::Mat1b& labels, int layer, 
   }
 }
 
-// `box` widened about its centre to lround(ratio * height) columns when narrower (fit.min_width_ratio;
-// the caller clips it to the image); unchanged when ratio <= 0 or it is wide enough.
-cv::Rect at_least_wide(cv::Rect box, double ratio) {
-  const int wanted = static_cast<int>(std::lround(ratio * box.height));
+// `box` widened about its centre to lround(ratio * height * px_aspect) columns when narrower
+// (fit.min_width_ratio, a ratio of metric width to metric height; px_aspect = fx / fy turns rows into
+// columns of the same length; the caller clips it to the image); unchanged when ratio <= 0 or it is wide enough.
+cv::Rect at_least_wide(cv::Rect box, double ratio, double px_aspect) {
+  const int wanted = static_cast<int>(std::lround(ratio * box.height * px_aspect));
   if (ratio <= 0 || box.width >= wanted) return box;
   box.x = static_cast<int>(std::lround(box.x + box.width / 2.0 - wanted / 2.0));
   box.width = wanted;
@@ -109,6 +110,9 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
   }
   const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px);
   const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);
+  // Columns per row of the same length at the same depth: 1 for square pixels (every camera model the
+  // workbench knows but a stretched frame's), so that a box half as wide as it is tall is so in metres.
+  const double px_aspect = frame.camera.fx_px / frame.camera.fy_px;
 
   int objects_before = 0;  // objects of the layers already done: Candidate::object is unique in the frame
   for (const DepthLayer& layer : segmentation.layers) {
@@ -127,13 +131,13 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       }
       Candidate candidate;
       const int box_height = bottom - top + 1;
-      const int box_width = std::max(1, static_cast<int>(std::lround(box_height / 2.0)));
+      const int box_width = std::max(1, static_cast<int>(std::lround(box_height * px_aspect / 2.0)));
       const cv::Rect strict(object.highest - box_width / 2, top, box_width, box_height);
       candidate.strict_box = strict & image;
       const cv::Rect extent(object.fit_first, object.fit_top, object.fit_last - object.fit_first + 1,
                             bottom - object.fit_top + 1);
       candidate.extent_box = extent & image;
-      candidate.fitted_box = at_least_wide(extent, params.fit.min_width_ratio) & image;
+      candidate.fitted_box = at_least_wide(extent, params.fit.min_width_ratio, px_aspect) & image;
       const double cx = strict.x + strict.width / 2.0;
       const double cy = strict.y + strict.height / 2.0;
       const int window_width = std::max(1, static_cast<int>(std::lround(strict.width * params.window_scale)));

@@ -5,8 +5,9 @@
 namespace rdsf {
 
 struct Candidate {
-  /// The "strict box": height from the highest to the lowest point of the object, width = height / 2,
-  /// centred on the column of the highest point; clipped to the image. Pixels.
+  /// The "strict box": height from the highest to the lowest point of the object, width = height / 2 in
+  /// metres (lround(height_px * fx / fy / 2) columns: height_px / 2 for square pixels), centred on the
+  /// column of the highest point; clipped to the image. Pixels.
   cv::Rect strict_box;
   /// The object's extent: left to right over the columns that pass threshold_height and the pieces
   /// attached to them (CandidateParams::fit_*), top to bottom from the highest to the lowest point (the
@@ -14,7 +15,7 @@ struct Candidate {
   /// a candidate is a positive when the layer's pixels, which its crop shows, are mostly the person.
   cv::Rect extent_box;
   /// The "fitted box": extent_box widened about its centre to CandidateParams::fit.min_width_ratio of its
-  /// height when narrower (a person's limbs swung out of the layer), clipped to the image. What detections
+  /// height (in metres, as the strict box) when narrower (a person's limbs swung out of the layer), clipped to the image. What detections
   /// report by default (BoxKind::fitted); the strict box and window stay what the crop is cut from.
   cv::Rect fitted_box;
   /// The strict box enlarged by window_scale about its centre, before clipping (may leave the image).
