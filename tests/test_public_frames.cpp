@@ -1,0 +1,132 @@
+// Public real frames: ../shared/realdata/public/<SOURCE>/, one folder per public source (docs/quality.md,
+// "Public real frames"). Each folder holds NAME.depth.png frames in millimetres, a README.md that records
+// the source repository and commit and names the licence and whether people are in the frames, and the
+// licence text (LICENSE*). Skipped with a message when the folder is absent.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/frame/frame_source.hpp"
+#include "rdsf/pipeline/people_detector.hpp"
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::filesystem::path public_frames_dir() {
+  if (test::realdata_dir().empty()) return {};
+  const std::filesystem::path dir = test::realdata_dir() / "public";
+  std::error_code ec;
+  return std::filesystem::is_directory(dir, ec) ? dir : std::filesystem::path();
+}
+
+#define RDSF_REQUIRE_PUBLIC_FRAMES()                                                                 \
+  do {                                                                                               \
+    if (public_frames_dir().empty())                                                                 \
+      GTEST_SKIP() << "../shared/realdata/public is absent: public real-frame test skipped";        \
+  } while (0)
+
+std::vector<std::filesystem::path> source_folders() {
+  std::vector<std::filesystem::path> folders;
+  for (const auto& entry : std::filesystem::directory_iterator(public_frames_dir()))
+    if (entry.is_directory()) folders.push_back(entry.path());
+  std::sort(folders.begin(), folders.end());
+  return folders;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The README's "- People: ..." line says "none" for folders of people-free rooms.
+bool people_free(const std::filesystem::path& folder) {
+  return std::regex_search(read_text(folder / "README.md"), std::regex(R"(\n- People: none\b)"));
+}
+
+}  // namespace
+
+TEST(PublicFrames, EveryFolderRecordsItsSourceCommitAndLicence) {
+  RDSF_REQUIRE_PUBLIC_FRAMES();
+  const auto folders = source_folders();
+  ASSERT_FALSE(folders.empty()) << public_frames_dir() << " has no source folder";
+  // The licences a public frame may carry here: they allow redistribution.
+  const std::regex licence(R"(\n- Licence: (CC BY 4\.0|CC0|BSD-[23]-Clause|MIT|Apache-2\.0|public domain)\b)");
+  const std::regex commit(R"(@ [0-9a-f]{40}\b)");
+  for (const auto& folder : folders) {
+    SCOPED_TRACE(folder.string());
+    ASSERT_TRUE(std::filesystem::is_regular_file(folder / "README.md"));
+    const std::string readme = read_text(folder / "README.md");
+    EXPECT_TRUE(std::regex_search(readme, licence)) << "README.md names no redistributable licence";
+    EXPECT_TRUE(std::regex_search(readme, commit)) << "README.md records no source commit";
+    EXPECT_TRUE(std::regex_search(readme, std::regex(R"(\n- People: )"))) << "README.md does not say whether people are in the frames";
+    bool licence_file = false;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      licence_file |= entry.path().filename().string().rfind("LICENSE", 0) == 0 && entry.file_size() > 0;
+    EXPECT_TRUE(licence_file) << "no LICENSE file beside the frames";
+  }
+}
+
+// Every frame reads as millimetres: mostly valid pixels, a median reading between 0.3 and 10 m (a frame
+// left in TUM's 5000-per-metre units would have a median beyond 10 m for a room 2 m deep).
+TEST(PublicFrames, FramesReadAsMillimetreDepth) {
+  RDSF_REQUIRE_PUBLIC_FRAMES();
+  int frames = 0;
+  for (const auto& folder : source_folders()) {
+    auto source = open_frame_source(folder.string());
+    DepthFrame frame;
+    int in_folder = 0;
+    while (source->next(frame)) {
+      SCOPED_TRACE(folder.filename().string() + "/" + frame.name);
+      ++in_folder;
+      ASSERT_EQ(frame.depth_mm.type(), CV_16UC1);
+      EXPECT_EQ(frame.width_px(), frame.camera.width_px);
+      EXPECT_EQ(frame.height_px(), frame.camera.height_px);
+      std::vector<std::uint16_t> valid;
+      for (int y = 0; y < frame.depth_mm.rows; ++y)
+        for (int x = 0; x < frame.depth_mm.cols; ++x)
+          if (frame.depth_mm(y, x) > 0) valid.push_back(frame.depth_mm(y, x));
+      ASSERT_GE(valid.size(), frame.depth_mm.total() / 2) << "fewer than half the pixels have a reading";
+      std::nth_element(valid.begin(), valid.begin() + valid.size() / 2, valid.end());
+      const std::uint16_t median_mm = valid[valid.size() / 2];
+      EXPECT_GE(median_mm, 300);
+      EXPECT_LE(median_mm, 10000);
+    }
+    EXPECT_GT(in_folder, 0) << folder << " has no NAME.depth.png frame";
+    frames += in_folder;
+  }
+  std::cout << "  " << frames << " public frames read\n";
+}
+
+// The shipped default model in the people-free public rooms, at its threshold P >= 0.5: measured 2
+// detections in 7 frames (people/v2; a desk front between two office chairs, a desk and wall block). The
+// bound leaves room for a better model only; a worse one fails here.
+TEST(PublicFrames, DefaultModelInPeopleFreeRoomsMakesAtMostTwoDetectionsInSevenFrames) {
+  RDSF_REQUIRE_PUBLIC_FRAMES();
+  const std::string path = resolve_model("people", (test::realdata_dir() / "no-models-here").string());
+  int frames = 0, detections = 0;
+  for (const auto& folder : source_folders()) {
+    if (!people_free(folder)) continue;
+    PeopleDetector detector(path);
+    auto source = open_frame_source(folder.string());
+    DepthFrame frame;
+    int in_folder = 0;
+    while (source->next(frame)) {
+      ++frames;
+      in_folder += static_cast<int>(detector.detect(frame).size());
+    }
+    std::cout << "  " << folder.filename().string() << ": " << in_folder << " detections\n";
+    detections += in_folder;
+  }
+  std::cout << "  " << path << ": " << detections << " detections in " << frames << " people-free public frames\n";
+  ASSERT_GT(frames, 0) << "no folder's README says '- People: none'";
+  EXPECT_LE(detections * 7, 2 * frames) << "more than 2 detections per 7 people-free frames";
+}
