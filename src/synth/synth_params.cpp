@@ -79,6 +79,15 @@ void need_range(const std::string& option, double low, double high, double min, 
 
 }  // namespace
 
+SynthParams people_scene(int frames, int people_min, int people_max, std::uint64_t seed) {
+  SynthParams p;
+  p.frames = frames;
+  p.people_min = people_min;
+  p.people_max = people_max;
+  p.seed = seed;
+  return p;
+}
+
 void parse_real_range(const std::string& option, const std::string& text, double& low, double& high) {
   parse_range(option, text, low, high, parse_real, "expected MIN..MAX (two numbers, e.g. 0.5..1.6) or one number");
 }
