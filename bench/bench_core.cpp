@@ -84,8 +84,8 @@ BENCHMARK(BM_CandidateShaping)->Unit(benchmark::kMillisecond);
 // The performance report's synthetic frames (48, 1..4 people, seed 17), with their registered colour.
 const std::vector<rdsf::DepthFrame>& synthetic_frames() {
   static const std::vector<rdsf::DepthFrame> made = [] {
-    rdsf::synth::SynthParams p;
-    p.frames = 48, p.people_min = 1, p.people_max = 4, p.seed = 17, p.rgb = true;
+    rdsf::synth::SynthParams p = rdsf::synth::people_scene(48, 1, 4, 17);
+    p.rgb = true;
     rdsf::synth::SynthSequence sequence(p);
     std::vector<rdsf::DepthFrame> all;
     for (int i = 0; i < p.frames; ++i) all.push_back(sequence.frame(i).depth_frame(p.camera()));
@@ -114,8 +114,8 @@ BENCHMARK(BM_SegmentationSynthetic)->Unit(benchmark::kMillisecond);
 // background learned from the same room rendered empty. 0: without, 1: with.
 void BM_AnalyseWithBackground(benchmark::State& state) {
   static const auto scene = [] {
-    rdsf::synth::SynthParams p;
-    p.frames = 48, p.clip_frames = 48, p.people_min = 1, p.people_max = 4, p.seed = 41;
+    rdsf::synth::SynthParams p = rdsf::synth::people_scene(48, 1, 4, 41);
+    p.clip_frames = 48;
     p.room.moving_share = 0.0, p.people.clearance_m = 0.25;
     std::pair<std::vector<rdsf::DepthFrame>, std::shared_ptr<const rdsf::BackgroundModel>> made;
     rdsf::synth::SynthSequence people(p);

@@ -7,11 +7,7 @@ namespace rdsf::bench {
 
 /// `frames` frames of the benchmark scene, with the registered colour image when `rgb`.
 inline synth::SynthParams bench_scene(int frames, bool rgb) {
-  synth::SynthParams p;
-  p.frames = frames;
-  p.people_min = 2;
-  p.people_max = 4;
-  p.seed = 11;
+  synth::SynthParams p = synth::people_scene(frames, 2, 4, 11);
   p.rgb = rgb;
   return p;
 }

@@ -269,6 +269,17 @@ void apply_camera(const po::variables_map& values, const CameraModel& camera, Fr
   }
 }
 
+CameraOptions::CameraOptions(po::options_description& options, CameraModel& camera, FrameSourceOptions* frames)
+    : camera_(camera), frames_(frames) {
+  options.add(camera_options(camera_, calibration_));
+  if (frames_ != nullptr) options.add(frame_source_options(*frames_));
+}
+
+void CameraOptions::apply(const po::variables_map& values) {
+  apply_calibration(camera_, calibration_);
+  if (frames_ != nullptr) apply_camera(values, camera_, *frames_);
+}
+
 int run(const std::string& program_name, const std::function<int()>& body) {
   try {
     return body();

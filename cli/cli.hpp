@@ -101,6 +101,25 @@ po::options_description frame_source_options(FrameSourceOptions& options);
 /// or the calibration options not left at their defaults), so that it wins over a source's own model.
 void apply_camera(const po::variables_map& values, const CameraModel& camera, FrameSourceOptions& options);
 
+/// What a program's main does with the camera model's options, in one object: the constructor adds
+/// camera_options(camera, ...) to `options` (and frame_source_options(*frames) after it when `frames` is
+/// given: programs that read bags); apply() after parse() applies the empirical calibration to `camera`
+/// (apply_calibration) and then, with `frames`, apply_camera. It holds the calibration the options are bound
+/// to, so it lives in main until apply() and is neither copied nor moved.
+class CameraOptions {
+ public:
+  CameraOptions(po::options_description& options, CameraModel& camera, FrameSourceOptions* frames = nullptr);
+  CameraOptions(const CameraOptions&) = delete;
+  CameraOptions& operator=(const CameraOptions&) = delete;
+  /// Call once after parse(); throws UsageError for an impossible calibration.
+  void apply(const po::variables_map& values);
+
+ private:
+  CameraModel& camera_;
+  FrameSourceOptions* frames_;
+  EmpiricalCalibration calibration_;
+};
+
 /// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
 /// (0 success, 1 error, 2 usage error). An AlreadyExists error gets "(pass --force to replace it)".
 int run(const std::string& program_name, const std::function<int()>& body);

@@ -7,7 +7,6 @@ int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-background", [&] {
     namespace po = rdsf::cli::po;
     rdsf::BackgroundOptions o;
-    rdsf::EmpiricalCalibration calibration;
     po::options_description options("rdsf-background");
     options.add_options()
         ("source", po::value(&o.source)->required(),
@@ -20,8 +19,7 @@ int main(int argc, char** argv) {
          "per pixel the room's depth is this quantile of its readings in the frames, near to far (frames without "
          "a reading there left out): anything nearer in fewer than 1 - this of them (people passing) is left out")
         ("force", po::bool_switch(&o.force), "replace a background already in --out");
-    options.add(rdsf::cli::camera_options(o.camera, calibration));
-    options.add(rdsf::cli::frame_source_options(o.frame_options));
+    rdsf::cli::CameraOptions camera(options, o.camera, &o.frame_options);
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-background", "--source SRC --out DIR [--frames N] [--quantile Q]",
@@ -29,8 +27,7 @@ int main(int argc, char** argv) {
         "depth. rdsf-detect --background DIR then adds whatever stands in front of the room as candidates\n"
         "(people beside a wall or a cupboard that share its depth layer). A moving camera has no background."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    rdsf::cli::apply_calibration(o.camera, calibration);
-    rdsf::cli::apply_camera(values, o.camera, o.frame_options);
+    camera.apply(values);
     if (o.frames < 1) throw rdsf::cli::UsageError("--frames must be at least 1");
     if (!(o.quantile >= 0.0 && o.quantile <= 1.0)) throw rdsf::cli::UsageError("--quantile must be in [0, 1]");
     return rdsf::run_background(o);

@@ -9,7 +9,6 @@ int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-detect", [&] {
     namespace po = rdsf::cli::po;
     rdsf::DetectOptions o;
-    rdsf::EmpiricalCalibration calibration;
     std::string thresholds;
     po::options_description options("rdsf-detect");
     options.add_options()
@@ -47,8 +46,7 @@ int main(int argc, char** argv) {
          "the newest kept); prints drops and latency percentiles. Not with --show or --truth")
         ("fps", po::value(&o.fps)->default_value(o.fps),
          "--live with a source that is not a device (folder, .oni): deliver its frames at this rate");
-    options.add(rdsf::cli::camera_options(o.camera, calibration));
-    options.add(rdsf::cli::frame_source_options(o.frames));
+    rdsf::cli::CameraOptions camera(options, o.camera, &o.frames);
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
     options.add(rdsf::cli::background_options(o.background, o.pipeline.analyser.background_margins));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
@@ -60,8 +58,7 @@ int main(int argc, char** argv) {
         "people, and people are tracked. With --truth, every --model is evaluated: exact ROC and DET curves,\n"
         "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    rdsf::cli::apply_calibration(o.camera, calibration);
-    rdsf::cli::apply_camera(values, o.camera, o.frames);
+    camera.apply(values);
     o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
     rdsf::check_options(o);

@@ -10,7 +10,6 @@ int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-label", [&] {
     namespace po = rdsf::cli::po;
     rdsf::LabelOptions o;
-    rdsf::EmpiricalCalibration calibration;
     bool no_model_answers = false;
     std::string ask = "order";
     int explore = 5;
@@ -62,7 +61,7 @@ int main(int argc, char** argv) {
          "track in the frames before and after while the track is sure (docs/adapting-to-your-room.md); the window "
          "shows the track as a strip of crops; u undoes the whole track");
     rdsf::cli::add_per_place_option(options, o.session.propagation.per_place);
-    options.add(rdsf::cli::camera_options(o.session.camera, calibration));
+    rdsf::cli::CameraOptions camera(options, o.session.camera);
     options.add(rdsf::cli::analyser_options(o.session.analyser));
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
@@ -74,7 +73,7 @@ int main(int argc, char** argv) {
         "answered by it (journalled 'by model') and never shown. --answers takes the same keys as whitespace-separated\n"
         "tokens (y n s u q, space, backspace, esc; 'yyn' is three keys)."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    rdsf::cli::apply_calibration(o.session.camera, calibration);
+    camera.apply(values);
     o.session.model_answers = !no_model_answers;
     try {
       o.session.ask = rdsf::parse_ask_order(ask);

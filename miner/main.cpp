@@ -8,7 +8,6 @@ int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-mine", [&] {
     namespace po = rdsf::cli::po;
     rdsf::MineOptions o;
-    rdsf::EmpiricalCalibration calibration;
     po::options_description options("rdsf-mine");
     options.add_options()
         ("source", po::value(&o.mine.sources)->multitoken(),
@@ -34,7 +33,7 @@ int main(int argc, char** argv) {
          "do not read the frames' colour: crops without colour, faster (decoding colour PNGs dominates)")
         ("merge", po::value(&o.merge)->multitoken(),
          "merge mode: append these sample sets to --out (feature specs must match; duplicates skipped)");
-    options.add(rdsf::cli::camera_options(o.mine.camera, calibration));
+    rdsf::cli::CameraOptions camera(options, o.mine.camera);
     options.add(rdsf::cli::analyser_options(o.mine.analyser));
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
@@ -46,7 +45,7 @@ int main(int argc, char** argv) {
         "--min-score (its false positives). Exact duplicates are skipped, so a run killed midway continues\n"
         "when started again with the same options. --merge joins sample sets, e.g. shard outputs."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    rdsf::cli::apply_calibration(o.mine.camera, calibration);
+    camera.apply(values);
     o.min_score_given = !values["min-score"].defaulted();
     if (!o.merge.empty()) {
       if (!o.mine.sources.empty()) throw rdsf::cli::UsageError("give either --source or --merge, not both");

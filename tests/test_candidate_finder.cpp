@@ -187,11 +187,7 @@ TEST(CandidateFinder, ColourCropIsMaskedByTheLayer) {
 // CropColour::later leaves the colour crops empty and everything else as it was; cut_colour_crop() then
 // cuts the same pixels, for windows inside the image and across its borders (synthetic rooms, 1-4 people).
 TEST(CandidateFinder, ColourCropCutLaterIsTheSame) {
-  synth::SynthParams p;
-  p.frames = 12;
-  p.seed = 5;
-  p.people_min = 1;
-  p.people_max = 4;
+  synth::SynthParams p = synth::people_scene(12, 1, 4, 5);
   p.rgb = true;
   p.clip_frames = 3;
   const FrameAnalyser analyser;

@@ -137,11 +137,7 @@ TEST(CandidatesReference, FloorTrimSameOnWideObjects) {
 }
 
 TEST(CandidatesReference, SameOnSyntheticFrames) {
-  synth::SynthParams p;
-  p.frames = 8;
-  p.people_min = 1;
-  p.people_max = 4;
-  p.seed = 21;
+  const synth::SynthParams p = synth::people_scene(8, 1, 4, 21);
   synth::SynthSequence sequence(p);
   for (int i = 0; i < 8; ++i) {
     const cv::Mat1w depth = sequence.frame(i).depth_mm;
@@ -195,8 +191,8 @@ TEST(CandidatesReference, CutCropsSameOnRandomWindows) {
 
 // Synthetic frames with colour (8, 1..4 people) and the real frames of ../shared/realdata when present.
 std::vector<DepthFrame> candidate_frames() {
-  synth::SynthParams p;
-  p.frames = 16, p.people_min = 1, p.people_max = 4, p.seed = 23, p.rgb = true;
+  synth::SynthParams p = synth::people_scene(16, 1, 4, 23);
+  p.rgb = true;
   std::vector<DepthFrame> frames = test::synthetic_frames(p);
   if (!test::realdata_dir().empty()) {
     for (const char* group : {"people", "empty"}) {

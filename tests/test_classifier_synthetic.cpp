@@ -26,12 +26,8 @@ struct Labelled {
 };
 
 Labelled candidates_of(std::uint64_t seed, int frames) {
-  synth::SynthParams params;
-  params.seed = seed;
-  params.frames = frames;
+  synth::SynthParams params = synth::people_scene(frames, 1, 3, seed);
   params.clip_frames = 10;  // many rooms and people, few frames each
-  params.people_min = 1;
-  params.people_max = 3;
   synth::SynthSequence sequence(params);
   const FrameAnalyser analyser;
   Labelled out;

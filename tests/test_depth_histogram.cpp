@@ -104,11 +104,7 @@ TEST(DepthHistogram, ScansTheCandidateRowsInTheSamePass) {
 }
 
 TEST(DepthHistogram, ScanSameAsReferenceOnSyntheticFrames) {
-  synth::SynthParams s;
-  s.frames = 6;
-  s.people_min = 1;
-  s.people_max = 4;
-  s.seed = 9;
+  const synth::SynthParams s = synth::people_scene(6, 1, 4, 9);
   synth::SynthSequence sequence(s);
   for (int i = 0; i < s.frames; ++i) {
     const cv::Mat1w depth = sequence.frame(i).depth_mm;

@@ -66,6 +66,33 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out.csv.partial"));
 }
 
+// The camera options (cli::CameraOptions) reach the frame analyser: a calibration that makes the Kinect v1's
+// model (a 640 x 480 cm surface filling the image at 5.25 m: fx = fy = 525) changes nothing, one that doubles
+// the focal length (320 x 240 cm) makes the same candidates as --fx 1050 --fy 1050 and not the default's (the
+// 40 px block at 2 m is then 7.6 cm wide, below min_width_cm); an incomplete calibration is a usage error.
+TEST(DetectProgram, CameraOptionsReachTheAnalyser) {
+  test::TempDir dir;
+  write_scene(dir);
+  const auto csv_with = [&](const std::string& name, const std::string& options) {
+    const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
+                                        test::quote(dir / name) + " " + options);
+    EXPECT_EQ(r.exit_code, 0) << options << "\n" << r.err;
+    return read_file(dir / name);
+  };
+  const std::string plain = csv_with("plain.csv", "");
+  EXPECT_EQ(count_lines(plain), 1 + 3) << plain;
+  EXPECT_EQ(csv_with("kinect.csv", "--calibration-width 640 --calibration-height 480 --calibration-distance 5250"), plain);
+  const std::string doubled =
+      csv_with("doubled.csv", "--calibration-width 320 --calibration-height 240 --calibration-distance 5250");
+  EXPECT_NE(doubled, plain);
+  EXPECT_EQ(csv_with("fx.csv", "--fx 1050 --fy 1050"), doubled);
+  const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) +
+                                      " --calibration-width 320");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("usage error: empirical calibration"), std::string::npos) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}
+
 // No model named: the shipped default model scores the candidates and people are tracked.
 TEST(DetectProgram, WithoutAModelTheDefaultModelRuns) {
   test::TempDir dir;

@@ -48,11 +48,7 @@ const Detection* on_block(const std::vector<Detection>& detections, int x) {
 }
 
 std::vector<DepthFrame> synthetic_frames(int count) {
-  synth::SynthParams p;
-  p.frames = count;
-  p.seed = 7;
-  p.people_min = 1;
-  p.people_max = 3;
+  synth::SynthParams p = synth::people_scene(count, 1, 3, 7);
   p.rgb = true;
   p.clip_frames = 8;
   return test::synthetic_frames(p);

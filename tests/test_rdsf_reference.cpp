@@ -65,11 +65,7 @@ TEST(RdsfReference, SameBitsOnRandomCrops) {
 }
 
 TEST(RdsfReference, SameBitsOnSyntheticCandidates) {
-  synth::SynthParams p;
-  p.frames = 3;
-  p.people_min = 2;
-  p.people_max = 4;
-  p.seed = 9;
+  const synth::SynthParams p = synth::people_scene(3, 2, 4, 9);
   synth::SynthSequence sequence(p);
   const FrameAnalyser analyser{AnalyserParams{}};
   int crops = 0;

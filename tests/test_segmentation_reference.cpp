@@ -44,11 +44,7 @@ std::vector<double> thesis_seeds(const cv::Mat1w& depth) {
 }
 
 TEST(SegmentationReference, SameAsReferenceOnSyntheticFrames) {
-  synth::SynthParams p;
-  p.frames = 12;
-  p.people_min = 1;
-  p.people_max = 4;
-  p.seed = 3;
+  const synth::SynthParams p = synth::people_scene(12, 1, 4, 3);
   synth::SynthSequence sequence(p);
   for (int i = 0; i < 12; ++i) {
     const cv::Mat1w depth = sequence.frame(i).depth_mm;

@@ -25,13 +25,10 @@ namespace {
 using rdsf::synth::SynthFrame;
 using rdsf::synth::SynthParams;
 using rdsf::synth::SynthSequence;
+using rdsf::synth::people_scene;
 
 SynthParams small_params(std::uint64_t seed) {
-  SynthParams p;
-  p.frames = 24;
-  p.people_min = 1;
-  p.people_max = 3;
-  p.seed = seed;
+  SynthParams p = people_scene(24, 1, 3, seed);
   p.clip_frames = 8;
   p.width_px = 320;
   p.height_px = 240;
@@ -386,11 +383,7 @@ Recall detector_recall(bool classic) {
   const rdsf::FrameAnalyser analyser;
   Recall r;
   for (const std::uint64_t seed : {2024, 11, 12, 13}) {
-    SynthParams p;
-    p.frames = seed == 2024 ? 240 : 150;
-    p.people_min = 2;
-    p.people_max = 5;
-    p.seed = seed;
+    SynthParams p = people_scene(seed == 2024 ? 240 : 150, 2, 5, seed);
     p.clip_frames = 15;
     if (classic) p.set_classic();
     SynthSequence sequence(p);

@@ -72,12 +72,8 @@ void print(const char* what, const Summary& s) {
 }
 
 TEST(SynthRealism, DepthStatisticsMatchRealKinectFrames) {
-  rdsf::synth::SynthParams p;
-  p.frames = 24;
+  rdsf::synth::SynthParams p = rdsf::synth::people_scene(24, 0, 3, 31);
   p.clip_frames = 3;  // 8 rooms
-  p.people_min = 0;
-  p.people_max = 3;
-  p.seed = 31;
   rdsf::synth::SynthSequence sequence(p);
   std::vector<DepthStatistics> stats;
   for (int i = 0; i < p.frames; ++i) {
@@ -235,12 +231,8 @@ void expect_like_real(const CandidateSummary& s) {
 // Synthetic frames with 1-3 people (the real frames have 1-2) must give the frame analyser about as many
 // candidates per frame as the real frames, of about the same sizes.
 TEST(SynthRealism, CandidatesMatchRealKinectFrames) {
-  rdsf::synth::SynthParams p;
-  p.frames = 60;
+  rdsf::synth::SynthParams p = rdsf::synth::people_scene(60, 1, 3, 31);
   p.clip_frames = 3;  // 20 rooms
-  p.people_min = 1;
-  p.people_max = 3;
-  p.seed = 31;
   rdsf::synth::SynthSequence sequence(p);
   std::vector<cv::Mat1w> depths;
   for (int i = 0; i < p.frames; ++i) depths.push_back(sequence.frame(i).depth_mm);

@@ -75,11 +75,7 @@ class MemoryPhase {
 };
 
 synth::SynthParams sequence_params(const PerfOptions& o, int frames, std::uint64_t seed, bool empty) {
-  synth::SynthParams p;
-  p.frames = frames;
-  p.seed = seed;
-  p.people_min = 1;
-  p.people_max = 4;
+  synth::SynthParams p = synth::people_scene(frames, 1, 4, seed);
   p.empty = empty;
   p.rgb = true;
   p.clip_frames = o.quick ? 12 : 60;

@@ -197,11 +197,7 @@ SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
 
   s.frames = o.quick ? 8 : o.frames;
   say("segmentation, candidates and the full vector on " + std::to_string(s.frames) + " synthetic frames, one thread");
-  synth::SynthParams p;
-  p.frames = s.frames;
-  p.people_min = 1;
-  p.people_max = 4;
-  p.seed = 17;
+  const synth::SynthParams p = synth::people_scene(s.frames, 1, 4, 17);
   synth::SynthSequence sequence(p);
   std::vector<DepthFrame> frames;
   for (int i = 0; i < s.frames; ++i) {

@@ -12,7 +12,6 @@ int main(int argc, char** argv) {
     namespace po = rdsf::cli::po;
     rdsf::peers::PclPeopleOptions o;
     o.svm = RDSF_PCL_SVM_FILE;
-    rdsf::EmpiricalCalibration calibration;
     po::options_description options("rdsf-pcl-people");
     options.add_options()
         ("source", po::value(&o.source)->required(), "frames with colour: a folder of NAME.depth.png and NAME.rgb.png, or a list file")
@@ -27,7 +26,7 @@ int main(int argc, char** argv) {
         ("voxel-size", po::value(&o.voxel_size_m)->default_value(o.voxel_size_m), "voxel grid leaf, m")
         ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible), "evaluation: people less visible than this are don't-care")
         ("ground-max-tilt", po::value(&o.ground.max_tilt_deg)->default_value(o.ground.max_tilt_deg), "the floor's normal within this of the camera's y axis, degrees");
-    options.add(rdsf::cli::camera_options(o.camera, calibration));
+    rdsf::cli::CameraOptions camera(options, o.camera);
     po::variables_map values;
     const rdsf::cli::ProgramInfo info{
         "rdsf-pcl-people", "--source SRC [--out FILE.csv] [--truth boxes.csv --report-dir DIR]",
@@ -35,7 +34,7 @@ int main(int argc, char** argv) {
         "file) on frames with colour; the floor is fitted per recording by RANSAC on the depth points (the lowest\n"
         "near-horizontal plane). Writes rdsf-detect's CSV and, with --truth, rdsf-detect's evaluation report."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    rdsf::cli::apply_calibration(o.camera, calibration);
+    camera.apply(values);
     if (o.out_csv.empty() && o.truth_csv.empty()) throw rdsf::cli::UsageError("nothing to do: give --out FILE.csv or --truth with --report-dir");
     if (o.truth_csv.empty() != o.report_dir.empty()) throw rdsf::cli::UsageError("--truth and --report-dir go together");
     if (!(o.min_height_m > 0 && o.max_height_m > o.min_height_m)) throw rdsf::cli::UsageError("--min-height must be > 0 and below --max-height");

@@ -37,6 +37,22 @@ bool parse_pair(const std::string& text, T& a, T& b, Parse parse) {
   return x != std::string::npos && parse(text.substr(0, x), a) && parse(text.substr(x + 1), b);
 }
 
+/// "MIN..MAX" -> (MIN, MAX), "V" -> (V, V), each read by `parse`. Throws Error naming `option` and the text
+/// with `expected` for anything else, and for MIN > MAX.
+template <typename T, typename Parse>
+void parse_range(const std::string& option, const std::string& text, T& low, T& high, Parse parse,
+                 const char* expected) {
+  const std::size_t dots = text.find("..");
+  T a{}, b{};
+  const bool ok = dots == std::string::npos
+                      ? parse(text, a) && parse(text, b)
+                      : parse(text.substr(0, dots), a) && parse(text.substr(dots + 2), b);
+  if (!ok) fail(option + " " + text, expected);
+  if (a > b) fail(option + " " + text, "MIN is larger than MAX");
+  low = a;
+  high = b;
+}
+
 std::string number(double value) {
   char text[40];
   std::snprintf(text, sizeof text, "%g", value);
@@ -63,16 +79,17 @@ void need_range(const std::string& option, double low, double high, double min, 
 
 }  // namespace
 
+SynthParams people_scene(int frames, int people_min, int people_max, std::uint64_t seed) {
+  SynthParams p;
+  p.frames = frames;
+  p.people_min = people_min;
+  p.people_max = people_max;
+  p.seed = seed;
+  return p;
+}
+
 void parse_real_range(const std::string& option, const std::string& text, double& low, double& high) {
-  const std::size_t dots = text.find("..");
-  double a = 0, b = 0;
-  const bool ok = dots == std::string::npos
-                      ? parse_real(text, a) && parse_real(text, b)
-                      : parse_real(text.substr(0, dots), a) && parse_real(text.substr(dots + 2), b);
-  if (!ok) fail(option + " " + text, "expected MIN..MAX (two numbers, e.g. 0.5..1.6) or one number");
-  if (a > b) fail(option + " " + text, "MIN is larger than MAX");
-  low = a;
-  high = b;
+  parse_range(option, text, low, high, parse_real, "expected MIN..MAX (two numbers, e.g. 0.5..1.6) or one number");
 }
 
 bool parse_on_off(const std::string& option, const std::string& text) {
@@ -108,15 +125,8 @@ void SynthParams::set_classic() {
 }
 
 void parse_people_range(const std::string& text, int& people_min, int& people_max) {
-  const std::size_t dots = text.find("..");
-  int low = 0, high = 0;
-  const bool ok = dots == std::string::npos
-                      ? parse_int(text, low) && parse_int(text, high)
-                      : parse_int(text.substr(0, dots), low) && parse_int(text.substr(dots + 2), high);
-  if (!ok) fail("--people " + text, "expected MIN..MAX (two whole numbers, e.g. 0..3) or one number");
-  if (low > high) fail("--people " + text, "MIN is larger than MAX");
-  people_min = low;
-  people_max = high;
+  parse_range("--people", text, people_min, people_max, parse_int,
+              "expected MIN..MAX (two whole numbers, e.g. 0..3) or one number");
 }
 
 void parse_field_of_view(const std::string& text, double& fov_h_deg, double& fov_v_deg) {

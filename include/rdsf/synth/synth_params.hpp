@@ -42,6 +42,11 @@ struct SynthParams {
   void set_classic();
 };
 
+/// rdsf-synth --frames FRAMES --people PEOPLE_MIN..PEOPLE_MAX --seed SEED, everything else its defaults: the
+/// synthetic scene tests and benchmarks start from (people_scene(48, 1, 4, 17): 48 frames of 1-4 people, seed
+/// 17), setting what else they need (rgb, clip_frames, ...) on the result.
+SynthParams people_scene(int frames, int people_min, int people_max, std::uint64_t seed);
+
 /// "0.5..1.6" -> (0.5, 1.6); "2" -> (2, 2). Throws Error naming `option` for anything else or MIN > MAX.
 void parse_real_range(const std::string& option, const std::string& text, double& low, double& high);
 /// "on" -> true, "off" -> false. Throws Error naming `option` for anything else.
