@@ -20,6 +20,8 @@ done
 expect 2 "--test-frames takes a positive number" scripts/quality-report.sh --test-frames 0
 expect 2 "--synthetic takes 0-16" scripts/adaptation-benchmark.sh --synthetic 17
 expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only levers
+expect 2 "--cameras takes kinect1 or mix" scripts/train-default-model.sh --cameras bogus
+expect 2 "--cameras mix models are not for --install" scripts/train-default-model.sh --cameras mix --install
 expect 1 "^regularisation-sweep: $empty has no quality report's data" scripts/regularisation-sweep.sh --out "$empty"
 [ -z "$(ls -A "$empty")" ] || fail "regularisation-sweep wrote into $empty although it refused it"
 echo "check-report-scripts: ok"

@@ -7,4 +7,6 @@ scripts/setup.sh
 build_dir="${RDSF_BUILD_DIR:-build}"
 # The shipped default model's recipe still trains, and two runs give the same bytes (a small model).
 scripts/train-default-model.sh --quick
+# ... and on the four-camera mix (docs/sensors.md): the four cameras' samples reach both sets.
+scripts/train-default-model.sh --quick --cameras mix
 ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc 2>/dev/null || echo 2)" --timeout 900

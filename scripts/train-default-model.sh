@@ -17,12 +17,21 @@
 # 68,832 at 600 rooms and moved the figures within the spread of a reseeded run, so it is not a step.
 # --quick trains a small model from a few frames (for CI: it checks that the recipe still trains and that two
 # runs give the same bytes) in a temporary folder.
+# --cameras mix (docs/sensors.md, "A shipped-size model on the camera mix"): the same numbers of frames and
+# rooms, a quarter through each of four cameras: Kinect v1 640x480 (seed 11: the first quarter of the default's
+# rooms), Kinect v2 512x424 70.6x60 degrees (seed 12), RealSense D435 848x480 87x58 (seed 13), Orbbec Gemini 2
+# 640x400 91x66 (seed 14); each camera's empty rooms are the first rooms of its own quarter, as the default's
+# are. rdsf-synth has no per-clip camera, so each camera renders its own quarter with its own seed (other rooms,
+# people and noise; not the default's rooms through another camera): the rendering costs about what the
+# default's does. Mining reads the four empty folders, labelling adds the four people folders to one set, the
+# training is the default's. Without the option the script runs exactly as before.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
 Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick] [--candidates 'OPTIONS']
+                                      [--cameras kinect1|mix]
   --out DIR    work folder (default out/default-model): data/, sets/, models/people/v2.yml
   --install    copy the trained model to models/people/v2.yml
   --force      with --install: replace an existing models/people/v2.yml
@@ -30,9 +39,12 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
   --candidates 'OPTIONS'  candidate options for mining and labelling (default none: the defaults), e.g.
                the options chosen without a real source (docs/quality.md, "Leave one source out"); use
                another --out, and not with --install
+  --cameras C  kinect1 (default): every room through the Kinect v1; mix: a quarter of the rooms (and of the
+               empty ones) each through Kinect v1, Kinect v2 512x424, D435 848x480 and Orbbec 640x400 (seeds
+               11-14); use another --out, and not with --install
 USAGE
 }
-out=out/default-model install=0 force=0 quick=0 candidates=""
+out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1
 target=models/people/v2.yml  # the file this script trains and installs
 while (($#)); do
   case "$1" in
@@ -41,12 +53,15 @@ while (($#)); do
     --force) force=1; shift ;;
     --quick) quick=1; shift ;;
     --candidates) candidates="$2"; shift 2 ;;
+    --cameras) cameras="$2"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "train-default-model: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
+case "$cameras" in kinect1|mix) ;; *) echo "train-default-model: --cameras takes kinect1 or mix" >&2; exit 2 ;; esac
+if [ "$cameras" = mix ] && ((install)); then echo "train-default-model: --cameras mix models are not for --install" >&2; exit 2; fi
 read -r -a candidate_options <<<"$candidates"
 if ((install && !force)) && [ -e "$target" ]; then
   echo "train-default-model: $target exists (give --force to replace it)" >&2
@@ -64,8 +79,45 @@ else
   frames_train=18000 frames_empty=9600 rounds=100 folds=5 group_frames=30
 fi
 
+# --cameras mix: name:seed:rdsf-synth camera options, a quarter of the frames each (clips stay whole: 120 and
+# 18,000 are multiples of 4 x 15, 9600 of 4 x 15 too)
+mix=(
+  "kinect1:11:--size 640x480"
+  "kinect2:12:--size 512x424 --fov 70.6x60"
+  "d435:13:--size 848x480 --fov 87x58"
+  "orbbec:14:--size 640x400 --fov 91x66"
+)
+train_mix() {  # work folder -> prints the model path
+  local w=$1 c name seed camera
+  local mine_sources=()
+  mkdir -p "$w"
+  for c in "${mix[@]}"; do
+    IFS=: read -r name seed camera <<<"$c"
+    read -r -a camera <<<"$camera"
+    [ -f "$w/data/train-$name/synth.yml" ] ||
+      "$bin/synth/rdsf-synth" --out "$w/data/train-$name" --force --frames $((frames_train / 4)) --people 1..4 \
+        --seed "$seed" --clip-frames 15 "${camera[@]}" >&2
+    [ -f "$w/data/empty-$name/synth.yml" ] ||
+      "$bin/synth/rdsf-synth" --out "$w/data/empty-$name" --force --frames $((frames_empty / 4)) --people 1..4 \
+        --seed "$seed" --empty --clip-frames 15 "${camera[@]}" >&2
+    mine_sources+=(--source "$w/data/empty-$name")
+  done
+  "$bin/miner/rdsf-mine" "${mine_sources[@]}" --out "$w/sets/negatives" --threads 2 "${candidate_options[@]}" >&2
+  # One set from the four folders (rdsf-label adds a source's frames to an existing set); started again from
+  # nothing, so that a killed run cannot leave a set with some cameras twice.
+  rm -rf "$w/sets/people"
+  for c in "${mix[@]}"; do
+    IFS=: read -r name _ <<<"$c"
+    "$bin/labeler/rdsf-label" --source "$w/data/train-$name" --out "$w/sets/people" \
+      --truth "$w/data/train-$name/boxes.csv" --answers /dev/null --keep-rejected --fit-across-head-cut 0 \
+      "${candidate_options[@]}" >&2
+  done
+  train_model "$w"
+}
+
 train_once() {  # work folder -> prints the model path
   local w=$1
+  if [ "$cameras" = mix ]; then train_mix "$w"; return; fi
   mkdir -p "$w"
   [ -f "$w/data/train/synth.yml" ] ||
     "$bin/synth/rdsf-synth" --out "$w/data/train" --force --frames "$frames_train" --people 1..4 --seed 11 --clip-frames 15 >&2
@@ -77,6 +129,11 @@ train_once() {  # work folder -> prints the model path
   # does not read the fitted box, so its negatives are the same either way.
   "$bin/labeler/rdsf-label" --source "$w/data/train" --out "$w/sets/people" --truth "$w/data/train/boxes.csv" \
     --answers /dev/null --keep-rejected --fit-across-head-cut 0 "${candidate_options[@]}" >&2
+  train_model "$w"
+}
+
+train_model() {  # work folder with sets/people and sets/negatives -> prints the model path
+  local w=$1
   # The shipped v1 beside it, so that the model trained is version 2 of 'people' in its own file too.
   rm -rf "$w/models/people"
   mkdir -p "$w/models/people"
@@ -98,7 +155,28 @@ if ((quick)); then
     exit 1
   fi
   "$bin/trainer/rdsf-train" --inspect "$model" --top 3 >/dev/null
-  echo "train-default-model: quick runs agree byte for byte ($(wc -c <"$model") bytes)"
+  if [ "$cameras" = mix ]; then
+    # Every camera's folder gave samples to both sets (samples.tsv's source column), and each rendering has
+    # its camera's size: a mix that silently fell back to one camera fails here.
+    for set in people negatives; do
+      n=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "source") c = i; next }
+                      c { sub(/\/+$/, "", $c); seen[$c] = 1 } END { print length(seen) }' "$out/a/sets/$set/samples.tsv")
+      if [ "$n" != 4 ]; then
+        echo "train-default-model: --cameras mix: $set holds samples of $n folders, not 4" >&2
+        exit 1
+      fi
+    done
+    for c in "${mix[@]}"; do
+      IFS=: read -r name _ camera <<<"$c"
+      size=${camera#--size }; size=${size%% *}
+      if ! grep -qx "size: $size" "$out/a/data/train-$name/synth.yml"; then
+        echo "train-default-model: --cameras mix: $out/a/data/train-$name is not $size" >&2
+        exit 1
+      fi
+    done
+  fi
+  suffix=""; [ "$cameras" = mix ] && suffix=", the four cameras' samples in both sets"
+  echo "train-default-model: quick runs agree byte for byte ($(wc -c <"$model") bytes$suffix)"
   exit 0
 fi
 echo "train-default-model: $model ($(wc -c <"$model") bytes)"
