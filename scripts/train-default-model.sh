@@ -79,56 +79,48 @@ else
   frames_train=18000 frames_empty=9600 rounds=100 folds=5 group_frames=30
 fi
 
-# --cameras mix: name:seed:rdsf-synth camera options, a quarter of the frames each (clips stay whole: 120 and
-# 18,000 are multiples of 4 x 15, 9600 of 4 x 15 too)
-mix=(
-  "kinect1:11:--size 640x480"
-  "kinect2:12:--size 512x424 --fov 70.6x60"
-  "d435:13:--size 848x480 --fov 87x58"
-  "orbbec:14:--size 640x400 --fov 91x66"
-)
-train_mix() {  # work folder -> prints the model path
-  local w=$1 c name seed camera
-  local mine_sources=()
-  mkdir -p "$w"
-  for c in "${mix[@]}"; do
-    IFS=: read -r name seed camera <<<"$c"
-    read -r -a camera <<<"$camera"
-    [ -f "$w/data/train-$name/synth.yml" ] ||
-      "$bin/synth/rdsf-synth" --out "$w/data/train-$name" --force --frames $((frames_train / 4)) --people 1..4 \
-        --seed "$seed" --clip-frames 15 "${camera[@]}" >&2
-    [ -f "$w/data/empty-$name/synth.yml" ] ||
-      "$bin/synth/rdsf-synth" --out "$w/data/empty-$name" --force --frames $((frames_empty / 4)) --people 1..4 \
-        --seed "$seed" --empty --clip-frames 15 "${camera[@]}" >&2
-    mine_sources+=(--source "$w/data/empty-$name")
-  done
-  "$bin/miner/rdsf-mine" "${mine_sources[@]}" --out "$w/sets/negatives" --threads 2 "${candidate_options[@]}" >&2
-  # One set from the four folders (rdsf-label adds a source's frames to an existing set); started again from
-  # nothing, so that a killed run cannot leave a set with some cameras twice.
-  rm -rf "$w/sets/people"
-  for c in "${mix[@]}"; do
-    IFS=: read -r name _ <<<"$c"
-    "$bin/labeler/rdsf-label" --source "$w/data/train-$name" --out "$w/sets/people" \
-      --truth "$w/data/train-$name/boxes.csv" --answers /dev/null --keep-rejected --fit-across-head-cut 0 \
-      "${candidate_options[@]}" >&2
-  done
-  train_model "$w"
-}
+# The cameras the rooms are rendered through, name:seed:rdsf-synth camera options, the frames split evenly
+# between them (clips stay whole: 120, 18,000 and 9600 are multiples of 4 x 15). The default is one camera
+# without a name (folders data/train and data/empty, v2's commands); --cameras mix names four.
+if [ "$cameras" = mix ]; then
+  camera_list=(
+    "kinect1:11:--size 640x480"
+    "kinect2:12:--size 512x424 --fov 70.6x60"
+    "d435:13:--size 848x480 --fov 87x58"
+    "orbbec:14:--size 640x400 --fov 91x66"
+  )
+else
+  camera_list=(":11:")
+fi
 
 train_once() {  # work folder -> prints the model path
-  local w=$1
-  if [ "$cameras" = mix ]; then train_mix "$w"; return; fi
+  local w=$1 n=${#camera_list[@]} c name seed camera folder
+  local mine_sources=() label_folders=()
   mkdir -p "$w"
-  [ -f "$w/data/train/synth.yml" ] ||
-    "$bin/synth/rdsf-synth" --out "$w/data/train" --force --frames "$frames_train" --people 1..4 --seed 11 --clip-frames 15 >&2
-  [ -f "$w/data/empty/synth.yml" ] ||
-    "$bin/synth/rdsf-synth" --out "$w/data/empty" --force --frames "$frames_empty" --people 1..4 --seed 11 --empty --clip-frames 15 >&2
-  "$bin/miner/rdsf-mine" --source "$w/data/empty" --out "$w/sets/negatives" --threads 2 "${candidate_options[@]}" >&2
+  for c in "${camera_list[@]}"; do
+    IFS=: read -r name seed camera <<<"$c"
+    read -r -a camera <<<"$camera"
+    folder=${name:+-$name}
+    [ -f "$w/data/train$folder/synth.yml" ] ||
+      "$bin/synth/rdsf-synth" --out "$w/data/train$folder" --force --frames $((frames_train / n)) --people 1..4 \
+        --seed "$seed" --clip-frames 15 "${camera[@]}" >&2
+    [ -f "$w/data/empty$folder/synth.yml" ] ||
+      "$bin/synth/rdsf-synth" --out "$w/data/empty$folder" --force --frames $((frames_empty / n)) --people 1..4 \
+        --seed "$seed" --empty --clip-frames 15 "${camera[@]}" >&2
+    mine_sources+=(--source "$w/data/empty$folder")
+    label_folders+=("$w/data/train$folder")
+  done
+  "$bin/miner/rdsf-mine" "${mine_sources[@]}" --out "$w/sets/negatives" --threads 2 "${candidate_options[@]}" >&2
+  # Several cameras make one set from their folders (rdsf-label adds a source's frames to an existing set),
+  # started again from nothing, so that a killed run cannot leave a set with some cameras twice.
+  ((n == 1)) || rm -rf "$w/sets/people"
   # --fit-across-head-cut 0: the candidates v2 was labelled with. The default since (docs/candidates.md)
   # makes 15 more of these candidates positives (11,609 instead of 11,594) and so another model; the miner
   # does not read the fitted box, so its negatives are the same either way.
-  "$bin/labeler/rdsf-label" --source "$w/data/train" --out "$w/sets/people" --truth "$w/data/train/boxes.csv" \
-    --answers /dev/null --keep-rejected --fit-across-head-cut 0 "${candidate_options[@]}" >&2
+  for folder in "${label_folders[@]}"; do
+    "$bin/labeler/rdsf-label" --source "$folder" --out "$w/sets/people" --truth "$folder/boxes.csv" \
+      --answers /dev/null --keep-rejected --fit-across-head-cut 0 "${candidate_options[@]}" >&2
+  done
   train_model "$w"
 }
 
@@ -166,7 +158,7 @@ if ((quick)); then
         exit 1
       fi
     done
-    for c in "${mix[@]}"; do
+    for c in "${camera_list[@]}"; do
       IFS=: read -r name _ camera <<<"$c"
       size=${camera#--size }; size=${size%% *}
       if ! grep -qx "size: $size" "$out/a/data/train-$name/synth.yml"; then
