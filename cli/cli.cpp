@@ -225,6 +225,9 @@ std::vector<double> parse_thresholds(const std::string& text) {
   return values;
 }
 
+namespace {
+
+// Options of the camera model (Kinect v1 defaults, or the thesis's empirical calibration).
 po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration) {
   po::options_description o("Camera model (default: Kinect v1, depth registered to colour)");
   o.add_options()
@@ -239,6 +242,7 @@ po::options_description camera_options(CameraModel& camera, EmpiricalCalibration
   return o;
 }
 
+// Applies a given empirical calibration to `camera` (after parse()).
 void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration) {
   const bool any = calibration.surface_width_cm != 0 || calibration.surface_height_cm != 0 ||
                    calibration.distance_mm != 0;
@@ -250,6 +254,7 @@ void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibrat
   }
 }
 
+// Options of frame sources beyond --source (a bag's topics), bound to `options`.
 po::options_description frame_source_options(FrameSourceOptions& options) {
   po::options_description o("Frame source: ROS 1 bags (--source FILE.bag)");
   o.add_options()
@@ -260,6 +265,8 @@ po::options_description frame_source_options(FrameSourceOptions& options) {
   return o;
 }
 
+// Completes `options` after parse(): the camera model and whether the user gave it (--fx, --fy, --cx, --cy
+// or the calibration options not left at their defaults), so that it wins over a source's own model.
 void apply_camera(const po::variables_map& values, const CameraModel& camera, FrameSourceOptions& options) {
   options.camera = camera;
   options.camera_given = false;
@@ -268,6 +275,8 @@ void apply_camera(const po::variables_map& values, const CameraModel& camera, Fr
     if (it != values.end() && !it->second.defaulted()) options.camera_given = true;
   }
 }
+
+}  // namespace
 
 CameraOptions::CameraOptions(po::options_description& options, CameraModel& camera, FrameSourceOptions* frames)
     : camera_(camera), frames_(frames) {

@@ -90,22 +90,13 @@ po::options_description tracking_options(TrackingParams& params);
 /// Parses a threshold list: "40,20,10,0" or "from:to:step" (e.g. "-60:40:5"); empty = the thesis's sweep.
 std::vector<double> parse_thresholds(const std::string& text);
 
-/// Options of the camera model (Kinect v1 defaults, or the thesis's empirical calibration).
-po::options_description camera_options(CameraModel& camera, EmpiricalCalibration& calibration);
-/// Applies a given empirical calibration to `camera` (call after parse()).
-void apply_calibration(CameraModel& camera, const EmpiricalCalibration& calibration);
-
-/// Options of frame sources beyond --source (a bag's topics), bound to `options`.
-po::options_description frame_source_options(FrameSourceOptions& options);
-/// Completes `options` after parse(): the camera model and whether the user gave it (--fx, --fy, --cx, --cy
-/// or the calibration options not left at their defaults), so that it wins over a source's own model.
-void apply_camera(const po::variables_map& values, const CameraModel& camera, FrameSourceOptions& options);
-
-/// What a program's main does with the camera model's options, in one object: the constructor adds
-/// camera_options(camera, ...) to `options` (and frame_source_options(*frames) after it when `frames` is
-/// given: programs that read bags); apply() after parse() applies the empirical calibration to `camera`
-/// (apply_calibration) and then, with `frames`, apply_camera. It holds the calibration the options are bound
-/// to, so it lives in main until apply() and is neither copied nor moved.
+/// What a program's main does with the camera model's options, in one object: the constructor adds the
+/// camera model's options (--fx, --fy, --cx, --cy: Kinect v1 defaults; the thesis's empirical calibration)
+/// to `options`, and a bag's topics (--depth-topic, --colour-topic) after them when `frames` is given
+/// (programs that read bags); apply() after parse() applies a given empirical calibration to `camera` and
+/// then, with `frames`, completes them: the camera model and whether the user gave it (any of those options
+/// not left at its default), so that it wins over a source's own model. It holds the calibration the
+/// options are bound to, so it lives in main until apply() and is neither copied nor moved.
 class CameraOptions {
  public:
   CameraOptions(po::options_description& options, CameraModel& camera, FrameSourceOptions* frames = nullptr);
