@@ -5,8 +5,9 @@
 
 namespace rdsf {
 
-ColourPairing::ColourPairing(std::int64_t max_gap_us, std::int64_t stale_after_us, std::size_t history)
-    : max_gap_us_(max_gap_us), stale_after_us_(stale_after_us), history_(history) {}
+ColourPairing::ColourPairing(std::int64_t max_gap_us, std::int64_t stale_after_us, std::size_t history,
+                             ColourWait wait)
+    : max_gap_us_(max_gap_us), stale_after_us_(stale_after_us), history_(history), wait_(wait) {}
 
 std::vector<PairedFrame> ColourPairing::add_depth(DepthFrame frame) {
   std::vector<PairedFrame> out = flush();
@@ -20,6 +21,10 @@ std::vector<PairedFrame> ColourPairing::add_depth(DepthFrame frame) {
     const std::int64_t gap = std::llabs(colours_[best].stamp_us - t);
     colours_.erase(colours_.begin(), colours_.begin() + static_cast<std::ptrdiff_t>(best) + 1);
     out.push_back({std::move(frame), gap});
+    return out;
+  }
+  if (wait_ == ColourWait::never) {
+    out.push_back({std::move(frame), -1});
     return out;
   }
   const bool passed = newest_colour_us_ && *newest_colour_us_ > t + max_gap_us_;

@@ -27,6 +27,10 @@ int main(int argc, char** argv) {
          "compares colour histograms")
         ("colour-gap-ms", po::value(&o.colour_gap_ms)->default_value(o.colour_gap_ms),
          "largest stamp difference (ms) of a depth and a colour image that are a pair")
+        ("colour-wait", po::value(&o.colour_wait)->default_value(o.colour_wait),
+         "a depth frame waits for the colour image of its stamp (until the next frame at most); false: it takes "
+         "the colour image already there (the previous frame's: give --colour-gap-ms one frame period or more, "
+         "e.g. 40 at 30 frames/s) and never waits, for the lowest latency")
         ("diagnostics-period", po::value(&o.diagnostics_period_s)->default_value(o.diagnostics_period_s),
          "seconds between /diagnostics messages (drops, latency percentiles)");
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));

@@ -26,7 +26,8 @@ class PeopleNode {
  public:
   PeopleNode(ros::NodeHandle& nh, PeopleDetector& detector, const PeopleNodeOptions& o)
       : detector_(detector),
-        pairing_(static_cast<std::int64_t>(o.colour_gap_ms * 1000.0)),
+        pairing_(static_cast<std::int64_t>(o.colour_gap_ms * 1000.0), 1000000, 8,
+                 o.colour_wait ? ColourWait::until_paired : ColourWait::never),
         transport_(nh),
         people_(nh.advertise<rdsf_people::People>("people", 10)),
         markers_(nh.advertise<visualization_msgs::MarkerArray>("people/markers", 10)),

@@ -16,6 +16,7 @@ struct PeopleNodeOptions {
   int threads = 0;                  ///< live workers (0: one per core)
   bool colour = false;              ///< subscribe to rgb/image and pair it with the depth images
   double colour_gap_ms = 15;        ///< largest depth-colour stamp difference of a pair
+  bool colour_wait = true;          ///< a depth frame waits for its colour image (ColourWait::until_paired)
   double diagnostics_period_s = 1;  ///< /diagnostics every this many seconds
 };
 

@@ -2,8 +2,9 @@
 # Latency of the ROS node rdsf_people at a camera's rate (docs/ros.md, "Latency"): a roscore of its own on a
 # free port, the node, a bag written from real frames (scripts/frames-to-bag.py) played in a loop at its
 # 30 frames/s by `rosbag play -l`, and scripts/ros-latency-probe.py subscribed to the depth camera_info
-# topic and to /people. Two runs: depth only (the 46 frames of ../shared/realdata/people), and depth with colour (the
-# frames of that folder that have a colour image, --colour on). Prints per run the node's own line (depth
+# topic and to /people. Three runs: depth only (the 46 frames of ../shared/realdata/people), depth with colour
+# (the frames of that folder that have a colour image, --colour on), and the same with --colour-wait false
+# --colour-gap-ms 40 (a frame takes the colour image already there and never waits for its own). Prints per run the node's own line (depth
 # message in the node to people published: p50/p95/p99/max, frames dropped) and the probe's (camera_info
 # message to people, both seen from another node). A measurement, not a test: no figure is asserted.
 #   scripts/ros-latency.sh [--seconds 60] [--threads 2] [--frames DIR] [--build-dir DIR]
@@ -62,10 +63,11 @@ for _ in $(seq 100); do rostopic list >/dev/null 2>&1 && break; sleep 0.2; done
 rostopic list >/dev/null 2>&1 || { echo "ros-latency.sh: error: roscore did not start: $(tail -3 "$work/roscore.log")" >&2; exit 1; }
 
 echo "ros-latency.sh: $(date -u +'%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); $seconds s per run at 30 frames/s, $threads live workers"
-run_case() {  # NAME BAG COLOUR
+run_case() {  # NAME BAG COLOUR [NODE OPTION ...]
   local name="$1" bag="$2" colour="$3" node probe
+  shift 3
   setsid "$node_program" depth/image:=/camera/depth/image_raw rgb/image:=/camera/rgb/image_raw \
-    --models-dir models --threads "$threads" --colour "$colour" >"$work/node-$name.log" 2>&1 &
+    --models-dir models --threads "$threads" --colour "$colour" "$@" >"$work/node-$name.log" 2>&1 &
   node=$!
   pids+=("$node")
   disown
@@ -83,5 +85,8 @@ run_case() {  # NAME BAG COLOUR
   echo "$name: $(grep -h "^probe:" "$work/probe-$name.log" || tail -2 "$work/probe-$name.log")"
 }
 run_case depth "$work/depth.bag" false
-if [ "$have_colour" = 1 ]; then run_case colour "$work/colour.bag" true; fi
+if [ "$have_colour" = 1 ]; then
+  run_case colour "$work/colour.bag" true
+  run_case colour-no-wait "$work/colour.bag" true --colour-wait false --colour-gap-ms 40
+fi
 echo "ros-latency.sh: load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"

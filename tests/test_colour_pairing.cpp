@@ -100,5 +100,38 @@ TEST(ColourPairing, StampsThatStartAgainCostOneFrameItsColour) {
   EXPECT_GE(with_colour, 2);
 }
 
+// --colour-wait false: a depth frame whose colour comes after it (as from a driver or rosbag play) goes on at
+// once, with the previous frame's colour when that lies within the gap, and is never held back.
+TEST(ColourPairing, WithoutWaitingADepthFrameTakesTheColourAlreadyThere) {
+  constexpr std::int64_t kFrame = 33333;
+  ColourPairing pairing(40000, 1000000, 8, ColourWait::never);
+  ASSERT_EQ(pairing.add_depth(depth_at(0)).size(), 1U);  // no colour yet: at once, without
+  for (std::int64_t i = 1; i <= 4; ++i) {
+    ASSERT_TRUE(pairing.add_colour((i - 1) * kFrame, colour()).empty());  // the previous frame's colour
+    const std::vector<PairedFrame> out = pairing.add_depth(depth_at(i * kFrame));
+    ASSERT_EQ(out.size(), 1U);
+    EXPECT_EQ(out[0].frame.timestamp_us, i * kFrame);
+    EXPECT_FALSE(out[0].frame.bgr.empty());
+    EXPECT_EQ(out[0].gap_us, kFrame);
+  }
+  // The same stream with waiting: every frame waits for, and takes, its own colour.
+  ColourPairing waiting(40000);
+  ASSERT_EQ(waiting.add_depth(depth_at(0)).size(), 0U);
+  const std::vector<PairedFrame> paired = waiting.add_colour(0, colour());
+  ASSERT_EQ(paired.size(), 1U);
+  EXPECT_EQ(paired[0].gap_us, 0);
+}
+
+TEST(ColourPairing, WithoutWaitingAColourTooOldIsNotTaken) {
+  ColourPairing pairing(kGap, 1000000, 8, ColourWait::never);
+  ASSERT_TRUE(pairing.add_colour(0, colour()).empty());
+  const std::vector<PairedFrame> out = pairing.add_depth(depth_at(33333));
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_TRUE(out[0].frame.bgr.empty());
+  EXPECT_EQ(out[0].gap_us, -1);
+  EXPECT_TRUE(pairing.add_colour(33333, colour()).empty());  // nothing waits, so nothing comes out
+  EXPECT_TRUE(pairing.flush().empty());
+}
+
 }  // namespace
 }  // namespace rdsf

@@ -232,6 +232,24 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
                                                                  "node-background.log", log);
   EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped"), std::string::npos) << log;
   compare(in_front, expected_background);
+
+  // Without waiting for colour (~colour_wait false: a bool parameter of value false reaches the option) a
+  // frame takes the colour image already there, within 200 ms of its stamp (the previous frame's at 30
+  // frames/s stamps); candidates and scores do not depend on colour, so they are rdsf-detect's (with the
+  // background: rosrun's _NAME:=VALUE stays on the parameter server for the next node).
+  const std::vector<rdsf_people::People> no_wait =
+      play_to_node(" _colour_wait:=false _colour_gap_ms:=200", "node-no-wait.log", log);
+  EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped; "), std::string::npos) << log;
+  const std::size_t with = log.find(" with colour");
+  ASSERT_NE(with, std::string::npos) << log;
+  const std::size_t count_at = log.rfind(' ', with - 1) + 1;
+  EXPECT_GT(std::stoi(log.substr(count_at, with - count_at)), 0) << log;
+  ASSERT_EQ(no_wait.size(), expected_background.size());
+  for (std::size_t i = 0; i < expected_background.size(); ++i) {
+    const CsvFrame& e = expected_background[i];
+    EXPECT_EQ(no_wait[i].candidates, static_cast<std::uint32_t>(e.candidates)) << e.name;
+    EXPECT_EQ(no_wait[i].people.size(), e.people.size()) << e.name;
+  }
   spinner.stop();
   ros::shutdown();
   core.stop();
