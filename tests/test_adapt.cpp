@@ -40,11 +40,6 @@ test::RunResult render(const std::string& out, const std::string& extra) {
 
 std::string models_dir() { return std::string(RDSF_SOURCE_DIR) + "/models"; }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 // `text` with its one `from` replaced by `to`.
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
@@ -125,7 +120,7 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   EXPECT_GT(human, 0);
   EXPECT_LE(human, 6);
   const auto journal_size = std::filesystem::file_size(journal);
-  const std::string state = slurp(dir / "out/adapt-state.tsv");
+  const std::string state = test::file_text(dir / "out/adapt-state.tsv");
   // Bad input on the rerun: refused with one line naming the file, and nothing answered is lost.
   std::filesystem::create_directories(dir / "metres");
   write_png_atomically(dir / "metres/000000.depth.png", cv::Mat1w(480, 640, static_cast<std::uint16_t>(3)));
@@ -149,7 +144,7 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
     EXPECT_NE(r.err.find(b.names), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(b.says), std::string::npos) << r.err;
     EXPECT_EQ(std::filesystem::file_size(journal), journal_size) << b.command;
-    EXPECT_EQ(slurp(dir / "out/adapt-state.tsv"), state) << b.command;
+    EXPECT_EQ(test::file_text(dir / "out/adapt-state.tsv"), state) << b.command;
   }
   r = test::run(common);
   ASSERT_EQ(r.exit_code, 0) << r.err;

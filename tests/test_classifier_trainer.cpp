@@ -43,13 +43,6 @@ class TrainerProgram : public ::testing::Test {
   std::string people, negatives, models;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST_F(TrainerProgram, AdHocTrainingWritesNumberedVersions) {
   const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives);
   const test::RunResult first = train(sets + " --name toy --rounds 5");
@@ -57,10 +50,10 @@ TEST_F(TrainerProgram, AdHocTrainingWritesNumberedVersions) {
   EXPECT_NE(first.err.find("round 5/5"), std::string::npos) << first.err;
   EXPECT_NE(first.err.find("AUC"), std::string::npos) << first.err;
   EXPECT_NE(first.err.find("wrote " + models + "/toy/v1.yml"), std::string::npos) << first.err;
-  const std::string v1 = read_text(models + "/toy/v1.yml");
+  const std::string v1 = test::file_text(models + "/toy/v1.yml");
   const test::RunResult second = train(sets + " --name toy --rounds 3 --backend opencv");
   ASSERT_EQ(second.exit_code, 0) << second.err;
-  EXPECT_EQ(read_text(models + "/toy/v1.yml"), v1);
+  EXPECT_EQ(test::file_text(models + "/toy/v1.yml"), v1);
 
   const BoostedModel model = BoostedModel::load("toy", models);
   EXPECT_EQ(model.version(), 2);

@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -21,13 +20,6 @@ std::string detect() { return test::quote(test::program("rdsf-detect")) + " --ca
 
 int count_lines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // A folder with one hand-built frame: a person-sized block before a wall.
@@ -55,7 +47,7 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
                                       test::quote(dir / "out.csv") + " --save-dir " + test::quote(dir / "pics"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string csv = read_file(dir / "out.csv");
+  const std::string csv = test::file_text(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "frame,candidate,x,y,w,h,depth_mm,score");
   // The fitted box: the slab's extent (300, 40 wide) widened about its centre to 0.3 of its height.
   EXPECT_NE(csv.find("scene,0,266,100,108,360,2000,\n"), std::string::npos) << csv;
@@ -77,7 +69,7 @@ TEST(DetectProgram, CameraOptionsReachTheAnalyser) {
     const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
                                         test::quote(dir / name) + " " + options);
     EXPECT_EQ(r.exit_code, 0) << options << "\n" << r.err;
-    return read_file(dir / name);
+    return test::file_text(dir / name);
   };
   const std::string plain = csv_with("plain.csv", "");
   EXPECT_EQ(count_lines(plain), 1 + 3) << plain;
@@ -102,7 +94,7 @@ TEST(DetectProgram, WithoutAModelTheDefaultModelRuns) {
                                       test::quote(dir / "out.csv") + " --models-dir " + test::quote(dir / "none"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("model people v2"), std::string::npos) << r.err;
-  const std::string csv = read_file(dir / "out.csv");
+  const std::string csv = test::file_text(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')).find("frame,candidate,x,y,w,h,depth_mm,score,"), 0u) << csv;
   EXPECT_EQ(count_lines(csv), 1 + 3);
   const test::RunResult both = test::run(program + " --source x --out y.csv --candidates-only --model people");
@@ -115,14 +107,14 @@ TEST(DetectProgram, BoxOptionAndThesisPreset) {
   write_scene(dir);
   const std::string base = detect() + " --source " + test::quote(dir.path().string()) + " --force --out ";
   ASSERT_EQ(test::run(base + test::quote(dir / "strict.csv") + " --box strict").exit_code, 0);
-  EXPECT_NE(read_file(dir / "strict.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
+  EXPECT_NE(test::file_text(dir / "strict.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
   ASSERT_EQ(test::run(base + test::quote(dir / "thesis.csv") + " --thesis").exit_code, 0);
-  EXPECT_NE(read_file(dir / "thesis.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
+  EXPECT_NE(test::file_text(dir / "thesis.csv").find("scene,0,230,100,180,360,2000,\n"), std::string::npos);
   // An explicit option wins over the preset.
   ASSERT_EQ(test::run(base + test::quote(dir / "mixed.csv") + " --thesis --box fitted").exit_code, 0);
-  EXPECT_NE(read_file(dir / "mixed.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);  // no widening
+  EXPECT_NE(test::file_text(dir / "mixed.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);  // no widening
   ASSERT_EQ(test::run(base + test::quote(dir / "extent.csv") + " --fit-min-width-ratio 0").exit_code, 0);
-  EXPECT_NE(read_file(dir / "extent.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);
+  EXPECT_NE(test::file_text(dir / "extent.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);
   EXPECT_EQ(test::run(base + test::quote(dir / "bad.csv") + " --box tight").exit_code, 2);
 }
 
@@ -161,9 +153,9 @@ TEST(DetectProgram, ConfigFileAndCommandLineOverride) {
   const std::string base = detect() + " --source " + test::quote(dir.path().string()) + " --config " +
                            test::quote(dir / "detect.ini") + " --force --out " + test::quote(dir / "out.csv");
   ASSERT_EQ(test::run(base).exit_code, 0);
-  EXPECT_EQ(read_file(dir / "out.csv").find(",2000,"), std::string::npos);
+  EXPECT_EQ(test::file_text(dir / "out.csv").find(",2000,"), std::string::npos);
   ASSERT_EQ(test::run(base + " --min_width 10").exit_code, 0);  // the command line wins
-  EXPECT_NE(read_file(dir / "out.csv").find(",2000,"), std::string::npos);
+  EXPECT_NE(test::file_text(dir / "out.csv").find(",2000,"), std::string::npos);
 }
 
 // Kebab-case names are canonical; the thesis's snake_case names and --color are aliases, on the command
@@ -177,7 +169,7 @@ TEST(DetectProgram, SnakeCaseNamesAreAliases) {
   for (const std::string& options :
        std::vector<std::string>{" --min-width 20", " --min_width=20", " --config " + test::quote(dir / "detect.ini")}) {
     ASSERT_EQ(test::run(base + options).exit_code, 0) << options;
-    EXPECT_EQ(read_file(dir / "out.csv").find(",2000,"), std::string::npos) << options;  // the person is dropped
+    EXPECT_EQ(test::file_text(dir / "out.csv").find(",2000,"), std::string::npos) << options;  // the person is dropped
   }
   const test::RunResult unknown = test::run(base + " --min_widht 20");
   EXPECT_EQ(unknown.exit_code, 2);
@@ -192,7 +184,7 @@ TEST(DetectProgram, RefusesToOverwriteWithoutForce) {
       test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " + test::quote(dir / "out.csv"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
-  EXPECT_EQ(read_file(dir / "out.csv"), "precious\n");
+  EXPECT_EQ(test::file_text(dir / "out.csv"), "precious\n");
 }
 
 // What an OpenNI2 --source is refused with: `with_openni`, or in a build without OpenNI2 one line naming it.
@@ -306,13 +298,13 @@ TEST(DetectProgram, ThreadCountDoesNotChangeTheCsv) {
     const test::RunResult r = test::run(base + " --threads " + threads + " --out " + test::quote(out));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find(std::string(threads) + " thread(s)"), std::string::npos) << r.err;
-    if (first.empty()) first = read_file(out);
-    EXPECT_EQ(read_file(out), first) << threads << " threads";
+    if (first.empty()) first = test::file_text(out);
+    EXPECT_EQ(test::file_text(out), first) << threads << " threads";
   }
   EXPECT_EQ(count_lines(first), 1 + 6);  // two frames of three candidates, all of them people
   const test::RunResult one = test::run(base + " --threads 2 --frames 1 --out " + test::quote(dir / "one.csv"));
   ASSERT_EQ(one.exit_code, 0) << one.err;
-  EXPECT_EQ(count_lines(read_file(dir / "one.csv")), 1 + 3);
+  EXPECT_EQ(count_lines(test::file_text(dir / "one.csv")), 1 + 3);
   const test::RunResult bad = test::run(base + " --threads -1 --out " + test::quote(dir / "bad.csv"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--threads must be 0 (one per core) or more"), std::string::npos) << bad.err;
@@ -330,7 +322,7 @@ TEST(DetectProgram, LiveModePrintsDropsAndLatency) {
   EXPECT_NE(r.err.find("2 processed, 0 dropped"), std::string::npos) << r.err;  // one waiting per worker: room for both
   EXPECT_NE(r.err.find("p50 "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("p99 "), std::string::npos) << r.err;
-  EXPECT_EQ(count_lines(read_file(dir / "live.csv")), 1 + 6);
+  EXPECT_EQ(count_lines(test::file_text(dir / "live.csv")), 1 + 6);
   const test::RunResult show = test::run(base + " --live --show");
   EXPECT_EQ(show.exit_code, 2);
   EXPECT_NE(show.err.find("--live works with --out and --save-dir"), std::string::npos) << show.err;

@@ -47,14 +47,7 @@ void prefer_ram_disk() {
   (void)done;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::int64_t read_count(const std::string& path) { return std::atoll(read_text(path).c_str()); }
+std::int64_t read_count(const std::string& path) { return std::atoll(test::file_text(path).c_str()); }
 
 /// A sample as the user knows it: label, frame, box (ids and times aside).
 using Key = std::tuple<int, std::string, int, int, int, int>;
@@ -294,7 +287,7 @@ TEST(DurableIo, FaultAtTheNthCallFailsWithTheGivenCauseAndNamesTheFile) {
   test::TempDir dir;
   const std::string path = dir / "a.txt";
   write_file_durably(path, std::string("one\n"));
-  EXPECT_EQ(read_text(path), "one\n");
+  EXPECT_EQ(test::file_text(path), "one\n");
   // Calls of a durable write: open, write, fdatasync, close, rename, open folder, fsync, close.
   io::set_fault({});
   write_file_durably(path, std::string("two\n"));
@@ -313,7 +306,7 @@ TEST(DurableIo, FaultAtTheNthCallFailsWithTheGivenCauseAndNamesTheFile) {
     }
     io::set_fault({});
     // Before the rename the old content stays; after it the new content is complete.
-    const std::string now = read_text(path);
+    const std::string now = test::file_text(path);
     EXPECT_TRUE(now == "two\n" || now == "three\n") << n << ": " << now;
     EXPECT_EQ(n <= 5, now == "two\n") << n;
     write_file_durably(path, std::string("two\n"));
@@ -322,7 +315,7 @@ TEST(DurableIo, FaultAtTheNthCallFailsWithTheGivenCauseAndNamesTheFile) {
   io::set_fault({2, EDQUOT, true, false});
   EXPECT_THROW(write_file_durably(path, std::string(1000, 'x')), Error);
   io::set_fault({});
-  EXPECT_EQ(read_text(path), "two\n");
+  EXPECT_EQ(test::file_text(path), "two\n");
 }
 
 TEST(DurableIo, NewFileUnsyncedNeverOverwritesAndLeavesNothingWhenAWriteFails) {
@@ -333,14 +326,14 @@ TEST(DurableIo, NewFileUnsyncedNeverOverwritesAndLeavesNothingWhenAWriteFails) {
   io::set_fault({});
   write_new_file_unsynced(path, std::string("first"));
   EXPECT_EQ(io::calls_made(), 3);
-  EXPECT_EQ(read_text(path), "first");
+  EXPECT_EQ(test::file_text(path), "first");
   try {
     write_new_file_unsynced(path, std::string("second"));
     ADD_FAILURE() << "an existing file was overwritten";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(path + ": already exists"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(read_text(path), "first");  // untouched
+  EXPECT_EQ(test::file_text(path), "first");  // untouched
   // A failing write or close removes the new file; a failing open never created it. (The fault passes, as
   // an EIO does: under a fault that fails every later call the removal fails too, and the sample set's
   // reopening removes the crop without a row.)
@@ -369,8 +362,8 @@ TEST(DurableIo, PowerCutModelLosesWhatWasNotSynced) {
   // The whole record, nothing lost: the folder as it is.
   test::TempDir whole;
   test::materialize_after_cut(calls, calls.size(), root, test::Loss::unsynced, whole.path().string());
-  EXPECT_EQ(read_text(whole / "synth/boxes.csv"), read_text(root + "/synth/boxes.csv"));
-  EXPECT_EQ(read_text(whole / "synth/000001.depth.png"), read_text(root + "/synth/000001.depth.png"));
+  EXPECT_EQ(test::file_text(whole / "synth/boxes.csv"), test::file_text(root + "/synth/boxes.csv"));
+  EXPECT_EQ(test::file_text(whole / "synth/000001.depth.png"), test::file_text(root + "/synth/000001.depth.png"));
   // Before the first folder sync nothing at all survives; an unsynced rename of an unsynced file leaves
   // (data_only) an empty file: the model sees what a careless writer would lose.
   test::TempDir none;

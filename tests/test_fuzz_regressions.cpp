@@ -4,14 +4,13 @@
 // valid files and must parse. See docs/fuzzing.md.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "fuzz/fuzz_entry_points.hpp"
+#include "support/test_support.hpp"
 
 namespace {
 
@@ -29,19 +28,12 @@ std::vector<fs::path> files_in(const fs::path& dir) {
   return files;
 }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 enum class Outcome { Parsed, Refused, Broken };
 
 /// Feeds one file to `parser`; `detail` receives the error message (or what broke).
 Outcome replay(const std::string& parser, const fs::path& file, std::string& detail) {
   try {
-    rdsf::fuzz::parse_bytes(parser, slurp(file));
+    rdsf::fuzz::parse_bytes(parser, rdsf::test::file_text(file));
     return Outcome::Parsed;
   } catch (const rdsf::Error& e) {
     detail = e.what();

@@ -23,13 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
 /// "WxH:type:" and the decoded pixels of PNG bytes, row by row, 16-bit samples little-endian.
 std::string pixels_of(const std::string& png) {
   const cv::Mat image =
@@ -88,7 +81,7 @@ SetDigest digest_of(const std::string& dir) {
     for (const char* kind : {".depth.png", ".rgb.png"}) {
       const fs::path crop = fs::path(dir) / (stem + kind);
       if (!fs::exists(crop)) continue;
-      const std::string bytes = file_bytes(crop);
+      const std::string bytes = rdsf::test::file_text(crop);
       h = rdsf::fnv1a64(bytes, h);
       p = rdsf::fnv1a64(pixels_of(bytes), p);
     }

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
@@ -19,13 +18,6 @@ namespace rdsf {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -88,7 +80,7 @@ TEST(ModelFile, OpenCvModelRoundTripKeepsTheEmbeddedModel) {
   EXPECT_EQ(loaded.weak_classifiers(), model.weak_classifiers());
   const test::ToyData probe = test::noisy_toy(30, 77);
   EXPECT_EQ(loaded.score(probe.rows), model.score(probe.rows));
-  EXPECT_NE(read_text(path).find("opencv_model:"), std::string::npos);
+  EXPECT_NE(test::file_text(path).find("opencv_model:"), std::string::npos);
 }
 
 TEST(ModelRegistry, VersionsCountUpAndNeverOverwrite) {
@@ -97,17 +89,17 @@ TEST(ModelRegistry, VersionsCountUpAndNeverOverwrite) {
   EXPECT_EQ(latest_model_version(models, "toy"), 0);
   BoostedModel first = small_model(2);
   const std::string v1 = save_new_model_version(first, "toy", models);
-  const std::string v1_text = read_text(v1);
+  const std::string v1_text = test::file_text(v1);
   BoostedModel second = small_model(3);
   const std::string v2 = save_new_model_version(second, "toy", models);
   EXPECT_EQ(fs::path(v2).filename(), "v2.yml");
-  EXPECT_EQ(read_text(v1), v1_text);  // untouched
+  EXPECT_EQ(test::file_text(v1), v1_text);  // untouched
   // Somebody else's v3 is kept: the next save becomes v4.
   write_text(dir / "toy/v3.yml", "not mine\n");
   BoostedModel third = small_model(2);
   const std::string v4 = save_new_model_version(third, "toy", models);
   EXPECT_EQ(fs::path(v4).filename(), "v4.yml");
-  EXPECT_EQ(read_text(dir / "toy/v3.yml"), "not mine\n");
+  EXPECT_EQ(test::file_text(dir / "toy/v3.yml"), "not mine\n");
   EXPECT_EQ(latest_model_version(models, "toy"), 4);
   // No temporary files are left behind.
   int files = 0;
@@ -143,11 +135,11 @@ TEST(ModelFile, UnknownFormatVersionIsRefused) {
   BoostedModel model = small_model(2);
   const std::string path = save_new_model_version(model, "toy", dir.path().string());
   const std::string bad = dir / "future.yml";
-  write_text(bad, replace_once(read_text(path), "format_version: " + std::to_string(kModelFormatVersion), "format_version: 7"));
+  write_text(bad, replace_once(test::file_text(path), "format_version: " + std::to_string(kModelFormatVersion), "format_version: 7"));
   const std::string message = test::error_message([&] { BoostedModel::load(bad); });
   EXPECT_NE(message.find(bad + ": model format version 7 is not known"), std::string::npos) << message;
   const std::string other = dir / "other.yml";
-  write_text(other, replace_once(read_text(path), "format: rdsf-model", "format: something-else"));
+  write_text(other, replace_once(test::file_text(path), "format: rdsf-model", "format: something-else"));
   EXPECT_NE(test::error_message([&] { BoostedModel::load(other); }).find("not an rdsf model file"), std::string::npos);
   write_text(other, "]]] not yaml {{{\n");
   EXPECT_NE(test::error_message([&] { BoostedModel::load(other); }).find(other + ":"), std::string::npos);
@@ -178,11 +170,11 @@ TEST(ModelFile, ForeignFeatureSpecIsRefusedSayingWhichDiffers) {
             std::string::npos);
   // A damaged spec (numbers and canonical text disagree) is named as such.
   const std::string damaged = dir / "damaged.yml";
-  write_text(damaged, replace_once(read_text(normal_path), "cell_px: 8", "cell_px: 4"));
+  write_text(damaged, replace_once(test::file_text(normal_path), "cell_px: 8", "cell_px: 4"));
   EXPECT_NE(test::error_message([&] { BoostedModel::load(damaged); }).find("damaged"), std::string::npos);
   // A spec this build does not know is refused on one line.
   const std::string unknown = dir / "unknown.yml";
-  write_text(unknown, replace_once(read_text(normal_path), "pairs=upper-row-major", "pairs=lower-column-major"));
+  write_text(unknown, replace_once(test::file_text(normal_path), "pairs=upper-row-major", "pairs=lower-column-major"));
   const std::string unknown_message = test::error_message([&] { BoostedModel::load(unknown); });
   EXPECT_NE(unknown_message.find("is not one this build knows"), std::string::npos) << unknown_message;
   EXPECT_EQ(unknown_message.find('\n'), std::string::npos);
@@ -195,7 +187,7 @@ TEST(ModelFile, RectFeatureSpecModelsRoundTrip) {
   w.responses.assign(64, -0.5);
   BoostedModel model(FeatureSpec::rect(), BinScheme{}, {w});
   const std::string path = save_new_model_version(model, "rect", dir.path().string());
-  const std::string text = read_text(path);
+  const std::string text = test::file_text(path);
   EXPECT_NE(text.find("name: rdsf-rect"), std::string::npos);
   EXPECT_NE(text.find("rect_stride_px: 8"), std::string::npos);
   const BoostedModel loaded = BoostedModel::load(path);
@@ -211,7 +203,7 @@ TEST(ModelFile, TruncatedWeakListIsRefused) {
   BoostedModel model = small_model(2);
   const std::string path = save_new_model_version(model, "toy", dir.path().string());
   const std::string bad = dir / "cut.yml";
-  write_text(bad, replace_once(read_text(path), "weak_count: 2", "weak_count: 3"));
+  write_text(bad, replace_once(test::file_text(path), "weak_count: 2", "weak_count: 3"));
   EXPECT_NE(test::error_message([&] { BoostedModel::load(bad); }).find("truncated"), std::string::npos);
 }
 

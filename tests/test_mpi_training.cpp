@@ -10,7 +10,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "classifier_support/toy_sets.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
@@ -61,13 +60,6 @@ double largest_score_difference(const BoostedModel& a, const BoostedModel& b) {
     bound += largest;
   }
   return bound;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 class MpiTraining : public ::testing::Test {
@@ -161,9 +153,9 @@ TEST_F(MpiTraining, ARankThatCannotReadItsShareEndsEveryRank) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("rank 1 of 2: reading its share of the training sets: "), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("rank 0 of 2: reading"), std::string::npos) << r.err;  // rank 0 read its share
-  EXPECT_EQ(read_text(codes).find(" 0\n"), std::string::npos) << read_text(codes);
-  EXPECT_NE(read_text(codes).find("0 1\n"), std::string::npos) << read_text(codes);
-  EXPECT_NE(read_text(codes).find("1 1\n"), std::string::npos) << read_text(codes);
+  EXPECT_EQ(test::file_text(codes).find(" 0\n"), std::string::npos) << test::file_text(codes);
+  EXPECT_NE(test::file_text(codes).find("0 1\n"), std::string::npos) << test::file_text(codes);
+  EXPECT_NE(test::file_text(codes).find("1 1\n"), std::string::npos) << test::file_text(codes);
   EXPECT_FALSE(fs::exists(models + "/toy/v1.yml"));
 }
 
@@ -190,8 +182,8 @@ TEST_F(MpiTraining, ARankKilledMidRunLeavesNoModel) {
                              test::quote(pids + ".1") + "); wait";
   const test::RunResult r = test::run("timeout 120 sh -c " + test::quote(script));
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  const std::string status = read_text(dir / "status");
-  EXPECT_NE(status, "0\n") << read_text(log);
+  const std::string status = test::file_text(dir / "status");
+  EXPECT_NE(status, "0\n") << test::file_text(log);
   EXPECT_FALSE(status.empty());
   EXPECT_FALSE(fs::exists(models + "/toy/v1.yml"));
   // No rdsf-train of this run is left behind.

@@ -38,11 +38,6 @@ std::string list_of(const rdsf::test::TempDir& dir, const std::string& prefix, b
   return list;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(PclPeer, FindsPeopleInTheHomeFramesAndWritesTheDetectorsCsvAndReport) {
   SKIP_WITHOUT_PEER();
   rdsf::test::TempDir dir("pcl-peer");
@@ -51,12 +46,12 @@ TEST(PclPeer, FindsPeopleInTheHomeFramesAndWritesTheDetectorsCsvAndReport) {
                                  " --out " + quote(dir / "pcl.csv") + " --truth " + quote(truth) +
                                  " --report-dir " + quote(dir / "report"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string csv = read_text(dir / "pcl.csv");
+  const std::string csv = rdsf::test::file_text(dir / "pcl.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), rdsf::DetectionCsv::header(true));
   // PCL's app with its defaults: each of the 4 home frames with colour shows one person; the floor is found
   // and at least two of them are detected (above -1.5) with a box the evaluation matches.
   EXPECT_NE(r.err.find("recording 'home_' (4 frames): floor"), std::string::npos) << r.err;
-  const std::string summary = read_text(dir / "report/summary.md");
+  const std::string summary = rdsf::test::file_text(dir / "report/summary.md");
   EXPECT_NE(summary.find("| PCL ground-based HOG+SVM |"), std::string::npos) << summary;
   EXPECT_NE(r.out.find("4 frames, 4 people"), std::string::npos) << r.out;
   const std::string operating = "At the operating point P >= 0.05: TAR ";

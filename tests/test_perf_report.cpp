@@ -23,13 +23,6 @@ std::string perf_program() {
   return (std::filesystem::path(RDSF_BINARY_DIR) / "bench" / "report" / "rdsf-perf-report").string();
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// The table row (a line starting with "| " + label) or an empty string.
 std::string row(const std::string& markdown, const std::string& label) {
   std::istringstream lines(markdown);
@@ -67,7 +60,7 @@ rdsf::test::RunResult* PerfReportQuick::result_ = nullptr;
 
 TEST_F(PerfReportQuick, WritesEveryRowWithNumbersAndPrintsTheRatios) {
   ASSERT_EQ(result_->exit_code, 0) << result_->err;
-  const std::string md = read_text(*dir_ / "report.md");
+  const std::string md = rdsf::test::file_text(*dir_ / "report.md");
   ASSERT_FALSE(md.empty());
   for (const char* heading : {"# Performance report", "## Whole system per frame and per candidate",
                               "## Training per round", "## Mining and labelling", "## Memory peaks",
@@ -125,7 +118,7 @@ TEST_F(PerfReportQuick, WritesEveryRowWithNumbersAndPrintsTheRatios) {
 // said to be absent).
 TEST_F(PerfReportQuick, StatesTheMachinesLimitsAndThePeers) {
   ASSERT_EQ(result_->exit_code, 0) << result_->err;
-  const std::string md = read_text(*dir_ / "report.md");
+  const std::string md = rdsf::test::file_text(*dir_ / "report.md");
   EXPECT_NE(md.find("## Speed against the machine's limits"), std::string::npos);
   EXPECT_NE(md.find("## Trainers side by side"), std::string::npos);
   const std::regex number("[0-9]+\\.[0-9]+");
@@ -155,7 +148,7 @@ TEST(PerfReport, RefusesToReplaceAReportWithoutForce) {
   const rdsf::test::RunResult again = run(quote(perf_program()) + " --quick --out " + quote(dir / "report.md"));
   EXPECT_EQ(again.exit_code, 1);
   EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
-  EXPECT_EQ(read_text(dir / "report.md"), "an earlier report\n");
+  EXPECT_EQ(rdsf::test::file_text(dir / "report.md"), "an earlier report\n");
 }
 
 TEST(PerfReport, RejectsBadOpenCvRounds) {

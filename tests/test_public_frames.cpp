@@ -5,9 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <vector>
 
 #include "rdsf/classifier/model_registry.hpp"
@@ -40,16 +38,9 @@ std::vector<std::filesystem::path> source_folders() {
   return folders;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // The README's "- People: ..." line says "none" for folders of people-free rooms.
 bool people_free(const std::filesystem::path& folder) {
-  return std::regex_search(read_text(folder / "README.md"), std::regex(R"(\n- People: none\b)"));
+  return std::regex_search(test::file_text(folder / "README.md"), std::regex(R"(\n- People: none\b)"));
 }
 
 }  // namespace
@@ -64,7 +55,7 @@ TEST(PublicFrames, EveryFolderRecordsItsSourceCommitAndLicence) {
   for (const auto& folder : folders) {
     SCOPED_TRACE(folder.string());
     ASSERT_TRUE(std::filesystem::is_regular_file(folder / "README.md"));
-    const std::string readme = read_text(folder / "README.md");
+    const std::string readme = test::file_text(folder / "README.md");
     EXPECT_TRUE(std::regex_search(readme, licence)) << "README.md names no redistributable licence";
     EXPECT_TRUE(std::regex_search(readme, commit)) << "README.md records no source commit";
     EXPECT_TRUE(std::regex_search(readme, std::regex(R"(\n- People: )"))) << "README.md does not say whether people are in the frames";

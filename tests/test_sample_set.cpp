@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -49,13 +48,6 @@ SampleRecord miner_record(int frame, int label = 0) {
 
 SampleSetWriter new_set(const std::string& dir) {
   return SampleSetWriter::open_or_create(dir, rdsf::FeatureSpec{}, rdsf::CameraModel::kinect_v1(), "test");
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 void append_text(const std::string& path, const std::string& text) {
@@ -205,7 +197,7 @@ TEST(SampleSet, WriterKilledMidAppendLosesNoEarlierSample) {
   // Let it append a while, then kill it wherever it is.
   const std::string tsv = set_dir + "/samples.tsv";
   for (int wait = 0; wait < 2000; ++wait) {
-    const std::string text = slurp(tsv);
+    const std::string text = rdsf::test::file_text(tsv);
     if (std::count(text.begin(), text.end(), '\n') > 40) break;
     usleep(2000);
   }
@@ -213,7 +205,7 @@ TEST(SampleSet, WriterKilledMidAppendLosesNoEarlierSample) {
   waitpid(child, nullptr, 0);
 
   const SampleSet set = SampleSet::open_read(set_dir);
-  const std::string text = slurp(tsv);
+  const std::string text = rdsf::test::file_text(tsv);
   const auto complete_rows = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) - 1;
   ASSERT_GE(complete_rows, 40u);
   ASSERT_EQ(set.records().size(), complete_rows);
@@ -267,7 +259,7 @@ TEST(SampleSet, BadRowIsNamedByFileAndLine) {
     writer.append(miner_record(2), random_crop(2));
   }
   const std::string tsv = set_dir + "/samples.tsv";
-  std::string text = slurp(tsv);
+  std::string text = rdsf::test::file_text(tsv);
   // Row 2 (file line 3): a label that is not 0 or 1.
   const std::size_t line3 = text.find('\n', text.find('\n') + 1) + 1;
   const std::size_t label = text.find('\t', line3) + 1;
@@ -305,7 +297,7 @@ TEST(SampleSet, RefusesWrongFoldersSpecsAndManifests) {
   EXPECT_NE(message.find(other.hash()), std::string::npos) << message;
   // A manifest of an unknown version.
   const std::string manifest = dir / "set/manifest.yml";
-  std::string text = slurp(manifest);
+  std::string text = rdsf::test::file_text(manifest);
   text.replace(text.find("format_version: 1"), 17, "format_version: 7");
   { std::ofstream(manifest, std::ios::trunc) << text; }
   message = error_of([&] { SampleSet::open_read(dir / "set"); });
@@ -321,7 +313,7 @@ TEST(SampleSet, ManifestHashIsStableAndDependsOnTheContents) {
   const SampleSet a = SampleSet::open_read(dir / "a");
   EXPECT_EQ(a.manifest_hash(), SampleSet::open_read(dir / "a").manifest_hash());
   const std::string manifest = dir / "a/manifest.yml";
-  std::string text = slurp(manifest);
+  std::string text = rdsf::test::file_text(manifest);
   text.replace(text.find("created_by: test"), 16, "created_by: tost");
   { std::ofstream(manifest, std::ios::trunc) << text; }
   EXPECT_NE(a.manifest_hash(), SampleSet::open_read(dir / "a").manifest_hash());

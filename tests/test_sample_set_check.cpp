@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -19,13 +18,6 @@ using namespace rdsf;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void make_set(const std::string& dir, int count) {
   SampleSetWriter w = SampleSetWriter::open_or_create(dir, FeatureSpec{}, CameraModel::kinect_v1(), "test");
@@ -49,7 +41,7 @@ TEST(SampleSetCheck, TruncatedOrReplacedCropIsAOneLineErrorNamingSampleAndFile) 
   const std::string set = dir / "set";
   make_set(set, 4);
   const std::string crop2 = set + "/crops/00000002.depth.png";
-  const std::string bytes = read_text(crop2);
+  const std::string bytes = test::file_text(crop2);
   std::ofstream(crop2, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   fs::copy_file(set + "/crops/00000001.depth.png", set + "/crops/00000003.depth.png",
                 fs::copy_options::overwrite_existing);
@@ -85,7 +77,7 @@ TEST(SampleSetCheck, DuplicateIdEditedByHandIsNamedAndRepaired) {
   const std::string set = dir / "set";
   make_set(set, 3);
   {
-    std::string tsv = read_text(set + "/samples.tsv");
+    std::string tsv = test::file_text(set + "/samples.tsv");
     const std::size_t second = tsv.find('\n', tsv.find('\n') + 1) + 1;  // the row of sample 1
     const std::string row = tsv.substr(tsv.find('\n') + 1, second - tsv.find('\n') - 1);
     tsv += row;  // sample 1 again, at the end
@@ -110,7 +102,7 @@ TEST(SampleSetCheck, DuplicateIdEditedByHandIsNamedAndRepaired) {
   for (const auto& e : fs::directory_iterator(set)) {
     if (e.path().filename().string().rfind("samples.tsv.bak-", 0) == 0) {
       backup = true;
-      EXPECT_NE(read_text(e.path().string()).find("4\t1"), std::string::npos);  // the original, torn row and all
+      EXPECT_NE(test::file_text(e.path().string()).find("4\t1"), std::string::npos);  // the original, torn row and all
     }
   }
   EXPECT_TRUE(backup);
@@ -120,7 +112,7 @@ TEST(SampleSetCheck, ManifestWhoseHashDoesNotMatchIsReportedAndNothingChanged) {
   test::TempDir dir;
   const std::string set = dir / "set";
   make_set(set, 2);
-  std::string manifest = read_text(set + "/manifest.yml");
+  std::string manifest = test::file_text(set + "/manifest.yml");
   const std::size_t hash = manifest.find("hash:");
   ASSERT_NE(hash, std::string::npos);
   manifest.replace(manifest.find_first_of("0123456789abcdef", hash + 5), 4, "0000");
@@ -144,5 +136,5 @@ TEST(SampleSetCheck, OpeningRetractsARowWhoseCropIsMissingAndSaysSo) {
   ASSERT_EQ(w.repairs().size(), 1u);
   EXPECT_EQ(w.repairs()[0], "sample 2: retracted (crop missing, crops/00000002.depth.png)");
   EXPECT_EQ(w.records().size(), 2u);
-  EXPECT_NE(read_text(set + "/retracted.tsv").find("\tcrop missing\n"), std::string::npos);
+  EXPECT_NE(test::file_text(set + "/retracted.tsv").find("\tcrop missing\n"), std::string::npos);
 }

@@ -47,6 +47,13 @@ std::string program(const std::string& name) {
   return (std::filesystem::path(RDSF_BINARY_DIR) / name).string();
 }
 
+std::string file_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 std::string quote(const std::string& text) {
   std::string quoted = "'";
   for (char c : text) {

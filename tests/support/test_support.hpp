@@ -50,6 +50,9 @@ RunResult run(const std::string& command_line);
 /// The message of the rdsf::Error that `f` throws; empty when it throws none.
 std::string error_message(const std::function<void()>& f);
 
+/// The whole of a file, byte for byte; empty when it cannot be read (the tests then fail on what they expect).
+std::string file_text(const std::filesystem::path& path);
+
 /// Quotes a path for the shell.
 std::string quote(const std::string& text);
 
