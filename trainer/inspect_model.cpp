@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <map>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_registry.hpp"
@@ -31,10 +33,8 @@ std::string region_text(const FeatureSpec& spec, int region) {
   return text;
 }
 
-}  // namespace
-
-int run_inspect(const TrainOptions& o, std::ostream& out) {
-  const BoostedModel model = BoostedModel::load(o.inspect, o.models_dir);
+// The model's identity: name, format, features, crops, classifier, calibration, backend, recipe, parameters.
+void print_identity(const BoostedModel& model, std::ostream& out) {
   const TrainingRecord& t = model.training();
   const FeatureSpec& spec = model.feature_spec();
   char line[512];
@@ -70,6 +70,11 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
   out << "parameters  ";
   for (const auto& [key, value] : t.parameters) out << " " << key << "=" << value;
   out << "\n";
+}
+
+// What it was trained on and how it validated: sample sets, counts, validation figures, ROC, rounds.
+void print_training(const TrainingRecord& t, std::ostream& out) {
+  char line[512];
   out << "sample sets\n";
   for (const SampleSetUse& s : t.sample_sets) {
     std::snprintf(line, sizeof line, "  %-15s %-40s manifest %-16s used %zu of %zu\n", s.role.c_str(), s.path.c_str(),
@@ -108,7 +113,10 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
       out << line;
     }
   }
+}
 
+// The features of the weak classifiers, most used first (ties: the larger spread first).
+std::vector<FeatureUse> ranked_feature_uses(const BoostedModel& model) {
   std::map<int, FeatureUse> uses;
   for (const WeakClassifier& w : model.weak_classifiers()) {
     FeatureUse& u = uses[w.feature];
@@ -126,16 +134,31 @@ int run_inspect(const TrainOptions& o, std::ostream& out) {
   std::stable_sort(ranked.begin(), ranked.end(), [](const FeatureUse& a, const FeatureUse& b) {
     return a.uses != b.uses ? a.uses > b.uses : a.spread > b.spread;
   });
+  return ranked;
+}
+
+// The first `top` of `ranked` with the pair of regions each feature compares.
+void print_feature_uses(const std::vector<FeatureUse>& ranked, const FeatureSpec& spec, int top, std::ostream& out) {
+  char line[512];
   out << "most used features (" << ranked.size() << " distinct; spread = sum of (max - min response) / 2)\n";
   out << "  rank  feature  uses  spread   " << (spec.layout == FeatureSpec::Layout::Cells ? "cell" : "square")
       << " pair\n";
-  for (std::size_t k = 0; k < ranked.size() && k < static_cast<std::size_t>(std::max(0, o.top)); ++k) {
+  for (std::size_t k = 0; k < ranked.size() && k < static_cast<std::size_t>(std::max(0, top)); ++k) {
     int i = 0, j = 0;
     spec.pair_at(ranked[k].feature, i, j);
     std::snprintf(line, sizeof line, "  %4zu  %7d  %4d  %6.3f   %s - %s\n", k + 1, ranked[k].feature, ranked[k].uses,
                   ranked[k].spread, region_text(spec, i).c_str(), region_text(spec, j).c_str());
     out << line;
   }
+}
+
+}  // namespace
+
+int run_inspect(const TrainOptions& o, std::ostream& out) {
+  const BoostedModel model = BoostedModel::load(o.inspect, o.models_dir);
+  print_identity(model, out);
+  print_training(model.training(), out);
+  print_feature_uses(ranked_feature_uses(model), model.feature_spec(), o.top, out);
   return 0;
 }
 
