@@ -136,6 +136,91 @@ std::size_t positives_with_crop_here(const ClassPick& pick, const SampleChoice& 
   return count;
 }
 
+// The columns to train on: --feature-pool's seeded draw (or as many as fit the memory budget, 4 bytes of
+// float and 1 of bin per value) plus the features an --init model reads; the given columns when there are
+// any; empty for all of the spec's features.
+std::vector<int> feature_pool_columns(const SampleChoice& choice, const FeatureSpec& spec, std::size_t samples,
+                                      std::ostream& log) {
+  if (!choice.columns.empty()) return choice.columns;
+  const auto dimension = static_cast<std::size_t>(spec.dimension());
+  std::size_t pool = choice.feature_pool;
+  if (pool == 0) {
+    pool = std::max<std::size_t>(1, choice.memory_budget_mb * (std::size_t{1} << 20) / (5 * std::max<std::size_t>(1, samples)));
+  }
+  std::vector<int> columns;
+  if (pool >= dimension) return columns;
+  for (const std::size_t f : seeded_subset(dimension, pool, choice.seed ^ fnv1a64("feature pool"))) {
+    columns.push_back(static_cast<int>(f));
+  }
+  const std::size_t drawn = columns.size();
+  columns.insert(columns.end(), choice.required_features.begin(), choice.required_features.end());
+  std::sort(columns.begin(), columns.end());
+  columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+  log << "rdsf-train: feature pool of " << columns.size() << " of the " << dimension << " features of " << spec.name()
+      << " (seeded; --feature-pool";
+  if (columns.size() > drawn) log << "; " << columns.size() - drawn << " more that the --init model reads";
+  log << ")\n";
+  return columns;
+}
+
+// Rows computed by this rank: its block of each class.
+std::size_t rows_of_rank(const ClassPick& pos, const ClassPick& neg, const SampleChoice& choice) {
+  if (choice.shards < 1 || choice.shard < 0 || choice.shard >= choice.shards) {
+    throw Error("rank " + std::to_string(choice.shard) + " of " + std::to_string(choice.shards) + " is not a rank");
+  }
+  std::size_t here = 0;
+  for (const std::size_t count : {pos.chosen.size(), neg.chosen.size()}) {
+    for (std::size_t k = 0; k < count; ++k) here += block_owner(k, count, choice.shards) == choice.shard ? 1 : 0;
+  }
+  return here;
+}
+
+// Variants of every positive with a crop, after the originals (rows from `here` on, already allocated), with
+// their original's origin (group). With ranks, each computes the copies of its own positives; every rank
+// knows how many each has. Each copy depends on its crop and the sample's id only: the rows are the same
+// with any thread count.
+void append_augmented(const ClassPick& pos, const std::vector<std::pair<std::size_t, std::size_t>>& pos_sources,
+                      const SampleChoice& choice, const FeatureSubset* subset, const RdsfExtractor& extractor,
+                      std::size_t here, std::size_t here_augmented, int threads, std::vector<SampleOrigin>& origins,
+                      ChosenSamples& out, std::ostream& log) {
+  const auto per_crop = static_cast<std::size_t>(choice.augmentation.variants_per_crop());
+  std::vector<SampleOrigin> extra_origins;
+  std::vector<int> extra_owners;
+  std::vector<std::size_t> mine;  // positives (of pos_sources) whose copies are computed here, in row order
+  for (std::size_t k = 0; k < pos_sources.size(); ++k) {
+    const SampleSet& set = pos.sets[pos_sources[k].first];
+    if (!set.records()[pos_sources[k].second].has_crop) continue;
+    const int owner = out.owner.empty() ? 0 : out.owner[k];
+    extra_origins.insert(extra_origins.end(), per_crop, origins[k]);
+    extra_owners.insert(extra_owners.end(), per_crop, owner);
+    if (owner == choice.shard) mine.push_back(k);
+  }
+  if (mine.size() * per_crop != here_augmented) fail(pos.sets.front().dir(), "the augmented rows were miscounted");
+  parallel_for_chunks(mine.size(), 64, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t m = begin; m < end; ++m) {
+      const SampleSet& set = pos.sets[pos_sources[mine[m]].first];
+      const std::size_t record = pos_sources[mine[m]].second;
+      const std::vector<cv::Mat1w> copies =
+          augmented_crops(set.depth_crop(record), choice.augmentation, set.records()[record].id);
+      if (copies.size() != per_crop) fail(set.dir(), "augmentation gave another number of copies than expected");
+      for (std::size_t c = 0; c < per_crop; ++c) {
+        float* values = out.rows.ptr<float>(static_cast<int>(here + m * per_crop + c));
+        if (subset) {
+          subset->compute(copies[c], values);
+        } else {
+          extractor.compute(copies[c], values);
+        }
+      }
+    }
+  });
+  out.labels.insert(out.labels.end(), extra_origins.size(), 1);
+  out.augmented.insert(out.augmented.end(), extra_origins.size(), true);
+  origins.insert(origins.end(), extra_origins.begin(), extra_origins.end());
+  if (!out.owner.empty()) out.owner.insert(out.owner.end(), extra_owners.begin(), extra_owners.end());
+  log << "rdsf-train: augmentation (" << choice.augmentation.describe() << "): " << extra_origins.size()
+      << " more positives\n";
+}
+
 }  // namespace
 
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads) {
@@ -149,45 +234,12 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   out.spec = *spec;
   out.crops = crops;
   const std::size_t samples = pos.chosen.size() + neg.chosen.size();
-  const auto dimension = static_cast<std::size_t>(out.spec.dimension());
-  std::size_t pool = choice.feature_pool;
-  if (pool == 0) {  // as many as fit the budget: 4 bytes of float and 1 of bin per value
-    pool = std::max<std::size_t>(1, choice.memory_budget_mb * (std::size_t{1} << 20) / (5 * std::max<std::size_t>(1, samples)));
-  }
-  if (!choice.columns.empty()) {
-    out.columns = choice.columns;
-  } else if (pool < dimension) {
-    for (const std::size_t f : seeded_subset(dimension, pool, choice.seed ^ fnv1a64("feature pool"))) {
-      out.columns.push_back(static_cast<int>(f));
-    }
-    const std::size_t drawn = out.columns.size();
-    out.columns.insert(out.columns.end(), choice.required_features.begin(), choice.required_features.end());
-    std::sort(out.columns.begin(), out.columns.end());
-    out.columns.erase(std::unique(out.columns.begin(), out.columns.end()), out.columns.end());
-    log << "rdsf-train: feature pool of " << out.columns.size() << " of the " << dimension << " features of "
-        << out.spec.name() << " (seeded; --feature-pool";
-    if (out.columns.size() > drawn) log << "; " << out.columns.size() - drawn << " more that the --init model reads";
-    log << ")\n";
-  }
+  out.columns = feature_pool_columns(choice, out.spec, samples, log);
   const RdsfExtractor extractor(out.spec);
   std::optional<FeatureSubset> subset;
   if (!out.columns.empty()) subset.emplace(out.spec, out.columns);
   const int columns = subset ? subset->size() : extractor.dimension();
-  // One crop's row: the pool's features, or all of them.
-  auto compute_row = [&](const cv::Mat1w& crop, float* values) {
-    if (subset) {
-      subset->compute(crop, values);
-    } else {
-      extractor.compute(crop, values);
-    }
-  };
-  if (choice.shards < 1 || choice.shard < 0 || choice.shard >= choice.shards) {
-    throw Error("rank " + std::to_string(choice.shard) + " of " + std::to_string(choice.shards) + " is not a rank");
-  }
-  std::size_t here = 0;  // rows computed here: this rank's block of each class
-  for (const std::size_t count : {pos.chosen.size(), neg.chosen.size()}) {
-    for (std::size_t k = 0; k < count; ++k) here += block_owner(k, count, choice.shards) == choice.shard ? 1 : 0;
-  }
+  const std::size_t here = rows_of_rank(pos, neg, choice);
   choice.augmentation.validate();
   // The augmented copies' rows follow the originals in the same matrix, allocated once (rows of a large
   // base are gigabytes: growing them would copy every row again).
@@ -205,39 +257,8 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   progress.finish(row, "features ready");
   out.augmented.assign(out.labels.size(), false);
   if (choice.augmentation.enabled()) {
-    // Variants of every positive with a crop, after the originals, with their original's origin (group).
-    // With ranks, each computes the copies of its own positives; every rank knows how many each has.
-    std::vector<SampleOrigin> extra_origins;
-    std::vector<int> extra_owners;
-    std::vector<std::size_t> mine;  // positives (of pos_sources) whose copies are computed here, in row order
-    for (std::size_t k = 0; k < pos_sources.size(); ++k) {
-      const SampleSet& set = pos.sets[pos_sources[k].first];
-      if (!set.records()[pos_sources[k].second].has_crop) continue;
-      const int owner = out.owner.empty() ? 0 : out.owner[k];
-      extra_origins.insert(extra_origins.end(), per_crop, origins[k]);
-      extra_owners.insert(extra_owners.end(), per_crop, owner);
-      if (owner == choice.shard) mine.push_back(k);
-    }
-    if (mine.size() * per_crop != here_augmented) fail(pos.sets.front().dir(), "the augmented rows were miscounted");
-    // Each copy depends on its crop and the sample's id only: the rows are the same with any thread count.
-    parallel_for_chunks(mine.size(), 64, threads, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t m = begin; m < end; ++m) {
-        const SampleSet& set = pos.sets[pos_sources[mine[m]].first];
-        const std::size_t record = pos_sources[mine[m]].second;
-        const std::vector<cv::Mat1w> copies =
-            augmented_crops(set.depth_crop(record), choice.augmentation, set.records()[record].id);
-        if (copies.size() != per_crop) fail(set.dir(), "augmentation gave another number of copies than expected");
-        for (std::size_t c = 0; c < per_crop; ++c) {
-          compute_row(copies[c], out.rows.ptr<float>(static_cast<int>(here + m * per_crop + c)));
-        }
-      }
-    });
-    out.labels.insert(out.labels.end(), extra_origins.size(), 1);
-    out.augmented.insert(out.augmented.end(), extra_origins.size(), true);
-    origins.insert(origins.end(), extra_origins.begin(), extra_origins.end());
-    if (!out.owner.empty()) out.owner.insert(out.owner.end(), extra_owners.begin(), extra_owners.end());
-    log << "rdsf-train: augmentation (" << choice.augmentation.describe() << "): " << extra_origins.size()
-        << " more positives\n";
+    append_augmented(pos, pos_sources, choice, subset ? &*subset : nullptr, extractor, here, here_augmented, threads,
+                     origins, out, log);
   }
   if (choice.group_frames > 0) {
     SampleGroups groups = sample_groups(origins, choice.group_frames, choice.group_by);
