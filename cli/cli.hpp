@@ -56,6 +56,13 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
 template <typename Params>
 void add_table_options(po::options_description& group, const ParameterTable<Params>& table, Params& params);
 
+/// The options of add_table_options, but a value (given, from --config or the default) is not set: it is
+/// appended to `values` as (row name, value), for the program to set through the rows later (rdsf-synth
+/// sets them before its --classic preset; a refused value is its Error, exit 1). --help shows `params`' values.
+template <typename Params>
+void add_table_values(po::options_description& group, const ParameterTable<Params>& table, const Params& params,
+                      std::vector<std::pair<std::string, ParameterValue>>& values);
+
 /// The same rows as overrides: a row's value is appended to `given` only when given (command line or
 /// --config); --help shows "Default X" from `defaults` (a recipe may set its own).
 template <typename Params>
@@ -140,20 +147,26 @@ auto with_type_of(const ParameterValue& value, Make&& make) {
 
 }  // namespace detail
 
-template <typename Params>
-void add_table_options(po::options_description& group, const ParameterTable<Params>& table, Params& params) {
+namespace detail {
+
+/// An option per row that is not hidden (a switch row a flag), its default `params`' value; each value
+/// po::notify stores (switches only when on) goes to `take(row, value)`.
+template <typename Params, typename Take>
+void add_row_options(po::options_description& group, const ParameterTable<Params>& table, const Params& params,
+                     Take take) {
   for (const Parameter<Params>& row : table) {
+    if (row.hidden) continue;
     if (row.is_switch) {
-      group.add_options()(row.name.c_str(), po::bool_switch()->notifier([&params, row](bool on) {
-        if (on) detail::set_as_option(row, params, true);
+      group.add_options()(row.name.c_str(), po::bool_switch()->notifier([take, row](bool on) {
+        if (on) take(row, ParameterValue(true));
       }), row.help.c_str());
       continue;
     }
-    detail::with_type_of(row.get(params), [&](const auto& now) {
+    with_type_of(row.get(params), [&](const auto& now) {
       using T = std::decay_t<decltype(now)>;
       group.add_options()(row.name.c_str(),
-                          po::value<T>()->default_value(now, parameter_text(now))->notifier([&params, row](const T& v) {
-                            detail::set_as_option(row, params, v);
+                          po::value<T>()->default_value(now, parameter_text(now))->notifier([take, row](const T& v) {
+                            take(row, ParameterValue(v));
                           }),
                           row.help.c_str());
       return 0;
@@ -161,10 +174,28 @@ void add_table_options(po::options_description& group, const ParameterTable<Para
   }
 }
 
+}  // namespace detail
+
+template <typename Params>
+void add_table_options(po::options_description& group, const ParameterTable<Params>& table, Params& params) {
+  detail::add_row_options(group, table, params, [&params](const Parameter<Params>& row, const ParameterValue& v) {
+    detail::set_as_option(row, params, v);
+  });
+}
+
+template <typename Params>
+void add_table_values(po::options_description& group, const ParameterTable<Params>& table, const Params& params,
+                      std::vector<std::pair<std::string, ParameterValue>>& values) {
+  detail::add_row_options(group, table, params, [&values](const Parameter<Params>& row, const ParameterValue& v) {
+    values.emplace_back(row.name, v);
+  });
+}
+
 template <typename Params>
 void add_override_options(po::options_description& group, const ParameterTable<Params>& table,
                           const Params& defaults, std::vector<std::pair<std::string, ParameterValue>>& given) {
   for (const Parameter<Params>& row : table) {
+    if (row.hidden) continue;
     const std::string help = row.help + ". Default " + (row.is_switch ? std::string("off") : parameter_text(row.get(defaults)));
     if (row.is_switch) {
       group.add_options()(row.name.c_str(), po::bool_switch()->notifier([&given, name = row.name](bool on) {

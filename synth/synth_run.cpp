@@ -1,7 +1,5 @@
 #include "synth/synth_run.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 
 #include "rdsf/core/error.hpp"
@@ -11,36 +9,27 @@
 #include "rdsf/synth/synth_writer.hpp"
 
 namespace rdsf {
+namespace {
+
+// --people as given ("2", not "2..2").
+std::string people_text(const SynthOptions& o) {
+  std::string text;
+  for (const auto& [name, value] : o.values) {
+    if (name == "people") text = parameter_text(value);
+  }
+  return text;
+}
+
+}  // namespace
 
 int run_synth(SynthOptions o) {
-  synth::parse_people_range(o.people, o.params.people_min, o.params.people_max);
-  synth::parse_image_size(o.size, o.params.width_px, o.params.height_px);
-  synth::parse_field_of_view(o.fov, o.params.fov_h_deg, o.params.fov_v_deg);
-  synth::SynthParams& p = o.params;
-  synth::parse_real_range("--camera-height", o.camera_height, p.room.camera_height_min_m, p.room.camera_height_max_m);
-  synth::parse_real_range("--camera-pitch", o.camera_pitch, p.room.pitch_min_deg, p.room.pitch_max_deg);
-  synth::parse_real_range("--people-distance", o.people_distance, p.people.nearest_m, p.people.farthest_m);
-  double clutter_min = 0, clutter_max = 0;
-  synth::parse_real_range("--clutter", o.clutter, clutter_min, clutter_max);
-  if (clutter_min != std::floor(clutter_min) || clutter_max != std::floor(clutter_max)) {
-    fail("--clutter " + o.clutter, "expected whole numbers of pieces");
-  }
-  p.room.clutter_min = static_cast<int>(std::max(-1.0, std::min(clutter_min, 1000.0)));
-  p.room.clutter_max = static_cast<int>(std::max(-1.0, std::min(clutter_max, 1000.0)));
-  p.room.clutter = p.room.clutter_max > 0;
-  synth::parse_real_range("--eight-bit-step", o.eight_bit_step, p.sensor.eight_bit_step_min_mm,
-                          p.sensor.eight_bit_step_max_mm);
-  p.people.body.outfits = synth::parse_on_off("--outfits", o.outfits);
-  p.people.poses = synth::parse_on_off("--poses", o.poses);
-  p.people.body.varied_bodies = synth::parse_on_off("--bodies", o.bodies);
-  p.room.room_kinds = synth::parse_on_off("--room-kinds", o.room_kinds);
-  if (o.classic) p.set_classic();
+  synth::set_synth_options(o.params, o.values, o.classic);
   o.params.validate();
   synth::SynthSequence sequence(o.params);  // validated before anything touches the folder
   synth::prepare_output_folder(o.out_dir, o.force);
   synth::SynthWriter writer(o.out_dir, o.params, o.force);
   std::cerr << "rdsf-synth: " << o.params.frames << " frames " << o.params.width_px << "x"
-            << o.params.height_px << (o.params.empty ? ", no people" : ", people " + o.people) << ", seed "
+            << o.params.height_px << (o.params.empty ? ", no people" : ", people " + people_text(o)) << ", seed "
             << o.params.seed << " -> " << o.out_dir << "\n";
   cli::Progress progress(std::cerr, "frames", o.params.frames);
   long long boxes = 0;

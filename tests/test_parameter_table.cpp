@@ -10,6 +10,7 @@
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/recipe.hpp"
+#include "rdsf/synth/synth_params.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "support/test_support.hpp"
 
@@ -29,6 +30,9 @@ void expect_sound(const ParameterTable<Params>& table) {
     if (row.thesis) {
       EXPECT_NO_THROW(row.set(p, *row.thesis)) << row.name << ": its thesis value fails its check";
     }
+    if (row.classic) {
+      EXPECT_NO_THROW(row.set(p, *row.classic)) << row.name << ": its classic value fails its check";
+    }
   }
 }
 
@@ -36,6 +40,14 @@ TEST(ParameterTable, EveryTableIsSound) {
   expect_sound(analyser_parameters());
   expect_sound(boost_training_parameters());
   expect_sound(tracking_parameters());
+  expect_sound(synth::synth_parameters());
+}
+
+// A program adds a table's options a stretch at a time (rdsf-synth: --seed between --people and --empty).
+TEST(ParameterTable, RowsBetweenTwoNamesAreThatStretch) {
+  std::string names;
+  for (const auto& row : rows_between(synth::synth_parameters(), "empty", "clip-frames")) names += row.name + " ";
+  EXPECT_EQ(names, "empty size fov rgb clip-frames ");
 }
 
 TEST(ParameterTable, OutOfRangeValuesAreRefusedNamingTheRow) {

@@ -1,6 +1,6 @@
-// The synthetic Kinect generator as a library: its random numbers, determinism, ground-truth boxes, the
-// --empty rooms, smooth tracks, the sensor's range and quantisation, and that the frame analyser finds
-// the people it renders.
+// The synthetic Kinect generator as a library: its random numbers, determinism, its parameter table (the
+// --classic values, range checks), ground-truth boxes, the --empty rooms, smooth tracks, the sensor's range
+// and quantisation, and that the frame analyser finds the people it renders.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/core/stable_hash.hpp"
@@ -18,7 +19,9 @@
 #include "rdsf/synth/person_model.hpp"
 #include "rdsf/synth/random.hpp"
 #include "rdsf/synth/room_generator.hpp"
+#include "rdsf/synth/synth_params.hpp"
 #include "rdsf/synth/synth_sequence.hpp"
+#include "support/test_support.hpp"
 
 namespace {
 
@@ -91,7 +94,7 @@ TEST(SynthSequence, ClassicIsTheGeneratorBefore) {
   p.clip_frames = 10;
   p.width_px = 640;
   p.height_px = 480;
-  p.set_classic();
+  p = rdsf::synth::with_classic_values(p);
   SynthSequence sequence(p);
   std::uint64_t h = 0;
   for (int i = 0; i < p.frames; ++i) {
@@ -107,6 +110,76 @@ TEST(SynthSequence, ClassicIsTheGeneratorBefore) {
     h = rdsf::fnv1a64(std::to_string(fh), h);
   }
   EXPECT_EQ(h, 0xc911653e222b8990ULL);
+}
+
+// --classic is the rows' classic values (synth_parameters()): each member the hand-written set_classic()
+// of before set, to the value it set, and the members --clutter sets besides clutter itself kept.
+TEST(SynthParameters, ClassicValuesAreTheOldSetClassic) {
+  SynthParams given;
+  given.room.clutter_min = 2;
+  given.room.clutter_max = 4;
+  const auto classic_members = [](const SynthParams& p) {
+    std::ostringstream text;
+    text << "height " << p.room.camera_height_min_m << ".." << p.room.camera_height_max_m << " roll "
+         << p.room.roll_max_deg << " yaw " << p.room.yaw_max_deg << " offset " << p.room.camera_offset_max_m
+         << " moving " << p.room.moving_share << " clutter " << p.room.clutter << " kinds " << p.room.room_kinds
+         << " floor " << p.room.floor_dropout_max << " wall " << p.room.wall_dropout_max << " eight-bit "
+         << p.sensor.eight_bit_share << " xtion " << p.sensor.xtion_share << " patch " << p.sensor.patch_cell_px
+         << " holes " << p.sensor.coherent_holes_px << " bodies " << p.people.body.varied_bodies << " outfits "
+         << p.people.body.outfits << " poses " << p.people.poses << " groups " << p.people.group_share << " sitting "
+         << p.people.sitting_share << " in-view " << p.people.in_view_share << " distance " << p.people.nearest_m
+         << ".." << p.people.farthest_m << " clearance " << p.people.clearance_m;
+    return text.str();
+  };
+  const SynthParams c = rdsf::synth::with_classic_values(given);
+  EXPECT_EQ(classic_members(c),
+            "height 0.7..1.2 roll 0 yaw 0 offset 0 moving 0 clutter 0 kinds 0 floor 0.2 wall 0.05 eight-bit 0 "
+            "xtion 0 patch 20 holes 0 bodies 0 outfits 0 poses 0 groups 0 sitting 0 in-view 0 distance 1..7 "
+            "clearance 0.5");
+  EXPECT_NE(classic_members(given), classic_members(c));
+  // what set_classic() left alone
+  EXPECT_EQ(c.room.clutter_min, 2);
+  EXPECT_EQ(c.room.clutter_max, 4);
+  EXPECT_EQ(c.room.pitch_min_deg, given.room.pitch_min_deg);
+  EXPECT_EQ(c.sensor.eight_bit_step_min_mm, given.sensor.eight_bit_step_min_mm);
+  EXPECT_EQ(c.people.body.child_share, given.people.body.child_share);
+  // exactly those 23 members: every row with a classic value is one of them (two for a MIN..MAX row)
+  int classic_rows = 0;
+  for (const auto& row : rdsf::synth::synth_parameters()) classic_rows += row.classic ? 1 : 0;
+  EXPECT_EQ(classic_rows, 21);
+}
+
+// A row refuses a value out of its range in one line naming the option and the value, stores nothing, and
+// the same check guards SynthParams::validate(); --classic overrides (unchecked) the values of its rows.
+TEST(SynthParameters, RowsRefuseValuesOutOfRangeNamingTheOption) {
+  using rdsf::synth::set_synth_options;
+  using rdsf::test::error_message;
+  SynthParams p;
+  EXPECT_EQ(error_message([&] { set_synth_options(p, {{"camera-roll", 99.0}}, false); }),
+            "--camera-roll 99: must lie in 0..20 degrees");
+  EXPECT_EQ(error_message([&] { set_synth_options(p, {{"xtion", 2.0}}, false); }), "--xtion 2: must be a share in 0..1");
+  EXPECT_EQ(error_message([&] { set_synth_options(p, {{"people", std::string("3..1")}}, false); }),
+            "--people 3..1: MIN is larger than MAX");
+  EXPECT_EQ(error_message([&] { set_synth_options(p, {{"camera-height", std::string("0.1..1")}}, false); }),
+            "--camera-height 0.1..1: must lie in 0.2..2.5 m with MIN <= MAX");
+  EXPECT_EQ(error_message([&] { set_synth_options(p, {{"bodies", std::string("yes")}}, false); }),
+            "--bodies yes: expected on or off");
+  EXPECT_EQ(error_message([&] { set_synth_options(p, {{"coherent-holes", 9}}, false); }),
+            "--coherent-holes 9: must lie in 0..8 pixels");
+  EXPECT_EQ(p.room.roll_max_deg, SynthParams{}.room.roll_max_deg);  // a refused value is not stored
+  EXPECT_EQ(p.sensor.xtion_share, SynthParams{}.sensor.xtion_share);
+  const auto* roll = rdsf::find_parameter(rdsf::synth::synth_parameters(), "camera-roll");
+  ASSERT_NE(roll, nullptr);
+  EXPECT_EQ(roll->help.substr(roll->help.size() - 7), "(0..20)") << "the help shows the range the row checks";
+  p.room.roll_max_deg = 45;
+  EXPECT_EQ(error_message([&] { p.validate(); }), "--camera-roll 45: must lie in 0..20 degrees");
+  p.room.roll_max_deg = 20;
+  EXPECT_NO_THROW(p.validate());
+  set_synth_options(p, {{"xtion", 2.0}, {"camera-roll", 5.0}, {"clutter", std::string("2..4")}}, /*classic=*/true);
+  EXPECT_EQ(p.sensor.xtion_share, 0.0);
+  EXPECT_EQ(p.room.roll_max_deg, 0.0);
+  EXPECT_EQ(p.room.clutter_max, 4);  // --clutter has no classic value: given, then clutter off
+  EXPECT_FALSE(p.room.clutter);
 }
 
 TEST(SynthSequence, BoxesLieInsideTheFrameAndCoverPixelsNearerThanTheEmptyRoom) {
@@ -385,7 +458,7 @@ Recall detector_recall(bool classic) {
   for (const std::uint64_t seed : {2024, 11, 12, 13}) {
     SynthParams p = people_scene(seed == 2024 ? 240 : 150, 2, 5, seed);
     p.clip_frames = 15;
-    if (classic) p.set_classic();
+    if (classic) p = rdsf::synth::with_classic_values(p);
     SynthSequence sequence(p);
     for (int i = 0; i < p.frames; ++i) {
       const SynthFrame f = sequence.frame(i);

@@ -130,7 +130,7 @@ TEST(SynthProgram, ImpossibleArgumentsGiveOneLineAndTouchNothing) {
         "--clutter 50", "--clutter 2.5", "--corridors 0.7 --open-plan 0.7", "--eight-bit -0.1",
         "--eight-bit-step 0..10", "--xtion 2", "--children 1.1", "--sitting -1", "--groups 1.2", "--outfits yes",
         "--poses 0", "--bodies x", "--room-kinds none", "--coherent-holes 9", "--coherent-holes -1",
-        "--fov 87", "--fov 10x58", "--fov 87x160", "--fov wide"}) {
+        "--fov 87", "--fov 10x58", "--fov 87x160", "--fov wide", "--camera-offset 1"}) {
     const auto r = run(synth("--out " + quote(dir / "x") + " " + bad));
     EXPECT_NE(r.exit_code, 0) << bad;
     EXPECT_EQ(count_lines(r.err), 1) << bad << ": " << r.err;

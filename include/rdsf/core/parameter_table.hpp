@@ -11,12 +11,15 @@
 //   help    the line --help prints (the default is printed beside it, from the struct);
 //   check   an inclusive range [min, max] for numbers, or the words a text may be, or a function;
 //   thesis  the value under --thesis when the row is a departure from the thesis;
+//   classic (optional) the value under rdsf-synth's --classic (the generator before issue 13's variety);
+//   hidden  (optional) no command-line option: a member only a preset sets (--classic's camera offset);
 //   record  (optional) what provenance records of the row, when not simply (key, text): nothing for a row
 //           that does not apply (a native-only option under another backend), or other text or pairs.
-// The command line (cli::table_options), --config (the same options), recipes (read_parameters),
-// the --thesis preset (thesis_values), --help and so docs/options.md (scripts/option-reference.sh) and
-// the programs' provenance are all made from the rows. A row's setter converts and checks: it throws
+// The command line (cli::table_options), --config (the same options), recipes (read_parameters), the
+// --thesis and --classic presets (with_preset_values), --help and so docs/options.md
+// (scripts/option-reference.sh) and the programs' provenance are all made from the rows. A row's setter converts and checks: it throws
 // Error("name must be ...") in one line, naming the row.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -51,8 +54,10 @@ struct Parameter {
   std::function<ParameterValue(const Params&)> get;
   /// Converts to the row's type, checks, stores; throws Error("name must be ...").
   std::function<void(Params&, const ParameterValue&)> set;
-  std::optional<ParameterValue> thesis;  ///< under --thesis, when a departure from the thesis
-  bool is_switch = false;                ///< a flag without a value on the command line (--relaxed)
+  std::optional<ParameterValue> thesis;   ///< under --thesis, when a departure from the thesis
+  std::optional<ParameterValue> classic;  ///< under rdsf-synth's --classic, when the variety changed it
+  bool is_switch = false;                 ///< a flag without a value on the command line (--relaxed)
+  bool hidden = false;                    ///< no command-line option: a member only a preset sets
   /// What provenance records of this row; empty: (parameter_key(name), parameter_text(get(params))).
   std::function<RecordedParameters(const Params&)> record;
 };
@@ -168,7 +173,9 @@ Parameter<Outer> nested(const Parameter<Inner>& row, Inner Outer::*member) {
   lifted.name = row.name;
   lifted.help = row.help;
   lifted.thesis = row.thesis;
+  lifted.classic = row.classic;
   lifted.is_switch = row.is_switch;
+  lifted.hidden = row.hidden;
   if (row.record) lifted.record = [record = row.record, member](const Outer& o) { return record(o.*member); };
   lifted.get = [get = row.get, member](const Outer& o) { return get(o.*member); };
   lifted.set = [set = row.set, member](Outer& o, const ParameterValue& v) { set(o.*member, v); };
@@ -209,13 +216,32 @@ const Parameter<Params>* find_parameter(const ParameterTable<Params>& table, con
   return nullptr;
 }
 
+/// The rows of `table` from the one named `first` to the one named `last` (both included), in table order.
+template <typename Params>
+ParameterTable<Params> rows_between(const ParameterTable<Params>& table, const std::string& first,
+                                    const std::string& last) {
+  const auto begins = std::find_if(table.begin(), table.end(), [&](const Parameter<Params>& r) { return r.name == first; });
+  const auto ends = std::find_if(begins, table.end(), [&](const Parameter<Params>& r) { return r.name == last; });
+  return ParameterTable<Params>(begins, ends == table.end() ? ends : ends + 1);
+}
+
+/// A preset: the values of the rows' `thesis` or `classic` column (&Parameter<Params>::thesis, ...).
+template <typename Params>
+using Preset = std::optional<ParameterValue> Parameter<Params>::*;
+
+/// `params` with every row's value under `preset` set (rows without one keep theirs).
+template <typename Params>
+Params with_preset_values(const ParameterTable<Params>& table, Preset<Params> preset, Params params) {
+  for (const Parameter<Params>& row : table) {
+    if (row.*preset) row.set(params, *(row.*preset));
+  }
+  return params;
+}
+
 /// `params` with every row's thesis value set.
 template <typename Params>
 Params with_thesis_values(const ParameterTable<Params>& table, Params params) {
-  for (const Parameter<Params>& row : table) {
-    if (row.thesis) row.set(params, *row.thesis);
-  }
-  return params;
+  return with_preset_values(table, &Parameter<Params>::thesis, std::move(params));
 }
 
 /// What provenance records of `params`, in table order: each row's (key, text), or what its `record` gives.

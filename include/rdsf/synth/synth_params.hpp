@@ -3,7 +3,10 @@
 // (and seed) always give the same frames, byte for byte.
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/frame/camera_model.hpp"
 #include "rdsf/synth/kinect_sensor.hpp"
 #include "rdsf/synth/people_planner.hpp"
@@ -34,30 +37,32 @@ struct SynthParams {
   /// fy = (height_px / 2) / tan(fov_v_deg / 2), principal point at the centre ((width_px - 1) / 2,
   /// (height_px - 1) / 2); else the Kinect v1's intrinsics scaled to the image size.
   CameraModel camera() const;
-  /// Throws Error (one line naming the option) for impossible values.
+  /// Throws Error (one line naming the option: "--camera-roll 45: must lie in 0..20 degrees") for impossible
+  /// values: each row of synth_parameters() checks its own, then what spans several of them.
   void validate() const;
-  /// Turns off everything issue 13 added (the generator of before: camera 0.7-1.2 m without roll, turn or
-  /// motion, 16-bit Kinect captures only, box rooms with their furniture, adults in plain clothes, basic
-  /// poses, no pairs or sitting), for comparisons.
-  void set_classic();
 };
+
+/// rdsf-synth's parameters, each declared once (core/parameter_table.hpp): the rows of its options in --help
+/// order, --frames to --clip-frames (without --seed: ParameterValue holds no unsigned 64-bit number, so
+/// rdsf-synth declares it), then the variety's, --camera-height to --coherent-holes, then hidden rows for
+/// the members --classic sets that have no option. A row's `classic` value is its value under --classic.
+const ParameterTable<SynthParams>& synth_parameters();
+
+/// `params` under --classic: every row's classic value (synth_parameters()), which turns off everything issue
+/// 13 added (the generator of before: camera 0.7-1.2 m without roll, turn or motion, 16-bit Kinect captures
+/// only, box rooms with their furniture, adults in plain clothes, basic poses, no pairs or sitting), for
+/// comparisons.
+SynthParams with_classic_values(SynthParams params);
+
+/// Sets (option name, value) pairs on `params` through their rows, in order, then with `classic` the classic
+/// values. A row with a classic value takes no given value under `classic` (--classic overrides it, unchecked
+/// as before). Throws Error("--camera-roll 45: must lie in 0..20 degrees") for a refused value.
+void set_synth_options(SynthParams& params, const std::vector<std::pair<std::string, ParameterValue>>& values,
+                       bool classic);
 
 /// rdsf-synth --frames FRAMES --people PEOPLE_MIN..PEOPLE_MAX --seed SEED, everything else its defaults: the
 /// synthetic scene tests and benchmarks start from (people_scene(48, 1, 4, 17): 48 frames of 1-4 people, seed
 /// 17), setting what else they need (rgb, clip_frames, ...) on the result.
 SynthParams people_scene(int frames, int people_min, int people_max, std::uint64_t seed);
-
-/// "0.5..1.6" -> (0.5, 1.6); "2" -> (2, 2). Throws Error naming `option` for anything else or MIN > MAX.
-void parse_real_range(const std::string& option, const std::string& text, double& low, double& high);
-/// "on" -> true, "off" -> false. Throws Error naming `option` for anything else.
-bool parse_on_off(const std::string& option, const std::string& text);
-
-/// "1..3" -> (1, 3); "2" -> (2, 2). Throws Error naming --people for anything else or MIN > MAX.
-void parse_people_range(const std::string& text, int& people_min, int& people_max);
-/// "87x58" -> (87, 58) degrees; "kinect" -> (0, 0), the Kinect v1's. Throws Error naming --fov for
-/// anything else (the range, 20..150 degrees, is checked by SynthParams::validate).
-void parse_field_of_view(const std::string& text, double& fov_h_deg, double& fov_v_deg);
-/// "640x480" -> (640, 480). Throws Error naming --size for a bad form or a size not a multiple of 8.
-void parse_image_size(const std::string& text, int& width_px, int& height_px);
 
 }  // namespace rdsf::synth
