@@ -21,13 +21,6 @@ using rdsf::test::quote;
 using rdsf::test::run;
 using rdsf::test::TempDir;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::string synth(const std::string& arguments) { return quote(program("rdsf-synth")) + " " + arguments; }
 
 /// Hash of every file of a set except synth.yml (which records the command line), in name order.
@@ -38,7 +31,7 @@ std::string hash_set(const fs::path& dir) {
   }
   std::sort(names.begin(), names.end());
   std::uint64_t h = 0;
-  for (const auto& name : names) h = rdsf::fnv1a64(name + slurp((dir / name).string()), h);
+  for (const auto& name : names) h = rdsf::fnv1a64(name + rdsf::test::file_text((dir / name).string()), h);
   return rdsf::to_hex16(h);
 }
 
@@ -54,10 +47,10 @@ TEST(SynthProgram, WritesAFrameSourceWithBoxesAndItsRecipe) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out + "/000000.depth.png"));
   EXPECT_TRUE(fs::exists(out + "/000011.rgb.png"));
-  const std::string boxes = slurp(out + "/boxes.csv");
+  const std::string boxes = rdsf::test::file_text(out + "/boxes.csv");
   EXPECT_EQ(boxes.rfind("frame,person,x,y,w,h,visible_fraction,track\n", 0), 0U) << boxes;
   EXPECT_GT(count_lines(boxes), 1);
-  const std::string info = slurp(out + "/synth.yml");
+  const std::string info = rdsf::test::file_text(out + "/synth.yml");
   EXPECT_NE(info.find("seed: 4"), std::string::npos) << info;
   EXPECT_NE(info.find("fx="), std::string::npos) << info;
   auto source = rdsf::open_frame_source(out);
@@ -90,7 +83,7 @@ TEST(SynthProgram, FieldOfViewGivesACentredPinholeInCameraYmlAndTheSameScenes) {
   // the same rooms and people, seen wider: every track of the Kinect v1's view is in the wider one
   const auto tracks = [&](const std::string& set) {
     std::set<std::string> ids;
-    std::istringstream rows(slurp(dir / (set + "/boxes.csv")));
+    std::istringstream rows(rdsf::test::file_text(dir / (set + "/boxes.csv")));
     std::string row;
     std::getline(rows, row);
     while (std::getline(rows, row)) ids.insert(row.substr(row.rfind(',') + 1));
@@ -118,7 +111,7 @@ TEST(SynthProgram, EmptyWritesNoBoxes) {
   TempDir dir("rdsf-synth");
   const auto r = run(synth("--out " + quote(dir / "e") + " --frames 3 --people 2..3 --empty --size 160x120"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(slurp(dir / "e/boxes.csv"), "frame,person,x,y,w,h,visible_fraction,track\n");
+  EXPECT_EQ(rdsf::test::file_text(dir / "e/boxes.csv"), "frame,person,x,y,w,h,visible_fraction,track\n");
   EXPECT_TRUE(fs::exists(dir / "e/000002.depth.png"));
 }
 
@@ -144,27 +137,27 @@ TEST(SynthProgram, AnOccupiedFolderIsReplacedOnlyWithForce) {
   const std::string out = dir / "set";
   ASSERT_EQ(run(synth("--out " + quote(out) + " --frames 3 --people 1..1 --size 160x120 --seed 1")).exit_code,
             0);
-  const std::string before = slurp(out + "/000000.depth.png");
-  const std::string boxes_before = slurp(out + "/boxes.csv");
+  const std::string before = rdsf::test::file_text(out + "/000000.depth.png");
+  const std::string boxes_before = rdsf::test::file_text(out + "/boxes.csv");
   const auto refused =
       run(synth("--out " + quote(out) + " --frames 2 --people 1..1 --size 160x120 --seed 2"));
   EXPECT_NE(refused.exit_code, 0);
   EXPECT_EQ(count_lines(refused.err), 1) << refused.err;
   EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
-  EXPECT_EQ(slurp(out + "/000000.depth.png"), before);
-  EXPECT_EQ(slurp(out + "/boxes.csv"), boxes_before);
+  EXPECT_EQ(rdsf::test::file_text(out + "/000000.depth.png"), before);
+  EXPECT_EQ(rdsf::test::file_text(out + "/boxes.csv"), boxes_before);
   EXPECT_TRUE(fs::exists(out + "/000002.depth.png"));
 
   // a folder of other frames is refused too
   fs::create_directories(dir / "other");
   std::ofstream(dir / "other/kitchen.depth.png") << "x";
   EXPECT_NE(run(synth("--out " + quote(dir / "other") + " --frames 1 --size 160x120")).exit_code, 0);
-  EXPECT_EQ(slurp(dir / "other/kitchen.depth.png"), "x");
+  EXPECT_EQ(rdsf::test::file_text(dir / "other/kitchen.depth.png"), "x");
 
   const auto forced =
       run(synth("--out " + quote(out) + " --frames 2 --people 1..1 --size 160x120 --seed 2 --force"));
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
-  EXPECT_NE(slurp(out + "/000000.depth.png"), before);
+  EXPECT_NE(rdsf::test::file_text(out + "/000000.depth.png"), before);
   EXPECT_FALSE(fs::exists(out + "/000002.depth.png")) << "a frame of the replaced set was left behind";
 }
 
