@@ -19,7 +19,10 @@ std::vector<PairedFrame> ColourPairing::add_depth(DepthFrame frame) {
   if (best < colours_.size() && std::llabs(colours_[best].stamp_us - t) <= max_gap_us_) {
     frame.bgr = colours_[best].bgr;
     const std::int64_t gap = std::llabs(colours_[best].stamp_us - t);
-    colours_.erase(colours_.begin(), colours_.begin() + static_cast<std::ptrdiff_t>(best) + 1);
+    // Older images go; without waiting the one taken stays for the next frame too, should its own colour
+    // image come after it.
+    const std::size_t kept = wait_ == ColourWait::never ? 0 : 1;
+    colours_.erase(colours_.begin(), colours_.begin() + static_cast<std::ptrdiff_t>(best + kept));
     out.push_back({std::move(frame), gap});
     return out;
   }

@@ -13,7 +13,8 @@
 // So a frame waits at most until the next frame of either topic, and every depth frame comes out once, in
 // arrival order.
 //   With wait off (ColourWait::never: the node's --colour-wait false) a depth frame never waits: it takes the
-// waiting colour image of smallest gap when that gap <= max_gap_us, else goes on at once without colour. A
+// waiting colour image of smallest gap when that gap <= max_gap_us, else goes on at once without colour; the
+// image taken stays for the next depth frame as well (whose own may come after it). A
 // colour image arrives after its depth frame (another connection, a larger message), so the one taken is
 // then the previous frame's: the gap is about one frame period (33 ms at 30 frames/s), and max_gap_us must
 // allow it. The price of the latency saved: colour histograms of a box taken from an image up to one frame

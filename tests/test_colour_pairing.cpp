@@ -122,6 +122,19 @@ TEST(ColourPairing, WithoutWaitingADepthFrameTakesTheColourAlreadyThere) {
   EXPECT_EQ(paired[0].gap_us, 0);
 }
 
+// A frame whose colour came first takes it; the next frame, whose colour comes late, takes the same one.
+TEST(ColourPairing, WithoutWaitingTheColourTakenServesTheNextFrameToo) {
+  ColourPairing pairing(40000, 1000000, 8, ColourWait::never);
+  ASSERT_TRUE(pairing.add_colour(0, colour()).empty());
+  std::vector<PairedFrame> out = pairing.add_depth(depth_at(0));
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_EQ(out[0].gap_us, 0);
+  out = pairing.add_depth(depth_at(33333));
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_FALSE(out[0].frame.bgr.empty());
+  EXPECT_EQ(out[0].gap_us, 33333);
+}
+
 TEST(ColourPairing, WithoutWaitingAColourTooOldIsNotTaken) {
   ColourPairing pairing(kGap, 1000000, 8, ColourWait::never);
   ASSERT_TRUE(pairing.add_colour(0, colour()).empty());
