@@ -26,11 +26,12 @@ int main(int argc, char** argv) {
          "also subscribe to rgb/image (registered to the depth image, same size) and pair it by stamp: tracking "
          "compares colour histograms")
         ("colour-gap-ms", po::value(&o.colour_gap_ms)->default_value(o.colour_gap_ms),
-         "largest stamp difference (ms) of a depth and a colour image that are a pair")
+         "largest stamp difference (ms) of a depth and a colour image that are a pair (with --colour-wait "
+         "false: 100 unless given)")
         ("colour-wait", po::value(&o.colour_wait)->default_value(o.colour_wait),
          "a depth frame waits for the colour image of its stamp (until the next frame at most); false: it takes "
-         "the colour image already there (the previous frame's: give --colour-gap-ms one frame period or more, "
-         "e.g. 40 at 30 frames/s) and never waits, for the lowest latency")
+         "the colour image already there (the previous frame's, one frame period older) and never waits, for "
+         "the lowest latency")
         ("diagnostics-period", po::value(&o.diagnostics_period_s)->default_value(o.diagnostics_period_s),
          "seconds between /diagnostics messages (drops, latency percentiles)");
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
@@ -53,6 +54,8 @@ int main(int argc, char** argv) {
     }
     o.feature_spec_given = !values["feature-spec"].defaulted();
     if (!(o.colour_gap_ms >= 0)) throw rdsf::cli::UsageError("--colour-gap-ms must be 0 or more");
+    // Not waiting, a frame's colour is the previous frame's: allow a frame period at 10 frames/s and up.
+    if (!o.colour_wait && values["colour-gap-ms"].defaulted()) o.colour_gap_ms = rdsf::kColourGapWithoutWaitMs;
     if (!(o.diagnostics_period_s > 0)) throw rdsf::cli::UsageError("--diagnostics-period must be more than 0 s");
     rdsf::cli::apply_background(background, o.pipeline.analyser);
     return rdsf::run_people_node(o);

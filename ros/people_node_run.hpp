@@ -8,6 +8,10 @@
 
 namespace rdsf {
 
+/// --colour-gap-ms's default with --colour-wait false: a frame then takes the previous frame's colour image,
+/// one frame period older (33 ms at 30 frames/s, 100 at 10).
+constexpr double kColourGapWithoutWaitMs = 100;
+
 struct PeopleNodeOptions {
   std::string model = kDefaultModelName;  ///< a file, NAME or NAME/vN (rdsf-detect's --model)
   std::string models_dir = "models";
@@ -15,7 +19,8 @@ struct PeopleNodeOptions {
   bool feature_spec_given = false;  ///< else the model's feature spec
   int threads = 0;                  ///< live workers (0: one per core)
   bool colour = false;              ///< subscribe to rgb/image and pair it with the depth images
-  double colour_gap_ms = 15;        ///< largest depth-colour stamp difference of a pair
+  double colour_gap_ms = 15;        ///< largest depth-colour stamp difference of a pair (kColourGapWithoutWaitMs
+                                    ///< when not waiting and not given)
   bool colour_wait = true;          ///< a depth frame waits for its colour image (ColourWait::until_paired)
   double diagnostics_period_s = 1;  ///< /diagnostics every this many seconds
 };

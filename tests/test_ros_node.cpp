@@ -234,11 +234,11 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   compare(in_front, expected_background);
 
   // Without waiting for colour (~colour_wait false: a bool parameter of value false reaches the option) a
-  // frame takes the colour image already there, within 200 ms of its stamp (the previous frame's at 30
-  // frames/s stamps); candidates and scores do not depend on colour, so they are rdsf-detect's (with the
+  // frame takes the colour image already there, within 100 ms of its stamp by default (the previous frame's
+  // at 30 frames/s stamps); candidates and scores do not depend on colour, so they are rdsf-detect's (with the
   // background: rosrun's _NAME:=VALUE stays on the parameter server for the next node).
   const std::vector<rdsf_people::People> no_wait =
-      play_to_node(" _colour_wait:=false _colour_gap_ms:=200", "node-no-wait.log", log);
+      play_to_node(" _colour_wait:=false", "node-no-wait.log", log);
   EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped; "), std::string::npos) << log;
   const std::size_t with = log.find(" with colour");
   ASSERT_NE(with, std::string::npos) << log;
