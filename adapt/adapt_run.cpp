@@ -225,6 +225,7 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
                                   o.models_dir, "--ask", "uncertain", "--keep-rejected", "--budget",
                                   std::to_string(left), "--threads", std::to_string(o.threads)};
     if (!o.per_candidate) args.insert(args.end(), {"--per-track", "--per-place", o.per_place ? "on" : "off"});
+    if (!o.per_candidate && o.propagate_model) args.insert(args.end(), {"--propagate-model-answers", "on"});
     if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
     if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
     const bool window = o.truth.empty() && o.answers.empty();

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
          "without --base-pos/--base-neg: render a synthetic base of this many frames with people (and half as "
          "many empty) in DIR/base, once; 0: train on the room's samples alone (they can make the model worse)");
     rdsf::cli::add_per_place_option(options, o.per_place);
+    rdsf::cli::add_propagate_model_option(options, o.propagate_model);
     rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
     options.add_options()
         ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")

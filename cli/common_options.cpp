@@ -36,4 +36,12 @@ void add_per_place_option(po::options_description& group, bool& per_place) {
                       "the answer (docs/adapting-to-your-room.md)");
 }
 
+void add_propagate_model_option(po::options_description& group, bool& from_model) {
+  group.add_options()("propagate-model-answers",
+                      po::value(&from_model)->default_value(from_model, from_model ? "on" : "off"),
+                      "with one answer per track (on or off): the model's sure answers (--accept, --reject) are "
+                      "followed along their tracks too, as a person's are (the track only, not the place), "
+                      "before the first question; u does not undo them");
+}
+
 }  // namespace rdsf::cli

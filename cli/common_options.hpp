@@ -9,6 +9,8 @@
 //                     ("--threads must be 0 (one per core) or more, got N").
 //   --per-place on|off one answer per place for n answers (rdsf-label --per-track, rdsf-adapt); the default
 //                     is the library's (PropagationParams::per_place).
+//   --propagate-model-answers on|off  the model's sure answers followed along their tracks too (rdsf-label
+//                     --per-track, rdsf-adapt); default off (PropagationParams::from_model).
 #include <string>
 
 #include <boost/program_options.hpp>
@@ -32,5 +34,7 @@ void add_threads_option(boost::program_options::options_description& group, int&
 
 /// --per-place on|off bound to `per_place` (its value now is the default shown).
 void add_per_place_option(boost::program_options::options_description& group, bool& per_place);
+/// --propagate-model-answers on|off bound to `from_model` (PropagationParams::from_model).
+void add_propagate_model_option(boost::program_options::options_description& group, bool& from_model);
 
 }  // namespace rdsf::cli

@@ -57,6 +57,7 @@ cli::po::options_description label_options(LabelOptions& o, LabelOptionText& tex
        "track in the frames before and after while the track is sure (docs/adapting-to-your-room.md); the window "
        "shows the track as a strip of crops; u undoes the whole track");
   cli::add_per_place_option(options, o.session.propagation.per_place);
+  cli::add_propagate_model_option(options, o.session.propagation.from_model);
   return options;
 }
 

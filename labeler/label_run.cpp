@@ -331,6 +331,17 @@ void Labeler::report(bool with_truth) const {
       }
       std::fprintf(stderr, "\n");
     }
+    if (o_.session.propagation.from_model) {  // not in the lines above: labels no person's answer gave
+      const long by_model_track = st.model_track_positives + st.model_track_negatives;
+      std::fprintf(stderr, "rdsf-label: model answers' tracks: %ld labels propagated (%ld y, %ld n)", by_model_track,
+                   st.model_track_positives, st.model_track_negatives);
+      if (with_truth) {
+        std::fprintf(stderr, "; the truth contradicts %ld (%.2f%%), %ld in its uncertain band", st.model_track_wrong,
+                     by_model_track ? 100.0 * static_cast<double>(st.model_track_wrong) / static_cast<double>(by_model_track) : 0.0,
+                     st.model_track_in_band);
+      }
+      std::fprintf(stderr, "\n");
+    }
   }
   std::fprintf(stderr, "rdsf-label: %s\n", latency_.summary().c_str());
   std::fprintf(stderr, "rdsf-label: sample set %s now holds %zu samples\n", o_.out_set.c_str(), writer_.records().size());

@@ -1,7 +1,8 @@
 // Track propagation (labeling/track_propagation.hpp) on hand-built sequences: a person walking is labelled
 // from one answer both ways; two people crossing stop the track where it is unsure (those are asked); a
 // score gate; frames where the track's candidate is missing stepped over (max_gap_frames); undo of the answer through the journal removes every propagated label; the labelling session
-// with per_track on a rendered room, and with one answer per place on a room seen by a still camera.
+// with per_track on a rendered room, and with one answer per place on a room seen by a still camera; the model's
+// answers followed along their tracks (from_model) before the first question, which u does not undo.
 #include <gtest/gtest.h>
 
 #include "rdsf/candidates/crop_provenance.hpp"
@@ -233,5 +234,46 @@ TEST(TrackPropagation, SessionLabelsThePlaceAndUndoTakesItAllBack) {
     EXPECT_EQ(session.journal().answers_in_force(), in_force);
     EXPECT_EQ(SampleSet::open_read(set).records().size(), samples);  // retracted samples are left out
     EXPECT_EQ(session.place_preview().size(), place);  // asked again, the same place shown again
+  }
+}
+
+// From the model's answers (propagation.from_model): when the session is read, the tracks of the candidates the
+// model answered label the unanswered ones on them (origin labeler-model-track, by "model-track ..."), which
+// leave the queue; a person's answer and its undo leave them in force. Off (the default) nothing is.
+TEST(TrackPropagation, SessionFollowsTheModelsAnswersAlongTheirTracks) {
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(render_room(dir, "--frames 30 --people 2..2 --clip-frames 30 --seed 5"));
+  const BoostedModel model = shipped_model();
+  LabelingConfig config = per_track_config(dir);
+  std::size_t pending_without = 0;
+  for (const bool from_model : {false, true}) {
+    config.propagation.from_model = from_model;
+    const std::string set = dir / (from_model ? "set-model" : "set-people");
+    SampleSetWriter writer = open_set(set, config);
+    LabelingSession session(config, writer, &model, nullptr);
+    ASSERT_NE(session.current(), nullptr);
+    const LabelingStats& st = session.stats();
+    const long by_track = st.model_track_positives + st.model_track_negatives;
+    std::size_t journalled = 0, stored = 0;
+    for (const JournalEntry& e : session.journal().in_force()) journalled += e.by.rfind("model-track ", 0) == 0 ? 1 : 0;
+    for (const SampleRecord& s : writer.records()) stored += s.origin == "labeler-model-track" ? 1 : 0;
+    EXPECT_EQ(static_cast<long>(journalled), by_track);
+    EXPECT_EQ(static_cast<long>(stored), by_track);  // n answers are stored too (keep_rejected)
+    EXPECT_EQ(st.propagated_positives + st.propagated_negatives, 0);  // no person's answer yet
+    if (!from_model) {
+      EXPECT_EQ(by_track, 0);
+      pending_without = session.pending();
+      continue;
+    }
+    ASSERT_GT(by_track, 0) << "no model answer's track reached an unanswered candidate";
+    EXPECT_EQ(session.pending() + static_cast<std::size_t>(by_track), pending_without);
+    const std::size_t in_force = session.journal().answers_in_force();
+    const std::size_t samples = writer.records().size();
+    ASSERT_TRUE(session.answer('y'));
+    ASSERT_TRUE(session.answer('u'));  // the person's answer and its track go, the model's tracks stay
+    EXPECT_EQ(session.journal().answers_in_force(), in_force);
+    EXPECT_EQ(st.model_track_positives + st.model_track_negatives, by_track);
+    EXPECT_EQ(session.pending() + static_cast<std::size_t>(by_track), pending_without);
+    EXPECT_EQ(SampleSet::open_read(set).records().size(), samples);  // the model's tracks' samples kept
   }
 }

@@ -287,6 +287,7 @@ const PresentedCandidate* LabelingSession::current() {
           });
     }
     sources_done_ = true;
+    if (config_.per_track && config_.propagation.from_model) propagate_model_answers();
     order_by_uncertainty();
   }
   while (queue_.empty()) {
@@ -377,18 +378,9 @@ LabelingSession::Followed LabelingSession::follow(const PresentedCandidate& p, c
   std::size_t first = at, last = at;
   while (first > 0 && frames_[first - 1]->source == p.frame->source) --first;
   while (last + 1 < frames_.size() && frames_[last + 1]->source == p.frame->source) ++last;
-  std::vector<std::vector<TrackCandidate>> frames;
+  const std::vector<std::vector<TrackCandidate>> frames = track_candidates(first, last);
   std::vector<cv::Mat1w> depth;
-  for (std::size_t f = first; f <= last; ++f) {
-    const LoadedFrame& lf = *frames_[f];
-    std::vector<TrackCandidate> candidates;
-    for (std::size_t i = 0; i < lf.analysis.candidates.size(); ++i) {
-      const Candidate& c = lf.analysis.candidates[i];
-      candidates.push_back({c.strict_box, c.layer_depth_mm, lf.probabilities.empty() ? -1.0 : lf.probabilities[i]});
-    }
-    frames.push_back(std::move(candidates));
-    if (with_place) depth.push_back(lf.frame.depth_mm);
-  }
+  for (std::size_t f = first; with_place && f <= last; ++f) depth.push_back(frames_[f]->frame.depth_mm);
   const AnswerOf answer_of = [&](const TrackLink& l) {
     return journal_.answer_of(PresentedCandidate{frames_[first + l.frame], l.index}.key());
   };
@@ -404,6 +396,66 @@ LabelingSession::Followed LabelingSession::follow(const PresentedCandidate& p, c
     followed.place = propagate_place(frames, depth, seed, answer, config_.propagation, unanswered_off_track);
   }
   return followed;
+}
+
+std::vector<std::vector<TrackCandidate>> LabelingSession::track_candidates(std::size_t first, std::size_t last) const {
+  std::vector<std::vector<TrackCandidate>> frames;
+  for (std::size_t f = first; f <= last; ++f) {
+    const LoadedFrame& lf = *frames_[f];
+    std::vector<TrackCandidate> candidates;
+    for (std::size_t i = 0; i < lf.analysis.candidates.size(); ++i) {
+      const Candidate& c = lf.analysis.candidates[i];
+      candidates.push_back({c.strict_box, c.layer_depth_mm, lf.probabilities.empty() ? -1.0 : lf.probabilities[i]});
+    }
+    frames.push_back(std::move(candidates));
+  }
+  return frames;
+}
+
+void LabelingSession::propagate_model_answers() {
+  // The seeds: the answers in force the model gave (this session's and, on a resume, those journalled before).
+  std::map<CandidateKey, char> by_model;
+  for (const JournalEntry& e : journal_.in_force()) {
+    if (e.by.rfind("model ", 0) == 0 && (e.answer == 'y' || e.answer == 'n')) by_model[e.key] = e.answer;
+  }
+  if (by_model.empty()) return;
+  std::set<std::pair<const LoadedFrame*, std::size_t>> labelled;
+  for (std::size_t first = 0, last = 0; first < frames_.size(); first = last + 1) {  // source by source
+    last = first;
+    while (last + 1 < frames_.size() && frames_[last + 1]->source == frames_[first]->source) ++last;
+    const std::vector<std::vector<TrackCandidate>> frames = track_candidates(first, last);
+    const AnswerOf answer_of = [&](const TrackLink& l) {
+      return journal_.answer_of(PresentedCandidate{frames_[first + l.frame], l.index}.key());
+    };
+    for (std::size_t f = 0; f < frames.size(); ++f) {  // frame order: the session is the same every run
+      for (std::size_t i = 0; i < frames[f].size(); ++i) {
+        const CandidateKey seed = PresentedCandidate{frames_[first + f], i}.key();
+        const auto it = by_model.find(seed);
+        if (it == by_model.end() || journal_.answer_of(seed) != it->second) continue;
+        const char answer = it->second;
+        const std::string by = model_track_answerer(seed);
+        const PropagatedTrack track = propagate_track(frames, {f, i}, answer, config_.propagation, config_.camera, answer_of);
+        for (const TrackLink& l : track.labelled) {
+          const PresentedCandidate p{frames_[first + l.frame], l.index};
+          const bool yes = answer == 'y';
+          const std::int64_t id = yes || config_.keep_rejected ? store(p, yes ? 1 : 0, "labeler-model-track") : -1;
+          journal_.record({p.key(), answer, id, by});
+          labelled.insert({p.frame.get(), p.index});
+          ++(yes ? stats_.model_track_positives : stats_.model_track_negatives);
+          if (const char truth = oracle_key(p); truth == 's') {
+            ++stats_.model_track_in_band;
+          } else if (truth != '\0' && truth != answer) {
+            ++stats_.model_track_wrong;
+          }
+        }
+      }
+    }
+  }
+  std::deque<PresentedCandidate> kept;  // the labelled candidates are no longer asked
+  for (const PresentedCandidate& p : queue_) {
+    if (labelled.count({p.frame.get(), p.index}) == 0) kept.push_back(p);
+  }
+  queue_ = std::move(kept);
 }
 
 std::vector<PresentedCandidate> LabelingSession::track_preview(char answer) const {

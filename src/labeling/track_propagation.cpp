@@ -163,6 +163,8 @@ std::string track_answerer(const CandidateKey& seed) { return answerer("track ",
 
 std::string place_answerer(const CandidateKey& seed) { return answerer("place ", seed); }
 
+std::string model_track_answerer(const CandidateKey& seed) { return answerer("model-track ", seed); }
+
 std::vector<JournalEntry> propagated_from(const AnswerJournal& journal, const CandidateKey& seed) {
   const std::string track = track_answerer(seed), place = place_answerer(seed);
   std::vector<JournalEntry> entries;

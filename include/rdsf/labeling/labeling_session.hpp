@@ -27,6 +27,12 @@
 // other frames of the same source at the same place (track_propagation.hpp, propagate_place), beyond its
 // track: origin "labeler-place", journalled with by = "place FRAME X,Y,W,H"; they count as propagated
 // labels and are undone with the answer, as its track is.
+// From the model's answers (per_track with propagation.from_model): once the whole session is read, before
+// the questions are ordered, every candidate the model answered (its sure y and n, this session's or
+// journalled before) is followed along its track as a person's answer is (the track only, no place), in
+// frame order, and the unanswered candidates on the sure part get the model's answer: origin
+// "labeler-model-track", journalled with by = "model-track FRAME X,Y,W,H"; they leave the queue. They are
+// no person's answer: u does not undo them.
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -125,6 +131,9 @@ struct LabelingStats {
   /// per place: of the propagated negatives (and of the wrong and in-band ones), those labelled at the
   /// answer's place beyond its track
   long placed_negatives = 0, placed_wrong = 0, placed_in_band = 0;
+  /// per_track with propagation.from_model: labels given along the tracks of the model's answers, and
+  /// (with truth) those the truth contradicts or leaves in its uncertain band; not in propagated_*
+  long model_track_positives = 0, model_track_negatives = 0, model_track_wrong = 0, model_track_in_band = 0;
   long unanswered = 0;      ///< presented but left without an answer (answers ran out)
   std::int64_t frames_loaded = 0;
   long answers() const { return positives + negatives + skipped; }
@@ -197,6 +206,10 @@ class LabelingSession {
     std::vector<TrackLink> place;
   };
   Followed follow(const PresentedCandidate& p, char answer, bool with_place) const;
+  /// The frames of frames_ from `first` to `last` (one source) as track propagation sees them.
+  std::vector<std::vector<TrackCandidate>> track_candidates(std::size_t first, std::size_t last) const;
+  /// per_track with propagation.from_model: labels the tracks of the model's answers (the header's comment).
+  void propagate_model_answers();
   /// per_track: labels the track of the answer just given (`given`), presents its unsure ends next.
   void propagate(Given& given);
   std::shared_ptr<LoadedFrame> load_next();  // runs on the prefetch thread: read_next + analyse_loaded

@@ -35,6 +35,11 @@
 //     c.probability <= max_no_probability, as an 'n' track                (score)
 // and c has no answer yet (answer_of gives '\0'). A person who stands where the thing stood changes the
 // depth of the box's pixels; a camera that moved changes them all.
+//
+// From the model's answers (from_model, off by default): the candidates a model answered without asking (its
+// sure y and n) are seeds too, followed by the same track rule (not by one answer per place: a model's n is
+// wrong more often than a person's, and a place repeats one wrong n in every frame of a still camera); the
+// labelling session does it once, when the whole session is read (labeling_session.hpp).
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -69,6 +74,8 @@ struct PropagationParams {
   double place_pixel_change = 0.03;         ///< a pixel agrees when its depths differ by at most this x depth
   double place_min_agreeing = 0.6;          ///< share of the box's pixels valid in both frames that agree
   double place_min_valid_share = 0.5;       ///< share of the box's pixels valid in both frames, at least
+  /// The model's sure answers are followed along their tracks too (the rule above); off: only people's are.
+  bool from_model = false;
 };
 
 /// What propagation needs of a candidate.
@@ -122,6 +129,9 @@ std::vector<TrackLink> propagate_place(const std::vector<std::vector<TrackCandid
 /// place gave. Undoing the seed's answer undoes every entry journalled with either "by" (propagated_from()).
 std::string track_answerer(const CandidateKey& seed);
 std::string place_answerer(const CandidateKey& seed);
+/// The "by" of labels propagated along the track of a MODEL's answer to `seed`: "model-track FRAME X,Y,W,H".
+/// No person's answer is undone with them.
+std::string model_track_answerer(const CandidateKey& seed);
 
 /// The entries in force in `journal` propagated from the answer to `seed` (along its track and to its
 /// place), oldest first.
