@@ -58,6 +58,11 @@ cli::po::options_description label_options(LabelOptions& o, LabelOptionText& tex
        "shows the track as a strip of crops; u undoes the whole track");
   cli::add_per_place_option(options, o.session.propagation.per_place);
   cli::add_propagate_model_option(options, o.session.propagation.from_model);
+  options.add_options()
+      ("model-track-max-no", po::value(&o.session.propagation.model_max_no_probability)
+                                 ->default_value(o.session.propagation.model_max_no_probability,
+                                                 cli::shortest_text(o.session.propagation.model_max_no_probability)),
+       "--propagate-model-answers on: the track of a model's n enters only candidates with P(person) <= this");
   return options;
 }
 

@@ -419,6 +419,8 @@ void LabelingSession::propagate_model_answers() {
     if (e.by.rfind("model ", 0) == 0 && (e.answer == 'y' || e.answer == 'n')) by_model[e.key] = e.answer;
   }
   if (by_model.empty()) return;
+  PropagationParams params = config_.propagation;  // a model's n track: the stricter score gate
+  params.max_no_probability = std::min(params.max_no_probability, params.model_max_no_probability);
   std::set<std::pair<const LoadedFrame*, std::size_t>> labelled;
   for (std::size_t first = 0, last = 0; first < frames_.size(); first = last + 1) {  // source by source
     last = first;
@@ -434,7 +436,7 @@ void LabelingSession::propagate_model_answers() {
         if (it == by_model.end() || journal_.answer_of(seed) != it->second) continue;
         const char answer = it->second;
         const std::string by = model_track_answerer(seed);
-        const PropagatedTrack track = propagate_track(frames, {f, i}, answer, config_.propagation, config_.camera, answer_of);
+        const PropagatedTrack track = propagate_track(frames, {f, i}, answer, params, config_.camera, answer_of);
         for (const TrackLink& l : track.labelled) {
           const PresentedCandidate p{frames_[first + l.frame], l.index};
           const bool yes = answer == 'y';

@@ -39,7 +39,9 @@
 // From the model's answers (from_model, off by default): the candidates a model answered without asking (its
 // sure y and n) are seeds too, followed by the same track rule (not by one answer per place: a model's n is
 // wrong more often than a person's, and a place repeats one wrong n in every frame of a still camera); the
-// labelling session does it once, when the whole session is read (labeling_session.hpp).
+// labelling session does it once, when the whole session is read (labeling_session.hpp). A model's n track
+// enters only candidates with P <= model_max_no_probability (not max_no_probability): with 0.95 it walked
+// from a thing into a person passing in front of it (16 wrong labels of one track, P 0.04 to 0.19 there).
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -76,6 +78,12 @@ struct PropagationParams {
   double place_min_valid_share = 0.5;       ///< share of the box's pixels valid in both frames, at least
   /// The model's sure answers are followed along their tracks too (the rule above); off: only people's are.
   bool from_model = false;
+  /// from_model: the score gate of a model's n track (a y track's is min_yes_probability). On the 16 synthetic
+  /// rooms (docs/adapting-to-your-room.md, people/v2) the model's tracks labelled 989 with 20 wrong at 0.95 (the
+  /// people's gate), 976 / 20 at 0.3, 958 / 20 at 0.2, 935 / 18 at 0.15, 880 / 3 at 0.1 and 761 / 2 at 0.05,
+  /// asking 272, 276, 283, 285, 310 and 343 questions: 0.1 is one track's P (0.11) below the cliff, tuned on
+  /// that benchmark.
+  double model_max_no_probability = 0.1;
 };
 
 /// What propagation needs of a candidate.
