@@ -33,9 +33,11 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
   --base DIR       the synthetic base's sample sets DIR/people and DIR/negatives (default: render and label a
                    small one, seed 11, 600 frames and 300 empty, under the work folder)
   --modes "..."    rows to run besides "none", of: track candidate retrain negatives (default all four)
+  --adapt-args ".." more options for every rdsf-adapt run, e.g. "--propagate-model-answers on" (default none)
 USAGE
 }
 out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people base="" modes="track candidate retrain negatives"
+adapt_args=()
 while (($#)); do
   case "$1" in
     --out) out="$2"; shift 2 ;;
@@ -44,6 +46,7 @@ while (($#)); do
     --real) real="$2"; shift 2 ;;
     --base) base="$2"; shift 2 ;;
     --modes) modes="$2"; shift 2 ;;
+    --adapt-args) read -r -a adapt_args <<< "$2"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "adaptation-benchmark: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
@@ -157,10 +160,11 @@ for room in "${room_names[@]}"; do
       [ "$mode" = candidate ] && flags=(--per-candidate)
       "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
         --name "$room-$mode-$budget" --models-dir "$models" --budget "$budget" --threads $threads \
-        --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${flags[@]}" 2>"$run.log" ||
+        --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${flags[@]}" "${adapt_args[@]}" 2>"$run.log" ||
         { tail -3 "$run.log" >&2; exit 1; }
       state=$run/adapt-state.tsv
-      wrong=$(sed -n 's/.*the truth contradicts \([0-9]*\) .*/\1/p' "$run/logs/answers.log" | tail -1)
+      # the people's tracks' line (not the per place line, a part of it, nor the model answers' tracks' line)
+      wrong=$(sed -n 's/^rdsf-label: per track: .*the truth contradicts \([0-9]*\) .*/\1/p' "$run/logs/answers.log" | tail -1)
       printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$room" "$mode" "$budget" "$(field "$state" answers.human)" \
         "$(field "$state" answers.propagated)" "${wrong:-0}" "$(field "$state" tar_after)" \
         "$(field "$state" train_seconds)" >> "$results"
@@ -172,7 +176,7 @@ for room in "${room_names[@]}"; do
     budget=${budgets##* } run=$w/retrain-${budgets##* }
     "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
       --name "$room-retrain-$budget" --models-dir "$models" --budget "$budget" --threads $threads --retrain \
-      --base-pos "$base_pos" --base-neg "${base_neg[@]}" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
+      --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${adapt_args[@]}" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
     state=$run/adapt-state.tsv
     printf '%s\tretrain\t%s\t%s\t%s\t0\t%s\t%s\n' "$room" "$budget" "$(field "$state" answers.human)" \
       "$(field "$state" answers.propagated)" "$(field "$state" tar_after)" "$(field "$state" train_seconds)" >> "$results"
