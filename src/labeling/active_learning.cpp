@@ -73,7 +73,8 @@ std::optional<BoostedModel> train_loop_model(const SampleSet& set, const LoopTra
   std::vector<std::size_t> used;
   for (std::size_t i = 0; i < set.records().size(); ++i) {
     const SampleRecord& r = set.records()[i];
-    if (!params.train_on_model_answers && r.origin == "labeler-model") continue;
+    // the model's answers and the labels along their tracks (--propagate-model-answers)
+    if (!params.train_on_model_answers && (r.origin == "labeler-model" || r.origin == "labeler-model-track")) continue;
     labels.push_back(r.label);
     origins.push_back({r.source, r.frame});
     used.push_back(i);

@@ -38,7 +38,8 @@ struct LoopTrainingParams {
   BoostTrainingParams boost = loop_boosting();  ///< its threads: 0 = one per core (no effect on the result)
   int group_frames = 15;             ///< frames per validation group (a synthetic clip's length)
   int min_per_class = 5;             ///< fewer positives or negatives: no model yet
-  /// Train on samples the model answered too (origin "labeler-model"); off: a model's answers never teach
+  /// Train on samples the model answered too (origin "labeler-model", and "labeler-model-track" along their
+  /// tracks); off: a model's answers never teach
   /// its successor (self-training made the loop's later models answer persons n: docs/labeler.md).
   bool train_on_model_answers = false;
 };
