@@ -82,7 +82,7 @@ struct PropagationParams {
   /// rooms (docs/adapting-to-your-room.md, people/v2) the model's tracks labelled 989 with 20 wrong at 0.95 (the
   /// people's gate), 976 / 20 at 0.3, 958 / 20 at 0.2, 935 / 18 at 0.15, 880 / 3 at 0.1 and 761 / 2 at 0.05,
   /// asking 272, 276, 283, 285, 310 and 343 questions: 0.1 is one track's P (0.11) below the cliff, tuned on
-  /// that benchmark.
+  /// that benchmark. On 16 held-out rooms (seed 32) 0.1 wrote 21 wrong of 1,134 (1.85 %): it does not hold.
   double model_max_no_probability = 0.1;
 };
 
