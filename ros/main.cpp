@@ -5,6 +5,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/common_options.hpp"
+#include "ros/node_parameters.hpp"
 #include "ros/people_node_run.hpp"
 #include "ros/ros_parameters.hpp"
 
@@ -21,19 +22,7 @@ int main(int argc, char** argv) {
     rdsf::cli::add_threads_option(options, o.threads, "live workers analysing frames",
                                   "at most one frame waits per worker, a newer one replaces the oldest waiting "
                                   "(dropped, counted in /diagnostics)");
-    options.add_options()
-        ("colour", po::value(&o.colour)->default_value(o.colour),
-         "also subscribe to rgb/image (registered to the depth image, same size) and pair it by stamp: tracking "
-         "compares colour histograms")
-        ("colour-gap-ms", po::value(&o.colour_gap_ms)->default_value(o.colour_gap_ms),
-         "largest stamp difference (ms) of a depth and a colour image that are a pair (with --colour-wait "
-         "false: 100 unless given)")
-        ("colour-wait", po::value(&o.colour_wait)->default_value(o.colour_wait),
-         "a depth frame waits for the colour image of its stamp (until the next frame at most); false: it takes "
-         "the colour image already there (the previous frame's, one frame period older) and never waits, for "
-         "the lowest latency")
-        ("diagnostics-period", po::value(&o.diagnostics_period_s)->default_value(o.diagnostics_period_s),
-         "seconds between /diagnostics messages (drops, latency percentiles)");
+    rdsf::cli::add_table_options(options, rdsf::node_parameters(), o);
     options.add(rdsf::cli::analyser_options(o.pipeline.analyser));
     std::string background;
     options.add(rdsf::cli::background_options(background, o.pipeline.analyser.background_margins));
@@ -53,10 +42,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     o.feature_spec_given = !values["feature-spec"].defaulted();
-    if (!(o.colour_gap_ms >= 0)) throw rdsf::cli::UsageError("--colour-gap-ms must be 0 or more");
     // Not waiting, a frame's colour is the previous frame's: allow a frame period at 10 frames/s and up.
     if (!o.colour_wait && values["colour-gap-ms"].defaulted()) o.colour_gap_ms = rdsf::kColourGapWithoutWaitMs;
-    if (!(o.diagnostics_period_s > 0)) throw rdsf::cli::UsageError("--diagnostics-period must be more than 0 s");
     rdsf::cli::apply_background(background, o.pipeline.analyser);
     return rdsf::run_people_node(o);
   });

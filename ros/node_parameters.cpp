@@ -1,0 +1,25 @@
+#include "ros/node_parameters.hpp"
+
+namespace rdsf {
+
+const ParameterTable<PeopleNodeOptions>& node_parameters() {
+  using P = PeopleNodeOptions;
+  static const ParameterTable<P> table = {
+      parameter("colour", &P::colour,
+                "also subscribe to rgb/image (registered to the depth image, same size) and pair it by stamp: tracking "
+                "compares colour histograms"),
+      parameter("colour-gap-ms", &P::colour_gap_ms,
+                "largest stamp difference (ms) of a depth and a colour image that are a pair (with --colour-wait "
+                "false: 100 unless given)",
+                Range::at_least(0)),
+      parameter("colour-wait", &P::colour_wait,
+                "a depth frame waits for the colour image of its stamp (until the next frame at most); false: it takes "
+                "the colour image already there (the previous frame's, one frame period older) and never waits, for "
+                "the lowest latency"),
+      parameter("diagnostics-period", &P::diagnostics_period_s,
+                "seconds between /diagnostics messages (drops, latency percentiles)", Range::above(0)),
+  };
+  return table;
+}
+
+}  // namespace rdsf
