@@ -87,11 +87,8 @@ Derived derive(const PerfResults& r) {
   return d;
 }
 
-}  // namespace
-
-std::string perf_markdown(const PerfResults& r) {
-  const Derived d = derive(r);
-  std::ostringstream m;
+// The title, the machine, its load and speed, the data and the model.
+void write_header(const PerfResults& r, const Derived& d, std::ostringstream& m) {
   m << "# Performance report\n\n"
     << "Produced by `scripts/perf-report.sh` (program `rdsf-perf-report`, " << r.mode << " run) on " << r.date_utc
     << ", all phases in one process on the same data.\n\n"
@@ -111,7 +108,10 @@ std::string perf_markdown(const PerfResults& r) {
     << r.train_positives << " people and " << r.train_negatives << " other candidates of " << r.train_frames
     << " other synthetic frames (validation AUC " << num(r.model_validation_auc, 4) << "); " << r.detections
     << " detections, " << r.people_tracked << " people tracked.\n\n";
+}
 
+// Whole system per frame and per candidate, against the thesis.
+void write_whole_system(const PerfResults& r, const Derived& d, std::ostringstream& m) {
   m << "## Whole system per frame and per candidate\n\n"
     << "| Stage | This run | Thesis | Ratio |\n|---|---|---|---|\n"
     << "| Segmentation per frame | " << ms(d.seg_ms) << " | " << num(kThesisSegmentationBestMs, 0) << "-"
@@ -144,7 +144,10 @@ std::string perf_markdown(const PerfResults& r) {
     << (r.parallel_identical ? "identical to" : "**different from**") << " the 1-thread run's. "
     << "Showing (drawing) is not included. Both multi-thread lines run the library's parallel pipeline "
     << "(`run_in_frame_order`, include/rdsf/pipeline/parallel_pipeline.hpp), the code `rdsf-detect --threads` runs.\n\n";
+}
 
+// Live mode: drops and latency at each camera rate.
+void write_live_mode(const PerfResults& r, std::ostringstream& m) {
   m << "## Live mode\n\n| Camera rate | Frames | Dropped | Latency p50 | p95 | p99 | max |\n|---|---|---|---|---|---|---|\n";
   for (const PerfResults::LiveRun& l : r.live) {
     m << "| " << num(l.fps, 0) << " fps | " << l.stats.arrived << " | " << l.stats.dropped << " | "
@@ -155,7 +158,10 @@ std::string perf_markdown(const PerfResults& r) {
     << "what `rdsf-detect --live` runs) with " << r.threads << " workers: at most one frame waits per worker, a "
     << "newer frame replaces the oldest waiting one (dropped); latency is from the push to the detections out "
     << "(after tracking).\n\n";
+}
 
+// Training per round: native against OpenCV.
+void write_training(const PerfResults& r, const Derived& d, std::ostringstream& m) {
   const bool huge_tree = r.train_rows_positive == 5628 && r.train_rows_negative == 22454;
   m << "## Training per round\n\n"
     << r.train_rows_positive << " + " << r.train_rows_negative << " training rows"
@@ -193,7 +199,10 @@ std::string perf_markdown(const PerfResults& r) {
   } else {
     m << "| OpenCV cv::ml::Boost REAL stumps | not run (--opencv-rounds 0,0) | - | - | - |\n\n";
   }
+}
 
+// Mining and labelling against their targets.
+void write_mining_and_labelling(const PerfResults& r, const Derived& d, std::ostringstream& m) {
   m << "## Mining and labelling\n\n| Measure | This run | Target |\n|---|---|---|\n"
     << "| Mining negatives, " << r.threads << " threads (PNG frames with colour) | "
     << num(d.mining_fps, 1) << " fps (" << r.mined_frames << " frames, " << r.mined_candidates << " candidates, "
@@ -216,7 +225,10 @@ std::string perf_markdown(const PerfResults& r) {
     << "crops and syncs it to disk); " << r.label_frame_waits
     << " of them moved on to the next frame, which the session reads and analyses in the background while a "
        "person would decide, so an instant answer is the worst case.\n\n";
+}
 
+// Memory peaks per phase.
+void write_memory_peaks(const PerfResults& r, std::ostringstream& m) {
   m << "## Memory peaks\n\n| Phase | Resident at start | Peak (VmHWM) |\n|---|---|---|\n";
   for (const PhaseMemory& p : r.memory) {
     m << "| " << p.phase << " | " << num(p.start_mib, 0) << " MiB | " << num(p.peak_mib, 0) << " MiB"
@@ -225,7 +237,10 @@ std::string perf_markdown(const PerfResults& r) {
   m << "\nThe peak is reset at the start of each phase (`5` written to /proc/self/clear_refs); what is resident at "
        "the start (the program, the model, the "
     << num(r.frames_mib, 0) << " MiB of frames kept in memory for the whole-system phases) is part of the peak.\n\n";
+}
 
+// The targets, each measured and met or not.
+void write_targets(const PerfResults& r, const Derived& d, std::ostringstream& m) {
   m << "## Targets\n\n| Target | Measured | Met |\n|---|---|---|\n"
     << "| Segmentation >= " << num(kTargetSegmentationRatio, 0) << "x faster than the thesis's best ("
     << num(kThesisSegmentationBestMs, 0) << " ms) | " << times(kThesisSegmentationBestMs / d.seg_ms) << " ("
@@ -255,6 +270,20 @@ std::string perf_markdown(const PerfResults& r) {
     << " threads, OpenCV one); the processor-time ratio adds up every thread, i.e. it is the speed-up per core. "
     << "Equal AUC means the native validation AUC after " << r.opencv_b << " rounds is at least OpenCV's minus "
     << kEqualAucTolerance << ". The labelling target is judged on the 95th percentile.\n";
+}
+
+}  // namespace
+
+std::string perf_markdown(const PerfResults& r) {
+  const Derived d = derive(r);
+  std::ostringstream m;
+  write_header(r, d, m);
+  write_whole_system(r, d, m);
+  write_live_mode(r, m);
+  write_training(r, d, m);
+  write_mining_and_labelling(r, d, m);
+  write_memory_peaks(r, m);
+  write_targets(r, d, m);
   return m.str();
 }
 
