@@ -167,26 +167,8 @@ std::string percent(double v) {
   return text;
 }
 
-}  // namespace
-
-int run_labeler_bench(const LabelerBenchOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  const FrameAnalyser analyser{AnalyserParams{}};
-  const Pool pool = load(o.train, analyser);
-  const Pool test = load(o.test, analyser);
-  LoopTrainingParams params;
-  params.boost.threads = o.threads;
-  params.boost.seed = o.seed;
-
-  const std::optional<BoostedModel> all = train_loop_model(pool.rows, pool.labels, pool.origins, FeatureSpec{}, params);
-  if (!all) throw Error("the --train recordings give too few persons or not-persons to train on");
-  const double target = tar_at_fppf(*all, test, 0.1);
-  std::fprintf(stderr, "rdsf-labeler-bench: all-labelled model: held-out TAR %.3f at FPPF <= 0.1\n", target);
-  const LoopResult active = run_loop(pool, test, target, o, true, params);
-  std::fprintf(stderr, "rdsf-labeler-bench: active: %zu answers (TAR %.3f)\n", active.answers, active.tar);
-  const LoopResult passive = run_loop(pool, test, target, o, false, params);
-  std::fprintf(stderr, "rdsf-labeler-bench: passive: %zu answers (TAR %.3f)\n", passive.answers, passive.tar);
-
+// The pool, the held-out set, the all-labelled model's TAR and how many answers each loop needed.
+void print_loops(const Pool& pool, const Pool& test, double target, const LoopResult& active, const LoopResult& passive) {
   const auto positives = std::count(pool.labels.begin(), pool.labels.end(), 1);
   std::printf("| pool (training recordings) | %zu candidates (%ld persons) in %lld frames |\n", pool.labels.size(),
               static_cast<long>(positives), static_cast<long long>(pool.frames));
@@ -200,9 +182,13 @@ int run_labeler_bench(const LabelerBenchOptions& o) {
   };
   loop_row("active learning (most uncertain first)", active);
   loop_row("passive (random order)", passive);
+}
 
-  // Model answers at the given thresholds and a sweep.
-  const std::vector<double> held_out_p = probabilities(*all, test.rows);
+// Model answers at the given thresholds and a sweep: wrong answers of the all-labelled model on the held-out
+// set, and of the active loop's model on the pool it did not ask.
+void print_model_answers(const LabelerBenchOptions& o, const BoostedModel& all, const Pool& pool, const Pool& test,
+                         const LoopResult& active) {
+  const std::vector<double> held_out_p = probabilities(all, test.rows);
   std::vector<bool> trained_on(pool.labels.size(), false);
   for (std::size_t i : active.asked) trained_on[i] = true;
   const std::vector<double> rest_p = active.model ? probabilities(*active.model, pool.rows) : std::vector<double>{};
@@ -221,8 +207,10 @@ int run_labeler_bench(const LabelerBenchOptions& o) {
                   percent(a.total ? double(a.answered) / double(a.total) : 0).c_str());
     }
   }
+}
 
-  // Review: planted flips, found by suspicion.
+// Review: planted flips, found by suspicion (a model trained on the set itself, and out of fold).
+void print_review(const LabelerBenchOptions& o, const Pool& pool, const LoopTrainingParams& params) {
   const std::size_t n = pool.labels.size();
   const std::size_t flips = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(o.flip_fraction * static_cast<double>(n))));
   std::vector<int> flipped = pool.labels;
@@ -255,11 +243,41 @@ int run_labeler_bench(const LabelerBenchOptions& o) {
   const std::size_t found_oof = found_in_first(oof, 0.05);
   std::printf("| review, out-of-fold model (5 folds by group): planted flips in the first 5%% shown | %zu of %zu (%s) |\n",
               found_oof, flips, percent(double(found_oof) / double(flips)).c_str());
+}
+
+// The held-out TAR after each batch of answers, active and passive.
+void print_curves(const LoopResult& active, const LoopResult& passive) {
   std::printf("\nactive-learning curve (answers: held-out TAR): ");
   for (const auto& [a, t] : active.curve) std::printf("%zu:%.3f ", a, t);
   std::printf("\npassive curve: ");
   for (const auto& [a, t] : passive.curve) std::printf("%zu:%.3f ", a, t);
   std::printf("\n");
+}
+
+}  // namespace
+
+int run_labeler_bench(const LabelerBenchOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const FrameAnalyser analyser{AnalyserParams{}};
+  const Pool pool = load(o.train, analyser);
+  const Pool test = load(o.test, analyser);
+  LoopTrainingParams params;
+  params.boost.threads = o.threads;
+  params.boost.seed = o.seed;
+
+  const std::optional<BoostedModel> all = train_loop_model(pool.rows, pool.labels, pool.origins, FeatureSpec{}, params);
+  if (!all) throw Error("the --train recordings give too few persons or not-persons to train on");
+  const double target = tar_at_fppf(*all, test, 0.1);
+  std::fprintf(stderr, "rdsf-labeler-bench: all-labelled model: held-out TAR %.3f at FPPF <= 0.1\n", target);
+  const LoopResult active = run_loop(pool, test, target, o, true, params);
+  std::fprintf(stderr, "rdsf-labeler-bench: active: %zu answers (TAR %.3f)\n", active.answers, active.tar);
+  const LoopResult passive = run_loop(pool, test, target, o, false, params);
+  std::fprintf(stderr, "rdsf-labeler-bench: passive: %zu answers (TAR %.3f)\n", passive.answers, passive.tar);
+
+  print_loops(pool, test, target, active, passive);
+  print_model_answers(o, *all, pool, test, active);
+  print_review(o, pool, params);
+  print_curves(active, passive);
   std::fprintf(stderr, "rdsf-labeler-bench: %.0f s\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return 0;
