@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <limits>
@@ -139,12 +140,12 @@ double read_bandwidth_gbps(double mib, int threads, int passes) {
   return static_cast<double>(words * 8) / seconds / 1e9;
 }
 
-SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
-  SpeedLimits s;
-  s.threads = o.threads;
-  s.load_start = clock::load_average_now();
-  const auto say = [](const std::string& text) { std::cerr << "speed limits: " << text << std::endl; };
+namespace {
 
+using Say = std::function<void(const std::string&)>;
+
+// Streaming-read bandwidth on 1 and o.threads threads, and one pass over a frame (the memory-traffic floor).
+void measure_memory(const SpeedLimitOptions& o, const Say& say, SpeedLimits& s) {
   s.stream_buffer_mib = o.quick ? 256 : 1024;
   say("memory bandwidth: streaming reads of " + clock::fixed(s.stream_buffer_mib, 0) + " MiB on 1 and " +
       std::to_string(o.threads) + " threads");
@@ -161,7 +162,11 @@ SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
       for (int i = 0; i < 480 * 640; ++i) o8[i] = static_cast<std::uint8_t>(in[i] >> 8);
     });
   }
+}
 
+// PNG reading, direct path against cv::imdecode and libdeflate's inflate alone: a synthetic frame, and the
+// real frames of o.real_frames_dir when given.
+void measure_png_reading(const SpeedLimitOptions& o, const Say& say, SpeedLimits& s) {
   say("PNG reading: direct path and cv::imdecode on the same synthetic frame");
   const synth::SynthFrame shown = synth::SynthSequence(bench::bench_scene(1, /*rgb=*/true)).frame(0);
   const auto dir = std::filesystem::temp_directory_path() / ("rdsf-speed-limits-" + std::to_string(::getpid()));
@@ -194,7 +199,10 @@ SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
                        s.real_colour_direct_ms, s.real_colour_imdecode_ms, s.real_inflate_ms);
     }
   }
+}
 
+// Segmentation per frame, candidates per candidate and the full vector per candidate, one thread.
+void measure_stages(const SpeedLimitOptions& o, const Say& say, SpeedLimits& s) {
   s.frames = o.quick ? 8 : o.frames;
   say("segmentation, candidates and the full vector on " + std::to_string(s.frames) + " synthetic frames, one thread");
   const synth::SynthParams p = synth::people_scene(s.frames, 1, 4, 17);
@@ -226,6 +234,18 @@ SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
     for (const Candidate& c : all) extractor.compute(c.depth_crop, vector.data());
   });
   s.full_vector_us = all.empty() ? 0 : 1e6 * vector_s / static_cast<double>(all.size());
+}
+
+}  // namespace
+
+SpeedLimits measure_speed_limits(const SpeedLimitOptions& o) {
+  SpeedLimits s;
+  s.threads = o.threads;
+  s.load_start = clock::load_average_now();
+  const Say say = [](const std::string& text) { std::cerr << "speed limits: " << text << std::endl; };
+  measure_memory(o, say, s);
+  measure_png_reading(o, say, s);
+  measure_stages(o, say, s);
   s.load_end = clock::load_average_now();
   return s;
 }
