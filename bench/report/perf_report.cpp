@@ -12,6 +12,61 @@
 #include "perf_run.hpp"
 #include "speed_limits.hpp"
 
+namespace {
+
+// The real frames whose PNG reading is timed ("auto": ../shared/realdata/people beside the source tree when
+// present, else "none"); refuses an --out that exists without --force and a folder without frames, before
+// anything is measured.
+std::string checked_real_frames(const rdsf::perf::PerfOptions& o, std::string real_frames) {
+  if (!o.force && std::filesystem::exists(o.out)) {  // refused before measuring anything
+    throw rdsf::Error(o.out + ": already exists (use --force to replace it)");
+  }
+  if (real_frames == "auto") {
+    const auto beside = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/people";
+    real_frames = std::filesystem::is_directory(beside) ? beside.string() : "none";
+  }
+  if (real_frames != "none") {  // refused before measuring anything, too
+    if (!std::filesystem::is_directory(real_frames)) {
+      throw rdsf::Error(real_frames + ": no such folder (--real-frames; none skips the real frames)");
+    }
+    rdsf::PngFolderSource(real_frames, rdsf::CameraModel::kinect_v1());  // throws when it holds no frames
+  }
+  return real_frames;
+}
+
+// The report's three parts (the whole system, the machine's limits, the trainers side by side), measured in
+// this order, written to o.out and summarised on stdout.
+int run_report(const rdsf::perf::PerfOptions& o, const std::string& real_frames, double peer_budget_s) {
+  const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
+  // Issue 17: the machine's limits beside the figures, and the trainers side by side.
+  rdsf::perf::SpeedLimitOptions limit_options;
+  limit_options.quick = o.quick;
+  limit_options.threads = o.threads;
+  limit_options.real_frames_dir = real_frames == "none" ? std::string() : real_frames;
+  const rdsf::perf::SpeedLimits limits = rdsf::perf::measure_speed_limits(limit_options);
+  rdsf::perf::PeerOptions peer;
+  peer.quick = o.quick;
+  peer.threads = o.threads;
+  peer.positives = o.positives;
+  peer.negatives = o.negatives;
+  peer.budget_s = peer_budget_s >= 0 ? peer_budget_s : (o.quick ? 1.0 : 20.0);
+  peer.opencv_ran = results.opencv_ran;
+  peer.opencv_rounds = results.opencv_b;
+  peer.opencv_s_per_round = results.opencv_s_per_round;
+  peer.opencv_auc = results.opencv_auc_at_b;
+  const bool peers_ran = peer.budget_s > 0;
+  const rdsf::perf::PeerResults peers = peers_ran ? rdsf::perf::measure_peers(peer) : rdsf::perf::PeerResults{};
+  rdsf::AtomicTextFile out(o.out, o.force);
+  out.stream() << rdsf::perf::perf_markdown(results) << rdsf::perf::speed_limits_markdown(limits)
+               << (peers_ran ? rdsf::perf::peers_markdown(peers) : std::string());
+  out.commit();
+  std::cout << rdsf::perf::perf_summary(results) << rdsf::perf::speed_limits_summary(limits)
+            << (peers_ran ? rdsf::perf::peers_summary(peers) : std::string()) << "report: " << o.out << "\n";
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   return rdsf::cli::run("rdsf-perf-report", [&] {
     namespace po = rdsf::cli::po;
@@ -49,44 +104,6 @@ int main(int argc, char** argv) {
         "Markdown report. A full run takes about 5-10 minutes on 2 cores."};
     if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
     o.resolve();
-    if (!o.force && std::filesystem::exists(o.out)) {  // refused before measuring anything
-      throw rdsf::Error(o.out + ": already exists (use --force to replace it)");
-    }
-    if (real_frames == "auto") {
-      const auto beside = std::filesystem::path(RDSF_SOURCE_DIR).parent_path() / "shared/realdata/people";
-      real_frames = std::filesystem::is_directory(beside) ? beside.string() : "none";
-    }
-    if (real_frames != "none") {  // refused before measuring anything, too
-      if (!std::filesystem::is_directory(real_frames)) {
-        throw rdsf::Error(real_frames + ": no such folder (--real-frames; none skips the real frames)");
-      }
-      rdsf::PngFolderSource(real_frames, rdsf::CameraModel::kinect_v1());  // throws when it holds no frames
-    }
-    const rdsf::perf::PerfResults results = rdsf::perf::run_perf_report(o);
-    // Issue 17: the machine's limits beside the figures, and the trainers side by side.
-    rdsf::perf::SpeedLimitOptions limit_options;
-    limit_options.quick = o.quick;
-    limit_options.threads = o.threads;
-    limit_options.real_frames_dir = real_frames == "none" ? std::string() : real_frames;
-    const rdsf::perf::SpeedLimits limits = rdsf::perf::measure_speed_limits(limit_options);
-    rdsf::perf::PeerOptions peer;
-    peer.quick = o.quick;
-    peer.threads = o.threads;
-    peer.positives = o.positives;
-    peer.negatives = o.negatives;
-    peer.budget_s = peer_budget_s >= 0 ? peer_budget_s : (o.quick ? 1.0 : 20.0);
-    peer.opencv_ran = results.opencv_ran;
-    peer.opencv_rounds = results.opencv_b;
-    peer.opencv_s_per_round = results.opencv_s_per_round;
-    peer.opencv_auc = results.opencv_auc_at_b;
-    const bool peers_ran = peer.budget_s > 0;
-    const rdsf::perf::PeerResults peers = peers_ran ? rdsf::perf::measure_peers(peer) : rdsf::perf::PeerResults{};
-    rdsf::AtomicTextFile out(o.out, o.force);
-    out.stream() << rdsf::perf::perf_markdown(results) << rdsf::perf::speed_limits_markdown(limits)
-                 << (peers_ran ? rdsf::perf::peers_markdown(peers) : std::string());
-    out.commit();
-    std::cout << rdsf::perf::perf_summary(results) << rdsf::perf::speed_limits_summary(limits)
-              << (peers_ran ? rdsf::perf::peers_summary(peers) : std::string()) << "report: " << o.out << "\n";
-    return 0;
+    return run_report(o, checked_real_frames(o, real_frames), peer_budget_s);
   });
 }
