@@ -11,16 +11,15 @@
 //   - a waiting depth frame goes on without colour when the next depth frame arrives or a colour image
 //     newer than its stamp + max_gap_us arrives (a frame without colour in a stream with colour).
 // So a frame waits at most until the next frame of either topic, and every depth frame comes out once, in
-// arrival order.
+// arrival order. "Newer" compares with the colour image that arrived last, so stamps that start again (a
+// bag played in a loop, a restarted camera) cost one frame its colour, not all the following ones.
 //   With wait off (ColourWait::never: the node's --colour-wait false) a depth frame never waits: it takes the
 // waiting colour image of smallest gap when that gap <= max_gap_us, else goes on at once without colour; the
-// image taken stays for the next depth frame as well (whose own may come after it). A
-// colour image arrives after its depth frame (another connection, a larger message), so the one taken is
-// then the previous frame's: the gap is about one frame period (33 ms at 30 frames/s), and max_gap_us must
-// allow it. The price of the latency saved: colour histograms of a box taken from an image up to one frame
-// older than the depth. "Newer" compares with the colour image that arrived last, so stamps that start again (a
-// bag played in a loop, a restarted camera) cost one frame its colour, not all the following ones. Not
-// thread-safe (the node calls it from its one callback thread).
+// image taken stays for the next depth frame as well (whose own may come after it). A colour image arrives
+// after its depth frame (another connection, a larger message), so the one taken is then the previous
+// frame's: the gap is about one frame period (33 ms at 30 frames/s), and max_gap_us must allow it. The price
+// of the latency saved: colour histograms of a box taken from an image up to one frame older than the depth.
+// Not thread-safe (the node calls it from its one callback thread).
 #include <cstdint>
 #include <deque>
 #include <optional>

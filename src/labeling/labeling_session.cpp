@@ -322,6 +322,21 @@ std::int64_t LabelingSession::store(const PresentedCandidate& p, int label, cons
   return writer_.append(record, c.depth_crop, c.colour_crop).id;
 }
 
+JournalEntry LabelingSession::record_propagated(const PresentedCandidate& p, char answer, const std::string& by,
+                                               const std::string& origin) {
+  const bool yes = answer == 'y';
+  const std::int64_t id = answer == 's' ? -1 : yes || config_.keep_rejected ? store(p, yes ? 1 : 0, origin) : -1;
+  const JournalEntry e{p.key(), answer, id, by};
+  journal_.record(e);
+  return e;
+}
+
+char LabelingSession::truth_verdict(const PresentedCandidate& p, char answer) const {
+  const char truth = oracle_key(p);
+  if (truth == 's') return 's';
+  return truth != '\0' && truth != answer ? 'x' : '\0';
+}
+
 bool LabelingSession::answer(char key) {
   if (key == 'u') {
     if (history_.empty()) return false;
@@ -439,14 +454,12 @@ void LabelingSession::propagate_model_answers() {
         const PropagatedTrack track = propagate_track(frames, {f, i}, answer, params, config_.camera, answer_of);
         for (const TrackLink& l : track.labelled) {
           const PresentedCandidate p{frames_[first + l.frame], l.index};
-          const bool yes = answer == 'y';
-          const std::int64_t id = yes || config_.keep_rejected ? store(p, yes ? 1 : 0, "labeler-model-track") : -1;
-          journal_.record({p.key(), answer, id, by});
+          record_propagated(p, answer, by, "labeler-model-track");
           labelled.insert({p.frame.get(), p.index});
-          ++(yes ? stats_.model_track_positives : stats_.model_track_negatives);
-          if (const char truth = oracle_key(p); truth == 's') {
+          ++(answer == 'y' ? stats_.model_track_positives : stats_.model_track_negatives);
+          if (const char verdict = truth_verdict(p, answer); verdict == 's') {
             ++stats_.model_track_in_band;
-          } else if (truth != '\0' && truth != answer) {
+          } else if (verdict == 'x') {
             ++stats_.model_track_wrong;
           }
         }
@@ -483,9 +496,7 @@ void LabelingSession::propagate(Given& given) {
   const auto label = [&](const TrackLink& l, const std::string& by, const std::string& origin) {
     const PresentedCandidate p{frames_[followed.first_frame + l.frame], l.index};
     const bool yes = given.entry.answer == 'y', skip = given.entry.answer == 's', placed = origin == "labeler-place";
-    const std::int64_t id = skip ? -1 : yes || config_.keep_rejected ? store(p, yes ? 1 : 0, origin) : -1;
-    const JournalEntry e{p.key(), given.entry.answer, id, by};
-    journal_.record(e);
+    const JournalEntry e = record_propagated(p, given.entry.answer, by, origin);
     given.track.push_back(p);
     given.track_entries.push_back(e);
     labelled.insert({p.frame.get(), p.index});
@@ -495,10 +506,10 @@ void LabelingSession::propagate(Given& given) {
     }
     ++(yes ? stats_.propagated_positives : stats_.propagated_negatives);
     stats_.placed_negatives += placed ? 1 : 0;
-    if (const char truth = oracle_key(p); truth == 's') {
+    if (const char verdict = truth_verdict(p, given.entry.answer); verdict == 's') {
       ++stats_.propagated_in_band;
       stats_.placed_in_band += placed ? 1 : 0;
-    } else if (truth != '\0' && truth != given.entry.answer) {
+    } else if (verdict == 'x') {
       ++stats_.propagated_wrong;
       stats_.placed_wrong += placed ? 1 : 0;
     }

@@ -218,6 +218,12 @@ class LabelingSession {
   void start_prefetch();
   void take_frame(std::shared_ptr<const LoadedFrame> frame);
   std::int64_t store(const PresentedCandidate& p, int label, const std::string& origin);
+  /// Journals a label propagated to `p` (answer y, n or s; stored as a sample under `origin` when y, or n with
+  /// keep_rejected; never for s) and returns its entry.
+  JournalEntry record_propagated(const PresentedCandidate& p, char answer, const std::string& by,
+                                 const std::string& origin);
+  /// With truth: 's' when the truth leaves `p` in its uncertain band, 'x' when it contradicts `answer`, else '\0'.
+  char truth_verdict(const PresentedCandidate& p, char answer) const;
   void score(LoadedFrame& frame) const;
   /// Answers the candidate from truth or the model when they are sure; false when it must be asked.
   bool answer_without_asking(const PresentedCandidate& p);
