@@ -278,6 +278,13 @@ void apply_camera(const po::variables_map& values, const CameraModel& camera, Fr
 
 }  // namespace
 
+bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
+           po::variables_map& values, CameraOptions& camera) {
+  if (!parse(argc, argv, info, options, values)) return false;
+  camera.apply(values);
+  return true;
+}
+
 CameraOptions::CameraOptions(po::options_description& options, CameraModel& camera, FrameSourceOptions* frames)
     : camera_(camera), frames_(frames) {
   options.add(camera_options(camera_, calibration_));

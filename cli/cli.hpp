@@ -118,6 +118,10 @@ class CameraOptions {
   EmpiricalCalibration calibration_;
 };
 
+/// parse(), then camera.apply(values): how a program that reads frames parses its command line.
+bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_description& options,
+           po::variables_map& values, CameraOptions& camera);
+
 /// Runs `body` and turns every failure into "NAME: error: ..." on stderr; returns the exit code
 /// (0 success, 1 error, 2 usage error). An AlreadyExists error gets "(pass --force to replace it)".
 int run(const std::string& program_name, const std::function<int()>& body);

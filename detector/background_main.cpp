@@ -26,8 +26,7 @@ int main(int argc, char** argv) {
         "Learns a background model of the room from the frames of a static camera: per pixel the room's far\n"
         "depth. rdsf-detect --background DIR then adds whatever stands in front of the room as candidates\n"
         "(people beside a wall or a cupboard that share its depth layer). A moving camera has no background."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    camera.apply(values);
+    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
     if (o.frames < 1) throw rdsf::cli::UsageError("--frames must be at least 1");
     if (!(o.quantile >= 0.0 && o.quantile <= 1.0)) throw rdsf::cli::UsageError("--quantile must be in [0, 1]");
     return rdsf::run_background(o);

@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
         "with one, candidates are scored (H(x) and the calibrated P(person)), those with P >= --threshold are\n"
         "people, and people are tracked. With --truth, every --model is evaluated: exact ROC and DET curves,\n"
         "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    camera.apply(values);
+    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
     o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
     rdsf::check_options(o);

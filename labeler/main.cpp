@@ -22,8 +22,7 @@ int main(int argc, char** argv) {
         "run again on the same sources and set to resume. With --model, candidates the model is sure about are\n"
         "answered by it (journalled 'by model') and never shown. --answers takes the same keys as whitespace-separated\n"
         "tokens (y n s u q, space, backspace, esc; 'yyn' is three keys)."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    camera.apply(values);
+    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
     rdsf::apply_option_text(text, o);
     rdsf::check_options(o);
     return rdsf::run_label(o);

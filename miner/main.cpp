@@ -44,8 +44,7 @@ int main(int argc, char** argv) {
         "negative (label 0, origin miner); with --model only the candidates the model scores at or above\n"
         "--min-score (its false positives). Exact duplicates are skipped, so a run killed midway continues\n"
         "when started again with the same options. --merge joins sample sets, e.g. shard outputs."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    camera.apply(values);
+    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
     o.min_score_given = !values["min-score"].defaulted();
     if (!o.merge.empty()) {
       if (!o.mine.sources.empty()) throw rdsf::cli::UsageError("give either --source or --merge, not both");

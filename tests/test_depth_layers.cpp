@@ -78,6 +78,12 @@ TEST(DepthLayers, SeedsArePositiveAscendingDistinctAndAtMost254) {
   EXPECT_EQ(s.seeds_mm, seeds);
 }
 
+// One update of the centres (both k-means share it): the mean of each cluster with pixels, empty ones dropped.
+TEST(DepthLayers, MeansDropEmptyClustersAndKeepOrder) {
+  EXPECT_EQ(kmeans_means({3000.0, 0.0, 9000.0}, {2, 0, 3}), (std::vector<double>{1500.0, 3000.0}));
+  EXPECT_TRUE(kmeans_means({0.0}, {0}).empty());
+}
+
 // The histogram k-means must give the same layers as the thesis's cv::kmeans with initial labels.
 TEST(DepthLayers, SameLayersAsOpenCvKmeansOnRealFrames) {
   RDSF_REQUIRE_REALDATA();

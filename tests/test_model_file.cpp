@@ -233,6 +233,13 @@ TEST(ReferenceModels, FormatVersion1NativeLoadsWithKnownScores) {
   EXPECT_NEAR(model.score(input[0]), -1.2211271644717994, 1e-9);
 }
 
+// The file of the newest format, read and written again, is the same text to the byte: the reader keeps
+// every entry (training record, validation figures, rounds) and the writer writes them as they were.
+TEST(ReferenceModels, NewestFormatReadAndWrittenAgainIsTheSameText) {
+  const std::string path = reference_path("rdsf-model-v3-crops.yml");
+  EXPECT_EQ(model_file_text(read_model_file(path)), test::file_text(path));
+}
+
 TEST(ReferenceModels, FormatVersion1OpenCvLoadsWithKnownScores) {
   const BoostedModel model = BoostedModel::load(reference_path("rdsf-model-v1-opencv.yml"));
   EXPECT_EQ(model.name(), "reference-opencv");

@@ -109,7 +109,8 @@ void print_training(const TrainingRecord& t, std::ostream& out) {
     out << "rounds        round  feature  train err  val err     AUC   TAR@1%  TAR@5%\n";
     for (const RoundFigures& r : v.rounds) {
       std::snprintf(line, sizeof line, "             %6d  %7d   %.4f    %.4f   %.4f  %.4f  %.4f\n", r.round, r.feature,
-                    r.train_error, r.validation_error, r.auc, r.tar_at_far_1, r.tar_at_far_5);
+                    r.train_error, r.validation.error_rate, r.validation.auc, r.validation.tar_at_far_1,
+                    r.validation.tar_at_far_5);
       out << line;
     }
   }

@@ -33,8 +33,7 @@ int main(int argc, char** argv) {
         "Runs PCL's ground-based people detector (pcl::people::GroundBasedPeopleDetectionApp with PCL's HOG+SVM\n"
         "file) on frames with colour; the floor is fitted per recording by RANSAC on the depth points (the lowest\n"
         "near-horizontal plane). Writes rdsf-detect's CSV and, with --truth, rdsf-detect's evaluation report."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
-    camera.apply(values);
+    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
     if (o.out_csv.empty() && o.truth_csv.empty()) throw rdsf::cli::UsageError("nothing to do: give --out FILE.csv or --truth with --report-dir");
     if (o.truth_csv.empty() != o.report_dir.empty()) throw rdsf::cli::UsageError("--truth and --report-dir go together");
     if (!(o.min_height_m > 0 && o.max_height_m > o.min_height_m)) throw rdsf::cli::UsageError("--min-height must be > 0 and below --max-height");

@@ -244,10 +244,7 @@ class RoundObserver {
       scores_ = validation_.owners == nullptr ? local_scores_ : validation_.owners->whole(local_scores_, validation_.index);
       const RocSummary s = summarise_roc(scores_, validation_.labels);
       figures.roc = roc_at_far_levels(roc_curve(scores_, validation_.labels));
-      figures.validation_error = s.error_rate;
-      figures.auc = s.auc;
-      figures.tar_at_far_1 = s.tar_at_far_1;
-      figures.tar_at_far_5 = s.tar_at_far_5;
+      figures.validation = s;
       report.validation_error = s.error_rate;
       report.validation_auc = s.auc;
       if (s.auc > best_auc_ + 1e-9) {
@@ -629,10 +626,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
     RoundFigures f;
     f.round = round;
     f.feature = model.weak_classifiers()[params.init.size() + r].feature;
-    f.validation_error = s.error_rate;
-    f.auc = s.auc;
-    f.tar_at_far_1 = s.tar_at_far_1;
-    f.tar_at_far_5 = s.tar_at_far_5;
+    f.validation = s;
     f.roc = roc_at_far_levels(roc_curve(per_round[r], pooled_labels));
     record.validation.rounds.push_back(f);
   }

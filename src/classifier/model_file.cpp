@@ -6,6 +6,7 @@
 #include <cmath>
 #include <ctime>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <utility>
 
@@ -44,11 +45,64 @@ void write_feature_spec(FileStorage& fs, const FeatureSpec& spec) {
   fs.endWriteStruct();
 }
 
-void write_roc_point(FileStorage& fs, const RocPoint& p) {
+/// A one-line map of numbers, {key: value, ...} in the order given (ROC and probability points).
+void write_flow_reals(FileStorage& fs, std::initializer_list<std::pair<const char*, double>> entries) {
   fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
-  cv::write(fs, "far", p.far);
-  cv::write(fs, "tar", p.tar);
-  cv::write(fs, "threshold", p.threshold);
+  for (const auto& [key, value] : entries) cv::write(fs, key, value);
+  fs.endWriteStruct();
+}
+
+void write_roc_point(FileStorage& fs, const RocPoint& p) {
+  write_flow_reals(fs, {{"far", p.far}, {"tar", p.tar}, {"threshold", p.threshold}});
+}
+
+/// The sequence `key` holding `write_one`'s writing of each item, in order.
+template <typename T, typename Write>
+void write_each(FileStorage& fs, const char* key, const std::vector<T>& items, Write write_one) {
+  fs.startWriteStruct(key, FileNode::SEQ);
+  for (const T& item : items) write_one(fs, item);
+  fs.endWriteStruct();
+}
+
+void write_sample_set_use(FileStorage& fs, const SampleSetUse& s) {
+  fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
+  cv::write(fs, "role", s.role);
+  cv::write(fs, "path", s.path);
+  cv::write(fs, "manifest_hash", s.manifest_hash);
+  cv::write(fs, "available", static_cast<int>(s.available));
+  cv::write(fs, "used", static_cast<int>(s.used));
+  fs.endWriteStruct();
+}
+
+void write_probability_point(FileStorage& fs, const ProbabilityPoint& p) {
+  write_flow_reals(fs, {{"probability", p.probability}, {"tar", p.tar}, {"far", p.far}});
+}
+
+void write_round_figures(FileStorage& fs, const RoundFigures& r) {
+  fs.startWriteStruct("", FileNode::MAP);
+  cv::write(fs, "round", r.round);
+  cv::write(fs, "feature", r.feature);
+  cv::write(fs, "train_error", r.train_error);
+  cv::write(fs, "validation_error", r.validation.error_rate);
+  cv::write(fs, "auc", r.validation.auc);
+  cv::write(fs, "tar_at_far_1", r.validation.tar_at_far_1);
+  cv::write(fs, "tar_at_far_5", r.validation.tar_at_far_5);
+  write_each(fs, "roc", r.roc, write_roc_point);
+  fs.endWriteStruct();
+}
+
+void write_validation_figures(FileStorage& fs, const ValidationFigures& v) {
+  fs.startWriteStruct("validation", FileNode::MAP);
+  cv::write(fs, "source", v.source);
+  cv::write(fs, "positives", static_cast<int>(v.positives));
+  cv::write(fs, "negatives", static_cast<int>(v.negatives));
+  cv::write(fs, "auc", v.summary.auc);
+  cv::write(fs, "tar_at_far_1", v.summary.tar_at_far_1);
+  cv::write(fs, "tar_at_far_5", v.summary.tar_at_far_5);
+  cv::write(fs, "error_rate", v.summary.error_rate);
+  write_each(fs, "roc", v.roc, write_roc_point);
+  write_each(fs, "by_probability", v.by_probability, write_probability_point);
+  write_each(fs, "rounds", v.rounds, write_round_figures);
   fs.endWriteStruct();
 }
 
@@ -59,17 +113,7 @@ void write_training(FileStorage& fs, const TrainingRecord& t) {
   fs.startWriteStruct("parameters", FileNode::MAP);
   for (const auto& [key, value] : t.parameters) cv::write(fs, writable_key(key), value);
   fs.endWriteStruct();
-  fs.startWriteStruct("sample_sets", FileNode::SEQ);
-  for (const SampleSetUse& s : t.sample_sets) {
-    fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
-    cv::write(fs, "role", s.role);
-    cv::write(fs, "path", s.path);
-    cv::write(fs, "manifest_hash", s.manifest_hash);
-    cv::write(fs, "available", static_cast<int>(s.available));
-    cv::write(fs, "used", static_cast<int>(s.used));
-    fs.endWriteStruct();
-  }
-  fs.endWriteStruct();
+  write_each(fs, "sample_sets", t.sample_sets, write_sample_set_use);
   if (t.crops.known()) {
     fs.startWriteStruct("crops", FileNode::MAP);
     cv::write(fs, "window_box", t.crops.window_box);
@@ -79,44 +123,7 @@ void write_training(FileStorage& fs, const TrainingRecord& t) {
   cv::write(fs, "train_positives", static_cast<int>(t.train_positives));
   cv::write(fs, "train_negatives", static_cast<int>(t.train_negatives));
   cv::write(fs, "stopped", t.stopped);
-  const ValidationFigures& v = t.validation;
-  fs.startWriteStruct("validation", FileNode::MAP);
-  cv::write(fs, "source", v.source);
-  cv::write(fs, "positives", static_cast<int>(v.positives));
-  cv::write(fs, "negatives", static_cast<int>(v.negatives));
-  cv::write(fs, "auc", v.summary.auc);
-  cv::write(fs, "tar_at_far_1", v.summary.tar_at_far_1);
-  cv::write(fs, "tar_at_far_5", v.summary.tar_at_far_5);
-  cv::write(fs, "error_rate", v.summary.error_rate);
-  fs.startWriteStruct("roc", FileNode::SEQ);
-  for (const RocPoint& p : v.roc) write_roc_point(fs, p);
-  fs.endWriteStruct();
-  fs.startWriteStruct("by_probability", FileNode::SEQ);
-  for (const ProbabilityPoint& p : v.by_probability) {
-    fs.startWriteStruct("", FileNode::MAP | FileNode::FLOW);
-    cv::write(fs, "probability", p.probability);
-    cv::write(fs, "tar", p.tar);
-    cv::write(fs, "far", p.far);
-    fs.endWriteStruct();
-  }
-  fs.endWriteStruct();
-  fs.startWriteStruct("rounds", FileNode::SEQ);
-  for (const RoundFigures& r : v.rounds) {
-    fs.startWriteStruct("", FileNode::MAP);
-    cv::write(fs, "round", r.round);
-    cv::write(fs, "feature", r.feature);
-    cv::write(fs, "train_error", r.train_error);
-    cv::write(fs, "validation_error", r.validation_error);
-    cv::write(fs, "auc", r.auc);
-    cv::write(fs, "tar_at_far_1", r.tar_at_far_1);
-    cv::write(fs, "tar_at_far_5", r.tar_at_far_5);
-    fs.startWriteStruct("roc", FileNode::SEQ);
-    for (const RocPoint& p : r.roc) write_roc_point(fs, p);
-    fs.endWriteStruct();
-    fs.endWriteStruct();
-  }
-  fs.endWriteStruct();
-  fs.endWriteStruct();
+  write_validation_figures(fs, t.validation);
   fs.endWriteStruct();
 }
 
@@ -197,23 +204,77 @@ FeatureSpec read_feature_spec_v1(const YamlReader& r, const FileNode& root, cons
   return spec;
 }
 
-std::vector<RocPoint> read_roc_points(const FileNode& node) {
-  std::vector<RocPoint> out;
+/// What `read_one` makes of each element of the sequence `node`, in order (none when it is no sequence).
+template <typename Read>
+auto read_each(const FileNode& node, Read read_one) -> std::vector<decltype(read_one(node))> {
+  std::vector<decltype(read_one(node))> out;
   if (!node.isSeq()) return out;
-  for (auto it = node.begin(); it != node.end(); ++it) {
-    const FileNode p = *it;
-    out.push_back({YamlReader::opt_real(YamlReader::child(p, "far")), YamlReader::opt_real(YamlReader::child(p, "tar")),
-                   YamlReader::opt_real(YamlReader::child(p, "threshold"))});
-  }
+  for (auto it = node.begin(); it != node.end(); ++it) out.push_back(read_one(*it));
   return out;
+}
+
+// The training record's entries are informational: read leniently (YamlReader::opt_*), a missing one 0.
+double real_at(const FileNode& map, const char* key) { return YamlReader::opt_real(YamlReader::child(map, key)); }
+int int_at(const FileNode& map, const char* key) { return YamlReader::opt_int(YamlReader::child(map, key)); }
+std::string text_at(const FileNode& map, const char* key) { return YamlReader::opt_text(YamlReader::child(map, key)); }
+
+/// The figures of a RocSummary from the map `node`; the error rate under `error_key` (the final model's
+/// "error_rate", a round's "validation_error").
+RocSummary read_roc_summary(const FileNode& node, const char* error_key) {
+  RocSummary s;
+  s.auc = real_at(node, "auc");
+  s.tar_at_far_1 = real_at(node, "tar_at_far_1");
+  s.tar_at_far_5 = real_at(node, "tar_at_far_5");
+  s.error_rate = real_at(node, error_key);
+  return s;
+}
+
+std::vector<RocPoint> read_roc_points(const FileNode& node) {
+  return read_each(node, [](const FileNode& p) {
+    return RocPoint{real_at(p, "far"), real_at(p, "tar"), real_at(p, "threshold")};
+  });
+}
+
+SampleSetUse read_sample_set_use(const FileNode& s) {
+  SampleSetUse use;
+  use.role = text_at(s, "role");
+  use.path = text_at(s, "path");
+  use.manifest_hash = text_at(s, "manifest_hash");
+  use.available = static_cast<std::size_t>(int_at(s, "available"));
+  use.used = static_cast<std::size_t>(int_at(s, "used"));
+  return use;
+}
+
+RoundFigures read_round_figures(const FileNode& p) {
+  RoundFigures r;
+  r.round = int_at(p, "round");
+  r.feature = int_at(p, "feature");
+  r.train_error = real_at(p, "train_error");
+  r.validation = read_roc_summary(p, "validation_error");
+  r.roc = read_roc_points(YamlReader::child(p, "roc"));
+  return r;
+}
+
+ValidationFigures read_validation_figures(const FileNode& v) {
+  ValidationFigures f;
+  f.source = text_at(v, "source");
+  f.positives = static_cast<std::size_t>(int_at(v, "positives"));
+  f.negatives = static_cast<std::size_t>(int_at(v, "negatives"));
+  f.summary = read_roc_summary(v, "error_rate");
+  f.roc = read_roc_points(YamlReader::child(v, "roc"));
+  f.rounds = read_each(YamlReader::child(v, "rounds"), read_round_figures);
+  f.by_probability = read_each(YamlReader::child(v, "by_probability"), [](const FileNode& p) {
+    return ProbabilityPoint{real_at(p, "probability"), real_at(p, "tar"), real_at(p, "far")};
+  });
+  return f;
 }
 
 TrainingRecord read_training_v1(const FileNode& node) {
   TrainingRecord t;
   if (!node.isMap()) return t;
-  t.recipe = YamlReader::opt_text(node["recipe"]);
-  t.backend = YamlReader::opt_text(node["backend"]);
-  const FileNode params = node["parameters"];
+  t.recipe = text_at(node, "recipe");
+  t.backend = text_at(node, "backend");
+  const FileNode params = YamlReader::child(node, "parameters");
   if (params.isMap()) {
     for (auto it = params.begin(); it != params.end(); ++it) {
       const FileNode p = *it;
@@ -223,59 +284,12 @@ TrainingRecord read_training_v1(const FileNode& node) {
       t.parameters.emplace_back(p.name(), value);
     }
   }
-  const FileNode sets = node["sample_sets"];
-  if (sets.isSeq()) {
-    for (auto it = sets.begin(); it != sets.end(); ++it) {
-      const FileNode s = *it;
-      SampleSetUse use;
-      use.role = YamlReader::opt_text(YamlReader::child(s, "role"));
-      use.path = YamlReader::opt_text(YamlReader::child(s, "path"));
-      use.manifest_hash = YamlReader::opt_text(YamlReader::child(s, "manifest_hash"));
-      use.available = static_cast<std::size_t>(YamlReader::opt_int(YamlReader::child(s, "available")));
-      use.used = static_cast<std::size_t>(YamlReader::opt_int(YamlReader::child(s, "used")));
-      t.sample_sets.push_back(use);
-    }
-  }
-  t.train_positives = static_cast<std::size_t>(YamlReader::opt_int(node["train_positives"]));
-  t.train_negatives = static_cast<std::size_t>(YamlReader::opt_int(node["train_negatives"]));
-  t.stopped = YamlReader::opt_text(node["stopped"]);
-  const FileNode v = node["validation"];
-  if (v.isMap()) {
-    ValidationFigures& f = t.validation;
-    f.source = YamlReader::opt_text(v["source"]);
-    f.positives = static_cast<std::size_t>(YamlReader::opt_int(v["positives"]));
-    f.negatives = static_cast<std::size_t>(YamlReader::opt_int(v["negatives"]));
-    f.summary.auc = YamlReader::opt_real(v["auc"]);
-    f.summary.tar_at_far_1 = YamlReader::opt_real(v["tar_at_far_1"]);
-    f.summary.tar_at_far_5 = YamlReader::opt_real(v["tar_at_far_5"]);
-    f.summary.error_rate = YamlReader::opt_real(v["error_rate"]);
-    f.roc = read_roc_points(v["roc"]);
-    const FileNode rounds = v["rounds"];
-    if (rounds.isSeq()) {
-      for (auto it = rounds.begin(); it != rounds.end(); ++it) {
-        const FileNode p = *it;
-        RoundFigures r;
-        r.round = YamlReader::opt_int(YamlReader::child(p, "round"));
-        r.feature = YamlReader::opt_int(YamlReader::child(p, "feature"));
-        r.train_error = YamlReader::opt_real(YamlReader::child(p, "train_error"));
-        r.validation_error = YamlReader::opt_real(YamlReader::child(p, "validation_error"));
-        r.auc = YamlReader::opt_real(YamlReader::child(p, "auc"));
-        r.tar_at_far_1 = YamlReader::opt_real(YamlReader::child(p, "tar_at_far_1"));
-        r.tar_at_far_5 = YamlReader::opt_real(YamlReader::child(p, "tar_at_far_5"));
-        r.roc = read_roc_points(YamlReader::child(p, "roc"));
-        f.rounds.push_back(r);
-      }
-    }
-    const FileNode by_p = v["by_probability"];
-    if (by_p.isSeq()) {
-      for (auto it = by_p.begin(); it != by_p.end(); ++it) {
-        const FileNode p = *it;
-        f.by_probability.push_back({YamlReader::opt_real(YamlReader::child(p, "probability")),
-                                    YamlReader::opt_real(YamlReader::child(p, "tar")),
-                                    YamlReader::opt_real(YamlReader::child(p, "far"))});
-      }
-    }
-  }
+  t.sample_sets = read_each(YamlReader::child(node, "sample_sets"), read_sample_set_use);
+  t.train_positives = static_cast<std::size_t>(int_at(node, "train_positives"));
+  t.train_negatives = static_cast<std::size_t>(int_at(node, "train_negatives"));
+  t.stopped = text_at(node, "stopped");
+  const FileNode v = YamlReader::child(node, "validation");
+  if (v.isMap()) t.validation = read_validation_figures(v);
   return t;
 }
 

@@ -77,6 +77,14 @@ std::vector<double> kmeans_seeds(const std::vector<double>& centres_mm) {
   return centres;
 }
 
+std::vector<double> kmeans_means(const std::vector<double>& sums, const std::vector<std::uint64_t>& counts) {
+  std::vector<double> means;
+  for (std::size_t k = 0; k < sums.size(); ++k) {
+    if (counts[k] > 0) means.push_back(sums[k] / static_cast<double>(counts[k]));
+  }
+  return means;
+}
+
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
                            int max_iterations) {
   return kmeans_layers(depth_mm, depth_histogram(depth_mm), centres_mm, max_iterations);
@@ -118,11 +126,7 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const DepthHistogram& hist
   std::vector<std::uint64_t> counts;
   for (int iteration = 0;; ++iteration) {
     cluster_sums(assignment, sums, counts);
-    std::vector<double> updated;
-    for (std::size_t k = 0; k < centres.size(); ++k) {
-      if (counts[k] > 0) updated.push_back(sums[k] / static_cast<double>(counts[k]));
-    }
-    centres = updated;
+    centres = kmeans_means(sums, counts);
     if (centres.empty()) {
       result.labels = cv::Mat1b::zeros(depth_mm.size());
       return result;
@@ -130,7 +134,7 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const DepthHistogram& hist
     interval_ends(centres, level_count, next);
     const bool changed = partition_differs(assignment, next, count_before);
     // Cluster indices shift when a cluster was dropped; the pixel partition is what must be stable.
-    if (!changed && updated.size() == sums.size()) {
+    if (!changed && centres.size() == sums.size()) {
       result.iterations = iteration + 1;
       break;
     }

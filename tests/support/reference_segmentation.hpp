@@ -58,11 +58,7 @@ inline Segmentation kmeans_layers_reference(const cv::Mat1w& depth_mm, const std
       sums[assignment[d]] += static_cast<double>(d) * histogram[d];
       counts[assignment[d]] += histogram[d];
     }
-    std::vector<double> updated;
-    for (std::size_t k = 0; k < centres.size(); ++k) {
-      if (counts[k] > 0) updated.push_back(sums[k] / static_cast<double>(counts[k]));
-    }
-    centres = updated;
+    centres = kmeans_means(sums, counts);  // the library's update (tested apart)
     if (centres.empty()) return result;
     std::vector<int> next(levels, 0);
     assign_nearest_reference(centres, next);
@@ -72,7 +68,7 @@ inline Segmentation kmeans_layers_reference(const cv::Mat1w& depth_mm, const std
       changed = histogram[d] != 0 && next[d] != assignment[d];
     }
     // Cluster indices shift when a cluster was dropped; the pixel partition is what must be stable.
-    if (!changed && updated.size() == sums.size()) {
+    if (!changed && centres.size() == sums.size()) {
       result.iterations = iteration + 1;
       break;
     }

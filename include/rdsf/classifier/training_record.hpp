@@ -26,10 +26,9 @@ struct RoundFigures {
   int round = 0;
   int feature = 0;
   double train_error = 0.0;
-  double validation_error = 0.0;  ///< 0 when there is no validation set
-  double auc = 0.0;
-  double tar_at_far_1 = 0.0;
-  double tar_at_far_5 = 0.0;
+  /// The model after this round on the validation set (all 0 when there is none); its error_rate is the
+  /// model file's validation_error.
+  RocSummary validation;
   std::vector<RocPoint> roc;  ///< validation ROC at the standard FAR levels (roc_at_far_levels)
 };
 

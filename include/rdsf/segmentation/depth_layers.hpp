@@ -45,6 +45,10 @@ struct Segmentation {
 /// of them (the nearest: labels are 8-bit and 0 is "no reading"). Segmentation::seeds_mm.
 std::vector<double> kmeans_seeds(const std::vector<double>& centres_mm);
 
+/// One update of k-means's centres: sums[k] / counts[k] for every cluster k that holds pixels, in order (an
+/// empty cluster is dropped, so the result may be shorter).
+std::vector<double> kmeans_means(const std::vector<double>& sums, const std::vector<std::uint64_t>& counts);
+
 /// Runs k-means over the valid depths of `depth_mm` from the given centres (mm, any order, zeros ignored).
 /// At most 254 centres are used (the nearest ones).
 Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const std::vector<double>& centres_mm,
