@@ -362,124 +362,128 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables_sharded(
   return fits;
 }
 
-RealAdaBoostRound RealAdaBoost::next_round() {
-  const std::size_t n = data_.samples();
-  const std::vector<std::size_t> trimmed =
-      params_.weight_trim > 0.0 ? trimmed_samples() : std::vector<std::size_t>{};
-  std::vector<std::uint8_t> y(n);
-  for (std::size_t i = 0; i < n; ++i) y[i] = static_cast<std::uint8_t>(labels_[i]);
-  const double nu = params_.learning_rate;
+double RealAdaBoost::fit_table(const std::vector<std::size_t>& trimmed, const std::vector<std::uint8_t>& y,
+                               WeakClassifier& weak, std::vector<double>& response) const {
+  const std::vector<const std::vector<std::size_t>*> all{trimmed.empty() ? nullptr : &trimmed};
+  TableFit fit = std::move((sharded() ? best_tables_sharded(all, y, false) : best_tables(all, y, false))[0]);
+  weak.kind = WeakClassifier::Kind::Lut;
+  weak.feature = static_cast<int>(fit.feature);
+  for (double& r : fit.responses) r *= params_.learning_rate;
+  weak.responses = std::move(fit.responses);
+  const std::uint8_t* bins = data_.feature(fit.feature);
+  for (std::size_t i = 0; i < response.size(); ++i) response[i] = weak.responses[bins[i]];
+  return fit.z;
+}
 
-  WeakClassifier weak;
-  std::vector<double> response(n);  // the weak classifier's (shrunk) response per sample
-  double z = 0.0;
-  if (params_.depth <= 1) {
-    const std::vector<const std::vector<std::size_t>*> all{trimmed.empty() ? nullptr : &trimmed};
-    TableFit fit = std::move((sharded() ? best_tables_sharded(all, y, false) : best_tables(all, y, false))[0]);
-    weak.kind = WeakClassifier::Kind::Lut;
-    weak.feature = static_cast<int>(fit.feature);
-    for (double& r : fit.responses) r *= nu;
-    weak.responses = std::move(fit.responses);
-    const std::uint8_t* bins = data_.feature(fit.feature);
-    for (std::size_t i = 0; i < n; ++i) response[i] = weak.responses[bins[i]];
-    z = fit.z;
+double RealAdaBoost::fit_tree_level(std::size_t k0, const std::vector<std::size_t>& trimmed,
+                                    const std::vector<std::uint8_t>& y, std::vector<std::size_t>& node_of,
+                                    LevelSums& sums, WeakClassifier& weak) const {
+  const std::size_t n = node_of.size();
+  const std::size_t first_leaf = weak.nodes.size() / 2;
+  const std::size_t k1 = 2 * k0 + 1;  // the level is nodes k0 .. k1 - 1
+  const bool inner = k0 < first_leaf;
+  // The samples of each node that enter its histograms, ascending (trimmed ones stay out, as at
+  // depth 1), and their weight.
+  std::vector<std::vector<std::size_t>> members(k1 - k0);
+  if (trimmed.empty()) {
+    for (std::size_t i = 0; i < n; ++i) members[node_of[i] - k0].push_back(i);
   } else {
-    // Grown level by level; node_of[i] is the node sample i has reached.
-    const std::size_t node_count = (std::size_t{1} << params_.depth) - 1;
-    weak.kind = WeakClassifier::Kind::Tree;
-    weak.nodes.resize(node_count);
-    std::vector<std::size_t> node_of(n, 0);
-    const std::size_t first_leaf = node_count / 2;
-    // All the nodes of a level share one pass over the bins (node_histograms). Their members are fixed
-    // before the level: routing a node moves its samples to the next level only.
-    // Histogram subtraction: the sums of the previous level's fitted nodes and their index among them.
-    std::vector<double> parent_sums, level_sums;
-    std::vector<std::ptrdiff_t> parent_index(node_count, -1);
-    for (std::size_t k0 = 0; k0 < node_count; k0 = 2 * k0 + 1) {
-      const std::size_t k1 = 2 * k0 + 1;  // the level is nodes k0 .. k1 - 1
-      const bool inner = k0 < first_leaf;
-      // The samples of each node that enter its histograms, ascending (trimmed ones stay out, as at
-      // depth 1), and their weight.
-      std::vector<std::vector<std::size_t>> members(k1 - k0);
-      if (trimmed.empty()) {
-        for (std::size_t i = 0; i < n; ++i) members[node_of[i] - k0].push_back(i);
-      } else {
-        for (std::size_t i : trimmed) members[node_of[i] - k0].push_back(i);
-      }
-      std::vector<std::size_t> fitted;
-      std::vector<const std::vector<std::size_t>*> lists;
-      std::vector<double> masses(k1 - k0, 0.0);
-      for (std::size_t k = k0; k < k1; ++k) {
-        for (std::size_t i : members[k - k0]) masses[k - k0] += weights_[i];
-      }
-      if (sharded()) params_.shards->sum(masses.data(), masses.size());
-      for (std::size_t k = k0; k < k1; ++k) {
-        const double mass = masses[k - k0];
-        LutNode& node = weak.nodes[k];
-        if (k > 0 && mass <= 1e-12) {
-          // Nothing reaches it: a table of zeros (a leaf responds 0, an inner node sends everything left).
-          node.feature = weak.nodes[(k - 1) / 2].feature;
-          node.responses.assign(static_cast<std::size_t>(data_.scheme().count), inner ? -1.0 : 0.0);
-        } else {
-          fitted.push_back(k);
-          lists.push_back(k == 0 && trimmed.empty() ? nullptr : &members[k - k0]);
-        }
-      }
-      const std::vector<std::ptrdiff_t> parent_of_level = parent_index;
-      std::fill(parent_index.begin(), parent_index.end(), -1);  // set again below for this level's nodes
-      if (!fitted.empty()) {
-        // With subtraction, of two fitted children of a fitted parent the one with fewer samples is
-        // counted and the other is parent - sibling.
-        Subtraction sub;
-        sub.parent_sums = &parent_sums;
-        sub.parent.assign(fitted.size(), -1);
-        sub.sibling.assign(fitted.size(), -1);
-        bool any = false;
-        for (std::size_t j = 0; params_.histogram_subtraction && j + 1 < fitted.size(); ++j) {
-          const std::size_t k = fitted[j];
-          if (k % 2 == 0 || fitted[j + 1] != k + 1 || parent_of_level[(k - 1) / 2] < 0) continue;
-          const std::size_t bigger = members[k - k0].size() >= members[k + 1 - k0].size() ? j : j + 1;
-          sub.parent[bigger] = parent_of_level[(k - 1) / 2];
-          sub.sibling[bigger] = static_cast<std::ptrdiff_t>(bigger == j ? j + 1 : j);
-          any = true;
-        }
-        const bool keep = params_.histogram_subtraction && inner;
-        std::vector<TableFit> fits = sharded() ? best_tables_sharded(lists, y, inner)
-                                               : best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &level_sums : nullptr);
-        if (keep) {
-          for (std::size_t j = 0; j < fitted.size(); ++j) parent_index[fitted[j]] = static_cast<std::ptrdiff_t>(j);
-          parent_sums.swap(level_sums);
-        }
-        for (std::size_t j = 0; j < fitted.size(); ++j) {
-          LutNode& node = weak.nodes[fitted[j]];
-          node.feature = static_cast<int>(fits[j].feature);
-          node.responses = std::move(fits[j].responses);
-          if (!inner) z += fits[j].z;
-        }
-      }
-      if (inner) {
-        for (std::size_t i = 0; i < n; ++i) {
-          const std::size_t k = node_of[i];
-          const LutNode& node = weak.nodes[k];
-          node_of[i] = 2 * k + (node.responses[data_.at(static_cast<std::size_t>(node.feature), i)] > 0.0 ? 2 : 1);
-        }
-      }
-    }
-    // Leaves respond (shrunk); inner tables only route (+1 / -1).
-    for (std::size_t k = first_leaf; k < node_count; ++k) {
-      for (double& r : weak.nodes[k].responses) r *= nu;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      const LutNode& leaf = weak.nodes[node_of[i]];
-      response[i] = leaf.responses[data_.at(static_cast<std::size_t>(leaf.feature), i)];
-    }
-    weak.feature = weak.nodes[0].feature;
+    for (std::size_t i : trimmed) members[node_of[i] - k0].push_back(i);
   }
+  std::vector<std::size_t> fitted;
+  std::vector<const std::vector<std::size_t>*> lists;
+  std::vector<double> masses(k1 - k0, 0.0);
+  for (std::size_t k = k0; k < k1; ++k) {
+    for (std::size_t i : members[k - k0]) masses[k - k0] += weights_[i];
+  }
+  if (sharded()) params_.shards->sum(masses.data(), masses.size());
+  for (std::size_t k = k0; k < k1; ++k) {
+    const double mass = masses[k - k0];
+    LutNode& node = weak.nodes[k];
+    if (k > 0 && mass <= 1e-12) {
+      // Nothing reaches it: a table of zeros (a leaf responds 0, an inner node sends everything left).
+      node.feature = weak.nodes[(k - 1) / 2].feature;
+      node.responses.assign(static_cast<std::size_t>(data_.scheme().count), inner ? -1.0 : 0.0);
+    } else {
+      fitted.push_back(k);
+      lists.push_back(k == 0 && trimmed.empty() ? nullptr : &members[k - k0]);
+    }
+  }
+  const std::vector<std::ptrdiff_t> parent_of_level = sums.parent_index;
+  std::fill(sums.parent_index.begin(), sums.parent_index.end(), -1);  // set again below for this level's nodes
+  double z = 0.0;
+  if (!fitted.empty()) {
+    // With subtraction, of two fitted children of a fitted parent the one with fewer samples is
+    // counted and the other is parent - sibling.
+    Subtraction sub;
+    sub.parent_sums = &sums.parent_sums;
+    sub.parent.assign(fitted.size(), -1);
+    sub.sibling.assign(fitted.size(), -1);
+    bool any = false;
+    for (std::size_t j = 0; params_.histogram_subtraction && j + 1 < fitted.size(); ++j) {
+      const std::size_t k = fitted[j];
+      if (k % 2 == 0 || fitted[j + 1] != k + 1 || parent_of_level[(k - 1) / 2] < 0) continue;
+      const std::size_t bigger = members[k - k0].size() >= members[k + 1 - k0].size() ? j : j + 1;
+      sub.parent[bigger] = parent_of_level[(k - 1) / 2];
+      sub.sibling[bigger] = static_cast<std::ptrdiff_t>(bigger == j ? j + 1 : j);
+      any = true;
+    }
+    const bool keep = params_.histogram_subtraction && inner;
+    std::vector<TableFit> fits = sharded() ? best_tables_sharded(lists, y, inner)
+                                           : best_tables(lists, y, inner, any ? &sub : nullptr, keep ? &sums.level_sums : nullptr);
+    if (keep) {
+      for (std::size_t j = 0; j < fitted.size(); ++j) sums.parent_index[fitted[j]] = static_cast<std::ptrdiff_t>(j);
+      sums.parent_sums.swap(sums.level_sums);
+    }
+    for (std::size_t j = 0; j < fitted.size(); ++j) {
+      LutNode& node = weak.nodes[fitted[j]];
+      node.feature = static_cast<int>(fits[j].feature);
+      node.responses = std::move(fits[j].responses);
+      if (!inner) z += fits[j].z;
+    }
+  }
+  if (inner) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = node_of[i];
+      const LutNode& node = weak.nodes[k];
+      node_of[i] = 2 * k + (node.responses[data_.at(static_cast<std::size_t>(node.feature), i)] > 0.0 ? 2 : 1);
+    }
+  }
+  return z;
+}
 
-  // Reweighting: w_i exp(-y_i h(x_i)), then normalise.
+double RealAdaBoost::fit_tree(const std::vector<std::size_t>& trimmed, const std::vector<std::uint8_t>& y,
+                              WeakClassifier& weak, std::vector<double>& response) const {
+  // Grown level by level; node_of[i] is the node sample i has reached.
+  const std::size_t n = response.size();
+  const std::size_t node_count = (std::size_t{1} << params_.depth) - 1;
+  weak.kind = WeakClassifier::Kind::Tree;
+  weak.nodes.resize(node_count);
+  std::vector<std::size_t> node_of(n, 0);
+  const std::size_t first_leaf = node_count / 2;
+  // All the nodes of a level share one pass over the bins (node_histograms). Their members are fixed
+  // before the level: routing a node moves its samples to the next level only.
+  LevelSums sums;
+  sums.parent_index.assign(node_count, -1);
+  double z = 0.0;
+  for (std::size_t k0 = 0; k0 < node_count; k0 = 2 * k0 + 1) z += fit_tree_level(k0, trimmed, y, node_of, sums, weak);
+  // Leaves respond (shrunk); inner tables only route (+1 / -1).
+  for (std::size_t k = first_leaf; k < node_count; ++k) {
+    for (double& r : weak.nodes[k].responses) r *= params_.learning_rate;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const LutNode& leaf = weak.nodes[node_of[i]];
+    response[i] = leaf.responses[data_.at(static_cast<std::size_t>(leaf.feature), i)];
+  }
+  weak.feature = weak.nodes[0].feature;
+  return z;
+}
+
+double RealAdaBoost::reweight(const std::vector<double>& response) {
+  // w_i exp(-y_i h(x_i)), then normalised; the scores take the response too.
   double total = 0.0;
   std::size_t wrong = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < response.size(); ++i) {
     weights_[i] *= std::exp(labels_[i] == 1 ? -response[i] : response[i]);
     total += weights_[i];
     scores_[i] += response[i];
@@ -493,6 +497,20 @@ RealAdaBoostRound RealAdaBoost::next_round() {
     wrong_count = reduced[1];
   }
   for (double& w : weights_) w /= total;
+  return wrong_count;
+}
+
+RealAdaBoostRound RealAdaBoost::next_round() {
+  const std::size_t n = data_.samples();
+  const std::vector<std::size_t> trimmed =
+      params_.weight_trim > 0.0 ? trimmed_samples() : std::vector<std::size_t>{};
+  std::vector<std::uint8_t> y(n);
+  for (std::size_t i = 0; i < n; ++i) y[i] = static_cast<std::uint8_t>(labels_[i]);
+
+  WeakClassifier weak;
+  std::vector<double> response(n);  // the weak classifier's (shrunk) response per sample
+  const double z = params_.depth <= 1 ? fit_table(trimmed, y, weak, response) : fit_tree(trimmed, y, weak, response);
+  const double wrong_count = reweight(response);
   const int feature = weak.feature;
   weak_.push_back(std::move(weak));
 

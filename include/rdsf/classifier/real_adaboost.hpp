@@ -125,6 +125,26 @@ class RealAdaBoost {
   TableFit fit_feature(std::size_t feature, double z, const std::vector<std::size_t>* subset,
                        const std::vector<std::uint8_t>& y, bool split) const;
 
+  // The steps of a round: the weak classifier (a table at depth 1, else a tree grown level by level) with
+  // its shrunk response per sample and Z; then the reweighting, which returns the samples the strong
+  // classifier now gets wrong (over every rank).
+  double fit_table(const std::vector<std::size_t>& trimmed, const std::vector<std::uint8_t>& y, WeakClassifier& weak,
+                   std::vector<double>& response) const;
+  double fit_tree(const std::vector<std::size_t>& trimmed, const std::vector<std::uint8_t>& y, WeakClassifier& weak,
+                  std::vector<double>& response) const;
+  /// What histogram subtraction carries from one level of a tree to the next: the sums of the previous
+  /// level's fitted nodes ([node][feature][2 * bins]), this level's, and each node's index among them (-1:
+  /// not kept).
+  struct LevelSums {
+    std::vector<double> parent_sums, level_sums;
+    std::vector<std::ptrdiff_t> parent_index;
+  };
+  /// Fits the nodes k0 .. 2 k0 of a tree and routes the samples of inner nodes one level down (node_of);
+  /// returns the Z of its leaves (0 for an inner level).
+  double fit_tree_level(std::size_t k0, const std::vector<std::size_t>& trimmed, const std::vector<std::uint8_t>& y,
+                        std::vector<std::size_t>& node_of, LevelSums& sums, WeakClassifier& weak) const;
+  double reweight(const std::vector<double>& response);
+
   const BinnedMatrix& data_;
   std::vector<int> labels_;
   RealAdaBoostParams params_;
