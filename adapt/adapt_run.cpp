@@ -239,18 +239,26 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
 
 // Step 3: the room's samples with the base sets; the new model's path goes to the state.
 void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
-  std::vector<std::string> args{"--models-dir", o.models_dir, "--name", o.name, "--pos", paths.room};
+  // A set given K times puts each of its samples K times among the rows: weight K, each copy in the validation
+  // group of its frame. Without a base there is nothing to weigh against, and validation then splits samples,
+  // not frames (below), which would put copies on both sides: the room's sets once.
+  const bool no_base = o.base_pos.empty() && o.base_neg.empty();
+  const int copies = no_base ? 1 : o.room_weight;
+  std::vector<std::string> args{"--models-dir", o.models_dir, "--name", o.name, "--pos"};
+  args.insert(args.end(), static_cast<std::size_t>(copies), paths.room);
   args.insert(args.end(), o.base_pos.begin(), o.base_pos.end());
   args.push_back("--neg");
-  if (!state.get("negatives").empty()) args.push_back(paths.negatives);
-  args.push_back(paths.room);
+  for (int k = 0; k < copies; ++k) {
+    if (!state.get("negatives").empty()) args.push_back(paths.negatives);
+    args.push_back(paths.room);
+  }
   args.insert(args.end(), o.base_neg.begin(), o.base_neg.end());
   const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : 10;
   // One held-out fifth for validation and calibration (--folds 0): K fold models would cost K trainings.
   args.insert(args.end(), {"--rounds", std::to_string(rounds), "--folds", "0"});
   if (!o.retrain) args.insert(args.end(), {"--init", o.model});
   // Without a base, one room's few samples cannot be split by groups of frames: validation takes samples.
-  if (o.base_pos.empty() && o.base_neg.empty()) args.insert(args.end(), {"--group-frames", "0"});
+  if (no_base) args.insert(args.end(), {"--group-frames", "0"});
   std::string base;
   for (const std::string& s : o.base_pos) base += (base.empty() ? "" : " ") + s;
   for (const std::string& s : o.base_neg) base += (base.empty() ? "" : " ") + s;

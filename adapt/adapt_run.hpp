@@ -35,6 +35,10 @@ struct AdaptOptions {
   bool propagate_model = PropagationParams{}.from_model;  ///< with per track: the model's answers along tracks too
   bool retrain = false;        ///< train from nothing instead of continuing the model
   int rounds = 0;              ///< 0: 10 continuing (30 made the lab room worse), 100 retraining
+  /// The room's sample sets (its answers and its negatives) are given to rdsf-train this many times: each of
+  /// their samples starts boosting with this many times its weight against the base's (1: as many as a base
+  /// sample).
+  int room_weight = 1;
   std::vector<std::string> base_pos, base_neg;  ///< the synthetic base sample sets
   /// Without base sets: frames with people of the base rendered here (and half as many empty); 0: no base
   /// (the room's samples alone).

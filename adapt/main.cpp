@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
         ("per-candidate", po::bool_switch(&o.per_candidate), "ask every candidate, no propagation along tracks")
         ("retrain", po::bool_switch(&o.retrain), "train from nothing instead of continuing --model")
         ("rounds", po::value(&o.rounds)->default_value(o.rounds), "boosting rounds (0: 10 continuing, 100 retraining)")
+        ("room-weight", po::value(&o.room_weight)->default_value(o.room_weight),
+         "the room's samples (answers, negatives) weigh this many times a base sample in training")
         ("base-pos", po::value(&o.base_pos)->multitoken(), "the synthetic base's positive sample set(s)")
         ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)")
         ("base-frames", po::value(&o.base_frames)->default_value(o.base_frames),
@@ -61,6 +63,7 @@ int main(int argc, char** argv) {
     if (!o.eval.empty() && o.truth.empty()) throw rdsf::cli::UsageError("--eval needs --truth");
     if (!o.truth.empty() && !o.answers.empty()) throw rdsf::cli::UsageError("give --truth (the truth answers) or --answers, not both");
     if (o.rounds < 0) throw rdsf::cli::UsageError("--rounds must be 0 (the default) or more");
+    if (o.room_weight < 1) throw rdsf::cli::UsageError("--room-weight must be at least 1");
     if (o.base_frames < 0) throw rdsf::cli::UsageError("--base-frames must be 0 (no base) or more");
     return rdsf::run_adapt(o);
   });

@@ -20,6 +20,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/frame/depth_png.hpp"
@@ -146,7 +147,8 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
     EXPECT_EQ(std::filesystem::file_size(journal), journal_size) << b.command;
     EXPECT_EQ(test::file_text(dir / "out/adapt-state.tsv"), state) << b.command;
   }
-  r = test::run(common);
+  // The rerun trains with the room's samples weighing twice a base sample: its sets given twice.
+  r = test::run(common + " --room-weight 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("answers: done before"), std::string::npos) << r.err;
   EXPECT_EQ(std::filesystem::file_size(journal), journal_size);  // nothing asked again
@@ -162,6 +164,24 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   EXPECT_NE(text.find(dir / "out/base/negatives"), std::string::npos);
   EXPECT_GT(SampleSet::open_read(dir / "out/base/people").records().size(), 20u);
   EXPECT_GT(SampleSet::open_read(dir / "out/base/negatives").records().size(), 30u);
+  int room_as_pos = 0, base_as_pos = 0;
+  const BoostedModel adapted = BoostedModel::load(models / "room/v1.yml");
+  for (const SampleSetUse& use : adapted.training().sample_sets) {
+    if (use.role != "pos") continue;
+    room_as_pos += use.path == dir / "out/sets/room" ? 1 : 0;
+    base_as_pos += use.path == dir / "out/base/people" ? 1 : 0;
+  }
+  EXPECT_EQ(room_as_pos, 2);
+  EXPECT_EQ(base_as_pos, 1);
+}
+
+TEST(Adapt, RoomWeightBelowOneIsAUsageError) {
+  test::TempDir dir;
+  const test::RunResult r =
+      test::run(adapt() + " --source x --out " + test::quote(dir / "out") + " --name room --room-weight 0");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--room-weight must be at least 1"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(Adapt, AKilledRunResumes) {
