@@ -504,6 +504,105 @@ BoostedModel train_boosted_model(const cv::Mat1f& rows, const std::vector<int>& 
   return finish_model(std::move(boosted), observer, params, split, side, feature_of);
 }
 
+namespace {
+
+/// The folds' held-out rows, pooled in fold order: their labels, their final scores and their scores after
+/// each new round (of every rank's rows, in order).
+struct PooledOutOfFold {
+  std::vector<double> scores;
+  std::vector<int> labels;
+  std::vector<std::vector<double>> per_round;
+};
+
+/// Trains `inner` on the rows `train_rows_index` (of every rank; the ones held here are taken from `rows`).
+BoostedModel train_fold(const cv::Mat1f& rows, const std::vector<int>& labels, const TrainingRowInfo& info,
+                        const std::vector<int>& train_rows_index, const BoostTrainingParams& inner, std::size_t f,
+                        std::size_t folds, const TrainingProgressFn& fold_progress) {
+  // The fold's rows held here (all of them with one process).
+  TrainingRowInfo fold_info;
+  fold_info.owners = info.owners.subset(train_rows_index);
+  std::vector<int> fold_local;
+  for (int i : train_rows_index) {
+    const long l = info.owners.local(static_cast<std::size_t>(i));
+    if (l >= 0) fold_local.push_back(static_cast<int>(l));
+  }
+  cv::Mat1f fold_rows(static_cast<int>(fold_local.size()), rows.cols);
+  std::vector<int> fold_labels;
+  for (std::size_t k = 0; k < fold_local.size(); ++k) rows.row(fold_local[k]).copyTo(fold_rows.row(static_cast<int>(k)));
+  for (int i : train_rows_index) fold_labels.push_back(labels[static_cast<std::size_t>(i)]);
+  const auto fold_pos = std::count(fold_labels.begin(), fold_labels.end(), 1);
+  // A held-out fold may hold one class only: the pooled scores need both (checked below).
+  if (fold_pos == 0 || fold_pos == static_cast<long>(fold_labels.size())) {
+    throw Error("group fold " + std::to_string(f + 1) + " of " + std::to_string(folds) +
+                " leaves a class empty: give more recordings or clips, or fewer folds");
+  }
+  return train_boosted_model(fold_rows, fold_labels, inner, fold_progress, nullptr, nullptr, fold_info);
+}
+
+/// Appends the held-out rows `held` of a fold's `model` to `pooled`: their labels, and their scores after
+/// each new round and at the end.
+void pool_held_out(const BoostedModel& model, const cv::Mat1f& rows, const std::vector<int>& labels,
+                   const TrainingRowInfo& info, const std::vector<int>& held, const BoostTrainingParams& params,
+                   PooledOutOfFold& pooled) {
+  // The model names the spec's features; the rows hold the pool's columns (when there is a pool).
+  const std::vector<WeakClassifier> weak_on_rows = on_row_columns(model.weak_classifiers(), params);
+  // With continued training the fold's model starts with params.init: the rounds are the new ones.
+  const std::size_t first = params.init.size();
+  const std::size_t rounds = weak_on_rows.size() - first;
+  if (pooled.per_round.size() < rounds) pooled.per_round.resize(rounds);
+  // Scores of the held-out rows held here after each round, then of every held-out row in order.
+  std::vector<std::vector<double>> local_round(rounds);
+  std::vector<double> local_pooled;
+  std::vector<std::size_t> held_index;
+  for (int i : held) {
+    held_index.push_back(static_cast<std::size_t>(i));
+    pooled.labels.push_back(labels[static_cast<std::size_t>(i)]);
+    const long l = info.owners.local(static_cast<std::size_t>(i));
+    if (l < 0) continue;
+    const float* row = rows[static_cast<int>(l)];
+    double h = 0.0;
+    for (std::size_t r = 0; r < first; ++r) h += weak_on_rows[r].respond_row(row, model.bins());
+    for (std::size_t r = 0; r < rounds; ++r) {
+      h += weak_on_rows[first + r].respond_row(row, model.bins());
+      local_round[r].push_back(h);
+    }
+    local_pooled.push_back(h);
+  }
+  for (std::size_t r = 0; r < rounds; ++r) {
+    const std::vector<double> whole = info.owners.whole(local_round[r], held_index);
+    pooled.per_round[r].insert(pooled.per_round[r].end(), whole.begin(), whole.end());
+  }
+  const std::vector<double> whole = info.owners.whole(local_pooled, held_index);
+  pooled.scores.insert(pooled.scores.end(), whole.begin(), whole.end());
+}
+
+/// The final model's validation figures: the folds' pooled out-of-fold figures.
+void record_pooled_validation(BoostedModel& model, const PooledOutOfFold& pooled, const BoostTrainingParams& params,
+                              std::size_t folds, std::size_t group_count) {
+  TrainingRecord& record = model.training();
+  record.parameters = parameter_record(params);
+  const std::string source = std::to_string(folds) + " folds of whole groups (" + std::to_string(group_count) +
+                             " groups, seed " + std::to_string(params.seed) +
+                             "): figures of the folds' models on their held-out groups, pooled";
+  record.validation = ValidationFigures{};
+  record.validation.source = source;
+  record.validation.positives = static_cast<std::size_t>(std::count(pooled.labels.begin(), pooled.labels.end(), 1));
+  record.validation.negatives = pooled.labels.size() - record.validation.positives;
+  for (std::size_t r = 0; r < pooled.per_round.size(); ++r) {
+    const int round = static_cast<int>(r + 1);
+    if (round % params.report_every != 0 && r + 1 != pooled.per_round.size()) continue;
+    RoundFigures f;
+    f.round = round;
+    f.feature = model.weak_classifiers()[params.init.size() + r].feature;
+    f.validation = summarise_roc(pooled.per_round[r], pooled.labels);
+    f.roc = roc_at_far_levels(roc_curve(pooled.per_round[r], pooled.labels));
+    record.validation.rounds.push_back(f);
+  }
+  record_validation(model, record.validation, pooled.scores, pooled.labels, params.calibration, source);
+}
+
+}  // namespace
+
 BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int>& labels,
                                     const BoostTrainingParams& params, const TrainingProgressFn& progress,
                                     const TrainingRowInfo& info) {
@@ -525,9 +624,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
   inner.validation_fraction = 0.0;
   inner.early_stopping = 0;
   inner.calibration = "none";
-  std::vector<double> pooled_scores;
-  std::vector<int> pooled_labels;
-  std::vector<std::vector<double>> per_round;  // pooled out-of-fold scores after each reported round
+  PooledOutOfFold pooled;
   for (std::size_t f = 0; f < folds; ++f) {
     std::vector<int> train_rows_index, held;
     for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -537,24 +634,6 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
         held.push_back(static_cast<int>(i));
       }
     }
-    // The fold's rows held here (all of them with one process).
-    TrainingRowInfo fold_info;
-    fold_info.owners = info.owners.subset(train_rows_index);
-    std::vector<int> fold_local;
-    for (int i : train_rows_index) {
-      const long l = info.owners.local(static_cast<std::size_t>(i));
-      if (l >= 0) fold_local.push_back(static_cast<int>(l));
-    }
-    cv::Mat1f fold_rows(static_cast<int>(fold_local.size()), rows.cols);
-    std::vector<int> fold_labels;
-    for (std::size_t k = 0; k < fold_local.size(); ++k) rows.row(fold_local[k]).copyTo(fold_rows.row(static_cast<int>(k)));
-    for (int i : train_rows_index) fold_labels.push_back(labels[static_cast<std::size_t>(i)]);
-    const auto fold_pos = std::count(fold_labels.begin(), fold_labels.end(), 1);
-    // A held-out fold may hold one class only: the pooled scores need both (checked below).
-    if (fold_pos == 0 || fold_pos == static_cast<long>(fold_labels.size())) {
-      throw Error("group fold " + std::to_string(f + 1) + " of " + std::to_string(folds) +
-                  " leaves a class empty: give more recordings or clips, or fewer folds");
-    }
     const TrainingProgressFn fold_progress = [&](const TrainingProgress& p) {
       if (!progress) return;
       TrainingProgress q = p;
@@ -563,40 +642,11 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
       q.left_s = p.left_s + p.round_s * p.rounds * static_cast<double>(folds - f);
       progress(q);
     };
-    const BoostedModel model = train_boosted_model(fold_rows, fold_labels, inner, fold_progress, nullptr, nullptr, fold_info);
-    // The model names the spec's features; the rows hold the pool's columns (when there is a pool).
-    const std::vector<WeakClassifier> weak_on_rows = on_row_columns(model.weak_classifiers(), params);
-    // With continued training the fold's model starts with params.init: the rounds are the new ones.
-    const std::size_t first = params.init.size();
-    const std::size_t rounds = weak_on_rows.size() - first;
-    if (per_round.size() < rounds) per_round.resize(rounds);
-    // Scores of the held-out rows held here after each round, then of every held-out row in order.
-    std::vector<std::vector<double>> local_round(rounds);
-    std::vector<double> local_pooled;
-    std::vector<std::size_t> held_index;
-    for (int i : held) {
-      held_index.push_back(static_cast<std::size_t>(i));
-      pooled_labels.push_back(labels[static_cast<std::size_t>(i)]);
-      const long l = info.owners.local(static_cast<std::size_t>(i));
-      if (l < 0) continue;
-      const float* row = rows[static_cast<int>(l)];
-      double h = 0.0;
-      for (std::size_t r = 0; r < first; ++r) h += weak_on_rows[r].respond_row(row, model.bins());
-      for (std::size_t r = 0; r < rounds; ++r) {
-        h += weak_on_rows[first + r].respond_row(row, model.bins());
-        local_round[r].push_back(h);
-      }
-      local_pooled.push_back(h);
-    }
-    for (std::size_t r = 0; r < rounds; ++r) {
-      const std::vector<double> whole = info.owners.whole(local_round[r], held_index);
-      per_round[r].insert(per_round[r].end(), whole.begin(), whole.end());
-    }
-    const std::vector<double> pooled = info.owners.whole(local_pooled, held_index);
-    pooled_scores.insert(pooled_scores.end(), pooled.begin(), pooled.end());
+    const BoostedModel model = train_fold(rows, labels, info, train_rows_index, inner, f, folds, fold_progress);
+    pool_held_out(model, rows, labels, info, held, params, pooled);
   }
-  const auto pooled_pos = std::count(pooled_labels.begin(), pooled_labels.end(), 1);
-  if (pooled_pos == 0 || pooled_pos == static_cast<long>(pooled_labels.size())) {
+  const auto pooled_pos = std::count(pooled.labels.begin(), pooled.labels.end(), 1);
+  if (pooled_pos == 0 || pooled_pos == static_cast<long>(pooled.labels.size())) {
     throw Error("group folds: the held-out samples lack a class");
   }
   // The final model on every row; its validation figures are the folds' pooled out-of-fold figures.
@@ -610,27 +660,7 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
   TrainingRowInfo final_info;
   final_info.owners = info.owners;
   BoostedModel model = train_boosted_model(rows, labels, inner, final_progress, nullptr, nullptr, final_info);
-  TrainingRecord& record = model.training();
-  record.parameters = parameter_record(params);
-  const std::string source = std::to_string(folds) + " folds of whole groups (" + std::to_string(groups.count) +
-                             " groups, seed " + std::to_string(params.seed) +
-                             "): figures of the folds' models on their held-out groups, pooled";
-  record.validation = ValidationFigures{};
-  record.validation.source = source;
-  record.validation.positives = static_cast<std::size_t>(std::count(pooled_labels.begin(), pooled_labels.end(), 1));
-  record.validation.negatives = pooled_labels.size() - record.validation.positives;
-  for (std::size_t r = 0; r < per_round.size(); ++r) {
-    const int round = static_cast<int>(r + 1);
-    if (round % params.report_every != 0 && r + 1 != per_round.size()) continue;
-    const RocSummary s = summarise_roc(per_round[r], pooled_labels);
-    RoundFigures f;
-    f.round = round;
-    f.feature = model.weak_classifiers()[params.init.size() + r].feature;
-    f.validation = s;
-    f.roc = roc_at_far_levels(roc_curve(per_round[r], pooled_labels));
-    record.validation.rounds.push_back(f);
-  }
-  record_validation(model, record.validation, pooled_scores, pooled_labels, params.calibration, source);
+  record_pooled_validation(model, pooled, params, folds, groups.count);
   return model;
 }
 
