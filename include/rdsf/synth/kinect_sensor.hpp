@@ -85,6 +85,7 @@ class KinectSensor {
   bool in_band(int x, int y) const;
 
  private:
+  struct PixelModel;  // measure()'s model of one pixel's reading (kinect_sensor.cpp)
   CameraModel camera_;
   KinectSensorParams params_;
   int band_left_, band_right_, band_top_, band_bottom_;
