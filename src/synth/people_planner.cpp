@@ -157,6 +157,138 @@ bool plan_companion(Rng& rng, const Room& room, const PeopleParams& params, cons
   return true;
 }
 
+// A person who walks in straight lines between reachable spots (mostly along the room) and stands in
+// between (turning, bending, the arms' activity): plan_people's default kind. One pose per frame, in order.
+class Walker {
+ public:
+  Walker(Rng& rng, const Room& room, const PeopleParams& params, const CameraPose& camera, const PersonBody& body,
+         double x, double z)
+      : rng_(rng), room_(room), params_(params), camera_(camera), stride_(params.stride_m * body.height_m / 1.75),
+        x_(x), z_(z), target_x_(x), target_z_(z) {
+    // the draws in this order: the yaw, the gait's phase, the speed
+    yaw_ = standing_yaw(rng_, rng_.uniform(-pi, pi));
+    target_yaw_ = yaw_;
+    phase_ = rng_.uniform(0, 2 * pi);
+    speed_ = rng_.uniform(params_.speed_min_mps, params_.speed_max_mps);
+  }
+
+  void next_pose(PersonPose& pose) {
+    if (!walking_ && stand_frames_ <= 0) choose_next();
+    const double dt = params_.frame_interval_s;
+    if (walking_) {
+      walk(dt);
+    } else {
+      --stand_frames_;
+      gait_ = std::max(0.0, gait_ - 3.0 * dt);
+      phase_ = std::fmod(phase_ + 2 * pi * speed_ * dt * gait_ / stride_, 2 * pi);
+      yaw_ = wrap_angle(yaw_ + std::clamp(wrap_angle(target_yaw_ - yaw_), -2.0 * dt, 2.0 * dt));
+    }
+    pose.position = {x_, 0, z_};
+    pose.yaw_rad = yaw_;
+    pose.gait_phase = phase_;
+    pose.gait_amount = gait_;
+    const bool quiet = gait_ <= 0.5;
+    pose.arms = !quiet && arms_ != ArmPose::holding && arms_ != ArmPose::pockets ? ArmPose::hanging : arms_;
+    if (!walking_ && bending_ && gait_ < 0.1) {
+      // lean down and come back up over about 8 frames
+      const int done = stand_total_ - stand_frames_;
+      const double ramp = std::clamp(std::min(done, stand_frames_ + 1) / 8.0, 0.0, 1.0);
+      pose.posture = Posture::bending;
+      pose.bend_rad = bend_ * ramp;
+    }
+    pose.present = true;
+  }
+
+ private:
+  // What to do next: usually walk somewhere reachable in a straight line, else stand a while.
+  void choose_next() {
+    double tx = 0, tz = 0;
+    if (rng_.chance(0.75) && reachable_target(tx, tz)) {
+      walking_ = true;
+      bending_ = false;
+      target_x_ = tx;
+      target_z_ = tz;
+      speed_ = rng_.uniform(params_.speed_min_mps, params_.speed_max_mps);
+      if (params_.poses) {
+        const double pick = rng_.uniform();
+        arms_ = pick < 0.8 ? ArmPose::hanging : pick < 0.9 ? ArmPose::holding : pick < 0.95 ? ArmPose::phone : ArmPose::pockets;
+      } else {
+        arms_ = rng_.chance(0.85) ? ArmPose::hanging : ArmPose::holding;
+      }
+    } else {
+      stand_frames_ = rng_.integer(20, 90);
+      stand_total_ = stand_frames_;
+      target_yaw_ = standing_yaw(rng_, yaw_);
+      standing_activity(rng_, params_, arms_, bending_, bend_);
+    }
+  }
+
+  // People mostly walk along the room, towards or away from the camera: of a few reachable spots, usually
+  // the one straightest along Z. False when none of 20 draws is reachable.
+  bool reachable_target(double& tx, double& tz) {
+    const bool along = rng_.chance(params_.along_room_share);
+    double best_score = -1;
+    bool found = false;
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      double cx = 0, cz = 0;
+      if (draw_spot(rng_, room_, params_, camera_, cx, cz) && std::hypot(cx - x_, cz - z_) > 1.0 &&
+          clear_line(room_, params_, x_, z_, cx, cz)) {
+        const double score = along ? std::abs(cz - z_) / std::hypot(cx - x_, cz - z_) : 1.0;
+        if (score > best_score) {
+          best_score = score;
+          tx = cx;
+          tz = cz;
+          found = true;
+        }
+        if (!along || attempt >= 8) break;
+      }
+    }
+    return found;
+  }
+
+  // One frame's step towards the target: turning at most 3 rad/s, slowing down while turning sharply (so
+  // paths stay smooth); blocked, or arrived within 25 cm, the person stands.
+  void walk(double dt) {
+    const double dx = target_x_ - x_, dz = target_z_ - z_;
+    const double remaining = std::hypot(dx, dz);
+    const double wanted = std::atan2(dx, dz);
+    const double turn = std::clamp(wrap_angle(wanted - yaw_), -3.0 * dt, 3.0 * dt);
+    yaw_ = wrap_angle(yaw_ + turn);
+    gait_ = std::min(1.0, gait_ + 3.0 * dt);
+    const double step = speed_ * dt * gait_ * std::max(0.2, std::cos(wrap_angle(wanted - yaw_)));
+    const double nx = x_ + step * std::sin(yaw_), nz = z_ + step * std::cos(yaw_);
+    if (free_spot(room_, params_, nx, nz)) {
+      x_ = nx;
+      z_ = nz;
+    } else {
+      walking_ = false;
+      stand_frames_ = rng_.integer(5, 30);
+      stand_total_ = stand_frames_;
+    }
+    phase_ = std::fmod(phase_ + 2 * pi * step / stride_, 2 * pi);
+    if (remaining < 0.25) {
+      walking_ = false;
+      stand_frames_ = rng_.integer(0, 60);
+      stand_total_ = stand_frames_;
+      target_yaw_ = standing_yaw(rng_, yaw_);
+    }
+  }
+
+  Rng& rng_;
+  const Room& room_;
+  const PeopleParams& params_;
+  const CameraPose& camera_;
+  const double stride_;  // m, scaled with the body's height
+  double x_, z_;
+  double target_x_, target_z_;
+  double yaw_ = 0, target_yaw_ = 0, phase_ = 0, gait_ = 0, speed_ = 0;
+  ArmPose arms_ = ArmPose::hanging;
+  bool bending_ = false;
+  double bend_ = 0;
+  int stand_total_ = 0, stand_frames_ = 0;
+  bool walking_ = false;
+};
+
 }  // namespace
 
 std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int frames, int first_track,
@@ -191,110 +323,8 @@ std::vector<PersonTrack> plan_people(Rng& rng, const Room& room, int count, int 
       tracks.push_back(track);  // no room for this person: never present
       continue;
     }
-    const double stride = params.stride_m * track.body.height_m / 1.75;
-    double yaw = standing_yaw(rng, rng.uniform(-pi, pi));
-    double phase = rng.uniform(0, 2 * pi);
-    double gait = 0;
-    double speed = rng.uniform(params.speed_min_mps, params.speed_max_mps);
-    ArmPose arms = ArmPose::hanging;
-    bool bending = false;
-    double bend = 0;
-    int stand_total = 0;
-    bool walking = false;
-    double target_x = x, target_z = z, target_yaw = yaw;
-    int stand_frames = 0;
-    for (int f = 0; f < frames; ++f) {
-      if (!walking && stand_frames <= 0) {
-        // choose what to do next: usually walk somewhere reachable in a straight line
-        double tx = 0, tz = 0;
-        bool found = false;
-        if (rng.chance(0.75)) {
-          // people mostly walk along the room, towards or away from the camera: of a few reachable spots,
-          // usually take the one straightest along Z
-          const bool along = rng.chance(params.along_room_share);
-          double best_score = -1;
-          for (int attempt = 0; attempt < 20; ++attempt) {
-            double cx = 0, cz = 0;
-            if (draw_spot(rng, room, params, camera, cx, cz) && std::hypot(cx - x, cz - z) > 1.0 &&
-                clear_line(room, params, x, z, cx, cz)) {
-              const double score = along ? std::abs(cz - z) / std::hypot(cx - x, cz - z) : 1.0;
-              if (score > best_score) {
-                best_score = score;
-                tx = cx;
-                tz = cz;
-                found = true;
-              }
-              if (!along || attempt >= 8) break;
-            }
-          }
-        }
-        if (found) {
-          walking = true;
-          bending = false;
-          target_x = tx;
-          target_z = tz;
-          speed = rng.uniform(params.speed_min_mps, params.speed_max_mps);
-          if (params.poses) {
-            const double pick = rng.uniform();
-            arms = pick < 0.8 ? ArmPose::hanging : pick < 0.9 ? ArmPose::holding : pick < 0.95 ? ArmPose::phone : ArmPose::pockets;
-          } else {
-            arms = rng.chance(0.85) ? ArmPose::hanging : ArmPose::holding;
-          }
-        } else {
-          stand_frames = rng.integer(20, 90);
-          stand_total = stand_frames;
-          target_yaw = standing_yaw(rng, yaw);
-          standing_activity(rng, params, arms, bending, bend);
-        }
-      }
-      const double dt = params.frame_interval_s;
-      if (walking) {
-        const double dx = target_x - x, dz = target_z - z;
-        const double remaining = std::hypot(dx, dz);
-        const double wanted = std::atan2(dx, dz);
-        const double turn = std::clamp(wrap_angle(wanted - yaw), -3.0 * dt, 3.0 * dt);
-        yaw = wrap_angle(yaw + turn);
-        gait = std::min(1.0, gait + 3.0 * dt);
-        // slow down while turning sharply, so paths stay smooth
-        const double step = speed * dt * gait * std::max(0.2, std::cos(wrap_angle(wanted - yaw)));
-        const double nx = x + step * std::sin(yaw), nz = z + step * std::cos(yaw);
-        if (free_spot(room, params, nx, nz)) {
-          x = nx;
-          z = nz;
-        } else {
-          walking = false;
-          stand_frames = rng.integer(5, 30);
-          stand_total = stand_frames;
-        }
-        phase = std::fmod(phase + 2 * pi * step / stride, 2 * pi);
-        if (remaining < 0.25) {
-          walking = false;
-          stand_frames = rng.integer(0, 60);
-          stand_total = stand_frames;
-          target_yaw = standing_yaw(rng, yaw);
-        }
-      } else {
-        --stand_frames;
-        gait = std::max(0.0, gait - 3.0 * dt);
-        phase = std::fmod(phase + 2 * pi * speed * dt * gait / stride, 2 * pi);
-        yaw = wrap_angle(yaw + std::clamp(wrap_angle(target_yaw - yaw), -2.0 * dt, 2.0 * dt));
-      }
-      PersonPose& pose = track.poses[static_cast<std::size_t>(f)];
-      pose.position = {x, 0, z};
-      pose.yaw_rad = yaw;
-      pose.gait_phase = phase;
-      pose.gait_amount = gait;
-      const bool quiet = gait <= 0.5;
-      pose.arms = !quiet && arms != ArmPose::holding && arms != ArmPose::pockets ? ArmPose::hanging : arms;
-      if (!walking && bending && gait < 0.1) {
-        // lean down and come back up over about 8 frames
-        const int done = stand_total - stand_frames;
-        const double ramp = std::clamp(std::min(done, stand_frames + 1) / 8.0, 0.0, 1.0);
-        pose.posture = Posture::bending;
-        pose.bend_rad = bend * ramp;
-      }
-      pose.present = true;
-    }
+    Walker walker(rng, room, params, camera, track.body, x, z);
+    for (PersonPose& pose : track.poses) walker.next_pose(pose);
     tracks.push_back(std::move(track));
   }
   return tracks;
