@@ -406,19 +406,24 @@ void add_service_robot(Rng& rng, Room& room) {
   }
 }
 
-}  // namespace
+// The kind of room: an ordinary room, a corridor, an open-plan office or hall.
+struct RoomKind {
+  bool corridor = false, open_plan = false;
+  /// Furniture and clutter scale with the floor's area.
+  double area_factor() const { return open_plan ? 1.6 : corridor ? 0.6 : 1.0; }
+};
 
-Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
-  Room room;
-  // the kind of room: an ordinary room, a corridor, an open-plan office or hall
+// The room's kind, walls, ceiling, colours and surfaces' dropout.
+RoomKind draw_shell(Rng& rng, const RoomParams& params, Room& room) {
   const double kind = params.room_kinds ? rng.uniform() : 1.0;
-  const bool corridor = kind < params.corridor_share;
-  const bool open_plan = !corridor && kind < params.corridor_share + params.open_plan_share;
-  if (corridor) {
+  RoomKind k;
+  k.corridor = kind < params.corridor_share;
+  k.open_plan = !k.corridor && kind < params.corridor_share + params.open_plan_share;
+  if (k.corridor) {
     room.front_z = rng.uniform(6.0, params.deep_front_max_m);
     room.left_x = -rng.uniform(0.8, 1.5);
     room.right_x = rng.uniform(0.8, 1.5);
-  } else if (open_plan) {
+  } else if (k.open_plan) {
     room.front_z = rng.uniform(5.5, params.deep_front_max_m);
     room.left_x = -rng.uniform(2.5, 5.0);
     room.right_x = rng.uniform(2.5, 5.0);
@@ -435,19 +440,28 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
   room.ceiling_colour = grey(rng, 200, 250);
   room.floor_dropout = static_cast<float>(rng.uniform(0.0, params.floor_dropout_max));
   room.wall_dropout = static_cast<float>(rng.uniform(0.0, params.wall_dropout_max));
-  camera = CameraPose{};
+  return k;
+}
+
+// The camera's height, pitch, roll, yaw and sideways offset in the room.
+CameraPose draw_camera(Rng& rng, const RoomParams& params, const Room& room, const RoomKind& kind) {
+  CameraPose camera;
   camera.height_m = rng.uniform(params.camera_height_min_m, params.camera_height_max_m);
   camera.pitch_rad = rng.uniform(params.pitch_min_deg, params.pitch_max_deg) * pi / 180.0;
   // (each drawn only when asked for, so that --classic draws the same numbers as the generator before)
   if (params.roll_max_deg > 0) camera.roll_rad = rng.uniform(-params.roll_max_deg, params.roll_max_deg) * pi / 180.0;
   if (params.yaw_max_deg > 0) {
-    camera.yaw_rad = rng.uniform(-params.yaw_max_deg, params.yaw_max_deg) * pi / 180.0 * (corridor ? 0.3 : 1.0);
+    camera.yaw_rad = rng.uniform(-params.yaw_max_deg, params.yaw_max_deg) * pi / 180.0 * (kind.corridor ? 0.3 : 1.0);
   }
   if (params.camera_offset_max_m > 0) {
     const double x_room = std::max(0.0, std::min(-room.left_x, room.right_x) - 0.5);
     camera.x_m = rng.uniform(-1.0, 1.0) * std::min(params.camera_offset_max_m, x_room);
   }
+  return camera;
+}
 
+// Up to two windows in the side and front walls.
+void add_windows(Rng& rng, Room& room) {
   const int windows = rng.integer(0, 2);
   for (int k = 0; k < windows; ++k) {
     WallWindow w;
@@ -462,16 +476,16 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
     w.top_m = std::min(room.ceiling_y - 0.2, w.bottom_m + rng.uniform(0.9, 1.5));
     room.windows.push_back(w);
   }
-  // keep the camera's own spot (and its way forward) free of clutter
-  const bool camera_spot = params.clutter || params.moving_share > 0;
-  if (camera_spot) room.footprints.push_back({camera.x_m, 0.4, 0.4, 0.9, 0.0});
+}
 
-  const double area_factor = open_plan ? 1.6 : corridor ? 0.6 : 1.0;
-  const int pieces = static_cast<int>(std::lround(rng.integer(params.furniture_min, params.furniture_max) * area_factor));
+// Tables and desks, chairs, shelves and cupboards, boxes, coat stands, robots and cabinets.
+void add_furniture(Rng& rng, const RoomParams& params, const RoomKind& kind, Room& room) {
+  const int pieces =
+      static_cast<int>(std::lround(rng.integer(params.furniture_min, params.furniture_max) * kind.area_factor()));
   for (int k = 0; k < pieces; ++k) {
     const double pick = rng.uniform();
     if (pick < 0.18) {
-      if (params.clutter && (open_plan || rng.chance(0.5))) add_desk(rng, room); else add_table(rng, room);
+      if (params.clutter && (kind.open_plan || rng.chance(0.5))) add_desk(rng, room); else add_table(rng, room);
     } else if (pick < 0.40) {
       add_chair(rng, room, params.clutter);
     } else if (pick < 0.55) {
@@ -486,30 +500,45 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
       add_cabinet(rng, room);
     }
   }
-  if (params.clutter) {
-    // more of what labs and offices hold, person-sized and not
-    const int extra = static_cast<int>(std::lround(rng.integer(params.clutter_min, params.clutter_max) * area_factor));
-    for (int k = 0; k < extra; ++k) {
-      const double pick = rng.uniform();
-      if (pick < 0.22) {
-        add_plant(rng, room);
-      } else if (pick < 0.34) {
-        add_lamp(rng, room);
-      } else if (pick < 0.46) {
-        add_door(rng, room);
-      } else if (pick < 0.54) {
-        add_stacked_chairs(rng, room);
-      } else if (pick < 0.66) {
-        add_coat_rack(rng, room);
-      } else if (pick < 0.76) {
-        add_panel(rng, room);
-      } else if (pick < 0.88) {
-        add_small_thing(rng, room);
-      } else {
-        add_service_robot(rng, room);
-      }
+}
+
+// More of what labs and offices hold, person-sized and not (params.clutter).
+void add_clutter(Rng& rng, const RoomParams& params, const RoomKind& kind, Room& room) {
+  const int extra = static_cast<int>(std::lround(rng.integer(params.clutter_min, params.clutter_max) * kind.area_factor()));
+  for (int k = 0; k < extra; ++k) {
+    const double pick = rng.uniform();
+    if (pick < 0.22) {
+      add_plant(rng, room);
+    } else if (pick < 0.34) {
+      add_lamp(rng, room);
+    } else if (pick < 0.46) {
+      add_door(rng, room);
+    } else if (pick < 0.54) {
+      add_stacked_chairs(rng, room);
+    } else if (pick < 0.66) {
+      add_coat_rack(rng, room);
+    } else if (pick < 0.76) {
+      add_panel(rng, room);
+    } else if (pick < 0.88) {
+      add_small_thing(rng, room);
+    } else {
+      add_service_robot(rng, room);
     }
   }
+}
+
+}  // namespace
+
+Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
+  Room room;
+  const RoomKind kind = draw_shell(rng, params, room);
+  camera = draw_camera(rng, params, room, kind);
+  add_windows(rng, room);
+  // keep the camera's own spot (and its way forward) free of clutter
+  const bool camera_spot = params.clutter || params.moving_share > 0;
+  if (camera_spot) room.footprints.push_back({camera.x_m, 0.4, 0.4, 0.9, 0.0});
+  add_furniture(rng, params, kind, room);
+  if (params.clutter) add_clutter(rng, params, kind, room);
   if (camera_spot) room.footprints.erase(room.footprints.begin());  // the camera's spot: people may walk there
   // materials: dark, glossy or finely structured surfaces lose some readings in patches
   for (Shape& shape : room.furniture) {
