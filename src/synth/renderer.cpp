@@ -131,90 +131,109 @@ CameraShape Renderer::to_camera(const CameraAxes& axes, const Shape& shape) cons
   return s;
 }
 
-void Renderer::render(const Scene& scene, RenderBuffers& out) const {
-  const int width = camera_.width_px, height = camera_.height_px;
-  out.depth_m.create(height, width);
-  out.surface.create(height, width);
-  out.incidence.create(height, width);
-  const Room& room = scene.room;
-  const CameraAxes axes(scene.camera);
-  const Vec3 o = axes.origin;
+namespace {
 
-  // 1. the room: the ray leaves the (convex) room box through the nearest plane ahead of it; the ray of
-  // pixel (u, v) has the world direction right * ray_x + down * ray_y + forward (camera z = 1, so the
-  // parameter t of the hit is the camera z)
-  for (int v = 0; v < height; ++v) {
+struct RoomHit {
+  double t = 1e9;       // camera z of the hit
+  int surface = surface_floor;
+  double cosine = 1;    // of the angle between the ray and the surface's normal
+};
+
+// Where the ray of world direction (wx, wy, wz) from `o` leaves the (convex) room box: through the nearest
+// plane ahead of it; a window of the wall it hits is a surface of its own.
+RoomHit room_hit(const Room& room, const Vec3& o, double wx, double wy, double wz) {
+  double t = 1e9;
+  int s = surface_floor;
+  if (wy < 0) {
+    t = -o.y / wy;
+  } else if (wy > 0) {
+    t = (room.ceiling_y - o.y) / wy;
+    s = surface_ceiling;
+  }
+  if (wz > 0) {
+    const double tz = (room.front_z - o.z) / wz;
+    if (tz < t) {
+      t = tz;
+      s = surface_front;
+    }
+  } else if (wz < 0) {
+    const double tz = (room.back_z - o.z) / wz;
+    if (tz < t) {
+      t = tz;
+      s = surface_back;
+    }
+  }
+  if (wx < 0) {
+    const double tx = (room.left_x - o.x) / wx;
+    if (tx < t) {
+      t = tx;
+      s = surface_left;
+    }
+  } else if (wx > 0) {
+    const double tx = (room.right_x - o.x) / wx;
+    if (tx < t) {
+      t = tx;
+      s = surface_right;
+    }
+  }
+  const double norm = std::sqrt(wx * wx + wy * wy + wz * wz);
+  double cosine = 1;
+  if (s == surface_floor || s == surface_ceiling) {
+    cosine = std::abs(wy) / norm;
+  } else if (s == surface_left || s == surface_right) {
+    cosine = std::abs(wx) / norm;
+  } else {
+    cosine = std::abs(wz) / norm;
+  }
+  if (!room.windows.empty() && (s == surface_left || s == surface_right || s == surface_front)) {
+    const double hx = o.x + t * wx, hy = o.y + t * wy, hz = o.z + t * wz;
+    for (const WallWindow& w : room.windows) {
+      if (w.wall != s) continue;
+      const double along = s == surface_front ? hx : hz;
+      if (along >= w.from_m && along <= w.to_m && hy >= w.bottom_m && hy <= w.top_m) s = surface_window;
+    }
+  }
+  return {t, s, cosine};
+}
+
+}  // namespace
+
+void Renderer::render(const Scene& scene, RenderBuffers& out) const {
+  out.depth_m.create(camera_.height_px, camera_.width_px);
+  out.surface.create(camera_.height_px, camera_.width_px);
+  out.incidence.create(camera_.height_px, camera_.width_px);
+  const CameraAxes axes(scene.camera);
+  render_room(axes, scene.room, out);
+  render_shapes(axes, scene.shapes, out);
+}
+
+void Renderer::render_room(const CameraAxes& axes, const Room& room, RenderBuffers& out) const {
+  // The ray of pixel (u, v) has the world direction right * ray_x + down * ray_y + forward (camera z = 1,
+  // so the parameter t of the hit is the camera z).
+  for (int v = 0; v < camera_.height_px; ++v) {
     const Vec3 row = axes.down * ray_y_[static_cast<std::size_t>(v)] + axes.forward;
     float* depth = out.depth_m.ptr<float>(v);
     std::uint16_t* surface = out.surface.ptr<std::uint16_t>(v);
     float* incidence = out.incidence.ptr<float>(v);
-    for (int u = 0; u < width; ++u) {
+    for (int u = 0; u < camera_.width_px; ++u) {
       const double ru = ray_x_[static_cast<std::size_t>(u)];
-      const double wx = row.x + axes.right.x * ru, wy = row.y + axes.right.y * ru, wz = row.z + axes.right.z * ru;
-      double t = 1e9;
-      int s = surface_floor;
-      if (wy < 0) {
-        t = -o.y / wy;
-      } else if (wy > 0) {
-        t = (room.ceiling_y - o.y) / wy;
-        s = surface_ceiling;
-      }
-      if (wz > 0) {
-        const double tz = (room.front_z - o.z) / wz;
-        if (tz < t) {
-          t = tz;
-          s = surface_front;
-        }
-      } else if (wz < 0) {
-        const double tz = (room.back_z - o.z) / wz;
-        if (tz < t) {
-          t = tz;
-          s = surface_back;
-        }
-      }
-      if (wx < 0) {
-        const double tx = (room.left_x - o.x) / wx;
-        if (tx < t) {
-          t = tx;
-          s = surface_left;
-        }
-      } else if (wx > 0) {
-        const double tx = (room.right_x - o.x) / wx;
-        if (tx < t) {
-          t = tx;
-          s = surface_right;
-        }
-      }
-      const double norm = std::sqrt(wx * wx + wy * wy + wz * wz);
-      double cosine = 1;
-      if (s == surface_floor || s == surface_ceiling) {
-        cosine = std::abs(wy) / norm;
-      } else if (s == surface_left || s == surface_right) {
-        cosine = std::abs(wx) / norm;
-      } else {
-        cosine = std::abs(wz) / norm;
-      }
-      if (!room.windows.empty() && (s == surface_left || s == surface_right || s == surface_front)) {
-        const double hx = o.x + t * wx, hy = o.y + t * wy, hz = o.z + t * wz;
-        for (const WallWindow& w : room.windows) {
-          if (w.wall != s) continue;
-          const double along = s == surface_front ? hx : hz;
-          if (along >= w.from_m && along <= w.to_m && hy >= w.bottom_m && hy <= w.top_m) s = surface_window;
-        }
-      }
-      depth[u] = static_cast<float>(t);
-      surface[u] = static_cast<std::uint16_t>(s);
-      incidence[u] = static_cast<float>(cosine);
+      const RoomHit hit = room_hit(room, axes.origin, row.x + axes.right.x * ru, row.y + axes.right.y * ru,
+                                   row.z + axes.right.z * ru);
+      depth[u] = static_cast<float>(hit.t);
+      surface[u] = static_cast<std::uint16_t>(hit.surface);
+      incidence[u] = static_cast<float>(hit.cosine);
     }
   }
+}
 
-  // 2. the shapes, z-buffered in list order (a shape listed later wins only when strictly nearer); a pixel
-  // already nearer than a shape's bounding box cannot show it, which skips the ray tests of hidden parts
+void Renderer::render_shapes(const CameraAxes& axes, const std::vector<Shape>& shapes, RenderBuffers& out) const {
+  // z-buffered in list order (a shape listed later wins only when strictly nearer); a pixel already nearer
+  // than a shape's bounding box cannot show it, which skips the ray tests of hidden parts
   out.shapes.clear();
-  out.shapes.reserve(scene.shapes.size());
-  const cv::Rect image(0, 0, width, height);
-  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
-    out.shapes.push_back(to_camera(axes, scene.shapes[i]));
+  out.shapes.reserve(shapes.size());
+  const cv::Rect image(0, 0, camera_.width_px, camera_.height_px);
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    out.shapes.push_back(to_camera(axes, shapes[i]));
     const CameraShape& s = out.shapes.back();
     if (!s.visible) continue;
     const cv::Rect area = s.bounds & image;

@@ -53,6 +53,9 @@ class Renderer {
 
  private:
   CameraShape to_camera(const CameraAxes& axes, const Shape& shape) const;
+  /// render()'s steps: 1. the room box (and its windows) at every pixel; 2. the shapes over it.
+  void render_room(const CameraAxes& axes, const Room& room, RenderBuffers& out) const;
+  void render_shapes(const CameraAxes& axes, const std::vector<Shape>& shapes, RenderBuffers& out) const;
 
   CameraModel camera_;
   std::vector<double> ray_x_;  ///< (u - cx) / fx per column
