@@ -54,46 +54,21 @@ struct Findings {
   std::vector<std::string> lines;          ///< complete lines of samples.tsv
   std::map<std::int64_t, std::string> retract;  ///< sample id -> reason
   std::vector<std::string> remove;         ///< files (relative) to remove
+
+  void add(std::string where, std::string what, std::string fix) {
+    problems.push_back({std::move(where), std::move(what), std::move(fix)});
+  }
 };
 
-Findings find(const std::string& dir) {
-  Findings f;
-  auto add = [&f](std::string where, std::string what, std::string fix) {
-    f.problems.push_back({std::move(where), std::move(what), std::move(fix)});
-  };
-  const fs::path root(dir);
-  SampleSetManifest manifest;
-  try {
-    manifest = SampleSetManifest::read((root / "manifest.yml").string());
-    f.manifest_ok = true;
-  } catch (const Error& e) {
-    add("manifest.yml", e.what(), "");
-    return f;
-  }
-  const std::string tsv = (root / "samples.tsv").string();
-  LogLines log;
-  try {
-    log = read_log_lines(tsv);
-  } catch (const Error& e) {
-    add("samples.tsv", e.what(), "");
-    return f;
-  }
-  f.lines = log.lines;
-  f.torn = log.torn_tail;
-  f.keep_bytes = log.complete_bytes;
-  if (log.torn_tail) add("samples.tsv", "the last row is torn (no newline)", "cut off");
-  if (f.lines.empty() || f.lines[0] != sample_tsv_header()) {
-    add("samples.tsv:1", "not a samples.tsv header", "");
-    return f;
-  }
-  RetractionLog retracted;
-  try {
-    retracted = read_retraction_log((root / "retracted.tsv").string());
-  } catch (const Error& e) {
-    add("retracted.tsv", e.what(), "");
-  }
-  std::map<std::int64_t, std::size_t> first_line;  // id -> line
+// The index's rows that read, in order, each id once and ascending (the others dropped), and the line of
+// each id.
+struct IndexRows {
   std::vector<SampleRecord> kept;
+  std::map<std::int64_t, std::size_t> first_line;  // id -> line
+};
+
+IndexRows check_rows(const std::string& tsv, Findings& f) {
+  IndexRows rows;
   std::int64_t last_id = 0;
   for (std::size_t i = 1; i < f.lines.size(); ++i) {
     const std::string where = "samples.tsv:" + std::to_string(i + 1);
@@ -101,44 +76,52 @@ Findings find(const std::string& dir) {
     try {
       r = parse_sample_row(f.lines[i], tsv + ":" + std::to_string(i + 1));
     } catch (const Error& e) {
-      add(where, e.what(), "row dropped from the index (the backup keeps it)");
+      f.add(where, e.what(), "row dropped from the index (the backup keeps it)");
       f.drop_lines.insert(i + 1);
       continue;
     }
-    if (const auto seen = first_line.find(r.id); seen != first_line.end()) {
-      add(where, "sample " + std::to_string(r.id) + ": id appears again (first on line " +
-                     std::to_string(seen->second) + ")",
-          "row dropped from the index (the backup keeps it)");
+    if (const auto seen = rows.first_line.find(r.id); seen != rows.first_line.end()) {
+      f.add(where, "sample " + std::to_string(r.id) + ": id appears again (first on line " +
+                       std::to_string(seen->second) + ")",
+            "row dropped from the index (the backup keeps it)");
       f.drop_lines.insert(i + 1);
       continue;
     }
     if (r.id <= last_id) {
-      add(where, "sample " + std::to_string(r.id) + ": id does not follow id " + std::to_string(last_id),
-          "row dropped from the index (the backup keeps it)");
+      f.add(where, "sample " + std::to_string(r.id) + ": id does not follow id " + std::to_string(last_id),
+            "row dropped from the index (the backup keeps it)");
       f.drop_lines.insert(i + 1);
       continue;
     }
-    first_line[r.id] = i + 1;
+    rows.first_line[r.id] = i + 1;
     last_id = r.id;
-    kept.push_back(r);
+    rows.kept.push_back(r);
   }
+  return rows;
+}
+
+// Every kept sample's crops (not the retracted ones'): a bad depth crop retracts its sample.
+void check_crops(const fs::path& root, const std::vector<SampleRecord>& kept, const RetractionLog& retracted,
+                 const FeatureSpec& spec, Findings& f) {
   for (const SampleRecord& r : kept) {
     if (retracted.ids.count(r.id) != 0 || !r.has_crop) continue;
     const std::string stem = crop_stem(r.id);
-    const std::string problem = depth_crop_problem((root / (stem + ".depth.png")).string(), r, manifest.feature_spec,
-                                                   /*full=*/true);
+    const std::string problem = depth_crop_problem((root / (stem + ".depth.png")).string(), r, spec, /*full=*/true);
     if (!problem.empty()) {
-      add(stem + ".depth.png", "sample " + std::to_string(r.id) + ": " + problem, "sample retracted");
+      f.add(stem + ".depth.png", "sample " + std::to_string(r.id) + ": " + problem, "sample retracted");
       f.retract[r.id] = problem;
     }
     if (r.has_colour && problem.empty()) {
       const cv::Mat colour = cv::imread((root / (stem + ".rgb.png")).string(), cv::IMREAD_COLOR);
-      if (colour.empty() || colour.cols != manifest.feature_spec.window_width_px ||
-          colour.rows != manifest.feature_spec.window_height_px) {
-        add(stem + ".rgb.png", "sample " + std::to_string(r.id) + ": colour crop missing or unusable", "");
+      if (colour.empty() || colour.cols != spec.window_width_px || colour.rows != spec.window_height_px) {
+        f.add(stem + ".rgb.png", "sample " + std::to_string(r.id) + ": colour crop missing or unusable", "");
       }
     }
   }
+}
+
+// Files in crops/ to remove: temporary files of interrupted writes and crops without a row.
+void find_strays(const fs::path& root, const std::map<std::int64_t, std::size_t>& first_line, Findings& f) {
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(root / "crops", ec)) {
     const std::string name = e.path().filename().string();
@@ -147,11 +130,49 @@ Findings find(const std::string& dir) {
     const bool temporary = name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0;
     const bool orphan = digits > 0 && digits < 19 && first_line.count(std::stoll(name.substr(0, digits))) == 0;
     if (temporary || orphan) {
-      add("crops/" + name, temporary ? "temporary file of an interrupted write" : "crop without a row", "removed");
+      f.add("crops/" + name, temporary ? "temporary file of an interrupted write" : "crop without a row", "removed");
       f.remove.push_back("crops/" + name);
     }
   }
   std::sort(f.remove.begin(), f.remove.end());
+}
+
+Findings find(const std::string& dir) {
+  Findings f;
+  const fs::path root(dir);
+  SampleSetManifest manifest;
+  try {
+    manifest = SampleSetManifest::read((root / "manifest.yml").string());
+    f.manifest_ok = true;
+  } catch (const Error& e) {
+    f.add("manifest.yml", e.what(), "");
+    return f;
+  }
+  const std::string tsv = (root / "samples.tsv").string();
+  LogLines log;
+  try {
+    log = read_log_lines(tsv);
+  } catch (const Error& e) {
+    f.add("samples.tsv", e.what(), "");
+    return f;
+  }
+  f.lines = log.lines;
+  f.torn = log.torn_tail;
+  f.keep_bytes = log.complete_bytes;
+  if (log.torn_tail) f.add("samples.tsv", "the last row is torn (no newline)", "cut off");
+  if (f.lines.empty() || f.lines[0] != sample_tsv_header()) {
+    f.add("samples.tsv:1", "not a samples.tsv header", "");
+    return f;
+  }
+  RetractionLog retracted;
+  try {
+    retracted = read_retraction_log((root / "retracted.tsv").string());
+  } catch (const Error& e) {
+    f.add("retracted.tsv", e.what(), "");
+  }
+  const IndexRows rows = check_rows(tsv, f);
+  check_crops(root, rows.kept, retracted, manifest.feature_spec, f);
+  find_strays(root, rows.first_line, f);
   return f;
 }
 
