@@ -193,6 +193,67 @@ RealAdaBoost::TableFit RealAdaBoost::fit_sums(std::size_t feature, double z, con
   return fit;
 }
 
+void RealAdaBoost::TableScan::features(std::size_t f0, std::size_t f1, double* best_z, std::size_t* best_f) const {
+  const BinnedMatrix& data = booster.data_;
+  const std::size_t n = data.samples(), features_count = data.features(), nodes = direct_of.size();
+  const int bin_count = data.scheme().count;
+  const std::size_t width = 2 * static_cast<std::size_t>(bin_count);
+  const std::vector<double>& weights = booster.weights_;
+  std::vector<double> sums(8 * nodes * width), difference(width);
+  for (std::size_t k = 0; k < nodes; ++k) best_f[k] = f0;
+  auto consider = [&](std::size_t f, std::size_t node, const double* s) {
+    if (keep != nullptr) std::copy(s, s + width, keep->data() + (node * features_count + f) * width);
+    const double z = booster.table_z(s, split);
+    if (z < best_z[node]) {
+      best_z[node] = z;
+      best_f[node] = f;
+    }
+  };
+  auto sums_of = [&](std::size_t k) { return sums.data() + k * width; };
+  std::size_t f = f0;
+  while (f < f1) {
+    const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(pass), f1 - f));
+    const std::uint8_t* bins[8];
+    double* out[8 * 8];
+    for (int k = 0; k < count; ++k) bins[k] = data.feature(f + static_cast<std::size_t>(k));
+    if (two_part && count >= 4) {
+      const int whole = count >= 8 ? 8 : 4;
+      for (int k = 0; k < whole; ++k) out[k] = sums_of(static_cast<std::size_t>(k));
+      two_part_histograms(bins, whole, weights.data(), booster.positives_, n, bin_count, out);
+      for (int k = 0; k < whole; ++k) consider(f + static_cast<std::size_t>(k), 0, out[k]);
+      f += static_cast<std::size_t>(whole);
+    } else if (two_part) {
+      feature_histogram(data.feature(f), y.data(), weights.data(), n, nullptr, 0, bin_count, sums_of(0));
+      consider(f, 0, sums_of(0));
+      ++f;
+    } else {
+      for (std::size_t k = 0; k < static_cast<std::size_t>(count) * direct; ++k) out[k] = sums_of(k);
+      node_histograms(bins, count, samples, bin_count, out);
+      for (int k = 0; k < count; ++k) {
+        const std::size_t fk = f + static_cast<std::size_t>(k);
+        for (std::size_t node = 0; node < nodes; ++node) {
+          if (derived == nullptr || derived->sibling[node] < 0) {
+            consider(fk, node, out[static_cast<std::size_t>(k) * direct + direct_of[node]]);
+            continue;
+          }
+          // parent - sibling; a difference within the rounding of the parent's sum (relative 1e-9) is 0:
+          // an empty bin must stay empty, or a pure node's Z is no longer 0 and ties break at random.
+          const double* parent =
+              derived->parent_sums->data() + (static_cast<std::size_t>(derived->parent[node]) * features_count + fk) * width;
+          const double* sibling =
+              out[static_cast<std::size_t>(k) * direct + direct_of[static_cast<std::size_t>(derived->sibling[node])]];
+          for (std::size_t j = 0; j < width; ++j) {
+            const double d = parent[j] - sibling[j];
+            difference[j] = d > 1e-9 * parent[j] ? d : 0.0;
+          }
+          consider(fk, node, difference.data());
+        }
+      }
+      f += static_cast<std::size_t>(count);
+    }
+  }
+}
+
 std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<const std::vector<std::size_t>*>& members,
                                                               const std::vector<std::uint8_t>& y, bool split,
                                                               const Subtraction* derived, std::vector<double>* keep) const {
@@ -236,64 +297,11 @@ std::vector<RealAdaBoost::TableFit> RealAdaBoost::best_tables(const std::vector<
   std::vector<double> chunk_z(static_cast<std::size_t>(chunks) * nodes, std::numeric_limits<double>::infinity());
   std::vector<std::size_t> chunk_feature(static_cast<std::size_t>(chunks) * nodes, 0);
   const std::size_t step = (blocks + static_cast<std::size_t>(chunks) - 1) / static_cast<std::size_t>(chunks);
+  const TableScan scan{*this, y, split, derived, keep, samples, direct_of, direct, two_part, pass};
   parallel_chunks(blocks, chunks, [&](std::size_t block0, std::size_t block1) {
     const std::size_t chunk = block0 / step;
-    const std::size_t f0 = block0 * 4, f1 = std::min(features, block1 * 4);
-    std::vector<double> sums(8 * nodes * width), difference(width);
-    double* best_z = chunk_z.data() + chunk * nodes;
-    std::size_t* best_f = chunk_feature.data() + chunk * nodes;
-    for (std::size_t k = 0; k < nodes; ++k) best_f[k] = f0;
-    auto consider = [&](std::size_t f, std::size_t node, const double* s) {
-      if (keep != nullptr) std::copy(s, s + width, keep->data() + (node * features + f) * width);
-      const double z = table_z(s, split);
-      if (z < best_z[node]) {
-        best_z[node] = z;
-        best_f[node] = f;
-      }
-    };
-    auto sums_of = [&](std::size_t k) { return sums.data() + k * width; };
-    std::size_t f = f0;
-    while (f < f1) {
-      const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(pass), f1 - f));
-      const std::uint8_t* bins[8];
-      double* out[8 * 8];
-      for (int k = 0; k < count; ++k) bins[k] = data_.feature(f + static_cast<std::size_t>(k));
-      if (two_part && count >= 4) {
-        const int whole = count >= 8 ? 8 : 4;
-        for (int k = 0; k < whole; ++k) out[k] = sums_of(static_cast<std::size_t>(k));
-        two_part_histograms(bins, whole, weights_.data(), positives_, n, bin_count, out);
-        for (int k = 0; k < whole; ++k) consider(f + static_cast<std::size_t>(k), 0, out[k]);
-        f += static_cast<std::size_t>(whole);
-      } else if (two_part) {
-        feature_histogram(data_.feature(f), y.data(), weights_.data(), n, nullptr, 0, bin_count, sums_of(0));
-        consider(f, 0, sums_of(0));
-        ++f;
-      } else {
-        for (std::size_t k = 0; k < static_cast<std::size_t>(count) * direct; ++k) out[k] = sums_of(k);
-        node_histograms(bins, count, samples, bin_count, out);
-        for (int k = 0; k < count; ++k) {
-          const std::size_t fk = f + static_cast<std::size_t>(k);
-          for (std::size_t node = 0; node < nodes; ++node) {
-            if (derived == nullptr || derived->sibling[node] < 0) {
-              consider(fk, node, out[static_cast<std::size_t>(k) * direct + direct_of[node]]);
-              continue;
-            }
-            // parent - sibling; a difference within the rounding of the parent's sum (relative 1e-9) is 0:
-            // an empty bin must stay empty, or a pure node's Z is no longer 0 and ties break at random.
-            const double* parent =
-                derived->parent_sums->data() + (static_cast<std::size_t>(derived->parent[node]) * features + fk) * width;
-            const double* sibling =
-                out[static_cast<std::size_t>(k) * direct + direct_of[static_cast<std::size_t>(derived->sibling[node])]];
-            for (std::size_t j = 0; j < width; ++j) {
-              const double d = parent[j] - sibling[j];
-              difference[j] = d > 1e-9 * parent[j] ? d : 0.0;
-            }
-            consider(fk, node, difference.data());
-          }
-        }
-        f += static_cast<std::size_t>(count);
-      }
-    }
+    scan.features(block0 * 4, std::min(features, block1 * 4), chunk_z.data() + chunk * nodes,
+                  chunk_feature.data() + chunk * nodes);
   });
   std::vector<TableFit> fits;
   for (std::size_t node = 0; node < nodes; ++node) {

@@ -26,6 +26,8 @@
 
 namespace rdsf {
 
+class NodeSamples;  // bin_histograms.hpp
+
 /// The learner's settings (what its rounds are), apart from where the rows are: also the native backend's
 /// part of BoostTrainingParams, which derives from it with its own defaults (depth 2, learning rate 0.5).
 struct RealAdaBoostSettings {
@@ -111,6 +113,22 @@ class RealAdaBoost {
   std::vector<TableFit> best_tables(const std::vector<const std::vector<std::size_t>*>& members,
                                     const std::vector<std::uint8_t>& y, bool split,
                                     const Subtraction* derived = nullptr, std::vector<double>* keep = nullptr) const;
+  /// One call of best_tables over the features of one chunk, [f0, f1): each feature's sums (two-part,
+  /// four-part per node, or parent - sibling), kept when `keep` is given; the smallest Z per node and its
+  /// feature (the lowest of equals) go to best_z / best_f.
+  struct TableScan {
+    const RealAdaBoost& booster;
+    const std::vector<std::uint8_t>& y;
+    bool split;
+    const Subtraction* derived;
+    std::vector<double>* keep;
+    const NodeSamples& samples;
+    const std::vector<std::size_t>& direct_of;  ///< per node: its index among the direct ones
+    std::size_t direct;                         ///< nodes whose sums are taken directly
+    bool two_part;
+    int pass;                                   ///< features per pass over the samples
+    void features(std::size_t f0, std::size_t f1, double* best_z, std::size_t* best_f) const;
+  };
   /// Z of a table (or split) from its sums[2 * bin + y].
   double table_z(const double* sums, bool split) const;
   /// The table (or split) of `feature` from its sums[2 * bin + y], with the given Z.
