@@ -248,8 +248,9 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptSta
   args.insert(args.end(), static_cast<std::size_t>(copies), paths.room);
   args.insert(args.end(), o.base_pos.begin(), o.base_pos.end());
   args.push_back("--neg");
+  const bool room_negatives = !state.get("negatives").empty();
   for (int k = 0; k < copies; ++k) {
-    if (!state.get("negatives").empty()) args.push_back(paths.negatives);
+    if (room_negatives) args.push_back(paths.negatives);
     args.push_back(paths.room);
   }
   args.insert(args.end(), o.base_neg.begin(), o.base_neg.end());

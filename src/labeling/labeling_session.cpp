@@ -390,9 +390,8 @@ bool LabelingSession::answer(char key) {
 LabelingSession::Followed LabelingSession::follow(const PresentedCandidate& p, char answer, bool with_place) const {
   // The frames of p's source (frames_ holds the session's frames in order, ordinal 1, 2, ...).
   const auto at = static_cast<std::size_t>(p.frame->ordinal - 1);
-  std::size_t first = at, last = at;
-  while (first > 0 && frames_[first - 1]->source == p.frame->source) --first;
-  while (last + 1 < frames_.size() && frames_[last + 1]->source == p.frame->source) ++last;
+  const std::pair<std::size_t, std::size_t> span = source_span(at);
+  const std::size_t first = span.first, last = span.second;
   const std::vector<std::vector<TrackCandidate>> frames = track_candidates(first, last);
   std::vector<cv::Mat1w> depth;
   for (std::size_t f = first; with_place && f <= last; ++f) depth.push_back(frames_[f]->frame.depth_mm);
@@ -411,6 +410,13 @@ LabelingSession::Followed LabelingSession::follow(const PresentedCandidate& p, c
     followed.place = propagate_place(frames, depth, seed, answer, config_.propagation, unanswered_off_track);
   }
   return followed;
+}
+
+std::pair<std::size_t, std::size_t> LabelingSession::source_span(std::size_t at) const {
+  std::size_t first = at, last = at;
+  while (first > 0 && frames_[first - 1]->source == frames_[at]->source) --first;
+  while (last + 1 < frames_.size() && frames_[last + 1]->source == frames_[at]->source) ++last;
+  return {first, last};
 }
 
 std::vector<std::vector<TrackCandidate>> LabelingSession::track_candidates(std::size_t first, std::size_t last) const {
@@ -438,8 +444,7 @@ void LabelingSession::propagate_model_answers() {
   params.max_no_probability = std::min(params.max_no_probability, params.model_max_no_probability);
   std::set<std::pair<const LoadedFrame*, std::size_t>> labelled;
   for (std::size_t first = 0, last = 0; first < frames_.size(); first = last + 1) {  // source by source
-    last = first;
-    while (last + 1 < frames_.size() && frames_[last + 1]->source == frames_[first]->source) ++last;
+    last = source_span(first).second;
     const std::vector<std::vector<TrackCandidate>> frames = track_candidates(first, last);
     const AnswerOf answer_of = [&](const TrackLink& l) {
       return journal_.answer_of(PresentedCandidate{frames_[first + l.frame], l.index}.key());

@@ -40,6 +40,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rdsf/classifier/boosted_model.hpp"
@@ -208,6 +209,9 @@ class LabelingSession {
   Followed follow(const PresentedCandidate& p, char answer, bool with_place) const;
   /// The frames of frames_ from `first` to `last` (one source) as track propagation sees them.
   std::vector<std::vector<TrackCandidate>> track_candidates(std::size_t first, std::size_t last) const;
+  /// The first and last index in frames_ of the frames of frame `at`'s source (frames_ holds the session's
+  /// frames in order, each source's together).
+  std::pair<std::size_t, std::size_t> source_span(std::size_t at) const;
   /// per_track with propagation.from_model: labels the tracks of the model's answers (the header's comment).
   void propagate_model_answers();
   /// per_track: labels the track of the answer just given (`given`), presents its unsure ends next.
