@@ -202,7 +202,8 @@ void room_negatives(const AdaptOptions& o, const BoostedModel& model, AdaptState
 }
 
 struct Answers {
-  long human = 0, propagated = 0;
+  long human = 0, propagated = 0;  ///< the person's answers, and the labels their tracks and places gave
+  long by_model_track = 0;         ///< labels along the model's own sure answers' tracks (no person's answer)
 };
 
 Answers count_answers(const std::string& room_set) {
@@ -213,6 +214,7 @@ Answers count_answers(const std::string& room_set) {
   for (const JournalEntry& e : answers.in_force()) {
     a.human += e.by == "human" ? 1 : 0;
     a.propagated += e.by.rfind("track ", 0) == 0 || e.by.rfind("place ", 0) == 0 ? 1 : 0;
+    a.by_model_track += e.by.rfind("model-track ", 0) == 0 ? 1 : 0;
   }
   return a;
 }
@@ -225,7 +227,7 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
                                   o.models_dir, "--ask", "uncertain", "--keep-rejected", "--budget",
                                   std::to_string(left), "--threads", std::to_string(o.threads)};
     if (!o.per_candidate) args.insert(args.end(), {"--per-track", "--per-place", o.per_place ? "on" : "off"});
-    if (!o.per_candidate && o.propagate_model) args.insert(args.end(), {"--propagate-model-answers", "on"});
+    if (!o.per_candidate) args.insert(args.end(), {"--propagate-model-answers", o.propagate_model ? "on" : "off"});
     if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
     if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
     const bool window = o.truth.empty() && o.answers.empty();
@@ -234,7 +236,10 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
   const Answers a = count_answers(paths.room);
   state.set("answers.human", std::to_string(a.human));
   state.set("answers.propagated", std::to_string(a.propagated));
-  say(std::to_string(a.human) + " answers given, " + std::to_string(a.propagated) + " labels propagated along tracks");
+  state.set("answers.model_track", std::to_string(a.by_model_track));
+  say(std::to_string(a.human) + " answers given, " + std::to_string(a.propagated) +
+      " labels propagated along their tracks, " + std::to_string(a.by_model_track) +
+      " along the tracks of the model's sure answers");
 }
 
 // Step 3: the room's samples with the base sets; the new model's path goes to the state.
@@ -266,7 +271,8 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptSta
   for (const std::string& kv : {"adapted_room=" + fs::absolute(o.source).string(),
                                 "adapted_from=" + model_reference(model),
                                 "adapted_answers=" + state.get("answers.human") + " human, " +
-                                    state.get("answers.propagated") + " propagated",
+                                    state.get("answers.propagated") + " propagated, " +
+                                    state.get("answers.model_track") + " along the model's tracks",
                                 "adapted_base=" + (base.empty() ? std::string("none") : base)}) {
     args.insert(args.end(), {"--provenance", kv});
   }
@@ -300,8 +306,11 @@ void report(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
   const BoostedModel adapted = BoostedModel::load(state.get("model"));
   const RocSummary& v = adapted.training().validation.summary;
   char line[400];
-  std::snprintf(line, sizeof line, "%s: %s answers, %s labels propagated, trained in %s s; validation AUC %.4f, TAR %.3f at FAR 1%%",
+  std::snprintf(line, sizeof line,
+                "%s: %s answers, %s labels propagated (%s more along the model's tracks), trained in %s s; validation "
+                "AUC %.4f, TAR %.3f at FAR 1%%",
                 state.get("model").c_str(), state.get("answers.human").c_str(), state.get("answers.propagated").c_str(),
+                state.get("answers.model_track").c_str(),
                 state.get("train_seconds").c_str(), v.auc, v.tar_at_far_1);
   std::string text = std::string(line) + "\n";
   if (!o.truth.empty() && !o.eval.empty()) {

@@ -10,7 +10,7 @@
 //   --per-place on|off one answer per place for n answers (rdsf-label --per-track, rdsf-adapt); the default
 //                     is the library's (PropagationParams::per_place).
 //   --propagate-model-answers on|off  the model's sure answers followed along their tracks too (rdsf-label
-//                     --per-track, rdsf-adapt); default off (PropagationParams::from_model).
+//                     --per-track, rdsf-adapt); the default is the library's (PropagationParams::from_model).
 #include <string>
 
 #include <boost/program_options.hpp>

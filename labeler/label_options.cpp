@@ -62,7 +62,13 @@ cli::po::options_description label_options(LabelOptions& o, LabelOptionText& tex
       ("model-track-max-no", po::value(&o.session.propagation.model_max_no_probability)
                                  ->default_value(o.session.propagation.model_max_no_probability,
                                                  cli::shortest_text(o.session.propagation.model_max_no_probability)),
-       "--propagate-model-answers on: the track of a model's n enters only candidates with P(person) <= this");
+       "--propagate-model-answers on: the track of a model's n enters only candidates with P(person) <= this")
+      ("model-track-within-image",
+       po::value(&o.session.propagation.model_within_image)
+           ->default_value(o.session.propagation.model_within_image,
+                           o.session.propagation.model_within_image ? "on" : "off"),
+       "--propagate-model-answers on (on or off): the model's tracks neither start at nor enter a candidate whose "
+       "window reaches beyond the image (a crop cut by the image's edge, where the model is least sure)");
   return options;
 }
 

@@ -163,10 +163,13 @@ for room in "${room_names[@]}"; do
         --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${flags[@]}" "${adapt_args[@]}" 2>"$run.log" ||
         { tail -3 "$run.log" >&2; exit 1; }
       state=$run/adapt-state.tsv
-      # the people's tracks' line (not the per place line, a part of it, nor the model answers' tracks' line)
-      wrong=$(sed -n 's/^rdsf-label: per track: .*the truth contradicts \([0-9]*\) .*/\1/p' "$run/logs/answers.log" | tail -1)
+      # propagated: along the people's tracks and places, and along the model's sure answers' tracks; wrong: the
+      # truth's count on the people's tracks' line (the per place line is a part of it) and the model's tracks' line
+      wrong=$(sed -n 's/^rdsf-label: \(per track\|model answers. tracks\): .*the truth contradicts \([0-9]*\) .*/\2/p' \
+        "$run/logs/answers.log" | awk '{ n += $1 } END { print n + 0 }')
+      propagated=$(( $(field "$state" answers.propagated) + $(field "$state" answers.model_track) ))
       printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$room" "$mode" "$budget" "$(field "$state" answers.human)" \
-        "$(field "$state" answers.propagated)" "${wrong:-0}" "$(field "$state" tar_after)" \
+        "$propagated" "$wrong" "$(field "$state" tar_after)" \
         "$(field "$state" train_seconds)" >> "$results"
       echo "$room $mode $budget: $(tail -1 "$results" | cut -f4-8)" >&2
     done
@@ -179,7 +182,8 @@ for room in "${room_names[@]}"; do
       --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${adapt_args[@]}" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
     state=$run/adapt-state.tsv
     printf '%s\tretrain\t%s\t%s\t%s\t0\t%s\t%s\n' "$room" "$budget" "$(field "$state" answers.human)" \
-      "$(field "$state" answers.propagated)" "$(field "$state" tar_after)" "$(field "$state" train_seconds)" >> "$results"
+      "$(( $(field "$state" answers.propagated) + $(field "$state" answers.model_track) ))" "$(field "$state" tar_after)" \
+      "$(field "$state" train_seconds)" >> "$results"
   fi
   # Negatives only: the same training on the room's negatives (mined by the per-track run) and the base.
   wants negatives || continue
@@ -201,7 +205,8 @@ step "report"
   echo "# Adaptation benchmark ($(date -u +%Y-%m-%dT%H:%MZ))"
   echo
   echo "TAR at FPPF <= 0.1 on each room's later frames; answers = the truth-as-person's answers (rdsf-adapt"
-  echo "--truth); propagated = labels written along tracks (wrong: contradicted by the truth); train s = rdsf-train"
+  echo "--truth); propagated = labels written along tracks, the person's and the model's sure answers' (wrong:"
+  echo "contradicted by the truth); train s = rdsf-train"
   echo "wall time (from the last answer to the model)."
   echo
   echo "| room | mode | budget | answers | propagated (wrong) | TAR | train s |"

@@ -106,6 +106,19 @@ TEST(TrackPropagation, GatesStopAtADepthJumpAScoreAndAnotherAnswer) {
   EXPECT_EQ(t.labelled.size(), 5u);  // 0, 1, 3, 5, 6 (4 was answered y already, 7 n)
 }
 
+// within_image (on for the model's tracks): a track does not enter a candidate whose window reaches beyond the
+// image; without it the same candidate is labelled.
+TEST(TrackPropagation, WithinImageStopsATrackAtACropCutByTheImage) {
+  auto frames = walking(10);
+  frames[6][0].cut_by_image = true;  // the person's window leaves the image there
+  PropagationParams gated;
+  gated.max_gap_frames = 0;
+  gated.within_image = true;
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', gated, CameraModel{}).labelled.size(), 5u);  // 0, 1, 3, 4, 5
+  gated.within_image = false;
+  EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', gated, CameraModel{}).labelled.size(), 9u);
+}
+
 TEST(TrackPropagation, FramesWhereNothingPassesAreSteppedOverUpToMaxGapFrames) {
   auto missing = [](std::vector<int> gone) {  // the person's candidate moved away (nothing overlaps there)
     auto frames = walking(20);
@@ -276,4 +289,33 @@ TEST(TrackPropagation, SessionFollowsTheModelsAnswersAlongTheirTracks) {
     EXPECT_EQ(session.pending() + static_cast<std::size_t>(by_track), pending_without);
     EXPECT_EQ(SampleSet::open_read(set).records().size(), samples);  // the model's tracks' samples kept
   }
+}
+
+// The model's tracks stay off crops cut by the image's edge (model_within_image, on by default): every sample
+// they store has a window inside the image, and they label fewer than without the rule.
+TEST(TrackPropagation, SessionKeepsTheModelsTracksWithinTheImage) {
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(render_room(dir, "--frames 30 --people 2..2 --clip-frames 30 --seed 5"));
+  const BoostedModel model = shipped_model();
+  LabelingConfig config = per_track_config(dir);
+  config.propagation.from_model = true;
+  long labelled[2] = {0, 0};
+  for (const bool within : {true, false}) {
+    config.propagation.model_within_image = within;
+    const std::string set = dir / (within ? "set-within" : "set-anywhere");
+    SampleSetWriter writer = open_set(set, config);
+    LabelingSession session(config, writer, &model, nullptr);
+    ASSERT_NE(session.current(), nullptr);
+    labelled[within ? 0 : 1] = session.stats().model_track_positives + session.stats().model_track_negatives;
+    if (!within) continue;
+    for (const SampleRecord& s : writer.records()) {
+      if (s.origin != "labeler-model-track") continue;
+      EXPECT_GT(s.window.x, 0) << s.frame;  // the window is clipped to the image: touching it is leaving it
+      EXPECT_GT(s.window.y, 0) << s.frame;
+      EXPECT_LT(s.window.x + s.window.width, 640) << s.frame;
+      EXPECT_LT(s.window.y + s.window.height, 480) << s.frame;
+    }
+  }
+  EXPECT_GT(labelled[0], 0) << "no model track inside the image";
+  EXPECT_LT(labelled[0], labelled[1]);  // this room has candidates cut by the image's edge: 17 against 30
 }

@@ -424,9 +424,11 @@ std::vector<std::vector<TrackCandidate>> LabelingSession::track_candidates(std::
   for (std::size_t f = first; f <= last; ++f) {
     const LoadedFrame& lf = *frames_[f];
     std::vector<TrackCandidate> candidates;
+    const cv::Rect image(0, 0, lf.frame.depth_mm.cols, lf.frame.depth_mm.rows);
     for (std::size_t i = 0; i < lf.analysis.candidates.size(); ++i) {
       const Candidate& c = lf.analysis.candidates[i];
-      candidates.push_back({c.strict_box, c.layer_depth_mm, lf.probabilities.empty() ? -1.0 : lf.probabilities[i]});
+      candidates.push_back({c.strict_box, c.layer_depth_mm, lf.probabilities.empty() ? -1.0 : lf.probabilities[i],
+                            (c.window_unclipped & image) != c.window_unclipped});
     }
     frames.push_back(std::move(candidates));
   }
@@ -442,6 +444,7 @@ void LabelingSession::propagate_model_answers() {
   if (by_model.empty()) return;
   PropagationParams params = config_.propagation;  // a model's n track: the stricter score gate
   params.max_no_probability = std::min(params.max_no_probability, params.model_max_no_probability);
+  params.within_image = params.within_image || params.model_within_image;
   std::set<std::pair<const LoadedFrame*, std::size_t>> labelled;
   for (std::size_t first = 0, last = 0; first < frames_.size(); first = last + 1) {  // source by source
     last = source_span(first).second;
@@ -454,6 +457,7 @@ void LabelingSession::propagate_model_answers() {
         const CandidateKey seed = PresentedCandidate{frames_[first + f], i}.key();
         const auto it = by_model.find(seed);
         if (it == by_model.end() || journal_.answer_of(seed) != it->second) continue;
+        if (params.within_image && frames[f][i].cut_by_image) continue;
         const char answer = it->second;
         const std::string by = model_track_answerer(seed);
         const PropagatedTrack track = propagate_track(frames, {f, i}, answer, params, config_.camera, answer_of);

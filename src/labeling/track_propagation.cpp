@@ -49,6 +49,7 @@ Best best_match(const TrackCandidate& from, const std::vector<TrackCandidate>& i
 
 bool passes_track_gates(const TrackCandidate& t, const TrackCandidate& c, char answer, const PropagationParams& params,
                         const CameraModel& camera) {
+  if (params.within_image && c.cut_by_image) return false;
   if (iou(t.box, c.box) < params.min_iou) return false;
   if (std::abs(t.depth_mm - c.depth_mm) > params.max_depth_step_mm) return false;
   const double d_cm = cv::norm(centroid_cm(t.box, t.depth_mm, camera) - centroid_cm(c.box, c.depth_mm, camera));
