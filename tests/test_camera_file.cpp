@@ -135,6 +135,40 @@ TEST(CameraFile, ResizedRealFramesWithTheirCameraModelFindTheSamePeople) {
     DepthFrame f;
     while (source->next(f)) originals.push_back(f);
   }
+  // The floor of the criterion: the same frames shifted by one pixel right and down (no resampling, the same
+  // camera model; the column and row brought in read 0) already lose some of the original's detections at
+  // IoU >= 0.7 (segmentation scans every row_step-th row, and a shift moves which rows those are).
+  {
+    PeopleDetector on_original(model), on_shifted(model);
+    int people = 0, found = 0;
+    for (const DepthFrame& f : originals) {
+      DepthFrame s = f;
+      s.depth_mm = cv::Mat1w(f.depth_mm.size(), std::uint16_t{0});  // a buffer of its own (f's is shared)
+      f.depth_mm(cv::Rect(0, 0, f.depth_mm.cols - 1, f.depth_mm.rows - 1))
+          .copyTo(s.depth_mm(cv::Rect(1, 1, f.depth_mm.cols - 1, f.depth_mm.rows - 1)));
+      s.bgr = cv::Mat3b();  // tracking without colour on both sides
+      DepthFrame o = f;
+      o.bgr = cv::Mat3b();
+      const std::vector<Detection> want = on_original.detect(o), got = on_shifted.detect(s);
+      std::vector<bool> used(got.size(), false);
+      for (const Detection& d : want) {
+        ++people;
+        for (std::size_t k = 0; k < got.size(); ++k) {
+          if (!used[k] && iou(got[k].box, d.box + cv::Point(1, 1)) >= 0.7) {
+            used[k] = true;
+            ++found;
+            break;
+          }
+        }
+      }
+    }
+    std::cout << "  640x480 shifted by 1 px: " << found << " of the original's " << people
+              << " detections found again (IoU >= 0.7)\n";
+    // Measured (2026-12-04): 44 of 48 (2 px: 45, 3 px: 43; with row_step 2 a shift loses nothing, 46 of 46,
+    // but the resized frames still lose as many: docs/sensors.md).
+    EXPECT_GE(found, 42);
+    EXPECT_LT(found, people) << "a shift lost nothing: the floor documented in docs/sensors.md has moved";
+  }
   const auto resized = [](const DepthFrame& f, cv::Size size) {
     DepthFrame r = f;
     cv::resize(f.depth_mm, r.depth_mm, size, 0, 0, cv::INTER_NEAREST);
