@@ -85,6 +85,9 @@ ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Cl
   if (session.model() != nullptr && session.config().model_answers) {
     s.model_positives = st.model_positives;
     s.model_negatives = st.model_negatives;
+    if (session.config().per_track && session.config().propagation.from_model) {
+      s.model_track_labels = st.model_track_positives + st.model_track_negatives;
+    }
   }
   s.reason = reason_of(session, p);
   if (!p.frame->truth_iou.empty()) s.truth_iou = p.frame->truth_iou[p.index];

@@ -93,6 +93,10 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   if (s.model_positives) {
     std::snprintf(text, sizeof text, "   by model: %ld y, %ld n", *s.model_positives, *s.model_negatives);
     first += text;
+    if (s.model_track_labels) {
+      std::snprintf(text, sizeof text, " +%ld on tracks", *s.model_track_labels);
+      first += text;
+    }
   }
   put(canvas, first, {kMargin, status_y + 28}, 0.5, kText);
   std::string extra = s.reason;

@@ -16,6 +16,7 @@ struct ScreenStatus {
   std::size_t candidate = 0, candidates = 0;  ///< j/M in the frame (1-based j)
   long positives = 0, negatives = 0;
   std::optional<long> model_positives, model_negatives;  ///< answered by the model (with a model)
+  std::optional<long> model_track_labels;  ///< labelled along the tracks of the model's answers (per track)
   std::optional<double> probability;                     ///< P(person)
   std::string reason;  ///< why this candidate is asked, e.g. "uncertain: P = 0.48"
   double zoom = 1.0;   ///< frame zoom around the candidate (+ / -), at most what keeps its window whole
