@@ -36,7 +36,7 @@
 // and c has no answer yet (answer_of gives '\0'). A person who stands where the thing stood changes the
 // depth of the box's pixels; a camera that moved changes them all.
 //
-// From the model's answers (from_model, on by default): the candidates a model answered without asking (its
+// From the model's answers (from_model, off by default): the candidates a model answered without asking (its
 // sure y and n) are seeds too, followed by the same track rule (not by one answer per place: a model's n is
 // wrong more often than a person's, and a place repeats one wrong n in every frame of a still camera); the
 // labelling session does it once, when the whole session is read (labeling_session.hpp). A model's n track
@@ -80,11 +80,11 @@ struct PropagationParams {
   double place_pixel_change = 0.03;         ///< a pixel agrees when its depths differ by at most this x depth
   double place_min_agreeing = 0.6;          ///< share of the box's pixels valid in both frames that agree
   double place_min_valid_share = 0.5;       ///< share of the box's pixels valid in both frames, at least
-  /// The model's sure answers are followed along their tracks too (the rule above); off: only people's are. On
-  /// since the tracks stay within the image (model_within_image): on three sets of 16 synthetic rooms it asked
-  /// 10-14 % fewer questions than off, with under 1 % of all propagated labels wrong on each, and the adaptation
-  /// benchmark's real rooms kept their TAR (docs/adapting-to-your-room.md).
-  bool from_model = true;
+  /// The model's sure answers are followed along their tracks too (the rule above); off: only people's are. With
+  /// the tracks within the image (model_within_image) it asked 10-14 % fewer questions than off on three sets of
+  /// 16 synthetic rooms, under 1 % of all propagated labels wrong on each, but in the adaptation benchmark the
+  /// real lab's model at a budget of 10 answers fell from 0.833 to 0.667 (docs/adapting-to-your-room.md): off.
+  bool from_model = false;
   /// from_model: the score gate of a model's n track (a y track's is min_yes_probability). On the 16 synthetic
   /// rooms (docs/adapting-to-your-room.md, people/v2) the model's tracks labelled 989 with 20 wrong at 0.95 (the
   /// people's gate), 976 / 20 at 0.3, 958 / 20 at 0.2, 935 / 18 at 0.15, 880 / 3 at 0.1 and 761 / 2 at 0.05,
