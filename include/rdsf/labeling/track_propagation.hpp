@@ -81,7 +81,7 @@ struct PropagationParams {
   double place_min_agreeing = 0.6;          ///< share of the box's pixels valid in both frames that agree
   double place_min_valid_share = 0.5;       ///< share of the box's pixels valid in both frames, at least
   /// The model's sure answers are followed along their tracks too (the rule above); off: only people's are. With
-  /// the tracks within the image (model_within_image) it asked 10-14 % fewer questions than off on three sets of
+  /// the tracks within the image (model_within_image) it asked 10-15 % fewer questions than off on four sets of
   /// 16 synthetic rooms, under 1 % of all propagated labels wrong on each, but in the adaptation benchmark the
   /// real lab's model at a budget of 10 answers fell from 0.833 to 0.667 (docs/adapting-to-your-room.md): off.
   bool from_model = false;
