@@ -106,8 +106,8 @@ TEST(TrackPropagation, GatesStopAtADepthJumpAScoreAndAnotherAnswer) {
   EXPECT_EQ(t.labelled.size(), 5u);  // 0, 1, 3, 5, 6 (4 was answered y already, 7 n)
 }
 
-// within_image (on for the model's tracks): a track does not enter a candidate whose window reaches beyond the
-// image; without it the same candidate is labelled.
+// within_image (on for the model's tracks): a track neither enters nor starts at a candidate whose window
+// reaches beyond the image; without it the same candidate is labelled, and followed from.
 TEST(TrackPropagation, WithinImageStopsATrackAtACropCutByTheImage) {
   auto frames = walking(10);
   frames[6][0].cut_by_image = true;  // the person's window leaves the image there
@@ -115,8 +115,10 @@ TEST(TrackPropagation, WithinImageStopsATrackAtACropCutByTheImage) {
   gated.max_gap_frames = 0;
   gated.within_image = true;
   EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', gated, CameraModel{}).labelled.size(), 5u);  // 0, 1, 3, 4, 5
+  EXPECT_TRUE(propagate_track(frames, {6, 0}, 'n', gated, CameraModel{}).labelled.empty());  // nor starts there
   gated.within_image = false;
   EXPECT_EQ(propagate_track(frames, {2, 0}, 'n', gated, CameraModel{}).labelled.size(), 9u);
+  EXPECT_EQ(propagate_track(frames, {6, 0}, 'n', gated, CameraModel{}).labelled.size(), 9u);
 }
 
 TEST(TrackPropagation, FramesWhereNothingPassesAreSteppedOverUpToMaxGapFrames) {

@@ -457,7 +457,6 @@ void LabelingSession::propagate_model_answers() {
         const CandidateKey seed = PresentedCandidate{frames_[first + f], i}.key();
         const auto it = by_model.find(seed);
         if (it == by_model.end() || journal_.answer_of(seed) != it->second) continue;
-        if (params.within_image && frames[f][i].cut_by_image) continue;
         const char answer = it->second;
         const std::string by = model_track_answerer(seed);
         const PropagatedTrack track = propagate_track(frames, {f, i}, answer, params, config_.camera, answer_of);

@@ -65,6 +65,7 @@ PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& 
                                 char answer, const PropagationParams& params, const CameraModel& camera,
                                 const AnswerOf& answer_of) {
   PropagatedTrack track;
+  if (params.within_image && frames[seed.frame][seed.index].cut_by_image) return track;  // starts nowhere
   std::vector<TrackLink> backwards;
   for (const int step : {-1, 1}) {
     TrackLink at = seed;

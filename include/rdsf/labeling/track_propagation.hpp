@@ -126,7 +126,8 @@ using AnswerOf = std::function<char(const TrackLink&)>;
 bool passes_track_gates(const TrackCandidate& t, const TrackCandidate& c, char answer, const PropagationParams& params,
                         const CameraModel& camera);
 
-/// Follows `seed` (answered `answer`, 'y' or 'n') through `frames` both ways (the rule above).
+/// Follows `seed` (answered `answer`, 'y' or 'n') through `frames` both ways (the rule above); with
+/// params.within_image a seed cut by the image's edge labels nothing.
 PropagatedTrack propagate_track(const std::vector<std::vector<TrackCandidate>>& frames, const TrackLink& seed,
                                 char answer, const PropagationParams& params, const CameraModel& camera,
                                 const AnswerOf& answer_of = {});
