@@ -6,6 +6,7 @@
 #include "rdsf/candidates/column_heights.hpp"
 #include "rdsf/candidates/floor_trim.hpp"
 #include "rdsf/candidates/layer_objects.hpp"
+#include "rdsf/candidates/object_height.hpp"
 
 namespace rdsf {
 
@@ -154,6 +155,7 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
       candidate.part = object.part;
       candidate.object = objects_before + object.object;
       cut_crops(frame, segmentation.labels, layer.label, candidate.window_unclipped, crop_size, candidate, colour);
+      if (taller_than_a_person(candidate, frame.camera, params.max_height_cm)) continue;
       candidates.push_back(std::move(candidate));
     }
     int in_layer = 0;
