@@ -174,7 +174,7 @@ struct CandidateParams {
   /// Objects taller than this (cm) at their own depth (object_height.hpp: the strict box's height at the
   /// median of the depth crop's readings, not the layer's mean depth) are not candidates: no person is, and
   /// door frames, curtains, tall furniture and a person joined with what stands above them are. 0 turns it
-  /// off, the default. 250 (a 2 m person's raised hand) turns it on: with people/v2 the quality report
+  /// off, the default. 250 (a 2 m person's raised hand) turns it on: with people/v2 rdsf-detect --truth
   /// measured TAR at FPPF <= 0.1 on three sets of 16 synthetic rooms 0.677 -> 0.686 (seed 81, the set the
   /// rule was tried on), 0.741 -> 0.758 (seed 91, rendered after) and 0.771 -> 0.776 (seed 31), the UC3M lab
   /// 24 -> 25 of 27 people and the home 19 of 22 either way, with a third fewer candidates; it stays off
