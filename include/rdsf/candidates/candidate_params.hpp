@@ -177,8 +177,9 @@ struct CandidateParams {
   /// off, the default. 250 (a 2 m person's raised hand) turns it on: with people/v2 rdsf-detect --truth
   /// measured TAR at FPPF <= 0.1 on three sets of 16 synthetic rooms 0.677 -> 0.686 (seed 81, the set the
   /// rule was tried on), 0.741 -> 0.758 (seed 91, rendered after) and 0.771 -> 0.776 (seed 31), the UC3M lab
-  /// 24 -> 25 of 27 people and the home 19 of 22 either way, with a third fewer candidates; it stays off
-  /// until a model is trained on its candidates (docs/quality.md, "A person's height at their own depth").
+  /// 24 -> 25 of 27 people and the home 19 of 22 either way, with a third fewer candidates. Off: a model
+  /// retrained on its candidates lost 5 of the home's 22 people (docs/quality.md, "A person's height at
+  /// their own depth").
   double max_height_cm = 0.0;
   /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting by
   /// depth jumps, valleys and steps (split), narrower pieces may be joined (join).
