@@ -82,7 +82,7 @@ const ParameterTable<CandidateParams>& candidate_parameters() {
       parameter("max-height", &P::max_height_cm,
                 "objects taller than this (cm) at their own depth (the median of their crop's readings) "
                 "are not candidates: door frames, curtains, a person merged with what stands above them "
-                "(220 turns it on); 0 = off, the thesis",
+                "(250 turns it on); 0 = off, the thesis",
                 Range::at_least(0), std::optional<double>(0.0)),
       parameter("max-person-width", &P::max_person_width_cm,
                 "the widest person (cm): wider objects are tried for splitting by depth jumps, valleys "

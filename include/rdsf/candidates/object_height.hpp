@@ -1,5 +1,5 @@
 #pragma once
-// An object's height in metres at its own depth (CandidateParams::max_height_cm). The layer's mean depth
+// An object's height at its own depth, in cm (CandidateParams::max_height_cm). The layer's mean depth
 // (Candidate::layer_depth_mm) can be metres off an object's own: a layer spans up to candidate_threshold of
 // depth, and on the 16 held-out synthetic rooms 18 of 608 people came out 2.2-3.0 m tall by it
 // (docs/quality.md, "Metric size as features"). The object's depth here is the median of its depth crop's
