@@ -21,6 +21,7 @@
 # recordings and sets, and each rdsf-adapt run resumes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -37,20 +38,9 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
 USAGE
 }
 out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people base="" modes="track candidate retrain negatives"
-adapt_args=()
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --synthetic) synthetic="$2"; shift 2 ;;
-    --budgets) budgets="$2"; shift 2 ;;
-    --real) real="$2"; shift 2 ;;
-    --base) base="$2"; shift 2 ;;
-    --modes) modes="$2"; shift 2 ;;
-    --adapt-args) read -r -a adapt_args <<< "$2"; shift 2 ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "adaptation-benchmark: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+adapt_args_text=""
+script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text -- "$@"
+read -r -a adapt_args <<<"$adapt_args_text"
 case "$synthetic" in ''|*[!0-9]*) echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2 ;; esac
 ((synthetic <= 16)) || { echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2; }
 for m in $modes; do

@@ -17,21 +17,10 @@
 # --relative 0.03, --quantile 0.8, the held-out rendering made under --out. Runs already made are reused.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 out=out/background sets="walls51 walls41 walls61 heldout real" margin=100 relative=0.03 quantile=0.8
 heldout="" heldout_empty="" build=${RDSF_BUILD_DIR:-build}
-while [ $# -gt 0 ]; do
-  case $1 in
-    --out) out=$2; shift 2 ;;
-    --sets) sets=$2; shift 2 ;;
-    --margin) margin=$2; shift 2 ;;
-    --relative) relative=$2; shift 2 ;;
-    --quantile) quantile=$2; shift 2 ;;
-    --heldout) heldout=$2; shift 2 ;;
-    --heldout-empty) heldout_empty=$2; shift 2 ;;
-    --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "background-report: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
+script_options background-report --out=out --sets=sets --margin=margin --relative=relative --quantile=quantile --heldout=heldout --heldout-empty=heldout_empty -- "$@"
 synth=$build/synth/rdsf-synth detect=$build/detector/rdsf-detect learn=$build/detector/rdsf-background
 mkdir -p "$out/data" "$out/lists" "$out/backgrounds" "$out/runs"
 out=$(cd "$out" && pwd)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The report scripts' command lines (CTest report_scripts): --help exits 0 and names its defaults, an
-# unknown argument is a usage error (exit 2), a folder without a quality report's data is a one-line
-# error naming the folder (exit 1), all before any work.
+# The scripts' command lines (CTest report_scripts): scripts/lib/options.sh, the one reader they share,
+# takes values, switches, -- and pass-through as its header says and refuses the rest; every script's
+# --help exits 0 and names its defaults, an unknown argument is a usage error (exit 2), a folder without a
+# quality report's data is a one-line error naming the folder (exit 1), all before any work.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 fail() { echo "check-report-scripts: $*" >&2; exit 1; }
@@ -13,9 +14,38 @@ expect() {  # exit code, pattern of stderr/stdout, command...
   grep -qE -e "$pattern" <<<"$output" || fail "$* printed no line matching '$pattern': $output"
 }
 empty=$(mktemp -d); trap 'rm -rf "$empty"' EXIT
-for s in quality-report regularisation-sweep adaptation-benchmark loso-report background-report propagation-report; do
-  expect 0 "default" "scripts/$s.sh" --help
+
+# options_of ARGS...: what script_options makes of ARGS with a fixed set of specs, as one line.
+options_of() {
+  bash -c '. scripts/lib/options.sh
+    usage() { echo "usage: demo"; }
+    out=out/default real=../real docs=0 peer=1
+    script_options demo --out=out --real=real --no-real=real= --docs=docs=1 --no-peer=peer=0 "$PASS" -- "$@"
+    echo "out=$out real=$real docs=$docs peer=$peer rest=${script_rest[*]}"' demo "$@"
+}
+PASS= expect 0 "^out=out/default real=../real docs=0 peer=1 rest=$" options_of
+PASS= expect 0 "^out=a b real= docs=1 peer=0 rest=$" options_of --out "a b" --no-real --docs --no-peer
+PASS= expect 0 "^out=x=y real=r docs=0 peer=1 rest=$" options_of --out=x=y --real r
+PASS= expect 0 "^out=2 real=../real docs=0 peer=1 rest=--out 3 -v$" options_of --out 1 --out 2 -- --out 3 -v
+PASS= expect 0 "^usage: demo$" options_of --docs --help
+PASS= expect 2 "^demo: unknown argument '--bogus'$" options_of --docs --bogus
+PASS= expect 2 "^demo: unknown argument 'stray'$" options_of stray
+PASS= expect 2 "^demo: --out needs a value$" options_of --docs --out
+PASS= expect 2 "^demo: --docs takes no value$" options_of --docs=1
+PASS='*' expect 0 "^out=o real=../real docs=0 peer=1 rest=--quick --rounds 3$" options_of --quick --out o --rounds 3
+PASS= expect 2 "^usage: demo$" options_of --bogus
+
+scripts=(quality-report regularisation-sweep adaptation-benchmark loso-report background-report propagation-report
+         resolution-report main-job train-default-model shard-mine feature-spec-compare labeler-bench
+         scaling-measure ros-latency option-reference)
+for s in "${scripts[@]}"; do
+  expect 0 "[Dd]efault" "scripts/$s.sh" --help
   expect 2 "unknown argument '--bogus'" "scripts/$s.sh" --bogus
+done
+# Every script that reads options reads them with scripts/lib/options.sh (perf-report passes the rest on).
+for f in scripts/*.sh; do
+  grep -qE '^while (\(\(\$#\)\)|\[ \$# -gt 0 \]); do' "$f" &&
+    fail "$f reads its options with a loop of its own: use script_options (scripts/lib/options.sh)"
 done
 expect 2 "--test-frames takes a positive number" scripts/quality-report.sh --test-frames 0
 expect 2 "--synthetic takes 0-16" scripts/adaptation-benchmark.sh --synthetic 17

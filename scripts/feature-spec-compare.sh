@@ -5,18 +5,12 @@
 # manifests' spec differs), trains hugeTree-scaled models on each and validates them on the sets labelled
 # from the held-out recording. Prints time per round and held-out AUC per spec.
 #   scripts/feature-spec-compare.sh [--out DIR] [--scale S] [--rounds N] [--pool N]
+# Defaults: --out out/feature-spec-compare --scale 0.3 --rounds 100 --pool 0.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 out=out/feature-spec-compare scale=0.3 rounds=100 pool=0
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --scale) scale="$2"; shift 2 ;;
-    --rounds) rounds="$2"; shift 2 ;;
-    --pool) pool="$2"; shift 2 ;;
-    *) echo "feature-spec-compare: unknown argument '$1'" >&2; exit 2 ;;
-  esac
-done
+script_options feature-spec-compare --out=out --scale=scale --rounds=rounds --pool=pool -- "$@"
 bin=${RDSF_BUILD_DIR:-build}
 synth=$bin/synth/rdsf-synth mine=$bin/miner/rdsf-mine label=$bin/labeler/rdsf-label train=$bin/trainer/rdsf-train
 data=$out/data

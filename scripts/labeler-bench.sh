@@ -10,14 +10,9 @@
 # Usage: scripts/labeler-bench.sh [--out DIR] (default out/labeler-bench)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 out=out/labeler-bench
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n 2,10p "$0"; exit 0 ;;
-    *) echo "labeler-bench: unknown argument '$1'" >&2; exit 2 ;;
-  esac
-done
+script_options labeler-bench --out=out -- "$@"
 bin=${RDSF_BUILD_DIR:-build}
 mkdir -p "$out"
 render() {  # folder seed frames

@@ -16,6 +16,7 @@
 #      defaults and under the choices made without it; written to --out/loso/MODEL/TABLE.md and printed
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -32,15 +33,7 @@ folder with RDSF_BUILD_DIR); trains nothing.
 USAGE
 }
 out=out/quality real=../shared/realdata/people model=people/v2
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --real) real="$2"; shift 2 ;;
-    --model) model="$2"; shift 2 ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "loso-report: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options loso-report --out=out --real=real --model=model -- "$@"
 bin=${RDSF_BUILD_DIR:-build}
 synth=$bin/synth/rdsf-synth detect=$bin/detector/rdsf-detect
 for p in "$synth" "$detect"; do

@@ -11,6 +11,7 @@
 # report goes to its own runs/<time>/ folder: a rerun never clobbers an earlier run's models or report.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -24,16 +25,7 @@ USAGE
 out=out/main-job
 full=0
 real=../shared/realdata/people
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --full) full=1; shift ;;
-    --real) real="$2"; shift 2 ;;
-    --no-real) real=""; shift ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "main-job: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options main-job --out=out --full=full=1 --real=real --no-real=real= -- "$@"
 
 started=$(date +%s)
 step() { printf '\n== [%s/6] %s (%ds)\n' "$1" "$2" "$(( $(date +%s) - started ))"; }

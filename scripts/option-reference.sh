@@ -2,19 +2,13 @@
 # Writes docs/options.md, the option reference, from every program's --help, so that the reference and the
 # programs cannot drift apart. --check writes nothing: it exits 1 with a one-line hint when the checked-in
 # file differs from what the built programs print (CTest runs it as option_reference).
-#   scripts/option-reference.sh [--check] [--build-dir DIR]      (DIR: $RDSF_BUILD_DIR, else build)
+#   scripts/option-reference.sh [--check] [--build-dir DIR]      (default DIR: $RDSF_BUILD_DIR, else build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 check=0
 build_dir="${RDSF_BUILD_DIR:-build}"
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --check) check=1 ;;
-    --build-dir) build_dir="$2"; shift ;;
-    *) echo "option-reference.sh: usage error: unknown argument '$1' (give --check, --build-dir DIR)" >&2; exit 2 ;;
-  esac
-  shift
-done
+script_options option-reference.sh --check=check=1 --build-dir=build_dir -- "$@"
 
 # folder/program under the build folder, in the order of the workflow.
 programs="synth/rdsf-synth recorder/rdsf-record miner/rdsf-mine labeler/rdsf-label miner/rdsf-samples

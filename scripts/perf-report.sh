@@ -4,28 +4,26 @@
 #
 #   scripts/perf-report.sh            full run (about 5-10 minutes on 2 cores) -> docs/perf-report.md
 #   scripts/perf-report.sh --quick    smoke run in well under a minute -> $build_dir/perf-report-quick.md
-#   scripts/perf-report.sh --out FILE [program options...]   (see: scripts/perf-report.sh --help)
+#   scripts/perf-report.sh --out FILE [program options...]   (rdsf-perf-report's options follow below)
 #
 # The report at the default place is the project's latest table and is replaced on every full run; any
 # other --out is refused when it exists unless --force is given. Build folder: $RDSF_BUILD_DIR or build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 build_dir="${RDSF_BUILD_DIR:-build}"
 program="$build_dir/bench/report/rdsf-perf-report"
 
+usage() {
+  sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"
+  if [ -x "$program" ]; then echo; "$program" --help; else echo "($program is not built yet: its options are in docs/options.md)"; fi
+}
 quick=0
 out=""
-args=()
-while (($#)); do
-  case "$1" in
-    --quick) quick=1; args+=("$1") ;;
-    --out) out="${2:?--out needs a file}"; shift ;;
-    --out=*) out="${1#--out=}" ;;
-    *) args+=("$1") ;;
-  esac
-  shift
-done
+script_options perf-report --out=out '*' -- "$@"
+args=("${script_rest[@]}")
+for a in "${args[@]}"; do [ "$a" != --quick ] || quick=1; done
 if [ -z "$out" ]; then
   if ((quick)); then out="$build_dir/perf-report-quick.md"; else out="docs/perf-report.md"; fi
   args+=(--force)  # the default report is regenerated on every run

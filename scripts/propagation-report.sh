@@ -7,6 +7,7 @@
 # truth contradicts. Renderings under --out are reused when complete.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 usage() {
   cat <<'USAGE'
 scripts/propagation-report.sh [--seeds "S ..."] [--frames N] [--out DIR]
@@ -17,15 +18,7 @@ Programs: $RDSF_BUILD_DIR (default build/): synth/rdsf-synth, labeler/rdsf-label
 USAGE
 }
 seeds="31 32 33 34" frames=960 out=out/propagation
-while (($#)); do
-  case "$1" in
-    --seeds) seeds="$2"; shift 2 ;;
-    --frames) frames="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "propagation-report.sh: usage error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
+script_options propagation-report.sh --seeds=seeds --frames=frames --out=out -- "$@"
 [[ "$frames" =~ ^[1-9][0-9]*$ ]] || { echo "propagation-report.sh: usage error: --frames takes a positive number" >&2; exit 2; }
 [[ "$seeds" =~ ^[0-9]+( [0-9]+)*$ ]] || { echo "propagation-report.sh: usage error: --seeds takes numbers" >&2; exit 2; }
 bin=${RDSF_BUILD_DIR:-build}

@@ -22,6 +22,7 @@
 # Everything goes under out/quality (--out); the tables are collected in REPORT.md there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -49,20 +50,7 @@ test_frames=960
 docs=0
 variety=""
 peer=1
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --real) real="$2"; shift 2 ;;
-    --no-real) real=""; shift ;;
-    --only) only="$2"; shift 2 ;;
-    --test-frames) test_frames="$2"; shift 2 ;;
-    --docs) docs=1; shift ;;
-    --synth-variety) variety="$2"; shift 2 ;;
-    --no-peer) peer=0; shift ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "quality-report: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options quality-report --out=out --real=real --no-real=real= --only=only --test-frames=test_frames --docs=docs=1 --synth-variety=variety --no-peer=peer=0 -- "$@"
 case "$only" in ""|levers|recipes) ;; *) echo "quality-report: --only takes levers or recipes" >&2; exit 2 ;; esac
 if ((docs)) && [ -n "$only" ]; then echo "quality-report: --docs needs the whole report (no --only)" >&2; exit 2; fi
 case "$test_frames" in ''|*[!0-9]*|0) echo "quality-report: --test-frames takes a positive number of frames" >&2; exit 2 ;; esac

@@ -8,6 +8,7 @@
 # models and reports go to DIR/sweep; the table to DIR/sweep/TABLE.md (and docs/regularisation.md with --docs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -18,15 +19,7 @@ Usage: scripts/regularisation-sweep.sh --out DIR [--only NAME[,NAME...]] [--docs
 USAGE
 }
 out=out/quality only="" docs=0
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --only) only="$2"; shift 2 ;;
-    --docs) docs=1; shift ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "regularisation-sweep: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options regularisation-sweep --out=out --only=only --docs=docs=1 -- "$@"
 bin=${RDSF_BUILD_DIR:-build}
 train=$bin/trainer/rdsf-train detect=$bin/detector/rdsf-detect
 data=$out/data sets=$out/sets

@@ -20,6 +20,7 @@
 # their inputs did not change; the tables are collected in REPORT.md there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -57,19 +58,7 @@ model=models/people/v2.yml
 real=../shared/realdata/people
 lever=1
 seeds=3
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --test-frames) test_frames="$2"; shift 2 ;;
-    --model) model="$2"; shift 2 ;;
-    --real) real="$2"; shift 2 ;;
-    --no-real) real=""; shift ;;
-    --no-lever) lever=0; shift ;;
-    --seeds) seeds="$2"; shift 2 ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "resolution-report: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options resolution-report --out=out --test-frames=test_frames --model=model --real=real --no-real=real= --no-lever=lever=0 --seeds=seeds -- "$@"
 case "$seeds" in ''|*[!0-9]*|0) echo "resolution-report: --seeds takes a positive number" >&2; exit 2 ;; esac
 case "$test_frames" in ''|*[!0-9]*|0) echo "resolution-report: --test-frames takes a positive number of frames" >&2; exit 2 ;; esac
 [ -f "$model" ] || { echo "resolution-report: $model: no such model file" >&2; exit 2; }

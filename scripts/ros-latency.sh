@@ -8,22 +8,15 @@
 # message in the node to people published: p50/p95/p99/max, frames dropped) and the probe's (camera_info
 # message to people, both seen from another node). A measurement, not a test: no figure is asserted.
 #   scripts/ros-latency.sh [--seconds 60] [--threads 2] [--frames DIR] [--build-dir DIR]
+# Defaults: as shown; --frames ../shared/realdata/people, --build-dir $RDSF_BUILD_DIR, else build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 seconds=60
 threads=2
 frames=../shared/realdata/people
 build_dir="${RDSF_BUILD_DIR:-build}"
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --seconds) seconds="$2"; shift ;;
-    --threads) threads="$2"; shift ;;
-    --frames) frames="$2"; shift ;;
-    --build-dir) build_dir="$2"; shift ;;
-    *) echo "ros-latency.sh: usage error: unknown argument '$1' (give --seconds N, --threads N, --frames DIR, --build-dir DIR)" >&2; exit 2 ;;
-  esac
-  shift
-done
+script_options ros-latency.sh --seconds=seconds --threads=threads --frames=frames --build-dir=build_dir -- "$@"
 node_program="$build_dir/ros/rdsf_people"
 [ -x "$node_program" ] || { echo "ros-latency.sh: error: $node_program is missing (build with ROS 1: scripts/setup.sh)" >&2; exit 1; }
 [ -d "$frames" ] || { echo "ros-latency.sh: error: $frames: no such folder of frames" >&2; exit 1; }

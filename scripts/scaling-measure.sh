@@ -4,19 +4,12 @@
 # (/usr/bin/time's maximum resident set) and, under mpirun, the time in the ranks' collective calls. The sets
 # are made as the main job makes them (rdsf-synth, rdsf-mine, rdsf-label --truth) unless they exist. Writes a
 # Markdown table to OUT/scaling.md, the logs and each run's model (OUT/models-RUN) beside it.
+#   scripts/scaling-measure.sh [--out DIR (default out/scaling)] [--frames N (1200)] [--rounds N (30)] [--depth D (2)]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 out=out/scaling frames=1200 rounds=30 depth=2
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --frames) frames="$2"; shift 2 ;;
-    --rounds) rounds="$2"; shift 2 ;;
-    --depth) depth="$2"; shift 2 ;;
-    -h|--help) echo "Usage: scripts/scaling-measure.sh [--out DIR (out/scaling)] [--frames N (1200)] [--rounds N (30)] [--depth D (2)]"; exit 0 ;;
-    *) echo "scaling-measure: unknown argument '$1'" >&2; exit 2 ;;
-  esac
-done
+script_options scaling-measure --out=out --frames=frames --rounds=rounds --depth=depth -- "$@"
 bin=$(cd "${RDSF_BUILD_DIR:-build}" && pwd)
 command -v mpirun >/dev/null || { echo "scaling-measure: mpirun is absent (Debian: openmpi-bin)" >&2; exit 1; }
 mkdir -p "$out"/{data,sets,logs}

@@ -7,6 +7,7 @@
 # shard). Everything resumes: a shard mined again skips what it has, the merge skips what the set has.
 # Slurm runs the same per-shard step per array index: scripts/slurm/mine-array.sbatch.
 set -euo pipefail
+. "$(dirname "$0")/lib/options.sh"
 
 usage() {
   cat <<USAGE
@@ -25,21 +26,8 @@ rdsf-mine: \$RDSF_MINE, else \$RDSF_BUILD_DIR/miner/rdsf-mine (default build/), 
 USAGE
 }
 list="" out="" shards="" work="" jobs="" sshlogin="" one="" merge_only=0 extra=()
-while (($#)); do
-  case "$1" in
-    --list) list="$2"; shift 2 ;;
-    --out) out="$2"; shift 2 ;;
-    --shards) shards="$2"; shift 2 ;;
-    --work) work="$2"; shift 2 ;;
-    --jobs) jobs="$2"; shift 2 ;;
-    --sshlogin) sshlogin="$2"; shift 2 ;;
-    --one-shard) one="$2"; shift 2 ;;
-    --merge-only) merge_only=1; shift ;;
-    --) shift; extra=("$@"); break ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "shard-mine: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options shard-mine --list=list --out=out --shards=shards --work=work --jobs=jobs --sshlogin=sshlogin --one-shard=one --merge-only=merge_only=1 -- "$@"
+extra=("${script_rest[@]}")
 [ -n "$out" ] || { echo "shard-mine: give --out SET" >&2; usage >&2; exit 2; }
 shards=${shards:-$(nproc 2>/dev/null || echo 2)}
 [[ "$shards" =~ ^[1-9][0-9]*$ ]] || { echo "shard-mine: --shards must be a positive number, not '$shards'" >&2; exit 2; }

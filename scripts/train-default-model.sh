@@ -27,6 +27,7 @@
 # training is the default's. Without the option the script runs exactly as before.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/lib/options.sh
 
 usage() {
   cat <<USAGE
@@ -46,18 +47,7 @@ USAGE
 }
 out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1
 target=models/people/v2.yml  # the file this script trains and installs
-while (($#)); do
-  case "$1" in
-    --out) out="$2"; shift 2 ;;
-    --install) install=1; shift ;;
-    --force) force=1; shift ;;
-    --quick) quick=1; shift ;;
-    --candidates) candidates="$2"; shift 2 ;;
-    --cameras) cameras="$2"; shift 2 ;;
-    -h|--help) usage; exit 0 ;;
-    *) echo "train-default-model: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
-  esac
-done
+script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --cameras=cameras -- "$@"
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
 case "$cameras" in kinect1|mix) ;; *) echo "train-default-model: --cameras takes kinect1 or mix" >&2; exit 2 ;; esac
