@@ -50,41 +50,30 @@ inline Segmentation kmeans_layers_reference(const cv::Mat1w& depth_mm, const std
   assign_nearest_reference(centres, assignment);
   std::vector<double> sums;
   std::vector<std::uint64_t> counts;
-  for (int iteration = 0;; ++iteration) {
+  const auto sum_clusters = [&] {  // per cluster of `assignment`: the sum of its depth values and their count
     sums.assign(centres.size(), 0.0);
     counts.assign(centres.size(), 0);
     for (std::size_t d = 1; d < levels; ++d) {
-      if (histogram[d] == 0) continue;
       sums[assignment[d]] += static_cast<double>(d) * histogram[d];
       counts[assignment[d]] += histogram[d];
     }
+  };
+  // Stable: no depth value that occurs changes cluster and no cluster was dropped (indices shift when one
+  // is; the pixel partition is what must be stable). At least one iteration, at most max_iterations.
+  bool stable = false;
+  do {
+    ++result.iterations;
+    sum_clusters();
     centres = kmeans_means(sums, counts);  // the library's update (tested apart)
     if (centres.empty()) return result;
     std::vector<int> next(levels, 0);
     assign_nearest_reference(centres, next);
-    // Compare only depth values that occur: the others do not change any pixel.
-    bool changed = false;
-    for (std::size_t d = 1; d < levels && !changed; ++d) {
-      changed = histogram[d] != 0 && next[d] != assignment[d];
-    }
-    // Cluster indices shift when a cluster was dropped; the pixel partition is what must be stable.
-    if (!changed && centres.size() == sums.size()) {
-      result.iterations = iteration + 1;
-      break;
-    }
-    assignment.swap(next);
-    if (iteration + 1 >= max_iterations) {
-      result.iterations = iteration + 1;
-      // Final centres are the means of the final assignment.
-      sums.assign(centres.size(), 0.0);
-      counts.assign(centres.size(), 0);
-      for (std::size_t d = 1; d < levels; ++d) {
-        sums[assignment[d]] += static_cast<double>(d) * histogram[d];
-        counts[assignment[d]] += histogram[d];
-      }
-      break;
-    }
-  }
+    bool moved = false;
+    for (std::size_t d = 1; d < levels; ++d) moved = moved || (histogram[d] != 0 && next[d] != assignment[d]);
+    stable = !moved && centres.size() == sums.size();
+    if (!stable) assignment = next;
+  } while (!stable && result.iterations < max_iterations);
+  if (!stable) sum_clusters();  // the final centres are the means of the final assignment
 
   // Layers: clusters with pixels, nearest first, labelled 1..K.
   std::vector<int> label_of_cluster(centres.size(), 0);
