@@ -42,8 +42,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     o.feature_spec_given = !values["feature-spec"].defaulted();
-    // Not waiting, a frame's colour is the previous frame's: allow a frame period at 10 frames/s and up.
-    if (!o.colour_wait && values["colour-gap-ms"].defaulted()) o.colour_gap_ms = rdsf::kColourGapWithoutWaitMs;
+    // Waiting, a frame's colour is its own: a pair's stamps are close. Not waiting (the default), it is the
+    // previous frame's: the default gap allows a frame period at 10 frames/s and up.
+    if (o.colour_wait && values["colour-gap-ms"].defaulted()) o.colour_gap_ms = rdsf::kColourGapWaitingMs;
     rdsf::cli::apply_background(background, o.pipeline.analyser);
     return rdsf::run_people_node(o);
   });

@@ -10,12 +10,12 @@ const ParameterTable<PeopleNodeOptions>& node_parameters() {
                 "compares colour histograms"),
       parameter("colour-gap-ms", &P::colour_gap_ms,
                 "largest stamp difference (ms) of a depth and a colour image that are a pair (with --colour-wait "
-                "false: 100 unless given)",
+                "true: 15 unless given)",
                 Range::at_least(0)),
       parameter("colour-wait", &P::colour_wait,
-                "a depth frame waits for the colour image of its stamp (until the next frame at most); false: it takes "
-                "the colour image already there (the previous frame's, one frame period older) and never waits, for "
-                "the lowest latency"),
+                "false: a depth frame takes the colour image already there (the previous frame's, one frame period "
+                "older) and never waits, for the lowest latency (tracking measured the same); true: it waits for the "
+                "colour image of its own stamp (until the next frame at most)"),
       parameter("diagnostics-period", &P::diagnostics_period_s,
                 "seconds between /diagnostics messages (drops, latency percentiles)", Range::above(0)),
   };

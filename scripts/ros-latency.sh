@@ -3,8 +3,8 @@
 # free port, the node, a bag written from real frames (scripts/frames-to-bag.py) played in a loop at its
 # 30 frames/s by `rosbag play -l`, and scripts/ros-latency-probe.py subscribed to the depth camera_info
 # topic and to /people. Three runs: depth only (the 46 frames of ../shared/realdata/people), depth with colour
-# (the frames of that folder that have a colour image, --colour on), and the same with --colour-wait false
-# --colour-gap-ms 40 (a frame takes the colour image already there and never waits for its own). Prints per run the node's own line (depth
+# (the frames of that folder that have a colour image, --colour on: a frame takes the colour image already
+# there, the default), and the same with --colour-wait true (a frame waits for its own colour image). Prints per run the node's own line (depth
 # message in the node to people published: p50/p95/p99/max, frames dropped) and the probe's (camera_info
 # message to people, both seen from another node). A measurement, not a test: no figure is asserted.
 #   scripts/ros-latency.sh [--seconds 60] [--threads 2] [--frames DIR] [--build-dir DIR]
@@ -80,6 +80,6 @@ run_case() {  # NAME BAG COLOUR [NODE OPTION ...]
 run_case depth "$work/depth.bag" false
 if [ "$have_colour" = 1 ]; then
   run_case colour "$work/colour.bag" true
-  run_case colour-no-wait "$work/colour.bag" true --colour-wait false --colour-gap-ms 40
+  run_case colour-wait "$work/colour.bag" true --colour-wait true
 fi
 echo "ros-latency.sh: load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
