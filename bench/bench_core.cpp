@@ -219,6 +219,21 @@ void BM_ScoreModelFeaturesOnly(benchmark::State& state) {
 }
 BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
+// Mirror averaging (PipelineParams::mirror_average, the default): argument 0 scores a crop, 1 scores the
+// crop and its mirror (ModelScorer::mirrored_score) as the pipeline does: the price per candidate.
+void BM_ScoreWithMirror(benchmark::State& state) {
+  const rdsf::ModelScorer scorer(random_model(rdsf::FeatureSpec{}, 100));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const cv::Mat1w& crop = crops()[i++ % crops().size()];
+    double h = scorer.score(crop);
+    if (state.range(0) == 1) h = 0.5 * (h + scorer.mirrored_score(crop));
+    benchmark::DoNotOptimize(h);
+  }
+  per_candidate(state);
+}
+BENCHMARK(BM_ScoreWithMirror)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 void BM_WholeCoreFrame(benchmark::State& state) {
   const rdsf::FrameAnalyser analyser;
   std::size_t i = 0;

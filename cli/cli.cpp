@@ -22,7 +22,7 @@ const char* const kNamingNote =
     "is --row-step, also in --config files), and so is --color for --colour.";
 
 // --thesis: every departure option not given explicitly takes the thesis's value (the rows of
-// analyser_parameters() that declare one). Applied to the parsed values before po::notify stores them, so
+// analyser_parameters() that declare one, and --mirror-average). Applied to the parsed values before po::notify stores them, so
 // explicit options still win.
 void apply_thesis_preset(po::variables_map& values) {
   const auto it = values.find("thesis");
@@ -33,6 +33,9 @@ void apply_thesis_preset(po::variables_map& values) {
     if (!row.thesis || option == values.end() || !option->second.defaulted()) continue;
     option->second.value() = std::visit([](const auto& v) { return boost::any(v); }, *row.thesis);
   }
+  // The decision options' one departure (add_decision_options): one crop per candidate, not its mirror too.
+  const auto mirror = values.find("mirror-average");
+  if (mirror != values.end() && mirror->second.defaulted()) mirror->second.value() = boost::any(false);
 }
 
 // Spellings accepted besides the canonical ones (which are kebab-case and British).
@@ -182,6 +185,9 @@ void add_decision_options(po::options_description& group, PipelineParams& p) {
        "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
       ("score-threshold", po::value<double>()->notifier([&p](double h) { p.score_threshold = h; }),
        "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
+      ("mirror-average", po::value(&p.mirror_average)->default_value(p.mirror_average),
+       "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right (0: the "
+       "crop alone, the thesis's way and --thesis's)")
       ("suppress-duplicates", po::value(&p.suppress_duplicates)->default_value(p.suppress_duplicates),
        "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a "
        "person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)");

@@ -87,8 +87,9 @@ void apply_background(const std::string& dir, AnalyserParams& analyser);
 /// A name or parameter that is not known is a UsageError.
 po::options_description feature_spec_options(FeatureSpec& spec);
 
-/// --threshold, --score-threshold and --suppress-duplicates (what makes a candidate a person), added to
-/// `group` in that order and bound to `params` (rdsf-detect and the ROS node share them).
+/// --threshold, --score-threshold, --mirror-average and --suppress-duplicates (what makes a candidate a
+/// person), added to `group` in that order and bound to `params` (rdsf-detect and the ROS node share them);
+/// --thesis turns --mirror-average off unless it is given.
 void add_decision_options(po::options_description& group, PipelineParams& params);
 
 /// Options of the tracker (thesis names), bound to `params`.

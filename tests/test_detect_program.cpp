@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -116,6 +117,42 @@ TEST(DetectProgram, BoxOptionAndThesisPreset) {
   ASSERT_EQ(test::run(base + test::quote(dir / "extent.csv") + " --fit-min-width-ratio 0").exit_code, 0);
   EXPECT_NE(test::file_text(dir / "extent.csv").find("scene,0,300,100,40,360,2000,\n"), std::string::npos);
   EXPECT_EQ(test::run(base + test::quote(dir / "bad.csv") + " --box tight").exit_code, 2);
+}
+
+// Scores are the mean of the crop's and its mirror's H(x) by default; --mirror-average 0 scores the crop
+// alone, and so does --thesis unless --mirror-average is given.
+TEST(DetectProgram, MirrorAveragingIsTheDefaultAndTheThesisPresetTurnsItOff) {
+  test::TempDir dir;
+  DepthFrame frame = test::wall_frame(4500);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  test::paint(frame, {340, 180, 25, 12}, 2000);  // an arm held out on one side: the crop is not its own mirror
+  write_png_atomically(dir / "scene.depth.png", frame.depth_mm);
+  const std::string base = test::quote(test::program("rdsf-detect")) + " --source " +
+                           test::quote(dir.path().string()) + " --model people --models-dir " +
+                           test::quote(dir / "none") + " --force --out ";
+  const auto scores = [&](const std::string& name, const std::string& options) {
+    const test::RunResult r = test::run(base + test::quote(dir / name) + options);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::string out;  // column 8 (score) of every row
+    std::istringstream csv(test::file_text(dir / name));
+    std::string line;
+    std::getline(csv, line);
+    while (std::getline(csv, line)) {
+      std::istringstream row(line);
+      std::string field;
+      for (int i = 0; i < 8 && std::getline(row, field, ','); ++i) {
+      }
+      out += field + ";";
+    }
+    return out;
+  };
+  const std::string averaged = scores("default.csv", ""), one = scores("one.csv", " --mirror-average 0");
+  ASSERT_FALSE(averaged.empty());
+  EXPECT_NE(averaged, one);
+  EXPECT_EQ(averaged, scores("explicit.csv", " --mirror-average 1"));
+  const std::string thesis = scores("thesis.csv", " --thesis");
+  EXPECT_EQ(thesis, scores("thesis-one.csv", " --thesis --mirror-average 0"));
+  EXPECT_NE(thesis, scores("thesis-mirror.csv", " --thesis --mirror-average 1"));
 }
 
 TEST(DetectProgram, TruthWithoutAModelCountsThePeopleWithACandidate) {

@@ -9,6 +9,7 @@
 
 #include "rdsf/classifier/features_read.hpp"
 #include "rdsf/core/error.hpp"
+#include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
 #include "rdsf/dataset/sample_set_manifest.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
@@ -144,4 +145,67 @@ TEST(SampleSetManifest, OldManifestsStillReadAndRectOnesRoundTrip) {
   const std::string message = error_of([&] { SampleSetManifest::parse(unknown, "unknown.yml"); });
   EXPECT_NE(message.find("unknown.yml: feature spec"), std::string::npos) << message;
   EXPECT_NE(message.find("not one this build knows"), std::string::npos) << message;
+}
+
+// Mirror averaging: mirrored_score is the score of the crop mirrored left to right, a crop that is its own
+// mirror scores the same both ways, and average_with_mirror gives the mean of the two.
+TEST(ModelScorer, MirroredScoreIsTheScoreOfTheMirroredCropAndAveragingTakesTheMean) {
+  const BoostedModel model = random_model(FeatureSpec{}, 100, 7);
+  const ModelScorer scorer(model);
+  std::vector<Candidate> candidates;
+  std::vector<double> scores;
+  int differ = 0;
+  for (unsigned seed = 0; seed < 6; ++seed) {
+    Candidate c;
+    c.depth_crop = person_crop(seed);
+    c.depth_crop(cv::Rect(40, 30, 12, 40)).setTo(2500);  // an arm held out on one side: not its own mirror
+    cv::Mat1w flipped;
+    cv::flip(c.depth_crop, flipped, 1);
+    EXPECT_EQ(scorer.mirrored_score(c.depth_crop), scorer.score(flipped));
+    differ += scorer.mirrored_score(c.depth_crop) != scorer.score(c.depth_crop) ? 1 : 0;
+    cv::Mat1w symmetric = c.depth_crop.clone();
+    flipped(cv::Rect(0, 0, 32, 128)).copyTo(symmetric(cv::Rect(0, 0, 32, 128)));  // left half = right half mirrored
+    EXPECT_EQ(scorer.mirrored_score(symmetric), scorer.score(symmetric));
+    scores.push_back(scorer.score(c.depth_crop));
+    candidates.push_back(c);
+  }
+  EXPECT_GT(differ, 0);  // the mirror is another view: the averaging below is not the identity
+  std::vector<double> averaged = scores;
+  scorer.average_with_mirror(candidates, averaged);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    EXPECT_EQ(averaged[i], 0.5 * (scores[i] + scorer.mirrored_score(candidates[i].depth_crop)));
+  }
+}
+
+// The pipeline scores a candidate by the mean of its crop's and its mirror's H(x) by default
+// (PipelineParams::mirror_average), by its crop alone with it off, in both scoring paths (only the features
+// the model reads, and the full vector); P(person) is the calibration of that score.
+TEST(ModelScorer, PipelineScoresAreTheMeanOfTheCropAndItsMirrorByDefault) {
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
+  const ModelScorer scorer(model);
+  DepthFrame frame = test::wall_frame(4500);
+  test::paint(frame, {300, 100, 40, 360}, 2000);  // a body
+  test::paint(frame, {340, 180, 25, 12}, 2000);   // an arm held out to its left (the image's right)
+  test::paint(frame, {120, 150, 30, 300}, 3000);  // a narrow post
+  PipelineParams one_crop;
+  one_crop.mirror_average = false;
+  ASSERT_TRUE(PipelineParams{}.mirror_average);
+  for (bool full : {false, true}) {
+    PipelineParams averaged;
+    averaged.full_feature_vector = full;
+    one_crop.full_feature_vector = full;
+    const PipelineFrame a = PeoplePipeline(averaged, &model).analyse(frame);
+    const PipelineFrame b = PeoplePipeline(one_crop, &model).analyse(frame);
+    ASSERT_GE(a.analysis.candidates.size(), 2u);
+    ASSERT_EQ(a.scores.size(), b.scores.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < a.scores.size(); ++i) {
+      const cv::Mat1w& crop = a.analysis.candidates[i].depth_crop;
+      EXPECT_EQ(b.scores[i], scorer.score(crop));
+      EXPECT_EQ(a.scores[i], 0.5 * (scorer.score(crop) + scorer.mirrored_score(crop)));
+      EXPECT_EQ(a.probabilities[i], model.probability(a.scores[i]));
+      differ += a.scores[i] != b.scores[i] ? 1 : 0;
+    }
+    EXPECT_GT(differ, 0) << "full " << full;
+  }
 }

@@ -41,4 +41,16 @@ std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates)
   return out;
 }
 
+double ModelScorer::mirrored_score(const cv::Mat1w& crop) const {
+  thread_local cv::Mat1w mirrored;
+  cv::flip(crop, mirrored, 1);
+  return score(mirrored);
+}
+
+void ModelScorer::average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const {
+  for (std::size_t i = 0; i < candidates.size() && i < scores.size(); ++i) {
+    scores[i] = 0.5 * (scores[i] + mirrored_score(candidates[i].depth_crop));
+  }
+}
+
 }  // namespace rdsf

@@ -38,6 +38,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   auto start = std::chrono::steady_clock::now();
   if (full) {
     out.scores = model_->score(out.analysis.features);
+    if (params_.mirror_average) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
   } else {
     out.model_features.create(static_cast<int>(n), scorer_->features().size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -47,6 +48,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     start = std::chrono::steady_clock::now();
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
+    if (params_.mirror_average) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   std::vector<CandidateKin> kin;

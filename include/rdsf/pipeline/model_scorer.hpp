@@ -34,6 +34,11 @@ class ModelScorer {
   }
   /// H(x) of every candidate's depth crop.
   std::vector<double> score(const std::vector<Candidate>& candidates) const;
+  /// H(x) of the crop mirrored left to right: score(m) with m(x, y) = crop(W - 1 - x, y).
+  double mirrored_score(const cv::Mat1w& crop_depth_mm) const;
+  /// Mirror averaging (PipelineParams::mirror_average): (score(crop) + mirrored_score(crop)) / 2 per
+  /// candidate, from `scores`, each candidate's score(crop) as computed before.
+  void average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const;
 
  private:
   FeatureSubset subset_;

@@ -31,6 +31,15 @@ struct PipelineParams {
   /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
   /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
   bool full_feature_vector = false;
+  /// A candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right
+  /// (ModelScorer::mirrored_score): a person seen from the other side is a person, and the models are
+  /// trained with mirrored positives, so the mean keeps what both views agree on and halves what one view's
+  /// noise alone adds. P(person) is the model's calibration of that mean. Twice the features per candidate
+  /// (2.8 -> about 5.6 us). false: one crop, the thesis's way (--thesis turns it off). Measured with
+  /// people/v2 (docs/quality.md, "Mirror averaging"): TAR at FPPF <= 0.1 on five sets of 16 synthetic rooms
+  /// 0.771 / 0.677 / 0.741 / 0.774 / 0.604 -> 0.796 / 0.691 / 0.759 / 0.774 / 0.617, the UC3M lab and home
+  /// the same (24 of 27, 19 of 22).
+  bool mirror_average = true;
   /// Of a whole object and a piece cut out of it that both score as people, only the higher-scoring one
   /// is a detection (duplicate_candidates.hpp). Off: both are (which counts one person twice).
   bool suppress_duplicates = true;
