@@ -186,8 +186,8 @@ void add_decision_options(po::options_description& group, PipelineParams& p) {
       ("score-threshold", po::value<double>()->notifier([&p](double h) { p.score_threshold = h; }),
        "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
       ("mirror-average", po::value(&p.mirror_average)->default_value(p.mirror_average),
-       "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right (0: the "
-       "crop alone, the thesis's way and --thesis's)")
+       "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right, except "
+       "with a model adapted to a room by rdsf-adapt (0: the crop alone, the thesis's way and --thesis's)")
       ("suppress-duplicates", po::value(&p.suppress_duplicates)->default_value(p.suppress_duplicates),
        "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a "
        "person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)");

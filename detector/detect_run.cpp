@@ -222,7 +222,7 @@ class FrameHandler {
       std::vector<double> scores = processed.scores;  // the first model's, as the pipeline scored them
       if (m != 0) {
         scores = scorers_[m].score(found);
-        if (o_.pipeline.mirror_average) scorers_[m].average_with_mirror(found, scores);
+        if (o_.pipeline.mirror_average_for(models_[m])) scorers_[m].average_with_mirror(found, scores);
       }
       EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
       for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];

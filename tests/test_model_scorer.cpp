@@ -208,4 +208,14 @@ TEST(ModelScorer, PipelineScoresAreTheMeanOfTheCropAndItsMirrorByDefault) {
     }
     EXPECT_GT(differ, 0) << "full " << full;
   }
+  // A model adapted to a room (rdsf-adapt records adapted_room) is scored by its crop alone.
+  BoostedModel adapted = model;
+  adapted.training().parameters.emplace_back("adapted_room", "/data/our-lab");
+  EXPECT_TRUE(PipelineParams{}.mirror_average_for(model));
+  EXPECT_FALSE(PipelineParams{}.mirror_average_for(adapted));
+  EXPECT_FALSE(one_crop.mirror_average_for(model));
+  const PipelineFrame c = PeoplePipeline(PipelineParams{}, &adapted).analyse(frame);
+  for (std::size_t i = 0; i < c.scores.size(); ++i) {
+    EXPECT_EQ(c.scores[i], scorer.score(c.analysis.candidates[i].depth_crop));
+  }
 }

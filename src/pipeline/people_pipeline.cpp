@@ -7,11 +7,20 @@
 #include "rdsf/pipeline/model_fit.hpp"
 
 namespace rdsf {
+bool PipelineParams::mirror_average_for(const BoostedModel& model) const {
+  if (!mirror_average) return false;
+  for (const auto& [key, value] : model.training().parameters) {
+    if (key == "adapted_room") return false;
+  }
+  return true;
+}
+
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
     : params_(params), model_(model), analyser_(params.analyser), tracker_(params.tracking) {
   if (model_ == nullptr) return;
   check_model_fits(*model_, params_.analyser);
   scorer_.emplace(*model_);
+  mirror_ = params_.mirror_average_for(*model_);
 }
 
 PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
@@ -38,7 +47,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   auto start = std::chrono::steady_clock::now();
   if (full) {
     out.scores = model_->score(out.analysis.features);
-    if (params_.mirror_average) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
+    if (mirror_) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
   } else {
     out.model_features.create(static_cast<int>(n), scorer_->features().size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -48,7 +57,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     start = std::chrono::steady_clock::now();
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
-    if (params_.mirror_average) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
+    if (mirror_) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   std::vector<CandidateKin> kin;

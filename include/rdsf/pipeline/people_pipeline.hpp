@@ -38,8 +38,14 @@ struct PipelineParams {
   /// (2.8 -> about 5.6 us). false: one crop, the thesis's way (--thesis turns it off). Measured with
   /// people/v2 (docs/quality.md, "Mirror averaging"): TAR at FPPF <= 0.1 on five sets of 16 synthetic rooms
   /// 0.771 / 0.677 / 0.741 / 0.774 / 0.604 -> 0.796 / 0.691 / 0.759 / 0.774 / 0.617, the UC3M lab and home
-  /// the same (24 of 27, 19 of 22).
+  /// the same (24 of 27, 19 of 22). It applies to models trained on a broad base, not to a model adapted
+  /// to one room by rdsf-adapt (mirror_average_for): that model learned the room's negatives as the camera
+  /// sees them (training mirrors positives only), and the mirror shows it views of the room it never
+  /// learned; the adaptation benchmark's per-track models lost with it (docs/quality.md).
   bool mirror_average = true;
+  /// Whether `model`'s scores are mirror-averaged: mirror_average, unless the model was adapted to a room
+  /// (its training record names `adapted_room`, as rdsf-adapt writes it).
+  bool mirror_average_for(const BoostedModel& model) const;
   /// Of a whole object and a piece cut out of it that both score as people, only the higher-scoring one
   /// is a detection (duplicate_candidates.hpp). Off: both are (which counts one person twice).
   bool suppress_duplicates = true;
@@ -85,6 +91,7 @@ class PeoplePipeline {
   PipelineParams params_;
   const BoostedModel* model_;
   std::optional<ModelScorer> scorer_;
+  bool mirror_ = false;  ///< params_.mirror_average_for(*model_)
   FrameAnalyser analyser_;
   Tracker tracker_;
 };
