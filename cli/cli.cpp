@@ -22,20 +22,19 @@ const char* const kNamingNote =
     "is --row-step, also in --config files), and so is --color for --colour.";
 
 // --thesis: every departure option not given explicitly takes the thesis's value (the rows of
-// analyser_parameters() that declare one, and --mirror-average). Applied to the parsed values before po::notify stores them, so
+// analyser_parameters() and decision_parameters() that declare one). Applied to the parsed values before po::notify stores them, so
 // explicit options still win.
 void apply_thesis_preset(po::variables_map& values) {
   const auto it = values.find("thesis");
   if (it == values.end() || !it->second.as<bool>()) return;
-  for (const Parameter<AnalyserParams>& row : analyser_parameters()) {
-    const auto option = values.find(row.name);
-    // In place: the entry keeps its link to its notifier, which po::notify then calls with this value.
-    if (!row.thesis || option == values.end() || !option->second.defaulted()) continue;
-    option->second.value() = std::visit([](const auto& v) { return boost::any(v); }, *row.thesis);
-  }
-  // The decision options' one departure (add_decision_options): one crop per candidate, not its mirror too.
-  const auto mirror = values.find("mirror-average");
-  if (mirror != values.end() && mirror->second.defaulted()) mirror->second.value() = boost::any(false);
+  // In place: the entry keeps its link to its notifier, which po::notify then calls with this value.
+  const auto preset = [&values](const std::string& name, const std::optional<ParameterValue>& thesis) {
+    const auto option = values.find(name);
+    if (!thesis || option == values.end() || !option->second.defaulted()) return;
+    option->second.value() = std::visit([](const auto& v) { return boost::any(v); }, *thesis);
+  };
+  for (const Parameter<AnalyserParams>& row : analyser_parameters()) preset(row.name, row.thesis);
+  for (const Parameter<PipelineParams>& row : decision_parameters()) preset(row.name, row.thesis);
 }
 
 // Spellings accepted besides the canonical ones (which are kebab-case and British).
@@ -178,19 +177,11 @@ po::options_description feature_spec_options(FeatureSpec& spec) {
 }
 
 void add_decision_options(po::options_description& group, PipelineParams& p) {
-  group.add_options()
-      ("threshold", po::value(&p.probability_threshold)->default_value(p.probability_threshold)->notifier([](double t) {
-         if (!(t > 0.0 && t < 1.0)) throw UsageError("--threshold is a probability inside (0, 1), got " + std::to_string(t));
-       }),
-       "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)")
-      ("score-threshold", po::value<double>()->notifier([&p](double h) { p.score_threshold = h; }),
-       "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)")
-      ("mirror-average", po::value(&p.mirror_average)->default_value(p.mirror_average),
-       "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right, except "
-       "with a model adapted to a room by rdsf-adapt (0: the crop alone, the thesis's way and --thesis's)")
-      ("suppress-duplicates", po::value(&p.suppress_duplicates)->default_value(p.suppress_duplicates),
-       "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring one is a "
-       "person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)");
+  const ParameterTable<PipelineParams>& rows = decision_parameters();
+  add_table_options(group, rows_between(rows, "threshold", "threshold"), p);
+  group.add_options()("score-threshold", po::value<double>()->notifier([&p](double h) { p.score_threshold = h; }),
+                      "instead of --threshold: a person when H(x) >= this (the thesis's threshold_classifier)");
+  add_table_options(group, rows_between(rows, "mirror-average", "suppress-duplicates"), p);
 }
 
 po::options_description tracking_options(TrackingParams& t) {

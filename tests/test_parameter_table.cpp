@@ -10,6 +10,7 @@
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/recipe.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/synth/synth_params.hpp"
 #include "rdsf/tracking/tracker.hpp"
 #include "support/test_support.hpp"
@@ -41,6 +42,14 @@ TEST(ParameterTable, EveryTableIsSound) {
   expect_sound(boost_training_parameters());
   expect_sound(tracking_parameters());
   expect_sound(synth::synth_parameters());
+  expect_sound(decision_parameters());
+  // --thesis scores the crop alone (the one decision row that departs from the thesis).
+  EXPECT_FALSE(with_thesis_values(decision_parameters(), PipelineParams{}).mirror_average);
+  EXPECT_TRUE(PipelineParams{}.mirror_average);
+  PipelineParams p;
+  EXPECT_THROW(decision_parameters().front().set(p, 1.0), Error);  // threshold: inside (0, 1)
+  EXPECT_NO_THROW(decision_parameters().front().set(p, 0.25));
+  EXPECT_EQ(p.probability_threshold, 0.25);
 }
 
 // A program adds a table's options a stretch at a time (rdsf-synth: --seed between --people and --empty).

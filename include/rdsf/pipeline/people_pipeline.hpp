@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_frame.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
@@ -54,6 +55,11 @@ struct PipelineParams {
   /// their colour histograms); the other candidates' stay empty. The same pixels, histograms and people.
   bool colour_crops_of_all = false;
 };
+
+/// The table of the PipelineParams a user sets (core/parameter_table.hpp): --threshold, --mirror-average
+/// (whose thesis value, off, --thesis applies) and --suppress-duplicates. score_threshold (optional, no
+/// default) is cli::add_decision_options' own option.
+const ParameterTable<PipelineParams>& decision_parameters();
 
 struct PipelineFrame {
   FrameAnalysis analysis;                 ///< layers, candidates (features only with full_feature_vector)

@@ -1,0 +1,22 @@
+// The table of the PipelineParams a user sets (core/parameter_table.hpp): what makes a candidate a person.
+#include "rdsf/pipeline/people_pipeline.hpp"
+
+namespace rdsf {
+
+const ParameterTable<PipelineParams>& decision_parameters() {
+  using P = PipelineParams;
+  static const ParameterTable<P> table = {
+      parameter("threshold", &P::probability_threshold,
+                "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)", Range{0.0, 1.0, true, true}),
+      parameter("mirror-average", &P::mirror_average,
+                "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right, "
+                "except with a model adapted to a room by rdsf-adapt (0: the crop alone, the thesis's way)",
+                {}, std::optional<bool>(false)),
+      parameter("suppress-duplicates", &P::suppress_duplicates,
+                "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring "
+                "one is a person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)"),
+  };
+  return table;
+}
+
+}  // namespace rdsf
