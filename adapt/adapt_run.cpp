@@ -268,7 +268,7 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptSta
   std::string base;
   for (const std::string& s : o.base_pos) base += (base.empty() ? "" : " ") + s;
   for (const std::string& s : o.base_neg) base += (base.empty() ? "" : " ") + s;
-  for (const std::string& kv : {"adapted_room=" + fs::absolute(o.source).string(),
+  for (const std::string& kv : {std::string(kAdaptedRoomParameter) + "=" + fs::absolute(o.source).string(),
                                 "adapted_from=" + model_reference(model),
                                 "adapted_answers=" + state.get("answers.human") + " human, " +
                                     state.get("answers.propagated") + " propagated, " +

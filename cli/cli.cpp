@@ -22,8 +22,8 @@ const char* const kNamingNote =
     "is --row-step, also in --config files), and so is --color for --colour.";
 
 // --thesis: every departure option not given explicitly takes the thesis's value (the rows of
-// analyser_parameters() and decision_parameters() that declare one). Applied to the parsed values before po::notify stores them, so
-// explicit options still win.
+// analyser_parameters() and decision_parameters() that declare one). Applied to the parsed values before
+// po::notify stores them, so explicit options still win.
 void apply_thesis_preset(po::variables_map& values) {
   const auto it = values.find("thesis");
   if (it == values.end() || !it->second.as<bool>()) return;

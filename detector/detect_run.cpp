@@ -219,11 +219,8 @@ class FrameHandler {
                       o_.pipeline.suppress_duplicates ? kin_of(found[i]) : CandidateKin{}});
     }
     for (std::size_t m = 0; m < models_.size(); ++m) {
-      std::vector<double> scores = processed.scores;  // the first model's, as the pipeline scored them
-      if (m != 0) {
-        scores = scorers_[m].score(found);
-        if (o_.pipeline.mirror_average_for(models_[m])) scorers_[m].average_with_mirror(found, scores);
-      }
+      std::vector<double> scores = m == 0 ? processed.scores : scorers_[m].score(found);
+      if (m != 0 && o_.pipeline.mirror_average_for(models_[m])) scorers_[m].average_with_mirror(found, scores);
       EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
       for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
       evaluated[m].push_back(std::move(e));

@@ -16,7 +16,7 @@ build_dir="${RDSF_BUILD_DIR:-build}"
 program="$build_dir/bench/report/rdsf-perf-report"
 
 usage() {
-  sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"
+  script_header
   if [ -x "$program" ]; then echo; "$program" --help; else echo "($program is not built yet: its options are in docs/options.md)"; fi
 }
 quick=0

@@ -11,9 +11,11 @@
 # on stdout and exit 0. A lone -- ends the script's options: what follows is appended to script_rest.
 # A usage error exits 2 with one line on stderr, `NAME: unknown argument 'X'`, `NAME: --option needs a
 # value` or `NAME: --option takes no value`, followed by usage(). The last of repeated options wins.
-# usage() is the script's leading comment block unless the script defines its own after sourcing this file.
+# usage() is the script's leading comment block (script_header) unless the script defines its own after
+# sourcing this file.
 
-usage() { sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; }
+script_header() { sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; }
+usage() { script_header; }
 
 script_options() {
   local _so_name=$1 _so_pass=0 _so_arg _so_opt _so_value _so_inline _so_spec _so_target _so_found

@@ -8,11 +8,7 @@
 
 namespace rdsf {
 bool PipelineParams::mirror_average_for(const BoostedModel& model) const {
-  if (!mirror_average) return false;
-  for (const auto& [key, value] : model.training().parameters) {
-    if (key == "adapted_room") return false;
-  }
-  return true;
+  return mirror_average && !model.training().adapted_to_a_room();
 }
 
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)

@@ -49,11 +49,21 @@ struct ValidationFigures {
   std::vector<RoundFigures> rounds;
 };
 
+/// The parameter rdsf-adapt records in a model it trains for one room (the room's recording).
+inline constexpr const char kAdaptedRoomParameter[] = "adapted_room";
+
 struct TrainingRecord {
   std::string recipe;   ///< recipe name, or "ad hoc"
   std::string backend;  ///< "native" or "opencv"
   /// Every parameter as text, in a fixed order (rounds, bins, seed, ...).
   std::vector<std::pair<std::string, std::string>> parameters;
+  /// True when `parameters` names kAdaptedRoomParameter: a model rdsf-adapt adapted to one room.
+  bool adapted_to_a_room() const {
+    for (const auto& [key, value] : parameters) {
+      if (key == kAdaptedRoomParameter) return true;
+    }
+    return false;
+  }
   std::vector<SampleSetUse> sample_sets;
   /// How the training crops were cut (format 3; unknown in older files and for sets that do not record it).
   CropProvenance crops;

@@ -45,7 +45,7 @@ struct PipelineParams {
   /// learned; the adaptation benchmark's per-track models lost with it (docs/quality.md).
   bool mirror_average = true;
   /// Whether `model`'s scores are mirror-averaged: mirror_average, unless the model was adapted to a room
-  /// (its training record names `adapted_room`, as rdsf-adapt writes it).
+  /// (TrainingRecord::adapted_to_a_room).
   bool mirror_average_for(const BoostedModel& model) const;
   /// Of a whole object and a piece cut out of it that both score as people, only the higher-scoring one
   /// is a detection (duplicate_candidates.hpp). Off: both are (which counts one person twice).
