@@ -5,12 +5,20 @@
 #include "cli/cli.hpp"
 #include "cli/common_options.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-adapt", "--source ROOM [--empty EMPTY] --out DIR --name NAME [--budget N] [--truth boxes.csv [--eval HELD_OUT]]",
+    "Adapts a model to a room in resumable steps, each one of the workbench's programs: a synthetic base when\n"
+    "none is given (rdsf-synth, rdsf-label, rdsf-mine), negatives (rdsf-mine), the person's answers, one per\n"
+    "track (rdsf-label --per-track), training (rdsf-train --init), report (rdsf-detect). Killed, it resumes at\n"
+    "the step it was in; nothing answered is lost.\n"
+    "docs/adapting-to-your-room.md"};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-adapt", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::AdaptOptions o;
     std::string chart, chart_png;
-    po::options_description options("rdsf-adapt");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("source", po::value(&o.source), "the room recording, with people (folder, list file, .oni)")
         ("empty", po::value(&o.empty),
@@ -43,14 +51,7 @@ int main(int argc, char** argv) {
         ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")
         ("chart-png", po::value(&chart_png), "with --chart: the picture to write");
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-adapt", "--source ROOM [--empty EMPTY] --out DIR --name NAME [--budget N] [--truth boxes.csv [--eval HELD_OUT]]",
-        "Adapts a model to a room in resumable steps, each one of the workbench's programs: a synthetic base when\n"
-        "none is given (rdsf-synth, rdsf-label, rdsf-mine), negatives (rdsf-mine), the person's answers, one per\n"
-        "track (rdsf-label --per-track), training (rdsf-train --init), report (rdsf-detect). Killed, it resumes at\n"
-        "the step it was in; nothing answered is lost.\n"
-        "docs/adapting-to-your-room.md"};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values)) return 0;
     if (!chart.empty()) {
       if (chart_png.empty()) throw rdsf::cli::UsageError("--chart needs --chart-png");
       rdsf::write_adaptation_chart(chart, chart_png);

@@ -3,11 +3,17 @@
 #include "cli/cli.hpp"
 #include "detector/background_run.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-background", "--source SRC --out DIR [--frames N] [--quantile Q]",
+    "Learns a background model of the room from the frames of a static camera: per pixel the room's far\n"
+    "depth. rdsf-detect --background DIR then adds whatever stands in front of the room as candidates\n"
+    "(people beside a wall or a cupboard that share its depth layer). A moving camera has no background."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-background", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::BackgroundOptions o;
-    po::options_description options("rdsf-background");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("source", po::value(&o.source)->required(),
          "frames of one static camera: a folder of NAME.depth.png, a list file, an .oni file or a ROS 1 .bag")
@@ -21,12 +27,7 @@ int main(int argc, char** argv) {
         ("force", po::bool_switch(&o.force), "replace a background already in --out");
     rdsf::cli::CameraOptions camera(options, o.camera, &o.frame_options);
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-background", "--source SRC --out DIR [--frames N] [--quantile Q]",
-        "Learns a background model of the room from the frames of a static camera: per pixel the room's far\n"
-        "depth. rdsf-detect --background DIR then adds whatever stands in front of the room as candidates\n"
-        "(people beside a wall or a cupboard that share its depth layer). A moving camera has no background."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     if (o.frames < 1) throw rdsf::cli::UsageError("--frames must be at least 1");
     if (!(o.quantile >= 0.0 && o.quantile <= 1.0)) throw rdsf::cli::UsageError("--quantile must be in [0, 1]");
     return rdsf::run_background(o);

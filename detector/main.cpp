@@ -5,12 +5,19 @@
 #include "detector/detect_run.hpp"
 #include "rdsf/evaluation/threshold_sweep.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-detect", "--source SRC [--model M] [--out FILE.csv] [--save-dir DIR] [--truth boxes.csv --report-dir DIR]",
+    "Runs the frame analyser on every frame of SRC. Without a model every candidate is reported unscored;\n"
+    "with one, candidates are scored (H(x) and the calibrated P(person)), those with P >= --threshold are\n"
+    "people, and people are tracked. With --truth, every --model is evaluated: exact ROC and DET curves,\n"
+    "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-detect", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::DetectOptions o;
     std::string thresholds;
-    po::options_description options("rdsf-detect");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("source", po::value(&o.source)->required(),
          "frames: a folder of NAME.depth.png, a list file, one PNG, an .oni file, 'openni', a device URI or a ROS 1 "
@@ -51,13 +58,7 @@ int main(int argc, char** argv) {
     options.add(rdsf::cli::background_options(o.background, o.pipeline.analyser.background_margins));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-detect", "--source SRC [--model M] [--out FILE.csv] [--save-dir DIR] [--truth boxes.csv --report-dir DIR]",
-        "Runs the frame analyser on every frame of SRC. Without a model every candidate is reported unscored;\n"
-        "with one, candidates are scored (H(x) and the calibrated P(person)), those with P >= --threshold are\n"
-        "people, and people are tracked. With --truth, every --model is evaluated: exact ROC and DET curves,\n"
-        "the thesis's tables at probability thresholds, and the classifier's own figures on the candidates."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     o.feature_spec_given = !values["feature-spec"].defaulted();
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
     rdsf::check_options(o);

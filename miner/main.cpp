@@ -4,11 +4,20 @@
 #include "cli/common_options.hpp"
 #include "miner/mine_run.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-mine",
+    "--source SRC... --out SET [--model M --min-score T] [--stride N] [--max N] [--shard i/n]\n"
+    "       rdsf-mine --merge SET1 SET2 ... --out SET",
+    "Runs the frame analyser on people-free frames and appends every candidate to the sample set SET as a\n"
+    "negative (label 0, origin miner); with --model only the candidates the model scores at or above\n"
+    "--min-score (its false positives). Exact duplicates are skipped, so a run killed midway continues\n"
+    "when started again with the same options. --merge joins sample sets, e.g. shard outputs."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-mine", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::MineOptions o;
-    po::options_description options("rdsf-mine");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("source", po::value(&o.mine.sources)->multitoken(),
          "people-free frames, one or more: folders of NAME.depth.png, list files, PNGs, .oni files, devices")
@@ -36,15 +45,7 @@ int main(int argc, char** argv) {
     rdsf::cli::CameraOptions camera(options, o.mine.camera);
     options.add(rdsf::cli::analyser_options(o.mine.analyser));
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-mine",
-        "--source SRC... --out SET [--model M --min-score T] [--stride N] [--max N] [--shard i/n]\n"
-        "       rdsf-mine --merge SET1 SET2 ... --out SET",
-        "Runs the frame analyser on people-free frames and appends every candidate to the sample set SET as a\n"
-        "negative (label 0, origin miner); with --model only the candidates the model scores at or above\n"
-        "--min-score (its false positives). Exact duplicates are skipped, so a run killed midway continues\n"
-        "when started again with the same options. --merge joins sample sets, e.g. shard outputs."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     o.min_score_given = !values["min-score"].defaulted();
     if (!o.merge.empty()) {
       if (!o.mine.sources.empty()) throw rdsf::cli::UsageError("give either --source or --merge, not both");

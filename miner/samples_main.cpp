@@ -2,11 +2,18 @@
 #include "cli/cli.hpp"
 #include "miner/samples_run.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-samples", "[--set] SET [--import FILE | --export FILE [--force] | --check | --repair]",
+    "Without --import or --export, describes the sample set SET (counts, feature spec, camera). --import\n"
+    "reads the thesis's text format (one sample a line: label 1 or 0, then 8128 feature values in [0, 1]);\n"
+    "imported samples have no crop, their vectors are stored. --export writes it, features computed from\n"
+    "the crops."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-samples", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::SamplesOptions o;
-    po::options_description options("rdsf-samples");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("set", po::value(&o.set)->required(), "the sample set folder")
         ("import", po::value(&o.import_file),
@@ -21,15 +28,9 @@ int main(int argc, char** argv) {
          "repair what --check finds and can be repaired, after copying samples.tsv to samples.tsv.bak-TIME; "
          "prints each change");
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-samples", "[--set] SET [--import FILE | --export FILE [--force] | --check | --repair]",
-        "Without --import or --export, describes the sample set SET (counts, feature spec, camera). --import\n"
-        "reads the thesis's text format (one sample a line: label 1 or 0, then 8128 feature values in [0, 1]);\n"
-        "imported samples have no crop, their vectors are stored. --export writes it, features computed from\n"
-        "the crops."};
     po::positional_options_description positional;  // "rdsf-samples --check SET" as well as "--set SET"
     positional.add("set", 1);
-    if (!rdsf::cli::parse(argc, argv, info, options, values, &positional)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values, &positional)) return 0;
     return rdsf::run_samples(o);
   });
 }

@@ -5,11 +5,19 @@
 #include "cli/common_options.hpp"
 #include "review_run.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-review", "--set SET [--model M | --folds K] [--sort suspicion|origin|source] [--keys FILE|-]",
+    "Shows the set's samples as a grid of depth and colour crops with their labels. Keys: f flip the selected\n"
+    "sample's label (the corrected sample is appended, the old one retracted), x/Delete retract it, o open the\n"
+    "frame it came from, arrows or h j k l move, n/space/PageDown and p/b/PageUp page, q/Esc quit. Every change\n"
+    "is saved before the next key. --keys takes the same keys as tokens (f x o h j k l n p q, right left down\n"
+    "up space pagedown pageup delete esc)."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-review", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::ReviewOptions o;
-    po::options_description options("rdsf-review");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("set", po::value(&o.set)->required(), "the sample set to review");
     rdsf::cli::add_model_option(options, o.model, "score every sample with this model");
@@ -25,14 +33,7 @@ int main(int argc, char** argv) {
         ("rows", po::value(&o.rows)->default_value(o.rows), "rows per page")
         ("keys", po::value(&o.keys), "headless: read keys from this file (- = stdin) instead of a window");
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-review", "--set SET [--model M | --folds K] [--sort suspicion|origin|source] [--keys FILE|-]",
-        "Shows the set's samples as a grid of depth and colour crops with their labels. Keys: f flip the selected\n"
-        "sample's label (the corrected sample is appended, the old one retracted), x/Delete retract it, o open the\n"
-        "frame it came from, arrows or h j k l move, n/space/PageDown and p/b/PageUp page, q/Esc quit. Every change\n"
-        "is saved before the next key. --keys takes the same keys as tokens (f x o h j k l n p q, right left down\n"
-        "up space pagedown pageup delete esc)."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values)) return 0;
     if (o.columns < 1 || o.rows < 1 || o.columns > 20 || o.rows > 20) {
       throw rdsf::cli::UsageError("--columns and --rows must be 1 to 20");
     }

@@ -9,8 +9,15 @@
 #include "ros/people_node_run.hpp"
 #include "ros/ros_parameters.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf_people", "[ROS remappings] [--NAME VALUE ...]   (rosrun: _NAME:=VALUE)",
+    "ROS 1 node: subscribes to depth/image (16UC1 mm or 32FC1 m) with depth/camera_info, and with --colour\n"
+    "to rgb/image; publishes people (rdsf_people/People), people/markers (visualization_msgs/MarkerArray)\n"
+    "and /diagnostics. Parameters in the node's private namespace (~threshold, ~row_step, ...) are read as\n"
+    "the options of the same names; an option on the command line wins. See docs/ros.md."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf_people", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::PeopleNodeOptions o;
     po::options_description options("rdsf_people (ROS parameters ~NAME, or options --NAME)");
@@ -27,18 +34,12 @@ int main(int argc, char** argv) {
     std::string background;
     options.add(rdsf::cli::background_options(background, o.pipeline.analyser.background_margins));
     options.add(rdsf::cli::tracking_options(o.pipeline.tracking));
-    const rdsf::cli::ProgramInfo info{
-        "rdsf_people", "[ROS remappings] [--NAME VALUE ...]   (rosrun: _NAME:=VALUE)",
-        "ROS 1 node: subscribes to depth/image (16UC1 mm or 32FC1 m) with depth/camera_info, and with --colour\n"
-        "to rgb/image; publishes people (rdsf_people/People), people/markers (visualization_msgs/MarkerArray)\n"
-        "and /diagnostics. Parameters in the node's private namespace (~threshold, ~row_step, ...) are read as\n"
-        "the options of the same names; an option on the command line wins. See docs/ros.md."};
-    ros::init(argc, argv, "rdsf_people");  // takes the ROS arguments (remappings, _NAME:=VALUE) out of argv
+    ros::init(argc, argv, kProgram.name);  // takes the ROS arguments (remappings, _NAME:=VALUE) out of argv
     std::vector<std::string> arguments = rdsf::arguments_with_parameters(argc, argv, options);
     std::vector<char*> argument_pointers;
     for (std::string& a : arguments) argument_pointers.push_back(a.data());
     po::variables_map values;
-    if (!rdsf::cli::parse(static_cast<int>(argument_pointers.size()), argument_pointers.data(), info, options, values)) {
+    if (!rdsf::cli::parse(static_cast<int>(argument_pointers.size()), argument_pointers.data(), kProgram, options, values)) {
       return 0;
     }
     o.feature_spec_given = !values["feature-spec"].defaulted();

@@ -5,8 +5,16 @@
 #include "rdsf/synth/synth_params.hpp"
 #include "synth/synth_run.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-synth", "--out DIR [--frames N] [--people MIN..MAX] [--seed S] [--empty] [--size WxH] [--rgb]",
+    "Renders a synthetic Kinect v1 recording: indoor rooms with furniture and walking, standing people,\n"
+    "seen through a model of the sensor (range 0.5-8 m, noise growing with distance squared, shadows\n"
+    "and holes). Writes the frame-source layout (readable by every --source option) and boxes.csv with\n"
+    "the tight box of each person's visible pixels and its track id. Same options, same bytes.\n"
+    "Rooms, people and captures vary as in a lab (see docs/synthetic.md); each variety can be turned off."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-synth", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::SynthOptions o;
     for (int i = 0; i < argc; ++i) o.command_line += (i ? " " : "") + std::string(argv[i]);
@@ -15,7 +23,7 @@ int main(int argc, char** argv) {
       rdsf::cli::add_table_values(group, rdsf::rows_between(rdsf::synth::synth_parameters(), first, last), o.params,
                                   o.values);
     };
-    po::options_description options("rdsf-synth");
+    po::options_description options(kProgram.name);
     options.add_options()("out", po::value(&o.out_dir)->required(),
                           "folder for NNNNNN.depth.png, NNNNNN.rgb.png, boxes.csv, synth.yml");
     add_rows(options, "frames", "people");
@@ -30,14 +38,7 @@ int main(int argc, char** argv) {
                           "turn all of the variety above off: the generator before it (overrides these options)");
     options.add(variety);
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-synth", "--out DIR [--frames N] [--people MIN..MAX] [--seed S] [--empty] [--size WxH] [--rgb]",
-        "Renders a synthetic Kinect v1 recording: indoor rooms with furniture and walking, standing people,\n"
-        "seen through a model of the sensor (range 0.5-8 m, noise growing with distance squared, shadows\n"
-        "and holes). Writes the frame-source layout (readable by every --source option) and boxes.csv with\n"
-        "the tight box of each person's visible pixels and its track id. Same options, same bytes.\n"
-        "Rooms, people and captures vary as in a lab (see docs/synthetic.md); each variety can be turned off."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values)) return 0;
     return rdsf::run_synth(o);
   });
 }

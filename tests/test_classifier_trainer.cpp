@@ -251,11 +251,18 @@ TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
   EXPECT_EQ(shared.exit_code, 1);
   EXPECT_NE(shared.err.find("validation sets share"), std::string::npos) << shared.err;
   const test::RunResult augment = train(sets + "--augment mirror,rotate");
-  EXPECT_EQ(augment.exit_code, 1);
-  EXPECT_NE(augment.err.find("'rotate' is not known"), std::string::npos) << augment.err;
+  EXPECT_EQ(augment.exit_code, 2);  // training_data_parameters()' rows: usage errors, before any set is read
+  EXPECT_NE(augment.err.find("--augment augmentation 'rotate' is not known"), std::string::npos) << augment.err;
   const test::RunResult copies = train(sets + "--augment mirror --augment-copies 3");
-  EXPECT_EQ(copies.exit_code, 1);
+  EXPECT_EQ(copies.exit_code, 2);
   EXPECT_NE(copies.err.find("need shift, scale or occlusion"), std::string::npos) << copies.err;
+  const test::RunResult groups = train(sets + "--group-by room");
+  EXPECT_EQ(groups.exit_code, 2);
+  EXPECT_NE(groups.err.find("--group-by grouping 'room' is not known (recording-block, block or recording)"),
+            std::string::npos) << groups.err;
+  const test::RunResult frames = train(sets + "--group-frames -1");
+  EXPECT_EQ(frames.exit_code, 2);
+  EXPECT_NE(frames.err.find("--group-frames must be at least 0"), std::string::npos) << frames.err;
   const test::RunResult depth = train(sets + "--depth 7");
   EXPECT_EQ(depth.exit_code, 2);  // the options' rows check their values: usage errors
   EXPECT_NE(depth.err.find("--depth must be in [1, 4]"), std::string::npos) << depth.err;
@@ -265,7 +272,7 @@ TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
   const test::RunResult calibration = train(sets + "--calibration magic");
   EXPECT_EQ(calibration.exit_code, 2);
   EXPECT_NE(calibration.err.find("'magic' is not known"), std::string::npos) << calibration.err;
-  for (const test::RunResult* r : {&shared, &augment, &copies, &depth, &rate, &calibration}) {
+  for (const test::RunResult* r : {&shared, &augment, &copies, &groups, &frames, &depth, &rate, &calibration}) {
     // One error line, and it is the last thing printed.
     std::size_t errors = 0;
     for (std::size_t at = r->err.find("error:"); at != std::string::npos; at = r->err.find("error:", at + 1)) ++errors;
@@ -299,6 +306,28 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   }
   EXPECT_TRUE(recorded);
   EXPECT_TRUE(subtraction);
+}
+
+// --thesis sets the thesis's value of every row that has one, of the boosting rows and of the training-data
+// rows (training_data_parameters(): no augmentation); an option given explicitly still wins.
+TEST_F(TrainerProgram, ThesisPresetTurnsAugmentationOffUnlessItIsGiven) {
+  const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --rounds 2 ";
+  auto recorded = [this](const std::string& name, const std::string& key) {
+    for (const auto& [k, value] : BoostedModel::load(name, models).training().parameters) {
+      if (k == key) return value;
+    }
+    return std::string("(none)");
+  };
+  ASSERT_EQ(train(sets + "--name thesis --thesis").exit_code, 0);
+  EXPECT_EQ(recorded("thesis", "augmentation"), "off");
+  EXPECT_EQ(recorded("thesis", "depth"), "1");
+  ASSERT_EQ(train(sets + "--name thesis-mirrored --thesis --augment mirror --group-frames 10").exit_code, 0);
+  EXPECT_EQ(recorded("thesis-mirrored", "augmentation"), "mirror, seed 1");
+  EXPECT_EQ(recorded("thesis-mirrored", "group_frames"), "10");
+  ASSERT_EQ(train(sets + "--name defaults").exit_code, 0);
+  EXPECT_EQ(recorded("defaults", "augmentation"), "mirror, seed 1");
+  EXPECT_EQ(recorded("defaults", "group_frames"), "30");
+  EXPECT_EQ(recorded("defaults", "group_by"), "recording-block");
 }
 
 // rdsf-train --init: a lab's own samples continue a model; the new model holds the old weak classifiers

@@ -43,17 +43,8 @@ po::options_description train_options(TrainOptions& o) {
   cli::add_override_options(how, boost_training_parameters(), BoostTrainingParams{}, o.boosting);
   how.add_options()
       ("thesis", po::bool_switch(&o.thesis),
-       "the thesis's weak learners: depth 1, learning rate 1, no augmentation (options given explicitly still win)")
-      ("group-frames", po::value(&o.group_frames)->default_value(o.group_frames),
-       "validation groups: a recording's frames in blocks of this many (consecutive frames never split); "
-       "0 = split by sample (dishonest: near-identical crops on both sides; only for comparison)")
-      ("group-by", po::value(&o.group_by)->default_value(o.group_by),
-       "validation groups: recording-block (a recording's frame blocks), block (frame blocks of all recordings "
-       "together: recordings of the same scenes in step) or recording (whole recordings)")
-      ("augment", po::value(&o.augment)->default_value(o.augment),
-       "positives augmented at training time: off, or a list of mirror, shift, scale, occlusion")
-      ("augment-copies", po::value(&o.augment_copies)->default_value(o.augment_copies),
-       "random variants per positive (shift / scale / occlusion), besides the mirror");
+       "the thesis's weak learners: depth 1, learning rate 1, no augmentation (options given explicitly still win)");
+  cli::add_override_options(how, training_data_parameters(), TrainingDataParams{}, o.training_data);
   cli::add_threads_option(how, o.threads, "threads for features and histograms");
   how.add_options()
       ("feature-pool", po::value(&o.feature_pool)->default_value(o.feature_pool),

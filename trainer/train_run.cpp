@@ -64,10 +64,10 @@ SampleChoice training_choice(const Recipe& r, const TrainOptions& o) {
   if (o.feature_spec_given) c.spec = o.feature_spec;
   c.feature_pool = o.feature_pool;
   c.memory_budget_mb = o.memory_budget_mb;
-  c.group_frames = o.group_frames;
-  c.group_by = parse_group_by(o.group_by);
-  c.augmentation = parse_augmentation(o.thesis && !o.augment_given ? std::string("off") : o.augment, o.augment_copies,
-                                     r.params.seed);
+  const TrainingDataParams data = effective_training_data(o);
+  c.group_frames = data.group_frames;
+  c.group_by = parse_group_by(data.group_by);
+  c.augmentation = parse_augmentation(data.augment, data.augment_copies, r.params.seed);
   return c;
 }
 
@@ -115,8 +115,9 @@ std::string options_text(const Recipe& r, const TrainOptions& o) {
   std::snprintf(numbers, sizeof numbers, "%.17g %.17g %.17g %.17g", p.learning_rate, p.smoothing,
                 p.validation_fraction, p.weight_trim);
   line("numbers", numbers);
-  line("groups", std::to_string(o.group_frames) + " " + o.group_by);
-  line("augment", o.augment + " " + std::to_string(o.augment_copies) + (o.thesis ? " thesis" : ""));
+  const TrainingDataParams data = effective_training_data(o);
+  line("groups", std::to_string(data.group_frames) + " " + data.group_by);
+  line("augment", data.augment + " " + std::to_string(data.augment_copies) + (o.thesis ? " thesis" : ""));
   line("features", (o.feature_spec_given ? o.feature_spec.canonical() : std::string("the sets'")) + " pool " +
                        std::to_string(o.feature_pool) + " budget " + std::to_string(o.memory_budget_mb));
   line("name", o.name + " in " + o.models_dir + " init " + o.init);
@@ -167,7 +168,6 @@ TrainingPlan plan_training(const TrainOptions& o, const RowShards& shards) {
                             " ranks) needs the native backend without --weight-trim and --histogram-subtraction");
     }
   }
-  if (o.group_frames < 0) throw cli::UsageError("--group-frames must be 0 (split by sample) or more");
   plan.name = o.name.empty() ? plan.recipe.name : o.name;
   if (plan.name.empty()) throw cli::UsageError("ad hoc training needs a model name: give --name NAME");
   validate_model_name(plan.name);
@@ -200,8 +200,9 @@ ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const
   v.crops = train.crops;
   v.columns = train.columns;    // ... and the same features as training
   v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
-  v.group_frames = o.group_frames;
-  v.group_by = parse_group_by(o.group_by);
+  const TrainingDataParams data = effective_training_data(o);
+  v.group_frames = data.group_frames;
+  v.group_by = parse_group_by(data.group_by);
   v.shard = shards.rank();
   v.shards = shards.size();
   ChosenSamples validation;
@@ -299,8 +300,9 @@ void record_provenance(TrainingRecord& record, const TrainOptions& o, const Trai
   record.parameters.emplace_back("feature_spec", train.spec.option_text());
   record.parameters.emplace_back("feature_pool", train.columns.empty() ? std::string("all")
                                                                        : std::to_string(train.columns.size()));
-  record.parameters.emplace_back("group_frames", std::to_string(o.group_frames));
-  record.parameters.emplace_back("group_by", o.group_by);
+  const TrainingDataParams data = effective_training_data(o);
+  record.parameters.emplace_back("group_frames", std::to_string(data.group_frames));
+  record.parameters.emplace_back("group_by", data.group_by);
   record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
   if (!init_reference.empty()) record.parameters.emplace_back("init", init_reference);
   record.parameters.insert(record.parameters.end(), plan.provenance.begin(), plan.provenance.end());
@@ -330,6 +332,18 @@ void report_model(const BoostedModel& model, const std::string& path) {
 
 }  // namespace
 
+TrainingDataParams effective_training_data(const TrainOptions& o) {
+  TrainingDataParams data;
+  if (o.thesis) data = with_thesis_values(training_data_parameters(), data);
+  cli::apply_overrides(training_data_parameters(), data, o.training_data);
+  try {
+    parse_augmentation(data.augment, data.augment_copies, 0);  // the copies need an augmentation that varies
+  } catch (const Error& e) {
+    throw cli::UsageError(e.what());
+  }
+  return data;
+}
+
 void check_options(const TrainOptions& o, bool ranks) {
   const int modes = static_cast<int>(!o.inspect.empty()) + static_cast<int>(!o.export_text.empty());
   if (modes > 1) throw cli::UsageError("give either --inspect or --export-text, not both");
@@ -338,6 +352,7 @@ void check_options(const TrainOptions& o, bool ranks) {
   if (o.recipe.empty() && (o.pos_sets.empty() || o.neg_sets.empty())) {
     throw cli::UsageError("give --recipe NAME, or --pos SET and --neg SET (see rdsf-train --help)");
   }
+  effective_training_data(o);  // a refused --group-by or --augment is a usage error before anything is read
 }
 
 int run_train(const TrainOptions& o) { return run_train(o, RowShards{}); }

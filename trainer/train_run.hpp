@@ -9,6 +9,7 @@
 
 #include "rdsf/classifier/boost_training.hpp"
 #include "rdsf/classifier/row_shards.hpp"
+#include "trainer/training_data_parameters.hpp"
 
 namespace rdsf {
 
@@ -21,12 +22,10 @@ struct TrainOptions {
   /// Boosting parameters given on the command line (rows of boost_training_parameters(), in the order
   /// given): they override the recipe's (or the defaults').
   std::vector<std::pair<std::string, ParameterValue>> boosting;
-  int group_frames = 30;        ///< frames per validation group block
-  std::string group_by = "recording-block";  ///< recording-block, block or recording
-  std::string augment = "mirror";  ///< mirror,shift,scale,occlusion or off (chosen by the quality report)
-  bool augment_given = false;      ///< --augment was on the command line
+  /// Rows of training_data_parameters() given on the command line, in the order given: they override the
+  /// defaults (and the thesis's values under --thesis).
+  std::vector<std::pair<std::string, ParameterValue>> training_data;
   bool thesis = false;             ///< the thesis's weak learners: depth 1, learning rate 1, no augmentation
-  int augment_copies = 0;       ///< random variants per positive
   int threads = 0;
   FeatureSpec feature_spec;          ///< --feature-spec (checked against the sets only when given)
   bool feature_spec_given = false;
@@ -42,6 +41,10 @@ struct TrainOptions {
   std::string export_text;  ///< write the chosen samples here instead of training
   bool force = false;       ///< --export-text may replace a file
 };
+
+/// The validation groups and augmentation of a run: the defaults, the thesis's values under --thesis, then
+/// the options given (cli::UsageError when one is refused).
+TrainingDataParams effective_training_data(const TrainOptions& options);
 
 /// Checks the command line's choice of job (cli::UsageError, exit 2): --inspect or --export-text, not both,
 /// neither under mpirun (`ranks`); training and --export-text need --recipe or --pos and --neg. The checks

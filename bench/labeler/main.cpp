@@ -4,11 +4,14 @@
 #include "cli/common_options.hpp"
 #include "labeler_bench.hpp"
 
+const rdsf::cli::ProgramInfo kProgram{"rdsf-labeler-bench", "--train DIR... --test DIR... [--batch N]",
+                                      "The labeler's benchmark with ground truth as the oracle; prints Markdown."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-labeler-bench", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::bench::LabelerBenchOptions o;
-    po::options_description options("rdsf-labeler-bench");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("train", po::value(&o.train)->required()->composing(), "labelled recordings of the pool (boxes.csv)")
         ("test", po::value(&o.test)->required()->composing(), "held-out labelled recordings")
@@ -20,9 +23,7 @@ int main(int argc, char** argv) {
         ("seed", po::value(&o.seed)->default_value(o.seed), "first batch, passive order, flips");
     rdsf::cli::add_threads_option(options, o.threads, "threads analysing and scoring the recordings");
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{"rdsf-labeler-bench", "--train DIR... --test DIR... [--batch N]",
-                                      "The labeler's benchmark with ground truth as the oracle; prints Markdown."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values)) return 0;
     if (o.batch < 1) throw rdsf::cli::UsageError("--batch must be at least 1");
     return rdsf::bench::run_labeler_bench(o);
   });

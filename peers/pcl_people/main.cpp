@@ -7,12 +7,18 @@
 #define RDSF_PCL_SVM_FILE ""
 #endif
 
+const rdsf::cli::ProgramInfo kProgram{
+    "rdsf-pcl-people", "--source SRC [--out FILE.csv] [--truth boxes.csv --report-dir DIR]",
+    "Runs PCL's ground-based people detector (pcl::people::GroundBasedPeopleDetectionApp with PCL's HOG+SVM\n"
+    "file) on frames with colour; the floor is fitted per recording by RANSAC on the depth points (the lowest\n"
+    "near-horizontal plane). Writes rdsf-detect's CSV and, with --truth, rdsf-detect's evaluation report."};
+
 int main(int argc, char** argv) {
-  return rdsf::cli::run("rdsf-pcl-people", [&] {
+  return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::peers::PclPeopleOptions o;
     o.svm = RDSF_PCL_SVM_FILE;
-    po::options_description options("rdsf-pcl-people");
+    po::options_description options(kProgram.name);
     options.add_options()
         ("source", po::value(&o.source)->required(), "frames with colour: a folder of NAME.depth.png and NAME.rgb.png, or a list file")
         ("svm", po::value(&o.svm)->default_value(o.svm), "PCL's HOG+SVM file (peers/pcl_people/data: Debian does not ship it)")
@@ -28,12 +34,7 @@ int main(int argc, char** argv) {
         ("ground-max-tilt", po::value(&o.ground.max_tilt_deg)->default_value(o.ground.max_tilt_deg), "the floor's normal within this of the camera's y axis, degrees");
     rdsf::cli::CameraOptions camera(options, o.camera);
     po::variables_map values;
-    const rdsf::cli::ProgramInfo info{
-        "rdsf-pcl-people", "--source SRC [--out FILE.csv] [--truth boxes.csv --report-dir DIR]",
-        "Runs PCL's ground-based people detector (pcl::people::GroundBasedPeopleDetectionApp with PCL's HOG+SVM\n"
-        "file) on frames with colour; the floor is fitted per recording by RANSAC on the depth points (the lowest\n"
-        "near-horizontal plane). Writes rdsf-detect's CSV and, with --truth, rdsf-detect's evaluation report."};
-    if (!rdsf::cli::parse(argc, argv, info, options, values, camera)) return 0;
+    if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     if (o.out_csv.empty() && o.truth_csv.empty()) throw rdsf::cli::UsageError("nothing to do: give --out FILE.csv or --truth with --report-dir");
     if (o.truth_csv.empty() != o.report_dir.empty()) throw rdsf::cli::UsageError("--truth and --report-dir go together");
     if (!(o.min_height_m > 0 && o.max_height_m > o.min_height_m)) throw rdsf::cli::UsageError("--min-height must be > 0 and below --max-height");
