@@ -7,6 +7,7 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/foreground_candidates.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/segmentation/local_background.hpp"
 
 namespace rdsf {
 const ParameterTable<AnalyserParams>& analyser_parameters() {
@@ -24,6 +25,11 @@ const ParameterTable<AnalyserParams>& analyser_parameters() {
           p.reported_box = box == "strict" ? BoxKind::strict : BoxKind::fitted;
         },
         std::string("strict")));
+    t.push_back(parameter("local-front", &P::local_front_reach_cm,
+                          "without --background: add as candidates the objects nearer than their surroundings on "
+                          "both sides along the row within this reach (cm; a person before a wall), by "
+                          "--background-margin and --background-relative; 0 = off",
+                          Range::between(0, 500), std::optional<double>(0.0)));
     t.push_back(parameter("reference-focal", &P::reference_focal_px,
                           "pixel counts (--row-step, --n, --k, --column-gap) are for a camera of this focal length "
                           "(px); other cameras get them scaled by fx or fy / this; 0 = as given",
@@ -64,8 +70,11 @@ FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features
   start = std::chrono::steady_clock::now();
   const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
   analysis.candidates = find_candidates(frame, analysis.segmentation, p.candidates, crop, colour);
-  if (params_.background) {
-    analysis.in_front = in_front_of(analysis.segmentation, frame.depth_mm, params_.background->far_mm, params_.background_margins);
+  if (params_.background || p.local_front_reach_cm > 0) {
+    thread_local cv::Mat1w local_far_mm;  // this thread's buffer, filled anew for every frame
+    if (!params_.background) local_background(frame.depth_mm, frame.camera, p.local_front_reach_cm * 10.0, local_far_mm);
+    const cv::Mat1w& far_mm = params_.background ? params_.background->far_mm : local_far_mm;
+    analysis.in_front = in_front_of(analysis.segmentation, frame.depth_mm, far_mm, params_.background_margins);
     add_foreground_candidates(frame, analysis.in_front, p.candidates, crop, colour, analysis.candidates);
   }
   analysis.times.candidates_ms = milliseconds_since(start);

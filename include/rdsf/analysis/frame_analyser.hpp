@@ -39,8 +39,12 @@ struct AnalyserParams {
   /// Null: off (the default; --thesis sets none). Shared and never changed, so analyse() stays const and
   /// thread-safe. A frame of another size or camera model than the background's is an Error.
   std::shared_ptr<const BackgroundModel> background;
-  /// The foreground rule's margins (used only with a background).
+  /// The foreground rule's margins (with a background, or with local_front_reach_cm).
   BackgroundParams background_margins;
+  /// Without a background model: the objects in front of their surroundings along each row within this
+  /// reach (cm; segmentation/local_background.hpp) are added as candidates beside the layers', as a
+  /// background's are. 0: off (the default and the thesis's).
+  double local_front_reach_cm = 0.0;
 };
 
 /// The table of AnalyserParams: the segmentation's and candidates' rows, then the reported box
