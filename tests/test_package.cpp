@@ -42,6 +42,33 @@ TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
   EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / rdsf::kDefaultModelName / "v2.yml");  // the newest
 }
 
+// NAME/vN too: `--model people/v1` from any folder that has no models/people of its own; a folder that has
+// one is never mixed with the shipped models, and a version neither has names both places looked in.
+TEST(ShippedModels, NamedVersionResolvesFromAnyWorkingFolder) {
+  rdsf::test::TempDir dir;
+  const fs::path before = fs::current_path();
+  fs::current_path(dir.path());
+  const std::string name = rdsf::kDefaultModelName;
+  std::string resolved, missing, own;
+  EXPECT_NO_THROW(resolved = rdsf::resolve_model(name + "/v1"));
+  try {
+    rdsf::resolve_model(name + "/v99");
+  } catch (const rdsf::Error& e) {
+    missing = e.what();
+  }
+  fs::create_directories(dir.path() / "models" / name);  // a lab's own 'people' models
+  try {
+    rdsf::resolve_model(name + "/v1");
+  } catch (const rdsf::Error& e) {
+    own = e.what();
+  }
+  fs::current_path(before);
+  EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / name / "v1.yml");
+  EXPECT_NE(missing.find("looked for models/" + name + "/v99.yml and "), std::string::npos) << missing;
+  EXPECT_NE(missing.find((fs::path(RDSF_SOURCE_DIR) / "models" / name / "v99.yml").string()), std::string::npos) << missing;
+  EXPECT_NE(own.find("no such model version (looked for models/" + name + "/v1.yml)"), std::string::npos) << own;
+}
+
 #if !RDSF_WITH_OPENNI
 // A build without OpenNI2 refuses every OpenNI2 spec with one line naming it; image files still open.
 TEST(WithoutOpenNI, OpenNISpecsAreRefusedInOneLine) {

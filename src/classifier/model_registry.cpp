@@ -61,9 +61,16 @@ std::string resolve_model(const std::string& path_or_name, const std::string& mo
   static const std::regex name_version("([A-Za-z0-9_][A-Za-z0-9_.-]*)/v([1-9][0-9]{0,8})(\\.yml)?");
   std::smatch match;
   if (std::regex_match(path_or_name, match, name_version)) {
-    const fs::path file = fs::path(models_dir) / match[1].str() / ("v" + match[2].str() + ".yml");
-    if (!fs::is_regular_file(file, ec)) fail(path_or_name, "no such model version (looked for " + file.string() + ")");
-    return file.string();
+    const fs::path version = fs::path(match[1].str()) / ("v" + match[2].str() + ".yml");
+    const fs::path file = fs::path(models_dir) / version;
+    if (fs::is_regular_file(file, ec)) return file.string();
+    // NAME/vN of the shipped models (people/v1) wherever the program runs, as NAME alone is.
+    if (!shipped_models_dir().empty() && !fs::is_directory(fs::path(models_dir) / match[1].str(), ec)) {
+      const fs::path shipped = fs::path(shipped_models_dir()) / version;
+      if (fs::is_regular_file(shipped, ec)) return shipped.string();
+      fail(path_or_name, "no such model version (looked for " + file.string() + " and " + shipped.string() + ")");
+    }
+    fail(path_or_name, "no such model version (looked for " + file.string() + ")");
   }
   static const std::regex plain_name("[A-Za-z0-9_][A-Za-z0-9_.-]*");
   if (std::regex_match(path_or_name, plain_name)) {
