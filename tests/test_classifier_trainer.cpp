@@ -313,7 +313,8 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
 TEST_F(TrainerProgram, ThesisPresetTurnsAugmentationOffUnlessItIsGiven) {
   const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --rounds 2 ";
   auto recorded = [this](const std::string& name, const std::string& key) {
-    for (const auto& [k, value] : BoostedModel::load(name, models).training().parameters) {
+    const BoostedModel model = BoostedModel::load(name, models);  // alive while its parameters are read
+    for (const auto& [k, value] : model.training().parameters) {
       if (k == key) return value;
     }
     return std::string("(none)");

@@ -6,8 +6,12 @@
 
 #include <algorithm>
 
+#include <opencv2/imgproc.hpp>
+
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/pipeline/parallel_pipeline.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/segmentation/background_model.hpp"
 #include "rdsf/segmentation/local_background.hpp"
 #include "support/depth_scenes.hpp"
@@ -101,4 +105,42 @@ TEST(LocalBackground, AFreeStandingPersonGetsNoDuplicate) {
 TEST(LocalBackground, OffByDefaultAndUnderTheThesis) {
   EXPECT_EQ(AnalyserParams{}.local_front_reach_cm, 0.0);
   EXPECT_EQ(thesis_params(local_front(70)).local_front_reach_cm, 0.0);
+}
+
+// Each thread fills a buffer of its own (frame_analyser.cpp): frames of two sizes, interleaved, on 1 and 3
+// threads give the same candidates in the same order.
+TEST(LocalBackground, ResultsDoNotDependOnTheThreadCountOrTheFrameSizes) {
+  std::vector<DepthFrame> frames;
+  for (int i = 0; i < 9; ++i) {
+    DepthFrame f = person_frame({40 + 60 * i, 100, 60, 330}, i % 2 == 0 ? kPersonMm : 1800);
+    if (i % 3 == 2) {  // a smaller sensor now and then: the buffer must follow the frame's size
+      cv::Mat1w half;
+      cv::resize(f.depth_mm, half, {320, 240}, 0, 0, cv::INTER_NEAREST);
+      f.depth_mm = half;
+      f.camera = f.camera.scaled_to(320, 240);
+    }
+    f.index = i;
+    f.name = std::to_string(i);
+    frames.push_back(f);
+  }
+  PipelineParams params;
+  params.analyser.local_front_reach_cm = 70;
+  auto run = [&](int threads) {
+    PeoplePipeline pipeline(params, nullptr);
+    std::vector<std::vector<std::pair<cv::Rect, bool>>> found;
+    run_in_frame_order(pipeline, static_cast<std::int64_t>(frames.size()),
+                       [&](std::int64_t i) { return frames[static_cast<std::size_t>(i)]; }, {threads, 0, 0},
+                       [&](const DepthFrame&, PipelineFrame& r) {
+                         found.emplace_back();
+                         for (const Candidate& c : r.analysis.candidates) found.back().emplace_back(c.fitted_box, c.foreground);
+                         return true;
+                       });
+    return found;
+  };
+  const auto one = run(1);
+  ASSERT_EQ(one.size(), frames.size());
+  std::size_t added = 0;
+  for (const auto& frame : one) added += static_cast<std::size_t>(std::count_if(frame.begin(), frame.end(), [](const auto& c) { return c.second; }));
+  EXPECT_GE(added, 3u);  // the people against the wall
+  EXPECT_EQ(run(3), one);
 }
