@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/column_heights.hpp"
 #include "rdsf/analysis/frame_analyser.hpp"
@@ -169,6 +171,39 @@ TEST(CandidateFinder, StrictAndRelaxedThresholdHeight) {
   EXPECT_DOUBLE_EQ(strict.candidates.threshold_height_cm(1400), 50.0);
   EXPECT_DOUBLE_EQ(strict.candidates.threshold_height_cm(1600), 90.0);
   EXPECT_DOUBLE_EQ(relaxed.candidates.threshold_height_cm(1600), 50.0);
+}
+
+// BorderCutParams: a person the image cuts at the bottom shows less than threshold_height; a column whose
+// run reaches the image's bottom twentieth passes at border.height_cm when it is a third of the image tall
+// and upright. A low box on the image's bottom is no such person.
+TEST(CandidateFinder, PeopleTheImageCutsAreCandidates) {
+  DepthFrame frame = test::wall_frame(4000);
+  const cv::Rect person(300, 280, 80, 200);  // 200 rows at 2 m = 76 cm shown: under the far 90 cm
+  test::paint(frame, person, 2000);
+  test::paint(frame, {60, 380, 120, 100}, 2000);  // a box of 100 rows (38 cm) on the bottom: too short a run
+  AnalyserParams on, off;  // off: the default
+  on.candidates.border.height_cm = 25;
+  const AnalyserParams thesis = thesis_params(on);
+  // The candidate at 2 m over column x, copied out of its analysis.
+  const auto at = [](const DepthFrame& f, const AnalyserParams& p, int x) -> std::optional<Candidate> {
+    for (const Candidate& c : analyse(f, p).candidates) {
+      if (std::abs(c.layer_depth_mm - 2000) < 1 && c.strict_box.x <= x && x < c.strict_box.x + c.strict_box.width) return c;
+    }
+    return std::nullopt;
+  };
+  const auto found = [&](const AnalyserParams& p, int x) { return at(frame, p, x); };
+  const std::optional<Candidate> cut = found(on, 340);
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->strict_box.y, person.y);
+  EXPECT_EQ(cut->strict_box.y + cut->strict_box.height, person.y + person.height);  // down to the image's bottom
+  EXPECT_FALSE(found(off, 340).has_value());
+  EXPECT_FALSE(found(thesis, 340).has_value());  // the thesis's threshold_height alone
+  EXPECT_FALSE(found(on, 120).has_value());
+  // The same person lifted off the image's bottom (a floating torso) is no person the image cuts.
+  DepthFrame lifted = test::wall_frame(4000);
+  test::paint(lifted, person - cv::Point(0, 60), 2000);
+  EXPECT_FALSE(at(lifted, on, 340).has_value());
+  EXPECT_DOUBLE_EQ(thesis.candidates.border.height_cm, 0.0);
 }
 
 TEST(CandidateFinder, ColourCropIsMaskedByTheLayer) {

@@ -242,6 +242,7 @@ TEST(CandidatesReference, PassingColumnsSameAsTheHeightTest) {
     }
     CandidateParams params;
     params.height_at_column_depth = false;
+    params.border.height_cm = 0;  // the height test alone (the border rule: CandidateFinder.PeopleTheImageCuts*)
     params.near_height_cm = params.far_height_cm = static_cast<double>(rng() % 200);
     const double mean = trial % 10 == 0 ? -static_cast<double>(rng() % 100) : static_cast<double>(rng() % 9000);
     const LayerView view{&runs, &labels, &depth, 1, mean, mean + 200.0, &camera};

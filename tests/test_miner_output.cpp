@@ -94,7 +94,8 @@ SetDigest digest_of(const std::string& dir) {
 
 SetDigest mine_into(const std::string& dir, const std::string& source, int threads, int sync_every,
                     bool join_narrow_passing = rdsf::CandidateParams{}.join.narrow_passing,
-                    const rdsf::PngEncodeOptions& crop_png = rdsf::kSampleCropPng) {
+                    const rdsf::PngEncodeOptions& crop_png = rdsf::kSampleCropPng,
+                    double border_height_cm = rdsf::CandidateParams{}.border.height_cm) {
   rdsf::SampleSetWriter writer =
       rdsf::SampleSetWriter::open_or_create(dir, rdsf::FeatureSpec{}, rdsf::CameraModel::kinect_v1(), "test");
   rdsf::MineParams params;
@@ -102,6 +103,7 @@ SetDigest mine_into(const std::string& dir, const std::string& source, int threa
   params.threads = threads;
   params.sync_every_frames = sync_every;
   params.analyser.candidates.join.narrow_passing = join_narrow_passing;
+  params.analyser.candidates.border.height_cm = border_height_cm;
   params.crop_png = crop_png;
   std::vector<std::int64_t> reported;
   rdsf::mine_negatives(params, writer, [&](const rdsf::MineStats& s) {
@@ -122,16 +124,18 @@ TEST(MinerOutput, RealFramesGiveTheRowsAndPixelsOfBeforeTheFasterMiner) {
   RDSF_REQUIRE_REALDATA();
   rdsf::test::TempDir dir{"rdsf-miner-output"};
   // rdsf-mine --source ../shared/realdata/empty on main at ae93907 (cv::imencode crops, a flush per frame),
-  // whose candidates are today's with join.narrow_passing off (issue 14 removed one of them since): its
-  // rows and crop pixels; the crop bytes are libdeflate's since issue 17.
+  // whose candidates are today's with join.narrow_passing off (issue 14 removed one of them since) and
+  // without the border rule (off by default; on, it adds 4: BorderCutParams): its rows and crop pixels;
+  // the crop bytes are libdeflate's since issue 17.
   const std::string empty = (rdsf::test::realdata_dir() / "empty").string();
-  const SetDigest mined = mine_into(dir / "set", empty, 2, 16, /*join_narrow_passing=*/false);
+  const SetDigest mined = mine_into(dir / "set", empty, 2, 16, /*join_narrow_passing=*/false, rdsf::kSampleCropPng,
+                                    /*border_height_cm=*/0);
   EXPECT_EQ(mined.rows, 50);
   EXPECT_EQ(mined.pixels, "811c35eb9597e00a");
   EXPECT_EQ(mined.hash, "1c1e2a0ee70a55bb");
   // The zlib path still gives main's bytes at ae93907, and so the pixels pinned above are main's.
   const SetDigest zlib =
-      mine_into(dir / "zlib", empty, 2, 16, /*join_narrow_passing=*/false, rdsf::PngEncodeOptions{1});
+      mine_into(dir / "zlib", empty, 2, 16, /*join_narrow_passing=*/false, rdsf::PngEncodeOptions{1}, 0);
   EXPECT_EQ(zlib.rows, 50);
   EXPECT_EQ(zlib.hash, "488e366968cde91b");
   EXPECT_EQ(zlib.pixels, mined.pixels);

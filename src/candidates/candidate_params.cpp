@@ -72,6 +72,16 @@ const ParameterTable<CandidateParams>& candidate_parameters() {
                 "... at least this tall (cm)", Range::at_least(0)),
       parameter("narrow-clear-above", &P::narrow, &NarrowPersonParams::clear_above_cm,
                 "... with other layers over half of this band (cm) above their top", Range::at_least(0)),
+      parameter("border-height", &P::border, &BorderCutParams::height_cm,
+                "a column whose run reaches the image's top or bottom (a person the image cuts) passes at "
+                "this height (cm) instead of threshold_height (25 turns it on: close cameras); 0 = off, the "
+                "thesis",
+                Range::at_least(0), std::optional<double>(0.0)),
+      parameter("border-min-rows", &P::border, &BorderCutParams::min_rows_fraction,
+                "... when its run is at least this fraction of the image's rows long", Range::between(0, 1)),
+      parameter("border-upright", &P::border, &BorderCutParams::upright_mm,
+                "... and the depths at its run's two ends differ by at most this (mm; not the floor)",
+                Range::at_least(0)),
       parameter("min-fitted-width", &P::min_fitted_width_cm,
                 "objects whose fitted box is narrower than this (cm) are not candidates (border objects "
                 "exempt); 0 = thesis",

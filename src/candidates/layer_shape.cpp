@@ -1,6 +1,7 @@
 #include "rdsf/candidates/layer_shape.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace rdsf {
@@ -43,8 +44,27 @@ LayerShape::LayerShape(const LayerView& layer, const CandidateParams& params)
         passes_at(length, layer.depth_mm_max, shortest_at_max)) {
       passes = layer.camera->height_cm(length, column_depth_mm(c, 4)) >= min_height_cm;
     }
+    if (!passes && length > 0) passes = passes_as_cut_by_border(c);
     passing_[static_cast<std::size_t>(c)] = passes;
   }
+}
+
+bool LayerShape::passes_as_cut_by_border(int c) const {
+  const BorderCutParams& b = params_.border;
+  if (!(b.height_cm > 0)) return false;
+  const ColumnRun& r = run(c);
+  const int rows = layer_.labels->rows, band = rows / 20;
+  if (r.top > band && r.bottom < rows - 1 - band) return false;  // reaches neither border
+  if (r.length() < b.min_rows_fraction * rows) return false;
+  if (layer_.camera->height_cm(r.length(), layer_.depth_mm_mean) < b.height_cm) return false;
+  const double top = end_depth_mm(c, true), bottom = end_depth_mm(c, false);
+  return top > 0 && bottom > 0 && std::abs(top - bottom) <= b.upright_mm;
+}
+
+double LayerShape::end_depth_mm(int c, bool top) const {
+  const ColumnRun& r = run(c);
+  return top ? median_depth_mm(c, r.top, std::min(r.bottom, r.top + 7), 1)
+             : median_depth_mm(c, std::max(r.top, r.bottom - 7), r.bottom, 1);
 }
 
 int LayerShape::px(double centimetres) const {
@@ -76,9 +96,13 @@ LayerObject LayerShape::span(int first, int last) const {
 
 double LayerShape::column_depth_mm(int c, int row_step) const {
   const ColumnRun& r = run(c);
+  return median_depth_mm(c, r.top, r.bottom, row_step);
+}
+
+double LayerShape::median_depth_mm(int c, int from, int to, int row_step) const {
   std::vector<std::uint16_t>& depths = depths_;  // reused: called for many columns of a layer
   depths.clear();
-  for (int y = r.top; y >= 0 && y <= r.bottom; y += row_step) {
+  for (int y = from; y >= 0 && y <= to; y += row_step) {
     if ((*layer_.labels)(y, c) == layer_.label) depths.push_back((*layer_.depth_mm)(y, c));
   }
   if (depths.empty()) return 0.0;

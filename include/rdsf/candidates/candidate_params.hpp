@@ -132,6 +132,29 @@ struct HeadSplitParams {
   bool keep_whole = false;
 };
 
+/// A column of a person the image cuts (layer_shape.hpp); keys border_*. A column whose run reaches the
+/// image's top or bottom (within the first or last twentieth of its rows: sensors leave a band without
+/// readings there) holds a person who goes on beyond the frame: a person within about 3 m of a camera at
+/// chest height is cut at the feet, nearer ones at the head too, and what the image shows of them can be
+/// shorter than threshold_height. Such a column passes at height_cm (at the layer's mean depth) instead,
+/// when it is
+///   at least min_rows_fraction of the image's rows long (a cut person fills much of the image; a low box
+///   or a strip of wall at the border does not),
+///   upright: the medians of the layer's readings in the first and last 8 rows of its run differ by at
+///   most upright_mm (the floor along a column changes depth; a body does not).
+/// (A third of the rows is about 90 cm at 3 m for any camera of the Kinect's vertical field of view, which
+/// passes threshold_height anyway: the rule acts on near layers only.) Chosen on two tuning sets rendered
+/// for it (close people, seed 73; ordinary rooms, seed 35), checked on two rendered after (seeds 74, 37)
+/// and run once on the rest with people/v2: people 0.8-2.5 m away (seed 72) TAR at FPPF <= 0.1 0.617 ->
+/// 0.734, every other set within a few people, the real frames the same. Off by default: weaker models
+/// (people/v1, the quality report's small ones) score its new border objects high and lose real people
+/// (people/v1 in the lab 21 -> 17 of 27; docs/candidates.md, "People the image cuts").
+struct BorderCutParams {
+  double height_cm = 0.0;  ///< 0: off (the default and the thesis); 25 turns it on
+  double upright_mm = 400.0;
+  double min_rows_fraction = 0.33;
+};
+
 struct CandidateParams {
   /// Gap tolerance (pixels) inside a column's run of occupied pixels.
   int k = 6;
@@ -165,6 +188,7 @@ struct CandidateParams {
   FitParams fit;
   JoinParams join;
   NarrowPersonParams narrow;
+  BorderCutParams border;
   /// An object whose fitted extent (arms included) is narrower than this (cm) is not a candidate: pieces
   /// of furniture, not people, whose narrowest (side-on) view is wider. Objects touching the left or right
   /// image border are exempt (a person cut by it looks narrow). 0 turns it off.

@@ -15,7 +15,8 @@ class LayerShape {
   /// - tested as "length >= the shortest passing length" (found by bisection over 0..longest + 1, the
   /// height growing with the length at a positive depth and fy) - or, with height_at_column_depth in layers
   /// nearer than column_depth_layers_below_mm, when it passes at depth_mm_max and at the median depth of
-  /// its own run (every 4th row).
+  /// its own run (every 4th row) - or when it passes as a column of a person the image cuts
+  /// (BorderCutParams: its run reaches the image's top or bottom twentieth, is long and upright).
   LayerShape(const LayerView& layer, const CandidateParams& params);
 
   const LayerView& layer() const { return layer_; }
@@ -37,6 +38,8 @@ class LayerShape {
   /// Median depth (the (n/2)-th smallest) of the layer's pixels in column c's run, every row_step-th row
   /// from its top; 0 when none.
   double column_depth_mm(int c, int row_step = 2) const;
+  /// Median depth of the layer's pixels in the first (top) or last 8 rows of column c's run; 0 when none.
+  double end_depth_mm(int c, bool top) const;
 
  private:
   const LayerView& layer_;
@@ -44,6 +47,9 @@ class LayerShape {
   const std::vector<ColumnRun>& runs_;
   const int width_;
   std::vector<char> passing_;
+  bool passes_as_cut_by_border(int c) const;  // BorderCutParams' rule
+  /// Median depth of the layer's pixels in column c, rows from..to every row_step-th; 0 when none.
+  double median_depth_mm(int c, int from, int to, int row_step) const;
   mutable std::vector<std::uint16_t> depths_;  // column_depth_mm()'s depths, reused
 };
 
