@@ -10,11 +10,10 @@
 
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/core/error.hpp"
-#include "rdsf/pipeline/parallel_pipeline.hpp"
-#include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/segmentation/background_model.hpp"
 #include "rdsf/segmentation/local_background.hpp"
 #include "support/depth_scenes.hpp"
+#include "support/pipeline_runs.hpp"
 
 using namespace rdsf;
 
@@ -125,22 +124,9 @@ TEST(LocalBackground, ResultsDoNotDependOnTheThreadCountOrTheFrameSizes) {
   }
   PipelineParams params;
   params.analyser.local_front_reach_cm = 70;
-  auto run = [&](int threads) {
-    PeoplePipeline pipeline(params, nullptr);
-    std::vector<std::vector<std::pair<cv::Rect, bool>>> found;
-    run_in_frame_order(pipeline, static_cast<std::int64_t>(frames.size()),
-                       [&](std::int64_t i) { return frames[static_cast<std::size_t>(i)]; }, {threads, 0, 0},
-                       [&](const DepthFrame&, PipelineFrame& r) {
-                         found.emplace_back();
-                         for (const Candidate& c : r.analysis.candidates) found.back().emplace_back(c.fitted_box, c.foreground);
-                         return true;
-                       });
-    return found;
-  };
-  const auto one = run(1);
+  const test::CandidateBoxes one = test::candidate_boxes(params, frames, 1);
   ASSERT_EQ(one.size(), frames.size());
-  std::size_t added = 0;
-  for (const auto& frame : one) added += static_cast<std::size_t>(std::count_if(frame.begin(), frame.end(), [](const auto& c) { return c.second; }));
+  const std::size_t added = test::foreground_count(one);
   EXPECT_GE(added, 3u);  // the people against the wall
-  EXPECT_EQ(run(3), one);
+  EXPECT_EQ(test::candidate_boxes(params, frames, 3), one);
 }
