@@ -187,9 +187,10 @@ std::optional<BoostedModel> read_init_model(const TrainOptions& o, const Recipe&
   return init;
 }
 
-/// The separate validation sets, read like the training sets: the same spec, crops and features.
-ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const ChosenSamples& train,
-                              const RowShards& shards) {
+/// The separate validation sets, read like the training sets (`train_choice`, `train`): the same spec, crops,
+/// features and validation groups.
+ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const SampleChoice& train_choice,
+                              const ChosenSamples& train, const RowShards& shards) {
   SampleChoice v;
   v.pos_sets = recipe.validation_pos_sets;
   v.neg_sets = recipe.validation_neg_sets;
@@ -200,9 +201,8 @@ ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const
   v.crops = train.crops;
   v.columns = train.columns;    // ... and the same features as training
   v.feature_pool = std::numeric_limits<std::size_t>::max();  // all of them when training has all
-  const TrainingDataParams data = effective_training_data(o);
-  v.group_frames = data.group_frames;
-  v.group_by = parse_group_by(data.group_by);
+  v.group_frames = train_choice.group_frames;
+  v.group_by = train_choice.group_by;
   v.shard = shards.rank();
   v.shards = shards.size();
   ChosenSamples validation;
@@ -222,7 +222,7 @@ void read_samples(const TrainOptions& o, const Recipe& recipe, const RowShards& 
   train_choice.shards = shards.size();
   on_every_rank(shards, "reading its share of the training sets",
                 [&] { train = choose_samples(train_choice, std::cerr, o.threads); });
-  if (!recipe.validation_pos_sets.empty()) validation = read_validation(o, recipe, train, shards);
+  if (!recipe.validation_pos_sets.empty()) validation = read_validation(o, recipe, train_choice, train, shards);
   check_ranks_agree(shards, "sample sets or feature spec", data_text(train, validation));
   if (shards.distributed()) {
     std::cerr << "rdsf-train: " << shards.size() << " ranks; rank 0 holds " << train.rows.rows << " of the "
@@ -303,7 +303,8 @@ void record_provenance(TrainingRecord& record, const TrainOptions& o, const Trai
   const TrainingDataParams data = effective_training_data(o);
   record.parameters.emplace_back("group_frames", std::to_string(data.group_frames));
   record.parameters.emplace_back("group_by", data.group_by);
-  record.parameters.emplace_back("augmentation", training_choice(recipe, o).augmentation.describe());
+  record.parameters.emplace_back("augmentation",
+                                 parse_augmentation(data.augment, data.augment_copies, recipe.params.seed).describe());
   if (!init_reference.empty()) record.parameters.emplace_back("init", init_reference);
   record.parameters.insert(record.parameters.end(), plan.provenance.begin(), plan.provenance.end());
 }
