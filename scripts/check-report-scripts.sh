@@ -37,7 +37,7 @@ PASS= expect 2 "^usage: demo$" options_of --bogus
 
 scripts=(quality-report regularisation-sweep adaptation-benchmark loso-report background-report propagation-report
          resolution-report main-job train-default-model shard-mine feature-spec-compare labeler-bench
-         scaling-measure ros-latency option-reference)
+         scaling-measure ros-latency option-reference candidate-recipe-report)
 for s in "${scripts[@]}"; do
   expect 0 "[Dd]efault" "scripts/$s.sh" --help
   expect 2 "unknown argument '--bogus'" "scripts/$s.sh" --bogus
@@ -53,6 +53,13 @@ expect 2 "--frames takes a positive number" scripts/propagation-report.sh --fram
 expect 2 "--seeds takes numbers" scripts/propagation-report.sh --seeds "31 x"
 expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only levers
 expect 2 "--cameras takes kinect1 or mix" scripts/train-default-model.sh --cameras bogus
+expect 2 "--seed takes a whole number" scripts/train-default-model.sh --seed x
+expect 2 "--seed 2 models are not for --install" scripts/train-default-model.sh --seed 2 --install
+expect 1 "^train-default-model: $empty/sets holds no people and negatives sets" scripts/train-default-model.sh --sets-from "$empty"
+expect 2 "--seeds takes numbers" scripts/candidate-recipe-report.sh --seeds "1 x"
+expect 2 "unknown set 'bogus'" scripts/candidate-recipe-report.sh --sets "lab bogus"
+expect 2 "a recipe is NAME=OPTIONS, not 'v3'" scripts/candidate-recipe-report.sh --recipes "v3"
+expect 1 "^candidate-recipe-report: $empty holds no train/ and empty/ renderings" scripts/candidate-recipe-report.sh --data "$empty" --out "$empty/o"
 expect 2 "--cameras mix models are not for --install" scripts/train-default-model.sh --cameras mix --install
 expect 1 "^regularisation-sweep: $empty has no quality report's data" scripts/regularisation-sweep.sh --out "$empty"
 [ -z "$(ls -A "$empty")" ] || fail "regularisation-sweep wrote into $empty although it refused it"

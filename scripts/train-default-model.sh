@@ -25,6 +25,10 @@
 # people and noise; not the default's rooms through another camera): the rendering costs about what the
 # default's does. Mining reads the four empty folders, labelling adds the four people folders to one set, the
 # training is the default's. Without the option the script runs exactly as before.
+# --seed N (rdsf-train's seed: another feature pool and other folds, the recipe's spread) and --sets-from DIR
+# (train on DIR/sets, an earlier run's work folder such as out/default-model/a, without rendering, mining or
+# labelling) retrain a recipe's sets with another seed (scripts/candidate-recipe-report.sh); neither is for
+# --install unless the seed is 1.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
@@ -32,7 +36,7 @@ cd "$(dirname "$0")/.."
 usage() {
   cat <<USAGE
 Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick] [--candidates 'OPTIONS']
-                                      [--cameras kinect1|mix]
+                                      [--cameras kinect1|mix] [--seed N] [--sets-from DIR]
   --out DIR    work folder (default out/default-model): data/, sets/, models/people/v2.yml
   --install    copy the trained model to models/people/v2.yml
   --force      with --install: replace an existing models/people/v2.yml
@@ -43,15 +47,25 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
   --cameras C  kinect1 (default): every room through the Kinect v1; mix: a quarter of the rooms (and of the
                empty ones) each through Kinect v1, Kinect v2 512x424, D435 848x480 and Orbbec 640x400 (seeds
                11-14); use another --out, and not with --install
+  --seed N     rdsf-train's seed (default 1: the shipped model's); another is not for --install
+  --sets-from DIR  train on DIR/sets (an earlier run's work folder, e.g. out/default-model/a) instead of
+               rendering, mining and labelling (default none)
 USAGE
 }
-out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1
+out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1 seed=1 sets_from=""
 target=models/people/v2.yml  # the file this script trains and installs
-script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --cameras=cameras -- "$@"
+script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --cameras=cameras --seed=seed --sets-from=sets_from -- "$@"
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
 case "$cameras" in kinect1|mix) ;; *) echo "train-default-model: --cameras takes kinect1 or mix" >&2; exit 2 ;; esac
 if [ "$cameras" = mix ] && ((install)); then echo "train-default-model: --cameras mix models are not for --install" >&2; exit 2; fi
+if ! [[ "$seed" =~ ^[0-9]+$ ]]; then echo "train-default-model: --seed takes a whole number" >&2; exit 2; fi
+if [ "$seed" != 1 ] && ((install)); then echo "train-default-model: --seed $seed models are not for --install" >&2; exit 2; fi
+if [ -n "$sets_from" ] && ((quick)); then echo "train-default-model: --sets-from is not for --quick" >&2; exit 2; fi
+if [ -n "$sets_from" ] && ! [ -f "$sets_from/sets/people/manifest.yml" -a -f "$sets_from/sets/negatives/manifest.yml" ]; then
+  echo "train-default-model: $sets_from/sets holds no people and negatives sets (--sets-from)" >&2
+  exit 1
+fi
 read -r -a candidate_options <<<"$candidates"
 if ((install && !force)) && [ -e "$target" ]; then
   echo "train-default-model: $target exists (give --force to replace it)" >&2
@@ -111,23 +125,27 @@ train_once() {  # work folder -> prints the model path
     "$bin/labeler/rdsf-label" --source "$folder" --out "$w/sets/people" --truth "$folder/boxes.csv" \
       --answers /dev/null --keep-rejected --fit-across-head-cut 0 "${candidate_options[@]}" >&2
   done
-  train_model "$w"
+  train_model "$w" "$w/sets"
 }
 
-train_model() {  # work folder with sets/people and sets/negatives -> prints the model path
-  local w=$1
+train_model() {  # work folder, folder of the sets people and negatives -> prints the model path
+  local w=$1 sets=$2
   # The shipped v1 beside it, so that the model trained is version 2 of 'people' in its own file too.
   rm -rf "$w/models/people"
   mkdir -p "$w/models/people"
   cp models/people/v1.yml "$w/models/people/v1.yml"
-  "$bin/trainer/rdsf-train" --models-dir "$w/models" --name people --pos "$w/sets/people" \
-    --neg "$w/sets/negatives" "$w/sets/people" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
-    --group-frames "$group_frames" \
+  "$bin/trainer/rdsf-train" --models-dir "$w/models" --name people --pos "$sets/people" \
+    --neg "$sets/negatives" "$sets/people" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
+    --group-frames "$group_frames" --seed "$seed" \
     --threads 2 >&2
   echo "$w/$target"
 }
 
-model=$(train_once "$out/a") || exit 1
+if [ -n "$sets_from" ]; then
+  model=$(train_model "$out/a" "${sets_from%/}/sets") || exit 1
+else
+  model=$(train_once "$out/a") || exit 1
+fi
 if ((quick)); then
   again=$(train_once "$out/b") || exit 1
   # The work folder's name is recorded with the sample sets: compare the files with it taken out.
