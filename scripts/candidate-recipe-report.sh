@@ -3,7 +3,7 @@
 # (docs/quality.md, "A people version trained with the two rules"):
 #
 #   scripts/candidate-recipe-report.sh [--out DIR] [--recipes 'NAME=OPTIONS;...'] [--seeds "1 2"]
-#                                      [--sets "lab home seed31 ..."] [--data DIR] [--real DIR]
+#                                      [--sets "lab home seed31 ..."] [--data DIR] [--real DIR] [--shipped-only]
 #
 # For each recipe NAME=OPTIONS (rdsf-detect's candidate options; empty: the defaults, people/v2's own recipe),
 # scripts/train-default-model.sh --candidates OPTIONS mines and labels the shipped recipe's rendered frames
@@ -21,15 +21,18 @@
 # --local-front 70', --seeds "1 2", --sets "lab home seed31 seed81 seed91 seed37 walls71 close72 close74",
 # --real ../shared/realdata/people. Runs already made are reused. About 20 minutes of rendering (none with
 # --data), 9 minutes a recipe and 5 an extra seed on 2 cores, and 10-40 s a set and model.
-# Writes DIR/table.md and prints it.
+# --shipped-only trains nothing: people/v2 with each recipe's options on every set (a candidate option judged
+# on several renderings and both real sources in minutes; docs/quality.md, "The 16 rooms of seed 31 as the
+# judge": --recipes 'off=;narrow=--narrow-fitted-width 20'). Writes DIR/table.md and prints it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
 . scripts/real-sources.sh
 out=out/candidate-recipes recipes='v2=;v3b=--border-height 25;v3bf=--border-height 25 --local-front 70'
 seeds="1 2" sets="lab home seed31 seed81 seed91 seed37 walls71 close72 close74" data="" real=../shared/realdata/people
+shipped_only=0
 script_options candidate-recipe-report --out=out --recipes=recipes --seeds=seeds --sets=sets --data=data \
-  --real=real -- "$@"
+  --real=real --shipped-only=shipped_only=1 -- "$@"
 [[ "$seeds" =~ ^[0-9]+( [0-9]+)*$ ]] || { echo "candidate-recipe-report: --seeds takes numbers" >&2; exit 2; }
 for set in $sets; do
   [[ "$set" =~ ^(lab|home|seed[0-9]+|walls[0-9]+|close[0-9]+)$ ]] ||
@@ -48,10 +51,12 @@ mkdir -p "$out/models" "$out/runs" "$out/sets-data"
 out=$(cd "$out" && pwd)
 if [ -z "$data" ]; then data=$out/rendering; mkdir -p "$data"; fi
 data=$(cd "$(dirname "$data")" && pwd)/$(basename "$data")
+if ((shipped_only)); then seeds=""; fi
 
-# The models: $out/models/NAME-sSEED.yml.
+# The models: $out/models/NAME-sSEED.yml (none with --shipped-only).
 first_seed=${seeds%% *}
 for r in "${recipe_list[@]}"; do
+  [ -n "$seeds" ] || break
   name=${r%%=*} options=${r#*=}
   work=$out/train/$name
   mkdir -p "$work/a"
