@@ -17,6 +17,7 @@
 #include <std_msgs/Float32.h>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/frame/bag_layout.hpp"
 
 namespace rdsf {
 namespace {
@@ -242,6 +243,8 @@ struct BagSource::Impl {
   }
 
   void open() {
+    const std::string layout = bag_layout_problem(path);
+    if (!layout.empty()) fail(path, "cannot be read as a ROS 1 bag (" + layout + ")");
     try {
       bag.open(path, rosbag::bagmode::Read);
     } catch (const rosbag::BagException& e) {

@@ -25,6 +25,8 @@
 // fallback model, and description() says so once.
 // Bad input (not a bag, truncated or unindexed, no such topic, wrong encoding, a message shorter than its
 // step * height, a frame of another size) throws Error: one line naming the file, the topic and the problem.
+// The record lengths are checked first (bag_layout_problem(), frame/bag_layout.hpp), so a damaged length
+// is refused before librosbag reserves what it says.
 #include <cstdint>
 #include <memory>
 #include <string>

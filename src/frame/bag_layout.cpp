@@ -1,0 +1,112 @@
+#include "rdsf/frame/bag_layout.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <set>
+
+namespace rdsf {
+namespace {
+
+const char kVersionLine[] = "#ROSBAG V2.0\n";
+constexpr std::uint64_t kVersionBytes = sizeof(kVersionLine) - 1;
+
+std::uint64_t little_endian(const char* bytes, int count) {
+  std::uint64_t value = 0;
+  for (int i = count - 1; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(bytes[i]);
+  return value;
+}
+
+/// The fields of one record header that the guard needs.
+struct RecordFields {
+  std::optional<int> op;
+  std::optional<std::uint64_t> index_pos;   // bag header
+  std::optional<std::uint64_t> chunk_size;  // chunk: its size unpacked
+  std::string compression;                  // chunk
+};
+
+/// Reads the fields of `header` (field_len | name=value ...); "" or the problem.
+std::string read_fields(const std::string& header, std::uint64_t at, RecordFields& fields) {
+  std::size_t i = 0;
+  while (i < header.size()) {
+    if (header.size() - i < 4) return "the record at byte " + std::to_string(at) + " has a header field cut short";
+    const std::uint64_t length = little_endian(header.data() + i, 4);
+    i += 4;
+    if (length > header.size() - i) {
+      return "the record at byte " + std::to_string(at) + " has a header field of " + std::to_string(length) +
+             " bytes, beyond its header's end";
+    }
+    const std::string field = header.substr(i, length);
+    i += length;
+    const auto equals = field.find('=');
+    if (equals == std::string::npos) continue;  // librosbag refuses it with its own message
+    const std::string name = field.substr(0, equals);
+    const std::string value = field.substr(equals + 1);
+    if (name == "op" && value.size() == 1) fields.op = static_cast<unsigned char>(value[0]);
+    if (name == "index_pos" && value.size() == 8) fields.index_pos = little_endian(value.data(), 8);
+    if (name == "size" && value.size() == 4) fields.chunk_size = little_endian(value.data(), 4);
+    if (name == "compression") fields.compression = value;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string bag_layout_problem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";  // librosbag says why it cannot open it
+  in.seekg(0, std::ios::end);
+  const std::uint64_t file_bytes = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  char version[kVersionBytes];
+  if (file_bytes < kVersionBytes || !in.read(version, kVersionBytes) ||
+      std::memcmp(version, kVersionLine, kVersionBytes) != 0) {
+    return "";
+  }
+  const auto beyond = [&](std::uint64_t at, const std::string& what, std::uint64_t bytes) {
+    return "the record at byte " + std::to_string(at) + " says its " + what + " is " + std::to_string(bytes) +
+           " bytes long, beyond the file's end (" + std::to_string(file_bytes) + " bytes: truncated or damaged)";
+  };
+  std::set<std::uint64_t> record_starts;
+  std::optional<std::uint64_t> index_pos;
+  std::uint64_t at = kVersionBytes;
+  char length_bytes[4];
+  while (at < file_bytes) {
+    record_starts.insert(at);
+    if (file_bytes - at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
+    in.seekg(static_cast<std::streamoff>(at));
+    in.read(length_bytes, 4);
+    const std::uint64_t header_bytes = little_endian(length_bytes, 4);
+    if (header_bytes > file_bytes - at - 4) return beyond(at, "header", header_bytes);
+    std::string header(header_bytes, '\0');
+    in.read(header.data(), static_cast<std::streamsize>(header_bytes));
+    const std::uint64_t data_len_at = at + 4 + header_bytes;
+    if (file_bytes - data_len_at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
+    in.read(length_bytes, 4);
+    const std::uint64_t data_bytes = little_endian(length_bytes, 4);
+    if (!in) return "the record at byte " + std::to_string(at) + " could not be read";
+    if (data_bytes > file_bytes - data_len_at - 4) return beyond(at, "data", data_bytes);
+    RecordFields fields;
+    const std::string problem = read_fields(header, at, fields);
+    if (!problem.empty()) return problem;
+    if (fields.op == 0x03 && fields.index_pos) index_pos = fields.index_pos;
+    if (fields.op == 0x05 && fields.chunk_size) {
+      const bool packed = !fields.compression.empty() && fields.compression != "none";
+      if (!packed && *fields.chunk_size != data_bytes) {
+        return "the chunk at byte " + std::to_string(at) + " says it holds " + std::to_string(*fields.chunk_size) +
+               " bytes, its data is " + std::to_string(data_bytes);
+      }
+      if (packed && *fields.chunk_size > kMaxChunkBytes) {
+        return "the chunk at byte " + std::to_string(at) + " says it unpacks to " +
+               std::to_string(*fields.chunk_size) + " bytes (more than 1 GiB)";
+      }
+    }
+    at = data_len_at + 4 + data_bytes;
+  }
+  if (index_pos && *index_pos != 0 && *index_pos != file_bytes && record_starts.count(*index_pos) == 0) {
+    return "its index position (byte " + std::to_string(*index_pos) + ") is not the start of a record";
+  }
+  return "";
+}
+
+}  // namespace rdsf
