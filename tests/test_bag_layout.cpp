@@ -109,5 +109,5 @@ TEST(BagLayout, OtherFilesAreLeftToLibrosbag) {
   test::TempDir dir("rdsf-bag-layout");
   EXPECT_EQ(problem_of(dir, "#ROSBAG V1.2\n" + std::string(100, '\x7f')), "");
   EXPECT_EQ(problem_of(dir, "not a bag\n"), "");
-  EXPECT_EQ(bag_layout_problem((dir / "missing.bag").string()), "");
+  EXPECT_EQ(bag_layout_problem(dir / "missing.bag"), "");
 }

@@ -217,17 +217,18 @@ TEST(BagSource, BadBagsAreOneLineErrorsNamingFileTopicAndProblem) {
   EXPECT_TRUE(one_line(e)) << e;
 
   // A record length damaged to 0x8A000000 (the fuzzer's find: librosbag reserved 2.3 GB for it): the first
-  // record after the bag header, which rosbag pads to 4096 bytes after the 13-byte version line.
+  // record after the bag header (the 13-byte version line, then the bag header record: its two length fields
+  // and 4096 bytes of header and padding).
   const std::string damaged = dir / "damaged.bag";
   {
     std::ifstream in(bag, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_GT(bytes.size(), 4200u);
-    bytes.replace(13 + 4096, 4, std::string("\x00\x00\x00\x8a", 4));
+    bytes.replace(13 + 8 + 4096, 4, std::string("\x00\x00\x00\x8a", 4));
     std::ofstream(damaged, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
   e = test::error_message([&] { open_frame_source(damaged); });
-  EXPECT_NE(e.find(damaged + ": cannot be read as a ROS 1 bag (the record at byte 4109 says its header is "
+  EXPECT_NE(e.find(damaged + ": cannot be read as a ROS 1 bag (the record at byte 4117 says its header is "
                              "2315255808 bytes long, beyond the file's end"), std::string::npos) << e;
   EXPECT_TRUE(one_line(e)) << e;
 
