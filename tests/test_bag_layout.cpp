@@ -105,6 +105,20 @@ TEST(BagLayout, ChunkSizesMustMatchTheirData) {
   EXPECT_NE(problem_of(dir, packed).find("says it unpacks to 4026531840 bytes (more than 1 GiB)"), std::string::npos);
 }
 
+TEST(BagLayout, HeaderFieldsMustEndInsideTheirHeaderWhateverTheVersionLineSays) {
+  test::TempDir dir("rdsf-bag-layout");
+  std::string bag = small_bag();
+  // librosbag reads "#ROS<word> V2.0" as version 2.0, so the guard does too.
+  bag.replace(0, 13, "#ROSBA?G V2.0\n");
+  EXPECT_EQ(problem_of(dir, bag), "");
+  const std::string op = field("op", "\x03");
+  const std::size_t at = bag.find(op);
+  bag.replace(at, 4, le(720903, 4));  // the bag header's first field now reaches beyond its header
+  const std::string p = problem_of(dir, bag);
+  EXPECT_NE(p.find("the record at byte 14 has a header field of 720903 bytes, beyond its header's end"),
+            std::string::npos) << p;
+}
+
 TEST(BagLayout, OtherFilesAreLeftToLibrosbag) {
   test::TempDir dir("rdsf-bag-layout");
   EXPECT_EQ(problem_of(dir, "#ROSBAG V1.2\n" + std::string(100, '\x7f')), "");

@@ -1,6 +1,6 @@
 #include "rdsf/frame/bag_layout.hpp"
 
-#include <cstring>
+#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -8,8 +8,16 @@
 namespace rdsf {
 namespace {
 
-const char kVersionLine[] = "#ROSBAG V2.0\n";
-constexpr std::uint64_t kVersionBytes = sizeof(kVersionLine) - 1;
+/// The length of the first line (with its '\n') when librosbag reads it as version 2.0 (its own test:
+/// "#ROS<word> V<major>.<minor>"), else 0.
+std::uint64_t version_2_0_line_bytes(std::ifstream& in) {
+  std::string line;
+  if (!std::getline(in, line) || in.eof() || line.size() > 64) return 0;
+  char word[65] = {};
+  int major = 0, minor = 0;
+  if (std::sscanf(line.c_str(), "#ROS%64s V%d.%d", word, &major, &minor) != 3 || major != 2 || minor != 0) return 0;
+  return line.size() + 1;
+}
 
 std::uint64_t little_endian(const char* bytes, int count) {
   std::uint64_t value = 0;
@@ -58,18 +66,16 @@ std::string bag_layout_problem(const std::string& path) {
   in.seekg(0, std::ios::end);
   const std::uint64_t file_bytes = static_cast<std::uint64_t>(in.tellg());
   in.seekg(0);
-  char version[kVersionBytes];
-  if (file_bytes < kVersionBytes || !in.read(version, kVersionBytes) ||
-      std::memcmp(version, kVersionLine, kVersionBytes) != 0) {
-    return "";
-  }
+  const std::uint64_t version_bytes = version_2_0_line_bytes(in);
+  if (version_bytes == 0) return "";
+  in.clear();
   const auto beyond = [&](std::uint64_t at, const std::string& what, std::uint64_t bytes) {
     return "the record at byte " + std::to_string(at) + " says its " + what + " is " + std::to_string(bytes) +
            " bytes long, beyond the file's end (" + std::to_string(file_bytes) + " bytes: truncated or damaged)";
   };
   std::set<std::uint64_t> record_starts;
   std::optional<std::uint64_t> index_pos;
-  std::uint64_t at = kVersionBytes;
+  std::uint64_t at = version_bytes;
   char length_bytes[4];
   while (at < file_bytes) {
     record_starts.insert(at);

@@ -4,7 +4,8 @@
 // for one record header) before it finds the file too short. The guard reads only the lengths of the bag's
 // top-level records, never their contents (librosbag stays the one reader of bags).
 //
-// A version 2.0 bag is "#ROSBAG V2.0\n" and then records, each
+// A version 2.0 bag is a first line librosbag reads as such ("#ROSBAG V2.0\n"; librosbag takes any
+// "#ROS<word> V2.0") and then records, each
 //     header_len (uint32 little-endian) | header (fields: field_len uint32 | name=value) | data_len | data
 // Refused, with the byte offset: a record or header field whose stated length reaches beyond the file's end
 // (a truncated or damaged bag); a bag header (op 0x03) whose index_pos is neither 0 (unindexed: librosbag
