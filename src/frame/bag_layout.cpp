@@ -4,6 +4,7 @@
 #include <fstream>
 #include <optional>
 #include <set>
+#include <vector>
 
 namespace rdsf {
 namespace {
@@ -11,11 +12,16 @@ namespace {
 /// The length of the first line (with its '\n') when librosbag reads it as version 2.0 (its own test:
 /// "#ROS<word> V<major>.<minor>"), else 0.
 std::uint64_t version_2_0_line_bytes(std::ifstream& in) {
-  std::string line;
-  if (!std::getline(in, line) || in.eof() || line.size() > 64) return 0;
-  char word[65] = {};
+  std::string head(4096, '\0');  // a version line longer than this is left to librosbag
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  const auto newline = head.find('\n');
+  if (newline == std::string::npos || newline >= static_cast<std::size_t>(in.gcount())) return 0;
+  const std::string line = head.substr(0, newline);
+  std::vector<char> word(line.size() + 1);  // sscanf's %s: at most the whole line
   int major = 0, minor = 0;
-  if (std::sscanf(line.c_str(), "#ROS%64s V%d.%d", word, &major, &minor) != 3 || major != 2 || minor != 0) return 0;
+  if (std::sscanf(line.c_str(), "#ROS%s V%d.%d", word.data(), &major, &minor) != 3 || major != 2 || minor != 0) {
+    return 0;
+  }
   return line.size() + 1;
 }
 
