@@ -25,10 +25,14 @@ std::string record(const std::string& header, const std::string& data) {
   return le(header.size(), 4) + header + le(data.size(), 4) + data;
 }
 
+/// An uncompressed chunk's data: one message record of two bytes.
+const std::string kChunkData = record(field("op", "\x02") + field("conn", le(0, 4)) + field("time", le(0, 8)), "xx");
+
 /// A bag of a bag header, one uncompressed chunk and one connection record; index_pos at the connection.
 std::string small_bag(std::uint64_t* index_pos = nullptr, const std::string& version = "#ROSBAG V2.0\n") {
-  const std::string chunk = record(field("op", "\x05") + field("compression", "none") + field("size", le(8, 4)),
-                                   std::string(8, 'x'));
+  const std::string chunk = record(field("op", "\x05") + field("compression", "none") +
+                                       field("size", le(kChunkData.size(), 4)),
+                                   kChunkData);
   const std::string connection = record(field("op", "\x07") + field("conn", le(0, 4)) + field("topic", "/d"),
                                         field("type", "sensor_msgs/Image"));
   // The bag header's own length does not depend on index_pos's value: build it once to learn its size.
@@ -92,9 +96,12 @@ TEST(BagLayout, AnIndexPositionInsideARecordIsRefused) {
 TEST(BagLayout, ChunkSizesMustMatchTheirData) {
   test::TempDir dir("rdsf-bag-layout");
   std::string bag = small_bag();
-  const std::string size8 = field("size", le(8, 4));
-  bag.replace(bag.find(size8), size8.size(), field("size", le(9, 4)));
-  EXPECT_NE(problem_of(dir, bag).find("says it holds 9 bytes, its data is 8"), std::string::npos);
+  const std::size_t n = kChunkData.size();
+  const std::string size8 = field("size", le(n, 4));
+  bag.replace(bag.find(size8), size8.size(), field("size", le(n + 1, 4)));
+  EXPECT_NE(problem_of(dir, bag).find("says it holds " + std::to_string(n + 1) + " bytes, its data is " +
+                                      std::to_string(n)),
+            std::string::npos);
   // Compressed: any size up to 1 GiB, not beyond.
   std::string packed = small_bag();
   const std::string none = field("compression", "none");
@@ -115,6 +122,22 @@ TEST(BagLayout, HeaderFieldsMustEndInsideTheirHeaderWhateverTheVersionLineSays) 
   const std::string p = problem_of(dir, bag);
   EXPECT_NE(p.find("the record at byte 14 has a header field of 720903 bytes, beyond its header's end"),
             std::string::npos) << p;
+}
+
+TEST(BagLayout, AnUncompressedChunksRecordsAndAConnectionsDataAreWalkedToo) {
+  test::TempDir dir("rdsf-bag-layout");
+  std::string bag = small_bag();
+  const std::size_t inner = bag.find(kChunkData);
+  bag.replace(inner, 4, le(1000, 4));  // the message record's header now reaches beyond its chunk
+  std::string p = problem_of(dir, bag);
+  EXPECT_NE(p.find("the record at byte " + std::to_string(inner) + " says its header is 1000 bytes long, beyond its "
+                   "chunk's end"), std::string::npos) << p;
+  // A connection record's data is a header to librosbag: a field reaching beyond it is refused.
+  bag = small_bag();
+  const std::string type = field("type", "sensor_msgs/Image");
+  bag.replace(bag.find(type), 4, le(500, 4));
+  p = problem_of(dir, bag);
+  EXPECT_NE(p.find("has a data field of 500 bytes, beyond its data's end"), std::string::npos) << p;
 }
 
 TEST(BagLayout, OtherFilesAreLeftToLibrosbag) {

@@ -39,16 +39,17 @@ struct RecordFields {
   std::string compression;                  // chunk
 };
 
-/// Reads the fields of `header` (field_len | name=value ...); "" or the problem.
-std::string read_fields(const std::string& header, std::uint64_t at, RecordFields& fields) {
+/// Reads the fields of `header` (field_len | name=value ...), the record's "header" or "data" (`part`); "" or
+/// the problem.
+std::string read_fields(const std::string& header, std::uint64_t at, RecordFields& fields, const std::string& part) {
   std::size_t i = 0;
   while (i < header.size()) {
-    if (header.size() - i < 4) return "the record at byte " + std::to_string(at) + " has a header field cut short";
+    if (header.size() - i < 4) return "the record at byte " + std::to_string(at) + " has a " + part + " field cut short";
     const std::uint64_t length = little_endian(header.data() + i, 4);
     i += 4;
     if (length > header.size() - i) {
-      return "the record at byte " + std::to_string(at) + " has a header field of " + std::to_string(length) +
-             " bytes, beyond its header's end";
+      return "the record at byte " + std::to_string(at) + " has a " + part + " field of " + std::to_string(length) +
+             " bytes, beyond its " + part + "'s end";
     }
     const std::string field = header.substr(i, length);
     i += length;
@@ -64,6 +65,79 @@ std::string read_fields(const std::string& header, std::uint64_t at, RecordField
   return "";
 }
 
+/// Walks the records in [begin, end) of `in`: every length and header field inside its bounds, a connection
+/// record's data (a header too) likewise, and an uncompressed chunk's records in turn. Collects the
+/// top-level record starts and the bag header's index_pos. "" or the first problem.
+class RecordWalk {
+ public:
+  RecordWalk(std::ifstream& in, std::uint64_t file_bytes) : in_(in), file_bytes_(file_bytes) {}
+
+  std::string walk(std::uint64_t begin, std::uint64_t end, bool top_level) {
+    std::uint64_t at = begin;
+    char length_bytes[4];
+    while (at < end) {
+      if (top_level) starts.insert(at);
+      if (end - at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
+      in_.seekg(static_cast<std::streamoff>(at));
+      in_.read(length_bytes, 4);
+      const std::uint64_t header_bytes = little_endian(length_bytes, 4);
+      if (header_bytes > end - at - 4) return beyond(at, "header", header_bytes, end);
+      std::string header(header_bytes, '\0');
+      in_.read(header.data(), static_cast<std::streamsize>(header_bytes));
+      const std::uint64_t data_len_at = at + 4 + header_bytes;
+      if (end - data_len_at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
+      in_.read(length_bytes, 4);
+      const std::uint64_t data_bytes = little_endian(length_bytes, 4);
+      if (!in_) return "the record at byte " + std::to_string(at) + " could not be read";
+      if (data_bytes > end - data_len_at - 4) return beyond(at, "data", data_bytes, end);
+      const std::uint64_t data_at = data_len_at + 4;
+      RecordFields fields;
+      std::string problem = read_fields(header, at, fields, "header");
+      if (!problem.empty()) return problem;
+      if (top_level && fields.op == 0x03 && fields.index_pos) index_pos = fields.index_pos;
+      if (fields.op == 0x07) {  // a connection: its data is read as a header as well
+        std::string data(data_bytes, '\0');
+        in_.read(data.data(), static_cast<std::streamsize>(data_bytes));
+        RecordFields ignored;
+        problem = read_fields(data, at, ignored, "data");
+        if (!problem.empty()) return problem;
+      }
+      if (fields.op == 0x05 && fields.chunk_size) {
+        const bool packed = !fields.compression.empty() && fields.compression != "none";
+        if (!packed && *fields.chunk_size != data_bytes) {
+          return "the chunk at byte " + std::to_string(at) + " says it holds " + std::to_string(*fields.chunk_size) +
+                 " bytes, its data is " + std::to_string(data_bytes);
+        }
+        if (packed && *fields.chunk_size > kMaxChunkBytes) {
+          return "the chunk at byte " + std::to_string(at) + " says it unpacks to " +
+                 std::to_string(*fields.chunk_size) + " bytes (more than 1 GiB)";
+        }
+        if (!packed) {
+          problem = walk(data_at, data_at + data_bytes, false);
+          if (!problem.empty()) return problem;
+        }
+      }
+      at = data_at + data_bytes;
+    }
+    return "";
+  }
+
+  std::set<std::uint64_t> starts;          ///< the top-level records' first bytes
+  std::optional<std::uint64_t> index_pos;  ///< the bag header's
+
+ private:
+  std::string beyond(std::uint64_t at, const std::string& what, std::uint64_t bytes, std::uint64_t end) const {
+    const std::string limit = end == file_bytes_ ? "the file's end (" + std::to_string(file_bytes_) +
+                                                       " bytes: truncated or damaged)"
+                                                 : "its chunk's end (byte " + std::to_string(end) + ")";
+    return "the record at byte " + std::to_string(at) + " says its " + what + " is " + std::to_string(bytes) +
+           " bytes long, beyond " + limit;
+  }
+
+  std::ifstream& in_;
+  std::uint64_t file_bytes_;
+};
+
 }  // namespace
 
 std::string bag_layout_problem(const std::string& path) {
@@ -75,47 +149,11 @@ std::string bag_layout_problem(const std::string& path) {
   const std::uint64_t version_bytes = version_2_0_line_bytes(in);
   if (version_bytes == 0) return "";
   in.clear();
-  const auto beyond = [&](std::uint64_t at, const std::string& what, std::uint64_t bytes) {
-    return "the record at byte " + std::to_string(at) + " says its " + what + " is " + std::to_string(bytes) +
-           " bytes long, beyond the file's end (" + std::to_string(file_bytes) + " bytes: truncated or damaged)";
-  };
-  std::set<std::uint64_t> record_starts;
-  std::optional<std::uint64_t> index_pos;
-  std::uint64_t at = version_bytes;
-  char length_bytes[4];
-  while (at < file_bytes) {
-    record_starts.insert(at);
-    if (file_bytes - at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
-    in.seekg(static_cast<std::streamoff>(at));
-    in.read(length_bytes, 4);
-    const std::uint64_t header_bytes = little_endian(length_bytes, 4);
-    if (header_bytes > file_bytes - at - 4) return beyond(at, "header", header_bytes);
-    std::string header(header_bytes, '\0');
-    in.read(header.data(), static_cast<std::streamsize>(header_bytes));
-    const std::uint64_t data_len_at = at + 4 + header_bytes;
-    if (file_bytes - data_len_at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
-    in.read(length_bytes, 4);
-    const std::uint64_t data_bytes = little_endian(length_bytes, 4);
-    if (!in) return "the record at byte " + std::to_string(at) + " could not be read";
-    if (data_bytes > file_bytes - data_len_at - 4) return beyond(at, "data", data_bytes);
-    RecordFields fields;
-    const std::string problem = read_fields(header, at, fields);
-    if (!problem.empty()) return problem;
-    if (fields.op == 0x03 && fields.index_pos) index_pos = fields.index_pos;
-    if (fields.op == 0x05 && fields.chunk_size) {
-      const bool packed = !fields.compression.empty() && fields.compression != "none";
-      if (!packed && *fields.chunk_size != data_bytes) {
-        return "the chunk at byte " + std::to_string(at) + " says it holds " + std::to_string(*fields.chunk_size) +
-               " bytes, its data is " + std::to_string(data_bytes);
-      }
-      if (packed && *fields.chunk_size > kMaxChunkBytes) {
-        return "the chunk at byte " + std::to_string(at) + " says it unpacks to " +
-               std::to_string(*fields.chunk_size) + " bytes (more than 1 GiB)";
-      }
-    }
-    at = data_len_at + 4 + data_bytes;
-  }
-  if (index_pos && *index_pos != 0 && *index_pos != file_bytes && record_starts.count(*index_pos) == 0) {
+  RecordWalk records(in, file_bytes);
+  const std::string problem = records.walk(version_bytes, file_bytes, true);
+  if (!problem.empty()) return problem;
+  const auto index_pos = records.index_pos;
+  if (index_pos && *index_pos != 0 && *index_pos != file_bytes && records.starts.count(*index_pos) == 0) {
     return "its index position (byte " + std::to_string(*index_pos) + ") is not the start of a record";
   }
   return "";

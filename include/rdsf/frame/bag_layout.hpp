@@ -7,11 +7,14 @@
 // A version 2.0 bag is a first line librosbag reads as such ("#ROSBAG V2.0\n"; librosbag takes any
 // "#ROS<word> V2.0") and then records, each
 //     header_len (uint32 little-endian) | header (fields: field_len uint32 | name=value) | data_len | data
-// Refused, with the byte offset: a record or header field whose stated length reaches beyond the file's end
-// (a truncated or damaged bag); a bag header (op 0x03) whose index_pos is neither 0 (unindexed: librosbag
-// says so itself) nor the start of a record (nor the file's end); a chunk (op 0x05) whose uncompressed size
-// differs from its data length when it is not compressed, or exceeds kMaxChunkBytes when it is. Any other
-// first line (a version 1.2 bag, no bag at all) is left to librosbag's own message.
+// Refused, with the byte offset: a record whose stated lengths reach beyond the file's end (a truncated or
+// damaged bag) or beyond its chunk's end, a header field beyond its header's end (also in a connection
+// record's data, which librosbag reads as a header; ros::Header::parse does not check); a bag header (op
+// 0x03) whose index_pos is neither 0 (unindexed: librosbag says so itself) nor the start of a record (nor
+// the file's end); a chunk (op 0x05) whose uncompressed size differs from its data length when it is not
+// compressed (its records are then walked the same way), or exceeds kMaxChunkBytes when it is (compressed
+// chunks' records are not seen). Any other first line (a version 1.2 bag, no bag at all) is left to
+// librosbag's own message.
 #include <cstdint>
 #include <string>
 
