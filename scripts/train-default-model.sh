@@ -52,15 +52,18 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
                rendering, mining and labelling (default none)
 USAGE
 }
-out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1 seed=1 sets_from=""
+out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1 trainer_seed=1 sets_from=""
 target=models/people/v2.yml  # the file this script trains and installs
-script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --cameras=cameras --seed=seed --sets-from=sets_from -- "$@"
+script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --cameras=cameras --seed=trainer_seed --sets-from=sets_from -- "$@"
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
 case "$cameras" in kinect1|mix) ;; *) echo "train-default-model: --cameras takes kinect1 or mix" >&2; exit 2 ;; esac
 if [ "$cameras" = mix ] && ((install)); then echo "train-default-model: --cameras mix models are not for --install" >&2; exit 2; fi
-if ! [[ "$seed" =~ ^[0-9]+$ ]]; then echo "train-default-model: --seed takes a whole number" >&2; exit 2; fi
-if [ "$seed" != 1 ] && ((install)); then echo "train-default-model: --seed $seed models are not for --install" >&2; exit 2; fi
+if ! [[ "$trainer_seed" =~ ^[0-9]+$ ]]; then echo "train-default-model: --seed takes a whole number" >&2; exit 2; fi
+if [ "$trainer_seed" != 1 ] && ((install)); then
+  echo "train-default-model: --seed $trainer_seed models are not for --install" >&2
+  exit 2
+fi
 if [ -n "$sets_from" ] && ((quick)); then echo "train-default-model: --sets-from is not for --quick" >&2; exit 2; fi
 if [ -n "$sets_from" ] && ! [ -f "$sets_from/sets/people/manifest.yml" -a -f "$sets_from/sets/negatives/manifest.yml" ]; then
   echo "train-default-model: $sets_from/sets holds no people and negatives sets (--sets-from)" >&2
@@ -136,7 +139,7 @@ train_model() {  # work folder, folder of the sets people and negatives -> print
   cp models/people/v1.yml "$w/models/people/v1.yml"
   "$bin/trainer/rdsf-train" --models-dir "$w/models" --name people --pos "$sets/people" \
     --neg "$sets/negatives" "$sets/people" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
-    --group-frames "$group_frames" --seed "$seed" \
+    --group-frames "$group_frames" --seed "$trainer_seed" \
     --threads 2 >&2
   echo "$w/$target"
 }
