@@ -7,8 +7,6 @@
 #include <map>
 #include <set>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "rdsf/core/append_only_log.hpp"
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
@@ -19,6 +17,7 @@
 #include "rdsf/dataset/sample_set_manifest.hpp"
 #include "rdsf/dataset/sample_set_writer.hpp"
 #include "rdsf/dataset/sample_tsv.hpp"
+#include "rdsf/frame/png_decoder.hpp"
 
 namespace rdsf {
 
@@ -26,17 +25,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The PNG at `path` decoded by OpenCV, or an empty image when it is not one: cv::imread sniffs every format
-/// it knows (PFM, JPEG 2000, ...) and threw cv::Exception on a 16-byte "PF" file the depth-crop fuzzer made,
-/// so only files with the PNG signature reach it, and an exception from it means a damaged file.
-cv::Mat read_png_or_empty(const std::string& path, int flags) {
-  static const char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
-  char head[8] = {};
-  std::ifstream in(path, std::ios::binary);
-  if (!in.read(head, 8) || !std::equal(head, head + 8, kSignature)) return {};
+/// The PNG at `path` as the frame readers decode it (read_png_file: the signature and CRCs checked, what
+/// cv::imdecode(IMREAD_UNCHANGED) gives), or an empty image when it is not a readable PNG. cv::imread, used
+/// here before, sniffs every format it knows and threw cv::Exception on a 16-byte "PF" (PFM) file the
+/// depth-crop fuzzer made.
+cv::Mat read_png_or_empty(const std::string& path) {
   try {
-    return cv::imread(path, flags);
-  } catch (const cv::Exception&) {
+    return read_png_file(path);
+  } catch (const Error&) {
     return {};
   }
 }
@@ -50,7 +46,7 @@ std::string depth_crop_problem(const std::string& path, const SampleRecord& reco
   if (ec) return "crop missing";
   if (size == 0) return "crop empty";
   if (!full) return "";
-  const cv::Mat image = read_png_or_empty(path, cv::IMREAD_UNCHANGED);
+  const cv::Mat image = read_png_or_empty(path);
   if (image.empty()) return "crop truncated or not a PNG";
   if (image.type() != CV_16UC1 || image.cols != spec.window_width_px || image.rows != spec.window_height_px) {
     return "crop is not a " + std::to_string(spec.window_width_px) + "x" + std::to_string(spec.window_height_px) +
@@ -131,7 +127,7 @@ void check_crops(const fs::path& root, const std::vector<SampleRecord>& kept, co
       f.retract[r.id] = problem;
     }
     if (r.has_colour && problem.empty()) {
-      const cv::Mat colour = read_png_or_empty((root / (stem + ".rgb.png")).string(), cv::IMREAD_COLOR);
+      const cv::Mat colour = read_png_or_empty((root / (stem + ".rgb.png")).string());
       if (colour.empty() || colour.cols != spec.window_width_px || colour.rows != spec.window_height_px) {
         f.add(stem + ".rgb.png", "sample " + std::to_string(r.id) + ": colour crop missing or unusable", "");
       }
