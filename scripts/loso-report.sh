@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Leave one source out (issue 34; docs/quality.md, "Leave one source out"): for each real source S of
 # ../shared/realdata/people (UC3M lab, UC3M home) it re-makes the choices the docs made while looking at
-# both sources, once on the 16 held-out synthetic rooms alone (a) and once on them plus the OTHER source R
-# (b), by the rules written in docs/quality.md, and reports S's figures under the choices made without S.
-#   1. the held-out synthetic sequence (seed 31, 960 frames = 16 rooms) is reused from the quality report's
-#      folder (--out) when the generator built now made it, else rendered as scripts/quality-report.sh does
+# both sources, once on held-out synthetic rooms alone (a) and once on them plus the OTHER source R (b), by
+# the rules written in docs/quality.md, and reports S's figures under the choices made without S.
+#   1. the judges: renderings of 16 synthetic rooms each (960 frames, people 1..4, clips of 60, colour), one
+#      per seed of --judges. Seed 31 is the quality report's held-out sequence, reused from its folder (--out)
+#      when the generator built now made it; the others go to --out/data/judge-SEED. Rule (a) pools them:
+#      one rendering decides by a room or two (docs/quality.md, "The 16 rooms of seed 31 as the judge")
 #   2. the candidate options: the model (default people/v2, fixed) evaluated with each option value on the
 #      16 rooms, the lab and the home (rdsf-detect --truth; seconds for the real frames, about half a minute
 #      for the 16 rooms per value)
@@ -20,20 +22,27 @@ cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
-Usage: scripts/loso-report.sh [--out DIR] [--real DIR] [--model M]
+Usage: scripts/loso-report.sh [--out DIR] [--real DIR] [--model M] [--judges SEEDS]
   --out DIR    a quality report's output folder (default out/quality): its held-out sequence
-               data/test-960 is reused (rendered there when absent), its lever models (models/L3-trees,
+               data/test-960 (seed 31) is reused (rendered there when absent), its lever models (models/L3-trees,
                models/L4-mirror) and regularisation sweep (sweep/models) are evaluated when present; the
                runs and the table go to DIR/loso/MODEL (MODEL: --model with '/' as '-', e.g. people-v2)
   --real DIR   real frames with boxes.csv (default ../shared/realdata/people)
   --model M    the model evaluated with each candidate option: NAME/vN in models/ or a model file
                (default people/v2)
+  --judges S   the seeds of the synthetic renderings that judge rule (a), pooled: a figure is the people
+               found over all of them (default "31 81 91 37": 64 rooms; "31" alone is the rule before)
 Needs rdsf-detect and rdsf-synth built (cmake --build build --target rdsf-detect rdsf-synth; another build
 folder with RDSF_BUILD_DIR); trains nothing.
 USAGE
 }
-out=out/quality real=../shared/realdata/people model=people/v2
-script_options loso-report --out=out --real=real --model=model -- "$@"
+out=out/quality real=../shared/realdata/people model=people/v2 judges="31 81 91 37"
+script_options loso-report --out=out --real=real --model=model --judges=judges -- "$@"
+read -r -a judge_seeds <<<"$judges"
+for j in "${judge_seeds[@]}"; do
+  [[ $j =~ ^[0-9]+$ ]] || { echo "loso-report: --judges '$judges': '$j' is not a seed (whole numbers, e.g. \"31 81 91 37\")" >&2; exit 2; }
+done
+((${#judge_seeds[@]})) || { echo "loso-report: --judges is empty: give at least one seed, e.g. 31" >&2; exit 2; }
 bin=${RDSF_BUILD_DIR:-build}
 synth=$bin/synth/rdsf-synth detect=$bin/detector/rdsf-detect
 for p in "$synth" "$detect"; do
@@ -46,26 +55,42 @@ tag=$(echo "${model%.yml}" | sed 's|^\./||; s|/|-|g')
 loso=$out/loso/$tag logs=$out/loso/$tag/logs test=test-960
 mkdir -p "$logs"
 
-step "the held-out synthetic sequence ($out/data/$test)"
 generator=$("$synth" --out "$loso/.generator-probe" --force --frames 1 --empty >/dev/null 2>&1 &&
             grep '^generator:' "$loso/.generator-probe/synth.yml"; rm -rf "$loso/.generator-probe")
-if [ -f "$out/data/$test/synth.yml" ] && grep -qxF "$generator" "$out/data/$test/synth.yml"; then
-  echo "$out/data/$test: already rendered" >&2
-else
-  "$synth" --out "$out/data/$test" --force --frames 960 --people 1..4 --seed 31 --rgb --clip-frames 60 \
-    >"$logs/render-$test.log" 2>&1 || { tail -3 "$logs/render-$test.log" >&2; exit 1; }
-fi
+# judge_dir SEED: where that rendering is (seed 31: the quality report's held-out sequence).
+judge_dir() { if [ "$1" = 31 ]; then echo "$out/data/$test"; else echo "$out/data/judge-$1"; fi; }
+judge_sets=()
+for j in "${judge_seeds[@]}"; do
+  d=$(judge_dir "$j")
+  step "the synthetic judge, seed $j ($d)"
+  if [ -f "$d/synth.yml" ] && grep -qxF "$generator" "$d/synth.yml" && grep -qx "seed: $j" "$d/synth.yml"; then
+    echo "$d: already rendered" >&2
+  else
+    "$synth" --out "$d" --force --frames 960 --people 1..4 --seed "$j" --rgb --clip-frames 60 \
+      >"$logs/render-$(basename "$d").log" 2>&1 || { tail -3 "$logs/render-$(basename "$d").log" >&2; exit 1; }
+  fi
+  # seed 31's set keeps the name "synthetic" (its runs of earlier reports are reused)
+  if [ "$j" = 31 ]; then judge_sets+=(synthetic); else judge_sets+=("synthetic-$j"); fi
+done
 source scripts/real-sources.sh
 real_source_sets "$real" "$out" >/dev/null
 for s in lab home; do
   [ -s "$out/real-sources/real-$s/frames.txt" ] ||
     { echo "loso-report: $real has no ${s}_* frames: leaving one source out needs both sources" >&2; exit 1; }
 done
-sets=(synthetic real-lab real-home)
-source_of() { case "$1" in synthetic) echo "$out/data/$test" ;; *) echo "$out/real-sources/$1/frames.txt" ;; esac; }
-truth_of() { case "$1" in synthetic) echo "$out/data/$test/boxes.csv" ;; *) echo "$out/real-sources/$1/boxes.csv" ;; esac; }
+sets=("${judge_sets[@]}" real-lab real-home)
+source_of() {
+  case "$1" in synthetic) echo "$out/data/$test" ;; synthetic-*) judge_dir "${1#synthetic-}" ;;
+               *) echo "$out/real-sources/$1/frames.txt" ;; esac
+}
+truth_of() { case "$1" in synthetic*) echo "$(source_of "$1")/boxes.csv" ;; *) echo "$out/real-sources/$1/boxes.csv" ;; esac; }
 other() { case "$1" in real-lab) echo real-home ;; real-home) echo real-lab ;; esac; }
-title() { case "$1" in real-lab) echo "UC3M lab" ;; real-home) echo "UC3M home" ;; *) echo "16 synthetic rooms" ;; esac; }
+title() {
+  case "$1" in real-lab) echo "UC3M lab" ;; real-home) echo "UC3M home" ;; synthetic) echo "16 synthetic rooms (seed 31)" ;;
+               synthetic-*) echo "16 synthetic rooms (seed ${1#synthetic-})" ;; esac
+}
+judges_title="the judges: ${#judge_seeds[@]} x 16 synthetic rooms (seeds ${judge_seeds[*]})"
+
 
 # evaluate DIR SETS MODELS-DIR [--model M]... [-- CANDIDATE OPTIONS...]: one rdsf-detect per set into DIR/SET.
 evaluate() {
@@ -82,7 +107,7 @@ evaluate() {
   stamp="$(cat "${files[@]}" | md5sum | cut -c1-12) ${args[*]} ${opts[*]}"
   for set in $sets_; do
     local inputs=("$(truth_of "$set")") key
-    [ "$set" = synthetic ] || inputs+=("$(source_of "$set")")
+    case "$set" in synthetic*) ;; *) inputs+=("$(source_of "$set")") ;; esac
     key="$(cat "${inputs[@]}" | md5sum | cut -c1-12) $stamp"
     [ -f "$dir/$set/summary.md" ] && [ "$(cat "$dir/$set/.command" 2>/dev/null)" = "$key" ] && continue
     "$detect" --source "$(source_of "$set")" --truth "$(truth_of "$set")" --report-dir "$dir/$set" \
@@ -105,6 +130,22 @@ fig() {
       print v[f]; found = 1; exit }
     END { if (!found) exit 1 }' "$1" || { echo "loso-report: no row '$2' in $1" >&2; exit 1; }
 }
+# jfig DIR ROW FIELD: a figure of the judges pooled, from DIR/SET/summary.md of every judge set: TARs and
+# candidate recall are the people found over all of them (sum of found / sum of people), "with" and
+# "people" sums, best MOTA and candidate AUC means weighted by each rendering's people (an approximation:
+# a pooled AUC would need the candidates' scores). found01 and found05 are the sums.
+jfig() {
+  local set lines=""
+  for set in "${judge_sets[@]}"; do
+    lines+="$(fig "$1/$set/summary.md" "$2" people) $(fig "$1/$set/summary.md" "$2" found01) $(fig "$1/$set/summary.md" "$2" found05) $(fig "$1/$set/summary.md" "$2" with) $(fig "$1/$set/summary.md" "$2" mota) $(fig "$1/$set/summary.md" "$2" auc)"$'\n'
+  done
+  awk -v f="$3" 'NF { n += $1; f01 += $2; f05 += $3; w += $4; m += $1 * $5; a += $1 * $6 } END {
+    if (f == "tar01") printf "%.3f\n", f01 / n; else if (f == "tar05") printf "%.3f\n", f05 / n
+    else if (f == "recall") printf "%.3f\n", w / n; else if (f == "with") print w; else if (f == "people") print n
+    else if (f == "found01") print f01; else if (f == "found05") print f05
+    else if (f == "mota") printf "%.3f\n", m / n; else if (f == "auc") printf "%.4f\n", a / n
+    else { print "loso-report: jfig: no field " f > "/dev/stderr"; exit 1 } }' <<<"$lines"
+}
 milli() { awk -v x="$1" -v s="${2:-1000}" 'BEGIN { printf "%d", (x < 0 ? x * s - 0.5 : x * s + 0.5) }'; }
 
 # ---- 2. candidate options -------------------------------------------------------------------------------
@@ -124,13 +165,13 @@ for c in "${configs[@]}"; do
 done
 summary() { echo "$loso/options/$1/$2/summary.md"; }
 # binary_choice OPTION OFF-CONFIG ON-CONFIG DEFAULT-CONFIG HELD-OUT: prints "a-config b-config" by the rules:
-# (a) ON only when it raises the 16 rooms' TAR at FPPF <= 0.1 by more than 0.016 and lowers best MOTA by no
-# more than 0.016; (b) the other source R overrides when the (a) value finds at least 2 fewer people of R
+# (a) ON only when it raises the judges' TAR at FPPF <= 0.1 (pooled) by more than 0.016 and lowers best MOTA
+# by no more than 0.016; (b) the other source R overrides when the (a) value finds at least 2 fewer people of R
 # than the other value at FPPF <= 0.1 or <= 0.5 and not more at the other.
 binary_choice() {
   local off=$2 on=$3 r d01 dmota a b fa01 fa05 fb01 fb05
-  d01=$(( $(milli "$(fig "$(summary "$on" synthetic)" "$row" tar01)") - $(milli "$(fig "$(summary "$off" synthetic)" "$row" tar01)") ))
-  dmota=$(( $(milli "$(fig "$(summary "$off" synthetic)" "$row" mota)") - $(milli "$(fig "$(summary "$on" synthetic)" "$row" mota)") ))
+  d01=$(( $(milli "$(jfig "$loso/options/$on" "$row" tar01)") - $(milli "$(jfig "$loso/options/$off" "$row" tar01)") ))
+  dmota=$(( $(milli "$(jfig "$loso/options/$off" "$row" mota)") - $(milli "$(jfig "$loso/options/$on" "$row" mota)") ))
   a=$off; ((d01 > 16 && dmota <= 16)) && a=$on
   b=$a; r=$(other "$5")
   local alt=$on; [ "$a" = "$on" ] && alt=$off
@@ -140,18 +181,19 @@ binary_choice() {
   echo "$a $b"
 }
 ratio_config() { [ "$1" = 0.3 ] && echo default || echo "ratio-$1"; }
-# ratio_choice HELD-OUT: (a) most people with a candidate on the 16 rooms, within 7 a tie, ties to the
-# value nearest 0.3; (b) R's best when it gives R at least 2 more people a candidate, ties to (a)'s nearest.
+# ratio_choice HELD-OUT: (a) most people with a candidate on the judges (pooled), within 1 % of their people a
+# tie (7 of one rendering's 700), ties to the value nearest 0.3; (b) R's best when it gives R at least 2 more people a candidate, ties to (a)'s nearest.
 ratio_choice() {
   local r v lines_a="" lines_r=""
   r=$(other "$1")
   for v in "${ratios[@]}"; do
-    lines_a+="$v $(fig "$(summary "$(ratio_config "$v")" synthetic)" "$row" with)"$'\n'
+    lines_a+="$v $(jfig "$loso/options/$(ratio_config "$v")" "$row" with)"$'\n'
     lines_r+="$v $(fig "$(summary "$(ratio_config "$v")" "$r")" "$row" with)"$'\n'
   done
   local a b
-  a=$(awk 'NF { v[NR] = $1; w[NR] = $2; if ($2 > m) m = $2 } END {
-             best = ""; for (i in v) if (w[i] >= m - 7) { d = (v[i] > 0.3 ? v[i] - 0.3 : 0.3 - v[i])
+  local tie; tie=$(( ($(jfig "$loso/options/default" "$row" people) + 50) / 100 ))
+  a=$(awk -v tie="$tie" 'NF { v[NR] = $1; w[NR] = $2; if ($2 > m) m = $2 } END {
+             best = ""; for (i in v) if (w[i] >= m - tie) { d = (v[i] > 0.3 ? v[i] - 0.3 : 0.3 - v[i])
                if (best == "" || d < bd - 1e-9 || (d < bd + 1e-9 && v[i] < best)) { best = v[i]; bd = d } }
              print best }' <<<"$lines_a")
   b=$(awk -v a="$a" 'NF { v[NR] = $1; w[NR] = $2; if ($1 == a) wa = $2; if ($2 > m) m = $2 } END {
@@ -179,9 +221,9 @@ if [ -f "$out/sweep/TABLE.md" ] && [ -f "$out/sweep/models/base/v1.yml" ]; then 
 fi
 # mirror_choice HELD-OUT: prints "a b" (mirror or trees).
 mirror_choice() {
-  local s=$loso/levers/synthetic/summary.md r a b alt d01 dauc
-  d01=$(( $(milli "$(fig "$s" "L4-mirror v1" tar01)") - $(milli "$(fig "$s" "L3-trees v1" tar01)") ))
-  dauc=$(( $(milli "$(fig "$s" "L4-mirror v1" auc)" 10000) - $(milli "$(fig "$s" "L3-trees v1" auc)" 10000) ))
+  local s=$loso/levers r a b alt d01 dauc
+  d01=$(( $(milli "$(jfig "$s" "L4-mirror v1" tar01)") - $(milli "$(jfig "$s" "L3-trees v1" tar01)") ))
+  dauc=$(( $(milli "$(jfig "$s" "L4-mirror v1" auc)" 10000) - $(milli "$(jfig "$s" "L3-trees v1" auc)" 10000) ))
   a=trees; { ((d01 > 16 && dauc >= -70)) || ((dauc > 70 && d01 >= -16)); } && a=mirror
   r=$(other "$1"); alt=mirror; [ "$a" = mirror ] && alt=trees
   local rowa="L3-trees v1" rowb="L4-mirror v1"; [ "$a" = mirror ] && { rowa="L4-mirror v1"; rowb="L3-trees v1"; }
@@ -191,26 +233,29 @@ mirror_choice() {
 }
 # sweep_choice HELD-OUT: prints "a b", each the variants taken (comma-separated) or "base".
 sweep_choice() {
-  local s=$loso/sweep/synthetic/summary.md r v t01 tauc rauc taken_a="" taken_b=""
+  local s=$loso/sweep r v t01 tauc rauc taken_a="" taken_b=""
   r=$(other "$1")
-  spread() {  # summary field scale
+  sfig() {  # SET ROW FIELD: a sweep model's figure on the judges (pooled) or on a real set
+    if [ "$1" = judges ]; then jfig "$s" "$2" "$3"; else fig "$s/$1/summary.md" "$2" "$3"; fi
+  }
+  spread() {  # judges|SET field scale
     local x lo="" hi=""
     for v in base seed-2 seed-3; do
-      x=$(milli "$(fig "$1" "$v v1" "$2")" "$3")
+      x=$(milli "$(sfig "$1" "$v v1" "$2")" "$3")
       [ -z "$lo" ] || ((x < lo)) && lo=$x; [ -z "$hi" ] || ((x > hi)) && hi=$x
     done
     echo $((hi - lo))
   }
   local sp01 spauc sprauc base_secs
-  sp01=$(spread "$s" tar01 1000) spauc=$(spread "$s" auc 10000) sprauc=$(spread "$loso/sweep/$r/summary.md" auc 10000)
+  sp01=$(spread judges tar01 1000) spauc=$(spread judges auc 10000) sprauc=$(spread "$r" auc 10000)
   base_secs=$(cat "$out/sweep/logs/train-base.secs" 2>/dev/null || echo 0)
   for v in "${sweep_names[@]}"; do
     case "$v" in base|seed-*) continue ;; esac
     local secs; secs=$(cat "$out/sweep/logs/train-$v.secs" 2>/dev/null || echo 0)
     ((base_secs > 0 && secs * 2 > base_secs * 3)) && continue
-    t01=$(( $(milli "$(fig "$s" "$v v1" tar01)") - $(milli "$(fig "$s" "base v1" tar01)") ))
-    tauc=$(( $(milli "$(fig "$s" "$v v1" auc)" 10000) - $(milli "$(fig "$s" "base v1" auc)" 10000) ))
-    rauc=$(( $(milli "$(fig "$loso/sweep/$r/summary.md" "$v v1" auc)" 10000) - $(milli "$(fig "$loso/sweep/$r/summary.md" "base v1" auc)" 10000) ))
+    t01=$(( $(milli "$(sfig judges "$v v1" tar01)") - $(milli "$(sfig judges "base v1" tar01)") ))
+    tauc=$(( $(milli "$(sfig judges "$v v1" auc)" 10000) - $(milli "$(sfig judges "base v1" auc)" 10000) ))
+    rauc=$(( $(milli "$(sfig "$r" "$v v1" auc)" 10000) - $(milli "$(sfig "$r" "base v1" auc)" 10000) ))
     if ((t01 > sp01 && tauc > spauc)); then
       taken_a+="${taken_a:+,}$v"
       ((-rauc > sprauc)) || taken_b+="${taken_b:+,}$v"
@@ -228,10 +273,10 @@ cells() {  # summary.md -> "recall | TAR 0.1 (ci) | TAR 0.5 (ci) | AUC"
   echo "$(fig "$1" "$row" recall) ($(fig "$1" "$row" with) of $(fig "$1" "$row" people)) | $(fig "$1" "$row" tar01) ($(fig "$1" "$row" ci01)) | $(fig "$1" "$row" tar05) ($(fig "$1" "$row" ci05)) | $(fig "$1" "$row" auc)"
 }
 {
-  echo "Leave one source out ($(date -u +%Y-%m-%dT%H:%M:%SZ)): model $model; (a) choices made on the 16 held-out"
-  echo "synthetic rooms alone, (b) on them plus the other real source (rules: docs/quality.md, 'Leave one source out')."
+  echo "Leave one source out ($(date -u +%Y-%m-%dT%H:%M:%SZ)): model $model; (a) choices made on $judges_title"
+  echo "alone, pooled, (b) on them plus the other real source (rules: docs/quality.md, 'Leave one source out')."
   echo
-  echo "| held-out source | choice | (a) without it: 16 rooms | (b) without it: 16 rooms + the other source | today's default |"
+  echo "| held-out source | choice | (a) without it: the judges | (b) without it: the judges + the other source | today's default |"
   echo "| --- | --- | --- | --- | --- |"
 } > "$table"
 declare -A flags_a flags_b
@@ -285,7 +330,7 @@ defaults_text="today's defaults"
 for s in real-lab real-home; do
   echo "| $(title "$s") | today's defaults | no (both sources took part) | $(cells "$(summary default "$s")") |" >> "$table"
   for which in a b; do
-    if [ "$which" = a ]; then f=${flags_a[$s]} how="(a) 16 rooms"; else f=${flags_b[$s]} how="(b) 16 rooms + $(title "$(other "$s")")"; fi
+    if [ "$which" = a ]; then f=${flags_a[$s]} how="(a) the judges"; else f=${flags_b[$s]} how="(b) the judges + $(title "$(other "$s")")"; fi
     name=default
     if [ -n "$f" ]; then
       name=loso-$(echo "$f" | tr -s ' -' '_' | sed 's/^_//')
@@ -296,25 +341,38 @@ for s in real-lab real-home; do
     echo "| $(title "$s") | $shown | yes, $how | $(cells "$(summary "$name" "$s")") |" >> "$table"
   done
 done
-# The 16 rooms under the choices made on them (a): their own tuning set, for comparison.
+# The judges under the choices made on them (a): their own tuning sets, for comparison.
 name=default f=${flags_a[real-lab]}
 if [ -n "$f" ]; then
   name=loso-$(echo "$f" | tr -s ' -' '_' | sed 's/^_//'); read -r -a opts <<<"$f"
-  evaluate "$loso/options/$name" synthetic models --model "$model" -- "${opts[@]}"
+  evaluate "$loso/options/$name" "${judge_sets[*]}" models --model "$model" -- "${opts[@]}"
 fi
-echo "| 16 synthetic rooms | ${f:-$defaults_text} | no: (a)'s own tuning set | $(cells "$(summary "$name" synthetic)") |" >> "$table"
+for j in "${judge_sets[@]}"; do
+  echo "| $(title "$j") | ${f:-$defaults_text} | no: a judge of (a) | $(cells "$(summary "$name" "$j")") |" >> "$table"
+done
+if ((${#judge_sets[@]} > 1)); then
+  jd=$loso/options/$name
+  echo "| the judges pooled | ${f:-$defaults_text} | no: (a)'s own tuning sets | $(jfig "$jd" "$row" recall) ($(jfig "$jd" "$row" with) of $(jfig "$jd" "$row" people)) | $(jfig "$jd" "$row" tar01) | $(jfig "$jd" "$row" tar05) | $(jfig "$jd" "$row" auc) (mean) |" >> "$table"
+fi
 if ((${#lever_notes[@]})); then echo >> "$table"; fi
 for n in "${lever_notes[@]}"; do echo "Note: $n." >> "$table"; done
 {
   echo
-  echo "What each value gives (the evidence of the choices): 16 rooms: TAR at FPPF <= 0.1 / best MOTA / people with a"
-  echo "candidate; each source: people found at FPPF <= 0.1 / at FPPF <= 0.5 / people with a candidate (of all its people):"
+  echo "What each value gives (the evidence of the choices): the judges pooled and each rendering: TAR at FPPF <= 0.1 /"
+  echo "best MOTA / people with a candidate (of $(jfig "$loso/options/default" "$row" people) pooled); each source: people found at FPPF <= 0.1 / at FPPF <= 0.5 / people"
+  echo "with a candidate (of all its people):"
   echo
-  echo "| run | options | 16 synthetic rooms | UC3M lab | UC3M home |"
-  echo "| --- | --- | --- | --- | --- |"
+  jhead="" jrule=""
+  for j in "${judge_sets[@]}"; do jhead+=" $(title "$j") |"; jrule+=" --- |"; done
+  echo "| run | options | the judges pooled |$jhead UC3M lab | UC3M home |"
+  echo "| --- | --- | --- |$jrule --- | --- |"
   for c in "${configs[@]}"; do
-    name=${c%%|*} f=${c#*|}; sm=$(summary "$name" synthetic)
-    line="| $name | ${f:-$defaults_text} | $(fig "$sm" "$row" tar01) / $(fig "$sm" "$row" mota) / $(fig "$sm" "$row" with)"
+    name=${c%%|*} f=${c#*|}; jd=$loso/options/$name
+    line="| $name | ${f:-$defaults_text} | $(jfig "$jd" "$row" tar01) / $(jfig "$jd" "$row" mota) / $(jfig "$jd" "$row" with)"
+    for j in "${judge_sets[@]}"; do
+      sm=$(summary "$name" "$j")
+      line+=" | $(fig "$sm" "$row" tar01) / $(fig "$sm" "$row" mota) / $(fig "$sm" "$row" with)"
+    done
     for s in real-lab real-home; do
       sm=$(summary "$name" "$s")
       line+=" | $(fig "$sm" "$row" found01) / $(fig "$sm" "$row" found05) / $(fig "$sm" "$row" with) (of $(fig "$sm" "$row" people))"
@@ -323,8 +381,12 @@ for n in "${lever_notes[@]}"; do echo "Note: $n." >> "$table"; done
   done
   # model_row DIR MODEL LABEL: a trained model's row, from its evaluation in DIR/SET.
   model_row() {
-    local sm=$1/synthetic/summary.md set line
-    line="| $3 | $(fig "$sm" "$2 v1" tar01) / $(fig "$sm" "$2 v1" mota) / AUC $(fig "$sm" "$2 v1" auc)"
+    local sm set line
+    line="| $3 | $(jfig "$1" "$2 v1" tar01) / $(jfig "$1" "$2 v1" mota) / AUC $(jfig "$1" "$2 v1" auc)"
+    for set in "${judge_sets[@]}"; do
+      sm=$1/$set/summary.md
+      line+=" | $(fig "$sm" "$2 v1" tar01) / $(fig "$sm" "$2 v1" mota) / AUC $(fig "$sm" "$2 v1" auc)"
+    done
     for set in real-lab real-home; do
       sm=$1/$set/summary.md
       line+=" | $(fig "$sm" "$2 v1" found01) / $(fig "$sm" "$2 v1" found05) / AUC $(fig "$sm" "$2 v1" auc)"
