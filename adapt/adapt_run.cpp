@@ -50,7 +50,6 @@ void run_step_program(const std::string& program, const std::vector<std::string>
               (last.empty() ? std::string("see ") + log : last.back() + " (log: " + log + ")"));
 }
 
-// The room must come from the camera the model's crops were cut from (640x480 depth in millimetres), and the
 // The room's frames as PNG frames: without a recording of the room empty, the frames taken as empty are
 // mined from the room's own frames, by file (write_empty_frames). Throws Error naming `path` otherwise.
 const PngFolderSource& room_pngs(const FrameSource& frames, const std::string& path) {
@@ -62,7 +61,9 @@ const PngFolderSource& room_pngs(const FrameSource& frames, const std::string& p
   return *pngs;
 }
 
-// truth must name only frames of the room (source or eval). Checked before anything is written.
+// The room's depth must be millimetres of a Kinect-class camera, at any resolution (each source carries its
+// camera model, by which every step cuts its crops: docs/sensors.md, "Any resolution"), and truth must name
+// only frames of the room (source or eval). Checked before anything is written.
 void check_room(const AdaptOptions& o, const BoostedModel& model) {
   std::set<std::string> names;
   const std::pair<std::string, bool> specs[] = {{o.source, true}, {o.eval, true}, {o.empty, false}};
@@ -74,10 +75,6 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
     bool first = true;
     while (frames->next(frame)) {
       if (first) {
-        if (frame.width_px() != 640 || frame.height_px() != 480) {
-          fail(spec, "frames are " + std::to_string(frame.width_px()) + "x" + std::to_string(frame.height_px()) +
-                         ": " + model_reference(model) + " was trained on crops of 640x480 Kinect-class depth frames");
-        }
         std::vector<std::uint16_t> valid;
         for (auto it = frame.depth_mm.begin(); it != frame.depth_mm.end(); ++it) {
           if (*it > 0) valid.push_back(*it);
@@ -125,15 +122,23 @@ std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presen
 
 // An --empty recording with people in it is refused before anything is written: the model, with the
 // tracker, follows one person over PresenceParams::confident_track_frames frames (docs/adapting-to-your-room.md).
+// With --trust-empty (the user has looked at the frame named: nobody is there) it is used all the same: what
+// the model follows there is then the room's strongest false positive, its hardest negative.
 void check_empty_recording(const AdaptOptions& o, const BoostedModel& model) {
   if (o.empty.empty()) return;
   const RoomPresence presence = scan_room_presence(o.empty, model, PipelineParams{}, CameraModel::kinect_v1());
   const PresenceParams rule;
   if (presence.longest_confident_track >= rule.confident_track_frames) {
-    fail(o.empty, "not empty: " + model_reference(model) + " follows a person over " +
-                      std::to_string(presence.longest_confident_track) + " frames with P(person) >= " +
-                      std::to_string(rule.confident_probability).substr(0, 4) + " (up to frame " +
-                      presence.confident_track_end + "); give a recording without people, or none");
+    const std::string seen = model_reference(model) + " follows a person over " +
+                             std::to_string(presence.longest_confident_track) + " frames with P(person) >= " +
+                             std::to_string(rule.confident_probability).substr(0, 4) + " (up to frame " +
+                             presence.confident_track_end + ")";
+    if (!o.trust_empty) {
+      fail(o.empty, "not empty: " + seen + "; give a recording without people, or none, or --trust-empty when "
+                    "nobody is in that frame");
+    }
+    say(o.empty + ": taken as empty (--trust-empty) although " + seen + ": its false positives are mined first");
+    return;
   }
   say(o.empty + ": nobody followed over " + std::to_string(rule.confident_track_frames) + " frames (longest " +
       std::to_string(presence.longest_confident_track) + ")");

@@ -22,6 +22,7 @@ namespace rdsf {
 struct AdaptOptions {
   std::string source;   ///< the room recording (frames with people)
   std::string empty;    ///< the room without people (optional)
+  bool trust_empty = false;  ///< --empty is used although the model follows a person in it (the user has looked)
   std::string out;      ///< work folder: state, sample sets, logs, report
   std::string name;     ///< the adapted model's name (a new version of it is written)
   std::string model = "people";  ///< the model to adapt (file, NAME or NAME/vN)

@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
         ("empty", po::value(&o.empty),
          "the room without people (mined whole; refused when the model follows a person in it over 5 frames). "
          "Default: none (the stretches of --source where the model and the tracker see nobody)")
+        ("trust-empty", po::bool_switch(&o.trust_empty),
+         "use --empty although the model follows a person in it over 5 frames (look at the frame the refusal "
+         "names first: if nobody is there, what the model follows is the room's hardest negative)")
         ("out", po::value(&o.out), "work folder: adapt-state.tsv, sets/, logs/, report.txt (rerun to resume)")
         ("name", po::value(&o.name), "the adapted model's name: saved as MODELS/NAME/vN.yml");
     rdsf::cli::add_model_option(options, o.model, "the model to adapt");
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     }
     if (o.budget < 1) throw rdsf::cli::UsageError("--budget " + std::to_string(o.budget) + ": adapting needs answers, give 1 or more");
     if (!o.eval.empty() && o.truth.empty()) throw rdsf::cli::UsageError("--eval needs --truth");
+    if (o.trust_empty && o.empty.empty()) throw rdsf::cli::UsageError("--trust-empty needs --empty");
     if (!o.truth.empty() && !o.answers.empty()) throw rdsf::cli::UsageError("give --truth (the truth answers) or --answers, not both");
     if (o.rounds < 0) throw rdsf::cli::UsageError("--rounds must be 0 (the default) or more");
     if (o.room_weight < 1) throw rdsf::cli::UsageError("--room-weight must be at least 1");
