@@ -17,6 +17,7 @@
 #include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/camera_file.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
@@ -102,13 +103,26 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
 }
 
 // A list file of the room's frames taken as empty (absolute paths), for rdsf-mine.
+// A list file's frames take the camera.yml of the list's folder (png_folder_source.hpp), so the room's own
+// camera.yml (its camera model and depth unit) is written beside the list, in a folder of their own.
 std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presence) {
   std::map<std::string, std::string> path_of;  // frame name -> depth PNG
   const std::unique_ptr<FrameSource> source = open_frame_source(o.source);
-  for (const std::string& path : room_pngs(*source, o.source).depth_paths()) {  // its list file read by the library
+  const PngFolderSource& pngs = room_pngs(*source, o.source);
+  for (const std::string& path : pngs.depth_paths()) {  // its list file read by the library
     path_of[PngFolderSource::frame_name(path)] = fs::absolute(path).string();
   }
-  const std::string list = (fs::path(o.out) / "empty-frames.txt").string();
+  const fs::path dir = fs::path(o.out) / "empty-frames";
+  fs::create_directories(dir);
+  const fs::path camera_path = dir / CameraFile::kFileName;
+  if (pngs.camera_file()) {
+    AtomicTextFile camera(camera_path.string(), /*overwrite=*/true);
+    camera.stream() << camera_file_text(*pngs.camera_file());
+    camera.commit();
+  } else {
+    fs::remove(camera_path);  // the Kinect v1's model scaled to the frames, as for the room
+  }
+  const std::string list = (dir / "frames.txt").string();
   AtomicTextFile file(list, /*overwrite=*/true);
   for (std::size_t f = 0; f < presence.frames.size(); ++f) {
     if (presence.empty[f] == 0) continue;
