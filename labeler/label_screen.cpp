@@ -34,8 +34,9 @@ cv::Mat3b zoom_around(const cv::Mat3b& view, const cv::Rect& box, double zoom) {
 }
 
 cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s) {
-  // Fits a 1280-pixel-wide screen: 640 frame + two crops at 2.5x (160x320) + margins = 1056 pixels.
-  constexpr int kMargin = 16, kStatusHeight = 92;
+  // Fits a 1280-pixel-wide screen: 640 frame + two crops at 2.5x (160x320) + margins = 1056 pixels. A
+  // narrower frame (512x424, 320x240) keeps the 640 pixels' place, so that the status lines and the keys fit.
+  constexpr int kMargin = 16, kStatusHeight = 92, kMinFrameAreaPx = 640;
   constexpr double kCropScale = 2.5;
   const LoadedFrame& loaded = *p.frame;
   const DepthFrame& frame = loaded.frame;
@@ -44,8 +45,9 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   const int crop_h = static_cast<int>(candidate.depth_crop.rows * kCropScale);
   const int panel_w = crop_w * 2 + kMargin;
   char text_zoom[32];
+  const int frame_area_w = std::max(frame.width_px(), kMinFrameAreaPx);
   cv::Mat3b canvas(std::max(frame.height_px(), crop_h + 30) + kMargin * 2 + kStatusHeight,
-                   frame.width_px() + panel_w + kMargin * 3, cv::Vec3b(38, 34, 30));
+                   frame_area_w + panel_w + kMargin * 3, cv::Vec3b(38, 34, 30));
   canvas.setTo(kBackground);
 
   // The frame with every candidate faint and this one highlighted.
@@ -66,7 +68,7 @@ cv::Mat3b render_label_screen(const PresentedCandidate& p, const ScreenStatus& s
   }
 
   // The crops, enlarged: depth as the classifier sees it (colourised, black = no reading / other layer).
-  const int panel_x = frame.width_px() + kMargin * 2;
+  const int panel_x = frame_area_w + kMargin * 2;
   cv::Mat3b depth_crop = colourise_depth(candidate.depth_crop);
   cv::resize(depth_crop, depth_crop, {crop_w, crop_h}, 0, 0, cv::INTER_NEAREST);
   depth_crop.copyTo(canvas(cv::Rect(panel_x, kMargin + 22, crop_w, crop_h)));

@@ -42,6 +42,11 @@ for s in "${scripts[@]}"; do
   expect 0 "[Dd]efault" "scripts/$s.sh" --help
   expect 2 "unknown argument '--bogus'" "scripts/$s.sh" --bogus
 done
+# The scripts that take targets or a file first: --help too, and a wrong first argument is a usage error.
+expect 0 "FUZZ_SECONDS" scripts/fuzz.sh --help
+expect 0 "[Dd]efault" scripts/track-strip-screenshot.sh --help
+expect 2 "the first argument is the picture to write" scripts/track-strip-screenshot.sh --bogus
+expect 2 "no fuzz target 'bogus'" scripts/fuzz.sh bogus
 # Every script that reads options reads them with scripts/lib/options.sh (perf-report passes the rest on).
 for f in scripts/*.sh; do
   grep -qE '^while (\(\(\$#\)\)|\[ \$# -gt 0 \]); do' "$f" &&

@@ -7,7 +7,15 @@
 # Usage: scripts/track-strip-screenshot.sh OUT.png [RDSF-SYNTH OPTION...]   (needs xvfb-run, xdotool, xwd, python3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[ $# -ge 1 ] || { echo "usage: scripts/track-strip-screenshot.sh OUT.png [RDSF-SYNTH OPTION...]" >&2; exit 2; }
+usage="Usage: scripts/track-strip-screenshot.sh OUT.png [RDSF-SYNTH OPTION...]
+  OUT.png   the picture to write (rdsf-label --per-track's window, cropped)
+  options   the room's rdsf-synth options (default: --people 2..2 --seed 31, docs/adapt-track-strip.png)
+Needs xvfb-run, xdotool, xwd and python3, and rdsf-synth and rdsf-label built (\$RDSF_BUILD_DIR, default build)."
+case "${1:-}" in
+  --help|-h) echo "$usage"; exit 0 ;;
+  *.png) ;;
+  *) echo "track-strip-screenshot: the first argument is the picture to write, OUT.png, not '${1:-}'" >&2; exit 2 ;;
+esac
 png=$(realpath -m "$1")
 shift
 bin=${RDSF_BUILD_DIR:-build}
