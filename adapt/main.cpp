@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
     std::string chart, chart_png;
     po::options_description options(kProgram.name);
     options.add_options()
-        ("source", po::value(&o.source), "the room recording, with people (folder, list file, .oni)")
+        ("source", po::value(&o.source), "the room recording, with people (folder, list file, .oni, ROS 1 .bag; any resolution, with its camera model)")
         ("empty", po::value(&o.empty),
          "the room without people (mined whole; refused when the model follows a person in it over 5 frames). "
          "Default: none (the stretches of --source where the model and the tracker see nobody)")
