@@ -15,6 +15,7 @@
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/atomic_file.hpp"
+#include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/camera_file.hpp"
@@ -116,9 +117,7 @@ std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presen
   fs::create_directories(dir);
   const fs::path camera_path = dir / CameraFile::kFileName;
   if (pngs.camera_file()) {
-    AtomicTextFile camera(camera_path.string(), /*overwrite=*/true);
-    camera.stream() << camera_file_text(*pngs.camera_file());
-    camera.commit();
+    write_file_durably(camera_path.string(), camera_file_text(*pngs.camera_file()));
   } else {
     fs::remove(camera_path);  // the Kinect v1's model scaled to the frames, as for the room
   }
