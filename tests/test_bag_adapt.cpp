@@ -7,37 +7,23 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "rdsf/dataset/sample_set.hpp"
+#include "support/bag_writer.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;
 
-namespace {
-
-std::string write_bag(const std::filesystem::path& folder, const std::filesystem::path& bag) {
-  const test::RunResult r = test::run("/usr/bin/python3 " +
-                                      test::quote(std::string(RDSF_SOURCE_DIR) + "/scripts/frames-to-bag.py") +
-                                      " --no-colour " + test::quote(folder.string()) + " " + test::quote(bag.string()));
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return bag.string();
-}
-
-}  // namespace
-
 TEST(BagAdapt, ARoomRecordedAsBagsIsAdaptedWithItsCameraInfo) {
-  if (test::run("/usr/bin/python3 -c 'import rosbag, sensor_msgs.msg, numpy, png'").exit_code != 0) {
-    GTEST_SKIP() << "python3-rosbag, python3-sensor-msgs, python3-numpy or python3-png missing: bag test skipped";
-  }
+  if (!test::bag_writer_available()) GTEST_SKIP() << test::kBagWriterMissing;
   test::TempDir dir;
   const std::string synth = test::quote(test::program("rdsf-synth")) +
                             " --force --people 1..2 --clip-frames 30 --seed 7 --size 512x424 --fov 70.6x60 --out ";
   ASSERT_EQ(test::run(synth + test::quote(dir / "room") + " --frames 60").exit_code, 0);
   ASSERT_EQ(test::run(synth + test::quote(dir / "empty") + " --frames 30 --empty").exit_code, 0);
-  const std::string room = write_bag(dir / "room", dir / "room.bag");
-  const std::string empty = write_bag(dir / "empty", dir / "empty.bag");
+  const std::string room = test::write_bag(dir / "room", dir / "room.bag", "--no-colour");
+  const std::string empty = test::write_bag(dir / "empty", dir / "empty.bag", "--no-colour");
   // The truth of the bag: the folder's boxes with each frame named by its index (000007 -> 7).
   {
     std::ifstream in(dir / "room/boxes.csv");

@@ -11,6 +11,7 @@
 #include "rdsf/frame/bag_source.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/pipeline/people_detector.hpp"
+#include "support/bag_writer.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;
@@ -19,24 +20,18 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Skips the test when the bag writer cannot run here.
-#define REQUIRE_BAG_WRITER()                                                                                  \
-  do {                                                                                                        \
-    RDSF_REQUIRE_REALDATA();                                                                                  \
-    if (test::run("/usr/bin/python3 -c 'import rosbag, sensor_msgs.msg, numpy, png'").exit_code != 0)        \
-      GTEST_SKIP() << "python3-rosbag, python3-sensor-msgs, python3-numpy or python3-png missing: bag test skipped"; \
+#define REQUIRE_BAG_WRITER()                                          \
+  do {                                                                \
+    RDSF_REQUIRE_REALDATA();                                          \
+    if (!test::bag_writer_available()) GTEST_SKIP() << test::kBagWriterMissing; \
   } while (0)
 
 std::string people_dir() { return (test::realdata_dir() / "people").string(); }
 
-/// Writes a bag of `folder`'s frames with scripts/frames-to-bag.py and `arguments`; fails the test on error.
+/// A bag DIR/NAME of `folder`'s frames (test::write_bag).
 std::string write_bag(const test::TempDir& dir, const std::string& name, const std::string& arguments,
                       const std::string& folder = people_dir()) {
-  const std::string bag = dir / name;
-  const test::RunResult r = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) +
-                                                                          "/scripts/frames-to-bag.py") +
-                                      " " + test::quote(folder) + " " + test::quote(bag) + " " + arguments);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return bag;
+  return test::write_bag(folder, dir / name, arguments);
 }
 
 std::vector<DepthFrame> all_frames(FrameSource& source) {
