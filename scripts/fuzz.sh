@@ -18,11 +18,11 @@
 set -euo pipefail
 
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+all_targets=(ground_truth sample_tsv manifest thesis_text model_file answer_journal depth_crop model_writer recipe bag camera_yml adapt_state adaptation_results)
 if [ "${1:-}" = --help ] || [ "${1:-}" = -h ]; then
   cat <<USAGE
 Usage: scripts/fuzz.sh [TARGET ...]   (default: every target; see docs/fuzzing.md)
-  TARGET  a parser's fuzz target: ground_truth sample_tsv manifest thesis_text model_file answer_journal
-          depth_crop model_writer recipe bag camera_yml adapt_state adaptation_results
+  TARGET  a parser's fuzz target: ${all_targets[*]}
 Environment (defaults): FUZZ_SECONDS seconds per target (60), FUZZ_JOBS build jobs (2), FUZZ_BUILD build
 folder (build-fuzz), FUZZ_MAX_CRASHES crashes before a target stops (5). Exit 0: no crash; 1: a crash; 2: a
 build or usage problem.
@@ -33,7 +33,6 @@ seconds="${FUZZ_SECONDS:-60}"
 jobs="${FUZZ_JOBS:-2}"
 build="${FUZZ_BUILD:-$source_dir/build-fuzz}"
 max_crashes="${FUZZ_MAX_CRASHES:-5}"
-all_targets=(ground_truth sample_tsv manifest thesis_text model_file answer_journal depth_crop model_writer recipe bag camera_yml adapt_state adaptation_results)
 
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: FUZZ_SECONDS must be a whole number of seconds >= 1, not '$seconds'" >&2
