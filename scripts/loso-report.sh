@@ -117,7 +117,8 @@ evaluate() {
   done
 }
 # fig SUMMARY.md ROW FIELD: one figure of a summary row (ROW: the model column, e.g. "people v2").
-# Fields: tar01 tar05 mota recall with people auc ci01 ci05 found01 found05 (found = TAR x people, rounded).
+# Fields: tar01 tar05 mota recall with people auc ci01 ci05 found01 found05 (found = TAR x people, rounded);
+# FIELD may name several, separated by spaces: their values are printed on one line in that order.
 fig() {
   awk -F'|' -v row="$2" -v f="$3" '
     { for (i = 2; i <= NF; i++) gsub(/^ +| +$/, "", $i) }
@@ -127,7 +128,9 @@ fig() {
       v["tar01"] = $3; v["tar05"] = $4; v["mota"] = mota; v["recall"] = r[1]; v["with"] = r[2]
       v["people"] = n; v["auc"] = $8; v["ci01"] = ci[1]; v["ci05"] = ci[2]
       v["found01"] = int($3 * n + 0.5); v["found05"] = int($4 * n + 0.5)
-      print v[f]; found = 1; exit }
+      n_f = split(f, fields, " "); line = v[fields[1]]
+      for (i = 2; i <= n_f; i++) line = line " " v[fields[i]]
+      print line; found = 1; exit }
     END { if (!found) exit 1 }' "$1" || { echo "loso-report: no row '$2' in $1" >&2; exit 1; }
 }
 # jfig DIR ROW FIELD: a figure of the judges pooled, from DIR/SET/summary.md of every judge set: TARs and
@@ -137,7 +140,7 @@ fig() {
 jfig() {
   local set lines=""
   for set in "${judge_sets[@]}"; do
-    lines+="$(fig "$1/$set/summary.md" "$2" people) $(fig "$1/$set/summary.md" "$2" found01) $(fig "$1/$set/summary.md" "$2" found05) $(fig "$1/$set/summary.md" "$2" with) $(fig "$1/$set/summary.md" "$2" mota) $(fig "$1/$set/summary.md" "$2" auc)"$'\n'
+    lines+="$(fig "$1/$set/summary.md" "$2" "people found01 found05 with mota auc")"$'\n'
   done
   awk -v f="$3" 'NF { n += $1; f01 += $2; f05 += $3; w += $4; m += $1 * $5; a += $1 * $6 } END {
     if (f == "tar01") printf "%.3f\n", f01 / n; else if (f == "tar05") printf "%.3f\n", f05 / n
