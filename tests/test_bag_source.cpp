@@ -20,9 +20,9 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Skips the test when the bag writer cannot run here.
-#define REQUIRE_BAG_WRITER()                                          \
-  do {                                                                \
-    RDSF_REQUIRE_REALDATA();                                          \
+#define REQUIRE_BAG_WRITER()                                                    \
+  do {                                                                          \
+    RDSF_REQUIRE_REALDATA();                                                    \
     if (!test::bag_writer_available()) GTEST_SKIP() << test::kBagWriterMissing; \
   } while (0)
 
