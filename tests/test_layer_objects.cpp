@@ -160,7 +160,7 @@ TEST(NarrowPerson, PassingCmLeavesTheGapsOut) {
   const LayerShape shape(view, l.params);
   const LayerObject o = shape.span(10, 19);
   EXPECT_DOUBLE_EQ(passing_cm(shape, o), 4.0);
-  EXPECT_DOUBLE_EQ(shape.cm(o.last - o.first + 1), 10.0);
+  EXPECT_DOUBLE_EQ(shape.columns_cm(o.last - o.first + 1), 10.0);
 }
 
 // An object in columns 10..13 from row `top`; the band above it is narrow.clear_above_cm = 10 rows of 4

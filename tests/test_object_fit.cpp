@@ -46,8 +46,8 @@ TEST(LayerShape, PassingColumnsUnitsAndSpan) {
   for (int c = 0; c < 40; ++c) {
     EXPECT_EQ(shape.passes(c), (c >= 10 && c <= 14) || (c >= 30 && c <= 32)) << "column " << c;
   }
-  EXPECT_DOUBLE_EQ(shape.cm(7), 7.0);
-  EXPECT_EQ(shape.px(60.0), 60);
+  EXPECT_DOUBLE_EQ(shape.columns_cm(7), 7.0);
+  EXPECT_EQ(shape.columns_px(60.0), 60);
   const LayerObject o = shape.span(10, 14);
   EXPECT_EQ(o.top, 20);
   EXPECT_EQ(o.bottom, 79);

@@ -67,7 +67,7 @@ double LayerShape::end_depth_mm(int c, bool top) const {
              : median_depth_mm(c, std::max(r.top, r.bottom - 7), r.bottom, 1);
 }
 
-int LayerShape::px(double centimetres) const {
+int LayerShape::columns_px(double centimetres) const {
   return static_cast<int>(centimetres * 10.0 * layer_.camera->fx_px / std::max(1.0, layer_.depth_mm_mean));
 }
 

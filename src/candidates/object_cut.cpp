@@ -60,7 +60,7 @@ int cut_wide(const LayerShape& shape, const LayerObject& o, int min_piece) {
     }
   }
   if (split.step_cm > 0) {
-    const int band = std::max(1, shape.px(params.min_part_width_cm));
+    const int band = std::max(1, shape.columns_px(params.min_part_width_cm));
     int best = -1;
     double best_step = split.step_cm;
     for (int c = lo; c <= hi; ++c) {

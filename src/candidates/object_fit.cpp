@@ -45,7 +45,7 @@ void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi) {
   o.fit_first = o.first;
   o.fit_last = o.last;
   o.fit_top = o.top;
-  const int reach = shape.px(fit.reach_cm);
+  const int reach = shape.columns_px(fit.reach_cm);
   if (reach <= 0) return;
   const int row_lo = std::max(0, o.top - reach);
   const int row_hi = std::min(layer.labels->rows - 1, o.top + 3 * (o.bottom - o.top) / 4);
@@ -73,7 +73,7 @@ void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi) {
     double previous_depth = mean_depth(0);
     int edge = start, gap = 0, occluded = 0, top = o.fit_top;
     int previous_count = band[0].count;
-    const int occlusion_gap = shape.px(fit.occlusion_gap_cm);
+    const int occlusion_gap = shape.columns_px(fit.occlusion_gap_cm);
     for (int step = 1; step < n; ++step) {
       if (step >= gathered) gather(step + kBandChunk);
       const int c = start + direction * step;

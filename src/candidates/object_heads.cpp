@@ -21,11 +21,9 @@ double top_profile_cm(const LayerShape& shape, const LayerObject& o, int c) {
 std::vector<int> head_columns(const LayerShape& shape, const LayerObject& o, const std::vector<double>& h) {
   const HeadSplitParams& heads = shape.params().split_head;
   const int width = shape.width();
-  const auto px = [&](double centimetres) { return shape.px(centimetres); };
-  const auto cm = [&](int pixels) { return shape.cm(pixels); };
   const int n = static_cast<int>(h.size());
-  const int head_px = std::max(2, px(heads.width_cm)), half = head_px / 2;
-  const int min_gap = std::max(1, px(shape.params().min_part_width_cm));
+  const int head_px = std::max(2, shape.columns_px(heads.width_cm)), half = head_px / 2;
+  const int min_gap = std::max(1, shape.columns_px(shape.params().min_part_width_cm));
   const double tallest = *std::max_element(h.begin(), h.end());
   const auto at = [&](int i) { return i >= 0 && i < n ? h[static_cast<std::size_t>(i)] : 0.0; };
   // Within head_px beyond `from` in direction `step`, the profile reaches top - drop (inside the extent,
@@ -55,7 +53,7 @@ std::vector<int> head_columns(const LayerShape& shape, const LayerObject& o, con
     int left = c, right = c;  // the head's top: the columns within 5 cm of its height
     while (left > 0 && at(left - 1) >= top - 5.0) --left;
     while (right + 1 < n && at(right + 1) >= top - 5.0) ++right;
-    const double top_cm = cm(right - left + 1);
+    const double top_cm = shape.columns_cm(right - left + 1);
     if (right - left + 1 <= head_px && top_cm >= heads.min_width_cm && drops(left, -1, top) &&
         drops(right, 1, top)) {
       if (found.empty() || c - found.back() >= min_gap) {

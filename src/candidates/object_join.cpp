@@ -41,7 +41,7 @@ std::vector<LayerObject> join_pieces(const LayerShape& shape, const std::vector<
           (!narrow || (depth_mm_mean < params.join.narrow_layers_below_mm &&
                        (!params.join.narrow_passing ||
                         passing_cm(shape, previous) + passing_cm(shape, o) >= params.narrow.passing_width_cm)));
-      if (touch && shape.cm(o.fit_last - previous.fit_first + 1) <= params.max_person_width_cm) {
+      if (touch && shape.columns_cm(o.fit_last - previous.fit_first + 1) <= params.max_person_width_cm) {
         const int fit_first = previous.fit_first, fit_top = std::min(previous.fit_top, o.fit_top);
         previous = shape.span(previous.first, o.last);
         previous.fit_first = fit_first;

@@ -25,12 +25,12 @@ class LayerShape {
   const std::vector<char>& passing() const { return passing_; }
   const ColumnRun& run(int c) const { return runs_[static_cast<std::size_t>(c)]; }
   bool passes(int c) const { return passing_[static_cast<std::size_t>(c)] != 0; }
-  /// Width in cm of `pixels` columns at the layer's mean depth.
-  double cm(int pixels) const { return layer_.camera->width_cm(pixels, layer_.depth_mm_mean); }
-  /// Pixels of `centimetres` at the layer's mean depth: trunc(cm * 10 * fx / max(1, depth_mm_mean)).
-  int px(double centimetres) const;
-  /// cm(o.last - o.first + 1) >= min_width_cm.
-  bool wide_enough(const LayerObject& o) const { return cm(o.last - o.first + 1) >= params_.min_width_cm; }
+  /// Width in cm of `columns` columns at the layer's mean depth (camera.width_cm: fx).
+  double columns_cm(int columns) const { return layer_.camera->width_cm(columns, layer_.depth_mm_mean); }
+  /// Columns of `centimetres` across at the layer's mean depth: trunc(cm * 10 * fx / max(1, depth_mm_mean)).
+  int columns_px(double centimetres) const;
+  /// columns_cm(o.last - o.first + 1) >= min_width_cm.
+  bool wide_enough(const LayerObject& o) const { return columns_cm(o.last - o.first + 1) >= params_.min_width_cm; }
   /// The object over the passing columns of first..last (first and last pass): top/bottom the extremes of
   /// their runs, tallest the longest run, highest the middle one of the columns reaching top, and the
   /// fitted extent equal to first..last, top.

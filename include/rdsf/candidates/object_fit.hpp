@@ -8,11 +8,11 @@ namespace rdsf {
 /// that hold its pieces (an arm, a hand): a column continues the object when the band - the layer's
 /// pixels in rows max(0, top - reach) .. min(rows - 1, top + 3 (bottom - top) / 4), every other one -
 /// holds at least two of them whose mean depth is within fit.depth_step_mm of the column last taken.
-/// Gaps of up to column_gap columns are allowed, at most reach = px(fit.reach_cm) columns each side,
+/// Gaps of up to column_gap columns are allowed, at most reach = columns_px(fit.reach_cm) columns each side,
 /// never into a passing column nor beyond lo..hi. The fitted top rises to the highest band pixel taken.
 /// A column that does not continue but shows something nearer (nearer_in_band() with at least
 /// max(2, count of the column last taken / 2)) does not count towards the gap, for up to
-/// px(fit.occlusion_gap_cm) such columns in a row. Invariants: fit_first <= first, fit_last >= last,
+/// columns_px(fit.occlusion_gap_cm) such columns in a row. Invariants: fit_first <= first, fit_last >= last,
 /// fit_top <= top; reach <= 0 leaves first..last, top.
 void fit_object(const LayerShape& shape, LayerObject& o, int lo, int hi);
 

@@ -25,12 +25,12 @@ int middle_of(int lo, int hi, Near near) {
 double top_profile_cm(const LayerShape& shape, const LayerObject& o, int c);
 
 /// The columns (image columns, left to right) where a head tops the profile h of o.fit_first..o.fit_last
-/// (h[i] for column o.fit_first + i). With head_px = max(2, px(split_head.width_cm)): a peak i has
+/// (h[i] for column o.fit_first + i). With head_px = max(2, columns_px(split_head.width_cm)): a peak i has
 /// h[i] > 0, h[i] >= 0.75 max(h) and no higher value within head_px / 2 either side; its head is the middle
 /// of the columns at its height, its top the columns within 5 cm of it, which must be at most head_px and
 /// at least split_head.min_width_cm wide, the profile dropping split_head.drop_cm below the peak within
 /// head_px beyond each side (or the extent ending there at the image's border). Of two heads closer than
-/// px(min_part_width_cm) the higher stays (the first on a tie).
+/// columns_px(min_part_width_cm) the higher stays (the first on a tie).
 std::vector<int> head_columns(const LayerShape& shape, const LayerObject& o, const std::vector<double>& h);
 
 /// The cut between two heads (the first column of the right piece), or -1 with fewer than two heads of

@@ -16,7 +16,7 @@ std::vector<LayerObject> join_columns(const LayerShape& shape);
 
 /// Step 2 (join_pieces), on fitted objects left to right: an object joins the one before it (which may
 /// already be a join) when their fitted extents touch (o.fit_first <= previous.fit_last + 1) and together
-/// they are at most max_person_width_cm wide (cm(o.fit_last - previous.fit_first + 1)). When both are
+/// they are at most max_person_width_cm wide (columns_cm(o.fit_last - previous.fit_first + 1)). When both are
 /// narrower than min_width_cm (!wide_enough) they join only in a layer nearer than
 /// join.narrow_layers_below_mm and, with join.narrow_passing, when passing_cm(previous) + passing_cm(o) >=
 /// narrow.passing_width_cm (narrow_person.hpp). The joined object is span(previous.first, o.last) with the

@@ -20,9 +20,9 @@ struct ObjectPieces {
   bool by_heads = false;
 };
 
-/// The pieces of `whole`. With min_piece = max(1, px(min_part_width_cm)), the cut column c (the first of
+/// The pieces of `whole`. With min_piece = max(1, columns_px(min_part_width_cm)), the cut column c (the first of
 /// the right piece) is cut_between_heads() when split_heads_enabled(), else, with split_wide_enabled() and
-/// cm(whole.fit_last - whole.fit_first + 1) > max_person_width_cm, cut_wide(); none (-1): not cut. Each
+/// columns_cm(whole.fit_last - whole.fit_first + 1) > max_person_width_cm, cut_wide(); none (-1): not cut. Each
 /// side, fit_first..c - 1 and c..fit_last, becomes span() of its passing columns (none: no piece), fitted
 /// by fit_object() within that side - within the whole's fitted extent after a cut between heads with
 /// fit.across_head_cut - with part = true and object = whole.object; a piece narrower than min_width_cm
