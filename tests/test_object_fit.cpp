@@ -5,6 +5,7 @@
 #include "rdsf/candidates/object_cut.hpp"
 #include "rdsf/candidates/object_fit.hpp"
 #include "rdsf/candidates/object_heads.hpp"
+#include "rdsf/candidates/narrow_person.hpp"
 
 namespace rdsf {
 namespace {
@@ -57,6 +58,27 @@ TEST(LayerShape, PassingColumnsUnitsAndSpan) {
   EXPECT_EQ(o.fit_last, 14);
   EXPECT_EQ(shape.column_depth_mm(24), 5750.0);
   EXPECT_EQ(shape.column_depth_mm(0), 0.0);
+}
+
+// Pixels that are not square (a frame stretched to another size): widths convert with fx, heights with fy.
+// The band above a narrow person's head (clear_above) is rows, so it is measured with fy: with fy twice fx a
+// 10 cm band is 20 rows, and another layer in the upper 10 of them is half the band (clear); counted with
+// fx it would be the 10 empty rows below them alone.
+TEST(LayerShape, RowsUseFyAndColumnsFx) {
+  Layer l;
+  for (int c = 10; c <= 14; ++c) l.fill(c, 0, 9, 4000, 2);  // another layer 11-20 rows above the body's top
+  l.params.narrow.clear_above_cm = 10.0;
+  const LayerObject square_o = LayerShape(l.view(), l.params).span(10, 14);
+  ASSERT_EQ(square_o.top, 20);
+  EXPECT_FALSE(clear_above(LayerShape(l.view(), l.params), square_o));  // 10 rows: rows 10..19, empty
+  l.camera.fy_px = 1050.0;  // the body's 60 rows are 30 cm now
+  l.params.near_height_cm = 20.0;
+  const LayerView view = l.view();
+  const LayerShape shape(view, l.params);
+  EXPECT_EQ(shape.columns_px(10.0), 10);
+  EXPECT_EQ(shape.rows_px(10.0), 20);
+  EXPECT_DOUBLE_EQ(shape.columns_cm(7), 7.0);
+  EXPECT_TRUE(clear_above(shape, shape.span(10, 14)));  // 20 rows: rows 0..19, half of them another layer
 }
 
 TEST(ObjectFit, ReachesOverTheArmAndRaisesTheTop) {

@@ -13,7 +13,7 @@ double passing_cm(const LayerShape& shape, const LayerObject& o) {
 
 bool clear_above(const LayerShape& shape, const LayerObject& o) {
   const LayerView& layer = shape.layer();
-  const int band = std::max(1, shape.columns_px(shape.params().narrow.clear_above_cm));
+  const int band = std::max(1, shape.rows_px(shape.params().narrow.clear_above_cm));
   int other = 0, total = 0;
   for (int y = o.top - band; y < o.top; ++y) {
     const std::uint8_t* label = y >= 0 ? layer.labels->ptr<std::uint8_t>(y) : nullptr;

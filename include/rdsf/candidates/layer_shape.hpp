@@ -29,6 +29,9 @@ class LayerShape {
   double columns_cm(int columns) const { return layer_.camera->width_cm(columns, layer_.depth_mm_mean); }
   /// Columns of `centimetres` across at the layer's mean depth: trunc(cm * 10 * fx / max(1, depth_mm_mean)).
   int columns_px(double centimetres) const;
+  /// Rows of `centimetres` up or down at the layer's mean depth: trunc(cm * 10 * fy / max(1, depth_mm_mean)).
+  /// columns_px and rows_px differ only where the pixels are not square (a frame stretched to another size).
+  int rows_px(double centimetres) const;
   /// columns_cm(o.last - o.first + 1) >= min_width_cm.
   bool wide_enough(const LayerObject& o) const { return columns_cm(o.last - o.first + 1) >= params_.min_width_cm; }
   /// The object over the passing columns of first..last (first and last pass): top/bottom the extremes of

@@ -10,8 +10,8 @@ namespace rdsf {
 /// left out; <= columns_cm(o.last - o.first + 1).
 double passing_cm(const LayerShape& shape, const LayerObject& o);
 
-/// The background above a head: over columns o.first..o.last and the band = max(1, columns_px(narrow.clear_above_cm))
-/// rows o.top - band .. o.top - 1, at least half of the pixels (2 other >= total, total > 0) hold a layer
+/// The background above a head: over columns o.first..o.last and the band = max(1, rows_px(narrow.clear_above_cm))
+/// rows o.top - band .. o.top - 1 (rows: fy, not fx), at least half of the pixels (2 other >= total, total > 0) hold a layer
 /// other than the object's (label != 0 and != layer.label). Missing readings (label 0) and rows above the
 /// image count against it.
 bool clear_above(const LayerShape& shape, const LayerObject& o);
