@@ -177,9 +177,11 @@ TEST(CameraFile, ResizedRealFramesWithTheirCameraModelFindTheSamePeople) {
     r.camera = f.camera.scaled_to(size.width, size.height);
     return r;
   };
-  for (const cv::Size size : {cv::Size(512, 424), cv::Size(848, 480), cv::Size(1280, 720)}) {
+  // 512x384: shrunk with square pixels (fx = fy = 420), as a Kinect v2's own frames are; the other sizes
+  // stretch 640x480 into pixels that are not square (docs/sensors.md, "Square and stretched pixels").
+  for (const cv::Size size : {cv::Size(512, 424), cv::Size(848, 480), cv::Size(1280, 720), cv::Size(512, 384)}) {
     std::vector<DepthFrame> frames;
-    if (size.width == 512) {  // through a folder and its camera.yml
+    if (size == cv::Size(512, 424)) {  // through a folder and its camera.yml
       test::TempDir dir("rdsf-resized");
       CameraFile file;
       file.camera = CameraModel::kinect_v1().scaled_to(size.width, size.height);
@@ -247,9 +249,11 @@ TEST(CameraFile, ResizedRealFramesWithTheirCameraModelFindTheSamePeople) {
     // labelled people: 512x424 is 4 below the shift's floor instead of 7. With the border rule on
     // (--border-height 25, off by default) the originals give 47 detections (43 labelled people), a shift
     // finds 43, and the resized frames 40, 44 and 44. These floors keep what holds.
+    // 512x384 (2026-12-05): 42 found again, 7 other detections, 45 labelled people.
+    const bool stretched_kinect2 = size == cv::Size(512, 424), square = size == cv::Size(512, 384);
     EXPECT_EQ(people, 46);
-    EXPECT_GE(found, size.width == 512 ? 38 : 42) << size;
+    EXPECT_GE(found, stretched_kinect2 ? 38 : square ? 41 : 42) << size;
     EXPECT_GE(truth_found_resized, 41) << size;
-    EXPECT_LE(extra, size.width == 512 ? 13 : 6) << size;
+    EXPECT_LE(extra, stretched_kinect2 ? 13 : square ? 8 : 6) << size;
   }
 }
