@@ -47,10 +47,6 @@ int main(int argc, char** argv) {
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     o.min_score_given = !values["min-score"].defaulted();
-    if (!o.merge.empty()) {
-      if (!o.mine.sources.empty()) throw rdsf::cli::UsageError("give either --source or --merge, not both");
-      return rdsf::run_merge(o);
-    }
-    return rdsf::run_mine(o);
+    return o.merge.empty() ? rdsf::run_mine(o) : rdsf::run_merge(o);
   });
 }

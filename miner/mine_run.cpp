@@ -119,6 +119,7 @@ int run_mine(MineOptions& o) {
 
 int run_merge(const MineOptions& o) {
   if (o.merge.empty()) throw cli::UsageError("--merge needs at least one input sample set");
+  if (!o.mine.sources.empty()) throw cli::UsageError("give either --source or --merge, not both");
   if (o.out.empty()) throw cli::UsageError("--merge needs --out SET");
   const SampleSet first = SampleSet::open_read(o.merge.front());
   SampleSetWriter writer =

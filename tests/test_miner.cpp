@@ -169,6 +169,12 @@ TEST(Miner, ShardsMergedEqualAnUnshardedRun) {
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_NE(refused.err.find("feature spec " + other.hash()), std::string::npos) << refused.err;
   EXPECT_EQ(SampleSet::open_read(merged).records().size(), shard_total);
+
+  // --merge with --source is a usage error, checked with the merge's other options, before anything is read.
+  const auto both = run(mine("--source " + quote(empty_frames()) + " --merge" + shards + " --out " + quote(merged)));
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("give either --source or --merge, not both"), std::string::npos) << both.err;
+  EXPECT_EQ(SampleSet::open_read(merged).records().size(), shard_total);
 }
 
 TEST(Miner, RefusesASetAnotherWriterHoldsAndBadShards) {
