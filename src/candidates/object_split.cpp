@@ -20,7 +20,8 @@ void cut_into_pieces(const LayerShape& shape, const LayerObject& whole, std::vec
   int c = split_heads_enabled(shape) ? cut_between_heads(shape, whole, min_piece) : -1;
   const bool heads = c >= 0;
   if (by_heads != nullptr) *by_heads = heads;
-  if (c < 0 && split_wide_enabled(params.split) && shape.columns_cm(whole.fit_last - whole.fit_first + 1) > params.max_person_width_cm) {
+  if (c < 0 && split_wide_enabled(params.split) &&
+      shape.columns_cm(whole.fit_last - whole.fit_first + 1) > params.max_person_width_cm) {
     c = cut_wide(shape, whole, min_piece);
   }
   if (c < 0) return;

@@ -20,14 +20,14 @@ struct ObjectPieces {
   bool by_heads = false;
 };
 
-/// The pieces of `whole`. With min_piece = max(1, columns_px(min_part_width_cm)), the cut column c (the first of
-/// the right piece) is cut_between_heads() when split_heads_enabled(), else, with split_wide_enabled() and
-/// columns_cm(whole.fit_last - whole.fit_first + 1) > max_person_width_cm, cut_wide(); none (-1): not cut. Each
-/// side, fit_first..c - 1 and c..fit_last, becomes span() of its passing columns (none: no piece), fitted
-/// by fit_object() within that side - within the whole's fitted extent after a cut between heads with
+/// The pieces of `whole`. With min_piece = max(1, columns_px(min_part_width_cm)), the cut column c (the first
+/// of the right piece) is cut_between_heads() when split_heads_enabled(), else, with split_wide_enabled() and
+/// columns_cm(whole.fit_last - whole.fit_first + 1) > max_person_width_cm, cut_wide(); none (-1): not cut.
+/// Each side, fit_first..c - 1 and c..fit_last, becomes span() of its passing columns (none: no piece),
+/// fitted by fit_object() within that side - within the whole's fitted extent after a cut between heads with
 /// fit.across_head_cut - with part = true and object = whole.object; a piece narrower than min_width_cm
-/// (!wide_enough) is dropped, the others are cut again (at most 5 cuts deep) and stand in the result by
-/// their own pieces, or themselves when not cut.
+/// (!wide_enough) is dropped, the others are cut again (at most 5 cuts deep) and stand in the result by their
+/// own pieces, or themselves when not cut.
 ObjectPieces object_pieces(const LayerShape& shape, const LayerObject& whole);
 
 /// Appends what `whole` becomes among the layer's objects: itself when object_pieces() finds none, else
