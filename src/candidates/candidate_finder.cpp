@@ -106,8 +106,8 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
   if (layer_count == 0) return candidates;
   std::vector<int> occlusion_px(static_cast<std::size_t>(layer_count) + 1, 0);
   for (const DepthLayer& layer : segmentation.layers) {
-    occlusion_px[static_cast<std::size_t>(layer.label)] = static_cast<int>(
-        params.occlusion_gap_cm * 10.0 * frame.camera.fy_px / std::max(1.0, layer.mean_depth_mm));
+    occlusion_px[static_cast<std::size_t>(layer.label)] =
+        static_cast<int>(frame.camera.rows_px(params.occlusion_gap_cm, std::max(1.0, layer.mean_depth_mm)));
   }
   const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px);
   const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);

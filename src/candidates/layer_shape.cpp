@@ -67,14 +67,6 @@ double LayerShape::end_depth_mm(int c, bool top) const {
              : median_depth_mm(c, std::max(r.top, r.bottom - 7), r.bottom, 1);
 }
 
-int LayerShape::columns_px(double centimetres) const {
-  return static_cast<int>(centimetres * 10.0 * layer_.camera->fx_px / std::max(1.0, layer_.depth_mm_mean));
-}
-
-int LayerShape::rows_px(double centimetres) const {
-  return static_cast<int>(centimetres * 10.0 * layer_.camera->fy_px / std::max(1.0, layer_.depth_mm_mean));
-}
-
 LayerObject LayerShape::span(int first, int last) const {
   LayerObject o;
   o.first = first;

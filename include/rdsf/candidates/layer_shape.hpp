@@ -2,6 +2,7 @@
 // One layer as the object steps of layer_objects() see it (layer_objects.hpp): which columns pass the
 // height test, the layer's units (cm <-> px at its mean depth), the object over a range of passing columns
 // and a column's median depth. The fitting (object_fit.hpp) and head (object_heads.hpp) steps take it.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -28,10 +29,14 @@ class LayerShape {
   /// Width in cm of `columns` columns at the layer's mean depth (camera.width_cm: fx).
   double columns_cm(int columns) const { return layer_.camera->width_cm(columns, layer_.depth_mm_mean); }
   /// Columns of `centimetres` across at the layer's mean depth: trunc(cm * 10 * fx / max(1, depth_mm_mean)).
-  int columns_px(double centimetres) const;
+  int columns_px(double centimetres) const {
+    return static_cast<int>(layer_.camera->columns_px(centimetres, std::max(1.0, layer_.depth_mm_mean)));
+  }
   /// Rows of `centimetres` up or down at the layer's mean depth: trunc(cm * 10 * fy / max(1, depth_mm_mean)).
   /// columns_px and rows_px differ only where the pixels are not square (a frame stretched to another size).
-  int rows_px(double centimetres) const;
+  int rows_px(double centimetres) const {
+    return static_cast<int>(layer_.camera->rows_px(centimetres, std::max(1.0, layer_.depth_mm_mean)));
+  }
   /// columns_cm(o.last - o.first + 1) >= min_width_cm.
   bool wide_enough(const LayerObject& o) const { return columns_cm(o.last - o.first + 1) >= params_.min_width_cm; }
   /// The object over the passing columns of first..last (first and last pass): top/bottom the extremes of

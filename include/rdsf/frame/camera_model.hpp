@@ -39,6 +39,10 @@ struct CameraModel {
   /// Real extent, in centimetres, of `pixels` pixels along x (or y) at depth `depth_mm`.
   double width_cm(double pixels, double depth_mm) const { return pixels * depth_mm / fx_px / 10.0; }
   double height_cm(double pixels, double depth_mm) const { return pixels * depth_mm / fy_px / 10.0; }
+  /// The other way: pixels across (fx) or up and down (fy) that `centimetres` span at depth `depth_mm`
+  /// (> 0), unrounded: centimetres * 10 * f / depth_mm.
+  double columns_px(double centimetres, double depth_mm) const { return centimetres * 10.0 * fx_px / depth_mm; }
+  double rows_px(double centimetres, double depth_mm) const { return centimetres * 10.0 * fy_px / depth_mm; }
 
   /// A centred pinhole of the given fields of view (degrees across the width and the height):
   /// fx = (width_px / 2) / tan(hfov_deg / 2), fy = (height_px / 2) / tan(vfov_deg / 2), principal point at
