@@ -71,4 +71,20 @@ expect 1 "^candidate-recipe-report: $empty holds no train/ and empty/ renderings
 expect 2 "--cameras mix models are not for --install" scripts/train-default-model.sh --cameras mix --install
 expect 1 "^regularisation-sweep: $empty has no quality report's data" scripts/regularisation-sweep.sh --out "$empty"
 [ -z "$(ls -A "$empty")" ] || fail "regularisation-sweep wrote into $empty although it refused it"
+# candidate-crops.py: its help, a usage error before any work, and a picture of one row from a frame of its own.
+expect 0 "ROW is CSV:FRAMES:KIND:N" /usr/bin/python3 scripts/candidate-crops.py --help
+expect 2 "^candidate-crops: row 'a:b:bad:3': KIND is one of top-clutter, top-pieces, people, not 'bad'$" \
+  /usr/bin/python3 scripts/candidate-crops.py "$empty/x.png" a:b:bad:3
+expect 2 "^candidate-crops: row 'a:b:people:3': people needs a TRUTH file$" \
+  /usr/bin/python3 scripts/candidate-crops.py "$empty/x.png" a:b:people:3
+[ ! -e "$empty/x.png" ] || fail "candidate-crops wrote a picture although it refused its arguments"
+/usr/bin/python3 -c 'import png, sys
+png.Writer(width=40, height=30, greyscale=True, bitdepth=16).write(open(sys.argv[1], "wb"), [[1000 + 10 * x for x in range(40)]] * 30)' \
+  "$empty/f.depth.png" || fail "could not write a test frame"
+printf 'frame,candidate,x,y,w,h,depth_mm,score,person,distance_cm\nf,0,5,5,10,20,1100,1.5,1,0\nf,1,20,2,8,16,1300,-0.5,0,0\n' >"$empty/c.csv"
+expect 0 "^top-clutter of $empty/c.csv: H 1.50 -0.50$" \
+  /usr/bin/python3 scripts/candidate-crops.py "$empty/crops.png" "$empty/c.csv:$empty:top-clutter:5"
+/usr/bin/python3 -c 'import png, sys; w, h, _, _ = png.Reader(filename=sys.argv[1]).read(); sys.exit(0 if (w, h) == (272, 256) else 1)' \
+  "$empty/crops.png" || fail "candidate-crops' picture is not two 64x128 tiles at twice their size"
+rm -f "$empty/f.depth.png" "$empty/c.csv" "$empty/crops.png"
 echo "check-report-scripts: ok"

@@ -27,6 +27,10 @@ import sys
 import numpy
 import png
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from depth_frames import iou  # noqa: E402
+import depth_frames  # noqa: E402
+
 
 def size_arg(text):
     w, _, h = text.partition("x")
@@ -36,10 +40,10 @@ def size_arg(text):
 
 
 def read_depth(path):
-    width, height, rows, info = png.Reader(filename=path).read()
-    if info.get("bitdepth") != 16 or info.get("planes") != 1:
-        sys.exit(f"resized-frames: {path}: not a 16-bit one-channel depth PNG")
-    return numpy.vstack([numpy.asarray(r, dtype=numpy.uint16) for r in rows]).reshape(height, width)
+    try:
+        return depth_frames.read_depth(path)
+    except depth_frames.FrameError as e:
+        sys.exit(f"resized-frames: {e}")
 
 
 def write_depth(path, depth):
@@ -107,14 +111,6 @@ def detections(path):
             if row["person"] not in ("", "0"):
                 frames[row["frame"]].append(tuple(int(row[k]) for k in ("x", "y", "w", "h")))
     return frames
-
-
-def iou(a, b):
-    ix = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
-    iy = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
-    inter = ix * iy
-    union = a[2] * a[3] + b[2] * b[3] - inter
-    return inter / union if union > 0 else 0.0
 
 
 def compare(args):

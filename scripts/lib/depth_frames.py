@@ -1,0 +1,30 @@
+"""What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs, one IoU.
+
+Uses Debian's python3-numpy and python3-png (scripts/setup.sh installs them).
+"""
+import numpy
+import png
+
+
+class FrameError(Exception):
+    """A frame that cannot be read as depth: the message names the file and the problem."""
+
+
+def read_depth(path):
+    """The 16-bit one-channel PNG at `path` as a uint16 array (height x width), millimetres."""
+    try:
+        width, height, rows, info = png.Reader(filename=path).read()
+        if info.get("bitdepth") != 16 or info.get("planes") != 1:
+            raise FrameError(f"{path}: not a 16-bit one-channel depth PNG")
+        return numpy.vstack([numpy.asarray(r, dtype=numpy.uint16) for r in rows]).reshape(height, width)
+    except (OSError, png.Error) as e:
+        raise FrameError(f"{path}: {e}") from e
+
+
+def iou(a, b):
+    """Intersection over union of two boxes (x, y, w, h) in pixels; 0 when both are empty."""
+    ix = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
+    iy = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
+    inter = ix * iy
+    union = a[2] * a[3] + b[2] * b[3] - inter
+    return inter / union if union > 0 else 0.0
