@@ -34,7 +34,6 @@ import random
 import sys
 
 import numpy
-import png
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from depth_frames import iou  # noqa: E402
@@ -70,11 +69,11 @@ def read_rows(path, fields):
     return rows
 
 
-def box(r):
+def box(r, path):
     try:
         return tuple(int(r[k]) for k in ("x", "y", "w", "h"))
     except ValueError:
-        fail(f"bad box in line {r}")
+        fail(f"{path}: frame {r['frame']}: the box {r['x']},{r['y']},{r['w']},{r['h']} is not four whole numbers")
 
 
 def tile(depth, b):
@@ -90,7 +89,8 @@ def tile(depth, b):
     return grey.astype(numpy.uint8)
 
 
-def pick(spec):
+def parse_row(spec):
+    """ROW's parts (csv_path, frames, kind, n, truth_path or None); a usage error when they are not a ROW."""
     parts = spec.split(":")
     if len(parts) not in (4, 5):
         usage_error(f"row '{spec}': expected CSV:FRAMES:KIND:N[:TRUTH]")
@@ -102,20 +102,24 @@ def pick(spec):
         usage_error(f"row '{spec}': N is a whole number from 1 to 32")
     if kind != "top-clutter" and truth_path is None:
         usage_error(f"row '{spec}': {kind} needs a TRUTH file")
+    return csv_path, frames, kind, int(n), truth_path
+
+
+def pick(spec, csv_path, frames, kind, n, truth_path):
     truth = {}
     for r in read_rows(truth_path, ("frame", "x", "y", "w", "h")) if truth_path else []:
-        truth.setdefault(r["frame"], []).append(box(r))
+        truth.setdefault(r["frame"], []).append(box(r, truth_path))
     chosen = []
     for r in read_rows(csv_path, ("frame", "x", "y", "w", "h", "score")):
-        b = box(r)
+        b = box(r, csv_path)
         overlap = max([iou(b, t) for t in truth.get(r["frame"], [])] or [0.0])
         wanted = {"top-clutter": overlap < 0.1, "top-pieces": 0.1 <= overlap < 0.5, "people": overlap >= 0.5}[kind]
         if wanted:
             chosen.append((float(r["score"]), r["frame"], b))
     if kind == "people":
-        chosen = random.Random(1).sample(chosen, min(int(n), len(chosen)))
+        chosen = random.Random(1).sample(chosen, min(n, len(chosen)))
     else:
-        chosen = sorted(chosen, key=lambda c: -c[0])[: int(n)]
+        chosen = sorted(chosen, key=lambda c: -c[0])[:n]
     if not chosen:
         fail(f"row '{spec}': no candidate of that kind")
     tiles = [tile(read_depth(os.path.join(frames, f"{frame}.depth.png")), b) for _, frame, b in chosen]
@@ -131,7 +135,8 @@ def main():
     out = sys.argv[1]
     if not out.endswith(".png"):
         usage_error(f"the first argument is the picture to write, OUT.png, not '{out}'")
-    rows = [pick(spec) for spec in sys.argv[2:]]
+    specs = [(spec, *parse_row(spec)) for spec in sys.argv[2:]]  # every row checked before any file is read
+    rows = [pick(*spec) for spec in specs]
     width = max(len(r) for r in rows) * 68
     lines = []
     for r in rows:
@@ -139,13 +144,7 @@ def main():
         for i, t in enumerate(r):
             line[:, i * 68:i * 68 + 64] = t
         lines += [line, numpy.full((6, width), 255, numpy.uint8)]
-    image = numpy.kron(numpy.vstack(lines[:-1]), numpy.ones((2, 2), numpy.uint8))
-    tmp = out + ".tmp"
-    with open(tmp, "wb") as f:
-        png.Writer(width=image.shape[1], height=image.shape[0], greyscale=True).write(f, image.tolist())
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, out)
+    depth_frames.write_grey_png(out, numpy.kron(numpy.vstack(lines[:-1]), numpy.ones((2, 2), numpy.uint8)))
 
 
 if __name__ == "__main__":

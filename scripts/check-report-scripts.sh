@@ -77,6 +77,8 @@ expect 2 "^candidate-crops: row 'a:b:bad:3': KIND is one of top-clutter, top-pie
   /usr/bin/python3 scripts/candidate-crops.py "$empty/x.png" a:b:bad:3
 expect 2 "^candidate-crops: row 'a:b:people:3': people needs a TRUTH file$" \
   /usr/bin/python3 scripts/candidate-crops.py "$empty/x.png" a:b:people:3
+expect 2 "^candidate-crops: row 'a:b:bad:3': KIND is one of" \
+  /usr/bin/python3 scripts/candidate-crops.py "$empty/x.png" "$empty/none.csv:$empty:top-clutter:2" a:b:bad:3
 [ ! -e "$empty/x.png" ] || fail "candidate-crops wrote a picture although it refused its arguments"
 /usr/bin/python3 -c 'import png, sys
 png.Writer(width=40, height=30, greyscale=True, bitdepth=16).write(open(sys.argv[1], "wb"), [[1000 + 10 * x for x in range(40)]] * 30)' \

@@ -25,7 +25,6 @@ import os
 import sys
 
 import numpy
-import png
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from depth_frames import iou  # noqa: E402
@@ -44,16 +43,6 @@ def read_depth(path):
         return depth_frames.read_depth(path)
     except depth_frames.FrameError as e:
         sys.exit(f"resized-frames: {e}")
-
-
-def write_depth(path, depth):
-    tmp = path + ".tmp"
-    with open(tmp, "wb") as out:
-        png.Writer(width=depth.shape[1], height=depth.shape[0], greyscale=True, bitdepth=16).write(
-            out, depth.tolist())
-        out.flush()
-        os.fsync(out.fileno())
-    os.replace(tmp, path)
 
 
 def nearest(depth, width, height):
@@ -86,7 +75,7 @@ def resize(args):
         first = read_depth(os.path.join(args.src, name))
         if first.shape != (480, 640):
             sys.exit(f"resized-frames: {args.src}/{name}: {first.shape[1]}x{first.shape[0]}, expected 640x480")
-        write_depth(os.path.join(args.dst, name), nearest(first, width, height))
+        depth_frames.write_grey_png(os.path.join(args.dst, name), nearest(first, width, height))
         print(f"\rresized-frames: {i + 1}/{len(names)} frames -> {args.dst}", end="", file=sys.stderr)
     print(file=sys.stderr)
     with open(os.path.join(args.dst, "camera.yml"), "w") as out:

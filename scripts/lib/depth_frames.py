@@ -1,7 +1,10 @@
-"""What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs, one IoU.
+"""What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs, one synced
+writer of greyscale PNGs, one IoU.
 
 Uses Debian's python3-numpy and python3-png (scripts/setup.sh installs them).
 """
+import os
+
 import numpy
 import png
 
@@ -19,6 +22,19 @@ def read_depth(path):
         return numpy.vstack([numpy.asarray(r, dtype=numpy.uint16) for r in rows]).reshape(height, width)
     except (OSError, png.Error) as e:
         raise FrameError(f"{path}: {e}") from e
+
+
+def write_grey_png(path, image):
+    """`image` (uint8 or uint16, height x width) as a greyscale PNG of that bit depth: written to a temporary
+    name, synced and renamed, so that a killed run never leaves half a picture under `path`."""
+    bitdepth = 16 if image.dtype == numpy.uint16 else 8
+    tmp = path + ".tmp"
+    with open(tmp, "wb") as out:
+        png.Writer(width=image.shape[1], height=image.shape[0], greyscale=True, bitdepth=bitdepth).write(
+            out, image.tolist())
+        out.flush()
+        os.fsync(out.fileno())
+    os.replace(tmp, path)
 
 
 def iou(a, b):
