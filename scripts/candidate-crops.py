@@ -144,7 +144,7 @@ def main():
         for i, t in enumerate(r):
             line[:, i * 68:i * 68 + 64] = t
         lines += [line, numpy.full((6, width), 255, numpy.uint8)]
-    depth_frames.write_grey_png(out, numpy.kron(numpy.vstack(lines[:-1]), numpy.ones((2, 2), numpy.uint8)))
+    depth_frames.write_png(out, numpy.kron(numpy.vstack(lines[:-1]), numpy.ones((2, 2), numpy.uint8)))
 
 
 if __name__ == "__main__":

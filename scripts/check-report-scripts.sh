@@ -89,4 +89,17 @@ expect 0 "^top-clutter of $empty/c.csv: H 1.50 -0.50$" \
 /usr/bin/python3 -c 'import png, sys; w, h, _, _ = png.Reader(filename=sys.argv[1]).read(); sys.exit(0 if (w, h) == (272, 256) else 1)' \
   "$empty/crops.png" || fail "candidate-crops' picture is not two 64x128 tiles at twice their size"
 rm -f "$empty/f.depth.png" "$empty/c.csv" "$empty/crops.png"
+
+# public-frames.py: its help, a usage error, a repository it cannot read (one line naming it, exit 1), its LZF
+# decoder on a literal run and an overlapping back reference, and the frames it made being the ones checked in.
+expect 0 "--pcl-data GITDIR" /usr/bin/python3 scripts/public-frames.py --help
+expect 2 "required" /usr/bin/python3 scripts/public-frames.py "$empty/p"
+expect 1 "^public-frames.py: $empty/none: cannot read " \
+  /usr/bin/python3 scripts/public-frames.py "$empty/p" --pcl "$empty/none" --pcl-data "$empty/none" --open3d "$empty/none"
+expect 0 "^b'abcabcabc'$" /usr/bin/python3 -c 'import importlib.util as u
+s = u.spec_from_file_location("pf", "scripts/public-frames.py"); m = u.module_from_spec(s); s.loader.exec_module(m)
+print(m.lzf_decompress(bytes([2, 97, 98, 99, 4 << 5, 2]), 9))'
+expect 1 "LZF data gives 3 bytes" /usr/bin/python3 -c 'import importlib.util as u
+s = u.spec_from_file_location("pf", "scripts/public-frames.py"); m = u.module_from_spec(s); s.loader.exec_module(m)
+m.lzf_decompress(bytes([2, 97, 98, 99]), 9)'
 echo "check-report-scripts: ok"

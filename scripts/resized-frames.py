@@ -75,7 +75,7 @@ def resize(args):
         first = read_depth(os.path.join(args.src, name))
         if first.shape != (480, 640):
             sys.exit(f"resized-frames: {args.src}/{name}: {first.shape[1]}x{first.shape[0]}, expected 640x480")
-        depth_frames.write_grey_png(os.path.join(args.dst, name), nearest(first, width, height))
+        depth_frames.write_png(os.path.join(args.dst, name), nearest(first, width, height))
         print(f"\rresized-frames: {i + 1}/{len(names)} frames -> {args.dst}", end="", file=sys.stderr)
     print(file=sys.stderr)
     with open(os.path.join(args.dst, "camera.yml"), "w") as out:

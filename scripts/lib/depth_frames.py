@@ -1,5 +1,5 @@
 """What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs, one synced
-writer of greyscale PNGs, one IoU.
+writer of PNGs (and of text), one IoU.
 
 Uses Debian's python3-numpy and python3-png (scripts/setup.sh installs them).
 """
@@ -24,14 +24,26 @@ def read_depth(path):
         raise FrameError(f"{path}: {e}") from e
 
 
-def write_grey_png(path, image):
-    """`image` (uint8 or uint16, height x width) as a greyscale PNG of that bit depth: written to a temporary
-    name, synced and renamed, so that a killed run never leaves half a picture under `path`."""
+def write_png(path, image):
+    """`image` (uint8 or uint16; height x width for grey, height x width x 3 for colour) as a PNG of that bit
+    depth: written to a temporary name, synced and renamed, so that a killed run never leaves half a picture
+    under `path`."""
     bitdepth = 16 if image.dtype == numpy.uint16 else 8
+    colour = image.ndim == 3
+    rows = image.reshape(image.shape[0], -1).tolist()
+    _write_synced(path, lambda out: png.Writer(width=image.shape[1], height=image.shape[0], greyscale=not colour,
+                                               bitdepth=bitdepth).write(out, rows))
+
+
+def write_text(path, text):
+    """`text` to `path` through a temporary name, synced and renamed."""
+    _write_synced(path, lambda out: out.write(text.encode()))
+
+
+def _write_synced(path, write):
     tmp = path + ".tmp"
     with open(tmp, "wb") as out:
-        png.Writer(width=image.shape[1], height=image.shape[0], greyscale=True, bitdepth=bitdepth).write(
-            out, image.tolist())
+        write(out)
         out.flush()
         os.fsync(out.fileno())
     os.replace(tmp, path)
