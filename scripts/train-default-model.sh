@@ -36,7 +36,8 @@ cd "$(dirname "$0")/.."
 usage() {
   cat <<USAGE
 Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick] [--candidates 'OPTIONS']
-                                      [--cameras kinect1|mix] [--seed N] [--sets-from DIR]
+                                      [--synth-variety 'OPTIONS'] [--cameras kinect1|mix] [--seed N]
+                                      [--sets-from DIR]
   --out DIR    work folder (default out/default-model): data/, sets/, models/people/v2.yml
   --install    copy the trained model to models/people/v2.yml
   --force      with --install: replace an existing models/people/v2.yml
@@ -44,6 +45,9 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
   --candidates 'OPTIONS'  candidate options for mining and labelling (default none: the defaults), e.g.
                the options chosen without a real source (docs/quality.md, "Leave one source out"); use
                another --out, and not with --install
+  --synth-variety 'OPTIONS'  extra rdsf-synth options for both renderings (default none), e.g.
+               '--furniture-dropout 0' (the candidate people/v3 of docs/quality.md, "Holes"); use another
+               --out, and not with --install
   --cameras C  kinect1 (default): every room through the Kinect v1; mix: a quarter of the rooms (and of the
                empty ones) each through Kinect v1, Kinect v2 512x424, D435 848x480 and Orbbec 640x400 (seeds
                11-14); use another --out, and not with --install
@@ -52,11 +56,12 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
                rendering, mining and labelling (default none)
 USAGE
 }
-out=out/default-model install=0 force=0 quick=0 candidates="" cameras=kinect1 trainer_seed=1 sets_from=""
+out=out/default-model install=0 force=0 quick=0 candidates="" synth_variety="" cameras=kinect1 trainer_seed=1 sets_from=""
 target=models/people/v2.yml  # the file this script trains and installs
-script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --cameras=cameras --seed=trainer_seed --sets-from=sets_from -- "$@"
+script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --candidates=candidates --synth-variety=synth_variety --cameras=cameras --seed=trainer_seed --sets-from=sets_from -- "$@"
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
+if [ -n "$synth_variety" ] && ((install)); then echo "train-default-model: --synth-variety models are not for --install" >&2; exit 2; fi
 case "$cameras" in kinect1|mix) ;; *) echo "train-default-model: --cameras takes kinect1 or mix" >&2; exit 2 ;; esac
 if [ "$cameras" = mix ] && ((install)); then echo "train-default-model: --cameras mix models are not for --install" >&2; exit 2; fi
 if ! [[ "$trainer_seed" =~ ^[0-9]+$ ]]; then echo "train-default-model: --seed takes a whole number" >&2; exit 2; fi
@@ -70,6 +75,7 @@ if [ -n "$sets_from" ] && ! [ -f "$sets_from/sets/people/manifest.yml" -a -f "$s
   exit 1
 fi
 read -r -a candidate_options <<<"$candidates"
+read -r -a synth_options <<<"$synth_variety"
 if ((install && !force)) && [ -e "$target" ]; then
   echo "train-default-model: $target exists (give --force to replace it)" >&2
   exit 1
@@ -110,10 +116,10 @@ train_once() {  # work folder -> prints the model path
     folder=${name:+-$name}
     [ -f "$w/data/train$folder/synth.yml" ] ||
       "$bin/synth/rdsf-synth" --out "$w/data/train$folder" --force --frames $((frames_train / n)) --people 1..4 \
-        --seed "$seed" --clip-frames 15 "${camera[@]}" >&2
+        --seed "$seed" --clip-frames 15 "${camera[@]}" "${synth_options[@]}" >&2
     [ -f "$w/data/empty$folder/synth.yml" ] ||
       "$bin/synth/rdsf-synth" --out "$w/data/empty$folder" --force --frames $((frames_empty / n)) --people 1..4 \
-        --seed "$seed" --empty --clip-frames 15 "${camera[@]}" >&2
+        --seed "$seed" --empty --clip-frames 15 "${camera[@]}" "${synth_options[@]}" >&2
     mine_sources+=(--source "$w/data/empty$folder")
     label_folders+=("$w/data/train$folder")
   done
