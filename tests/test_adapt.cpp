@@ -21,6 +21,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/frame/depth_png.hpp"
@@ -40,6 +41,17 @@ test::RunResult render(const std::string& out, const std::string& extra) {
 }
 
 std::string models_dir() { return std::string(RDSF_SOURCE_DIR) + "/models"; }
+
+// A models folder of the test's own holding the shipped default model (the newest version of 'people'): a
+// run that should stop early but does not (a guard that stops holding) trains into it, not into the source
+// tree's models/.
+std::string own_models(const test::TempDir& dir) {
+  const std::filesystem::path models = dir.path() / "models";
+  const std::filesystem::path shipped = resolve_model("people", models_dir());
+  std::filesystem::create_directories(models / "people");
+  std::filesystem::copy_file(shipped, models / "people" / shipped.filename());
+  return test::quote(models.string());
+}
 
 // `text` with its one `from` replaced by `to`.
 std::string replace(std::string text, const std::string& from, const std::string& to) {
@@ -63,7 +75,7 @@ TEST(Adapt, ATruthOfOtherFramesIsRefusedBeforeAnythingIsWritten) {
   ASSERT_EQ(render(dir / "room", "--frames 30").exit_code, 0);
   std::ofstream(dir / "truth.csv") << "frame,person,x,y,w,h\n000003,1,100,100,50,100\nnot-a-frame,1,100,100,50,100\n";
   const test::RunResult r = test::run(adapt() + " --source " + test::quote(dir / "room") + " --truth " + test::quote(dir / "truth.csv") +
-                " --out " + test::quote(dir / "out") + " --name room --models-dir " + models_dir());
+                " --out " + test::quote(dir / "out") + " --name room --models-dir " + own_models(dir));
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find(dir / "truth.csv"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("not-a-frame"), std::string::npos) << r.err;
@@ -77,7 +89,7 @@ TEST(Adapt, AnEmptyRecordingWithPeopleIsRefused) {
   ASSERT_EQ(render(dir / "room", "--frames 30").exit_code, 0);
   const test::RunResult r = test::run(adapt() + " --source " + test::quote(dir / "room") + " --empty " +
                                       test::quote(dir / "room") + " --truth " + test::quote(dir / "room/boxes.csv") +
-                                      " --out " + test::quote(dir / "out") + " --name room --models-dir " + models_dir());
+                                      " --out " + test::quote(dir / "out") + " --name room --models-dir " + own_models(dir));
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("not empty"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir / "room"), std::string::npos) << r.err;
@@ -94,7 +106,7 @@ TEST(Adapt, AnEmptyRecordingTheUserVouchesForIsUsed) {
   const std::string command = adapt() + " --source " + test::quote(dir / "room") + " --empty " +
                               test::quote(dir / "room") + " --truth " + test::quote(dir / "room/boxes.csv") +
                               " --out " + test::quote(dir / "out") + " --name room --budget 2 --threads 2" +
-                              " --base-pos " + test::quote(dir / "missing") + " --models-dir " + models_dir();
+                              " --base-pos " + test::quote(dir / "missing") + " --models-dir " + own_models(dir);
   const test::RunResult r = test::run(command + " --trust-empty");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("taken as empty (--trust-empty) although"), std::string::npos) << r.err;
