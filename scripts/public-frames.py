@@ -15,12 +15,14 @@ Conversions:
 Exit codes: 0 done, 1 a repository or file that cannot be read (one line naming it), 2 usage.
 """
 import argparse
+import io
 import os
 import struct
 import subprocess
 import sys
 
 import numpy
+import png
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 import depth_frames  # noqa: E402
@@ -117,7 +119,7 @@ def read_pcd(blob, name):
         header[key] = value.split()
         if key == "DATA":
             break
-    fields, sizes, types = header["FIELDS"], [int(s) for s in header["SIZE"]], header["TYPE"]
+    fields, sizes = header["FIELDS"], [int(s) for s in header["SIZE"]]
     width, height = int(header["WIDTH"][0]), int(header["HEIGHT"][0])
     if height <= 1 or any(int(c) != 1 for c in header["COUNT"]) or any(s != 4 for s in sizes):
         raise SourceError(f"{name}: not an organised cloud of 4-byte fields")
@@ -144,19 +146,12 @@ def read_pcd(blob, name):
 
 
 def read_tum(blob, name):
-    import io
-    import png
-    width, height, rows, info = png.Reader(file=io.BytesIO(blob)).read()
-    if info.get("bitdepth") != 16 or info.get("planes") != 1:
-        raise SourceError(f"{name}: not a 16-bit TUM depth PNG")
-    v = numpy.vstack([numpy.asarray(r, dtype=numpy.uint32) for r in rows]).reshape(height, width)
+    v = depth_frames.decode_depth(blob, name).astype(numpy.uint32)
     return ((v + 2) // 5).astype(numpy.uint16)  # round(v / 5) for integers
 
 
-def read_png_rgb(blob, name):
-    import io
-    import png
-    width, height, rows, info = png.Reader(file=io.BytesIO(blob)).asRGB8()
+def read_png_rgb(blob):
+    width, height, rows, _ = png.Reader(file=io.BytesIO(blob)).asRGB8()
     return numpy.vstack([numpy.asarray(r, dtype=numpy.uint8) for r in rows]).reshape(height, width, 3)
 
 
@@ -190,7 +185,7 @@ def convert(out, repos):
                 depth, rgb = read_pcd(blob, where)
             else:
                 depth = read_tum(blob, where)
-                rgb = read_png_rgb(git_blob(gitdir, commit, path.replace("TUM_depth", "TUM_color")), where)
+                rgb = read_png_rgb(git_blob(gitdir, commit, path.replace("TUM_depth", "TUM_color")))
             depth_frames.write_png(os.path.join(folder, f"{name}.depth.png"), depth)
             if rgb is not None:
                 depth_frames.write_png(os.path.join(folder, f"{name}.rgb.png"), rgb)
@@ -215,7 +210,7 @@ def main():
     a = p.parse_args()
     try:
         convert(a.out, {"pcl": a.pcl, "pcl_data": a.pcl_data, "open3d": a.open3d})
-    except (SourceError, ValueError, KeyError, OSError) as e:
+    except (SourceError, depth_frames.FrameError, png.Error, ValueError, KeyError, OSError) as e:
         print(f"public-frames.py: {e}", file=sys.stderr)
         return 1
     return 0

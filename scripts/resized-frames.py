@@ -21,6 +21,7 @@ Uses Debian's python3-numpy and python3-png (scripts/setup.sh installs them).
 """
 import argparse
 import csv
+import io
 import os
 import sys
 
@@ -78,18 +79,19 @@ def resize(args):
         depth_frames.write_png(os.path.join(args.dst, name), nearest(first, width, height))
         print(f"\rresized-frames: {i + 1}/{len(names)} frames -> {args.dst}", end="", file=sys.stderr)
     print(file=sys.stderr)
-    with open(os.path.join(args.dst, "camera.yml"), "w") as out:
-        out.write(camera_text(width, height))
+    depth_frames.write_text(os.path.join(args.dst, "camera.yml"), camera_text(width, height))
     truth = os.path.join(args.src, "boxes.csv")
     if os.path.exists(truth):
         sx, sy = width / 640.0, height / 480.0
-        with open(truth) as src, open(os.path.join(args.dst, "boxes.csv"), "w", newline="") as dst:
+        text = io.StringIO()
+        with open(truth) as src:
             rows = csv.reader(src)
-            out = csv.writer(dst, lineterminator="\n")
+            out = csv.writer(text, lineterminator="\n")
             out.writerow(next(rows))
             for row in rows:
                 box = scaled([int(v) for v in row[2:6]], sx, sy)
                 out.writerow(row[:2] + [str(v) for v in box] + row[6:])
+        depth_frames.write_text(os.path.join(args.dst, "boxes.csv"), text.getvalue())
 
 
 def detections(path):

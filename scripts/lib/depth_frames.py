@@ -1,5 +1,5 @@
-"""What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs, one synced
-writer of PNGs (and of text), one IoU.
+"""What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs (files or
+bytes), one synced writer of PNGs (and of text), one IoU.
 
 Uses Debian's python3-numpy and python3-png (scripts/setup.sh installs them).
 """
@@ -16,12 +16,22 @@ class FrameError(Exception):
 def read_depth(path):
     """The 16-bit one-channel PNG at `path` as a uint16 array (height x width), millimetres."""
     try:
-        width, height, rows, info = png.Reader(filename=path).read()
-        if info.get("bitdepth") != 16 or info.get("planes") != 1:
-            raise FrameError(f"{path}: not a 16-bit one-channel depth PNG")
-        return numpy.vstack([numpy.asarray(r, dtype=numpy.uint16) for r in rows]).reshape(height, width)
-    except (OSError, png.Error) as e:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as e:
         raise FrameError(f"{path}: {e}") from e
+    return decode_depth(data, path)
+
+
+def decode_depth(data, name):
+    """The bytes of a 16-bit one-channel PNG as a uint16 array (height x width); `name` is used in messages."""
+    try:
+        width, height, rows, info = png.Reader(bytes=data).read()
+        if info.get("bitdepth") != 16 or info.get("planes") != 1:
+            raise FrameError(f"{name}: not a 16-bit one-channel depth PNG")
+        return numpy.vstack([numpy.asarray(r, dtype=numpy.uint16) for r in rows]).reshape(height, width)
+    except png.Error as e:
+        raise FrameError(f"{name}: {e}") from e
 
 
 def write_png(path, image):
