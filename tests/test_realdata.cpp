@@ -15,6 +15,7 @@
 #include "rdsf/evaluation/detection_metrics.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/pipeline/people_detector.hpp"
+#include "support/pipeline_runs.hpp"
 #include "support/test_support.hpp"
 
 using namespace rdsf;
@@ -121,16 +122,7 @@ TEST(RealData, DefaultModelFindsAtLeast40OfThe49PeopleWithFewFalsePositives) {
   EXPECT_NE(path.find("people/v2.yml"), std::string::npos) << path;
   // Every detection of a folder's frames, by a fresh detector (its own tracks).
   const auto detections_of = [&](const char* folder) {
-    PeopleDetector detector(path);
-    auto source = open_frame_source((test::realdata_dir() / folder).string());
-    std::vector<FrameCandidates> frames;
-    DepthFrame frame;
-    while (source->next(frame)) {
-      FrameCandidates& f = frames.emplace_back();
-      f.frame = frame.name;
-      for (const Detection& d : detector.detect(frame)) f.candidates.push_back({d.box, d.score, {}});
-    }
-    return frames;
+    return test::detections_of(path, (test::realdata_dir() / folder).string());
   };
   const double all = -std::numeric_limits<double>::infinity();  // every detection counts
   const DetectionFigures people = detection_figures(

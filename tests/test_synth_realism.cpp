@@ -163,17 +163,23 @@ double quantile(std::vector<double> values, double q) {
   return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))];
 }
 
+// The candidates of the i-th of `depths` (a Kinect v1 frame at its size) under the default AnalyserParams.
+std::vector<rdsf::Candidate> candidates_of(const rdsf::FrameAnalyser& analyser, const std::vector<cv::Mat1w>& depths,
+                                           std::size_t i) {
+  rdsf::DepthFrame frame;
+  frame.depth_mm = depths[i];
+  frame.index = static_cast<std::int64_t>(i);
+  frame.camera = rdsf::CameraModel::kinect_v1().scaled_to(depths[i].cols, depths[i].rows);
+  return analyser.analyse(frame, /*with_features=*/false).candidates;
+}
+
 CandidateSummary summarise_candidates(const std::vector<cv::Mat1w>& depths) {
   const rdsf::FrameAnalyser analyser;
   std::vector<double> counts, heights_px, heights_cm, depths_mm;
   for (std::size_t i = 0; i < depths.size(); ++i) {
-    rdsf::DepthFrame frame;
-    frame.depth_mm = depths[i];
-    frame.index = static_cast<std::int64_t>(i);
-    frame.camera = rdsf::CameraModel::kinect_v1().scaled_to(depths[i].cols, depths[i].rows);
-    const rdsf::FrameAnalysis analysis = analyser.analyse(frame, /*with_features=*/false);
-    counts.push_back(static_cast<double>(analysis.candidates.size()));
-    for (const auto& c : analysis.candidates) {
+    const std::vector<rdsf::Candidate> candidates = candidates_of(analyser, depths, i);
+    counts.push_back(static_cast<double>(candidates.size()));
+    for (const auto& c : candidates) {
       heights_px.push_back(c.strict_box.height);
       heights_cm.push_back(c.height_cm);
       depths_mm.push_back(c.layer_depth_mm);
@@ -284,11 +290,7 @@ HoleMedians hole_medians(const std::vector<cv::Mat1w>& depths, const std::vector
   const rdsf::FrameAnalyser analyser;
   std::vector<double> people, clutter;
   for (std::size_t i = 0; i < depths.size(); ++i) {
-    rdsf::DepthFrame frame;
-    frame.depth_mm = depths[i];
-    frame.index = static_cast<std::int64_t>(i);
-    frame.camera = rdsf::CameraModel::kinect_v1().scaled_to(depths[i].cols, depths[i].rows);
-    for (const auto& c : analyser.analyse(frame, /*with_features=*/false).candidates) {
+    for (const auto& c : candidates_of(analyser, depths, i)) {
       double best = 0;
       for (const cv::Rect& t : truth[i]) best = std::max(best, rdsf::iou(c.strict_box, t));
       if (best >= 0.5) people.push_back(middle_holes(depths[i], c.strict_box));
