@@ -286,7 +286,7 @@ TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
 TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   const test::RunResult r = train("--pos " + test::quote(people) + " --neg " + test::quote(negatives) +
                                   " --name levers --rounds 4 --depth 2 --learning-rate 0.5 --augment mirror"
-                                  " --histogram-subtraction");
+                                  " --histogram-subtraction --operating-tar 0.9");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("augmentation (mirror, seed 1): 60 more positives"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("calibration platt"), std::string::npos) << r.err;
@@ -306,6 +306,16 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   }
   EXPECT_TRUE(recorded);
   EXPECT_TRUE(subtraction);
+  // --operating-tar: recorded, and the model states the point, where its validation accepts >= 90 %.
+  const auto& parameters = model.training().parameters;
+  EXPECT_NE(std::find(parameters.begin(), parameters.end(), std::make_pair(std::string("operating_tar"), std::string("0.9"))),
+            parameters.end());
+  ASSERT_TRUE(model.operating_point());
+  EXPECT_NE(model.operating_point()->rule.find("validation TAR >= 0.9 (TAR "), std::string::npos)
+      << model.operating_point()->rule;
+  EXPECT_NE(r.err.find("operating point P(person) >= "), std::string::npos) << r.err;
+  const test::RunResult inspect = train("--inspect " + test::quote(model.path()));
+  EXPECT_NE(inspect.out.find("operating    P(person) >= "), std::string::npos) << inspect.out;
 }
 
 // --thesis sets the thesis's value of every row that has one, of the boosting rows and of the training-data

@@ -10,6 +10,7 @@
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_file.hpp"
 #include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/classifier/operating_point.hpp"
 #include "classifier_support/toy_data.hpp"
 #include "rdsf/core/error.hpp"
 #include "support/test_support.hpp"
@@ -128,6 +129,60 @@ TEST(ModelRegistry, NameResolvesToItsNewestVersion) {
             std::string::npos);
   EXPECT_NE(test::error_message([&] { BoostedModel::load("tree2/v9", models); }).find("no such model version"),
             std::string::npos);
+}
+
+// The operating point (operating_point.hpp): written only when the model states one, read back as written,
+// the default 0.5 without it, and a probability outside (0, 1) refused naming the file and the key.
+TEST(ModelFile, OperatingPointRoundTripsAndIsAbsentUnlessStated) {
+  const test::TempDir dir("rdsf-model-file");
+  BoostedModel plain = small_model(2);
+  const std::string plain_path = save_new_model_version(plain, "plain", dir.path().string());
+  EXPECT_EQ(test::file_text(plain_path).find("operating_point"), std::string::npos);
+  EXPECT_FALSE(BoostedModel::load(plain_path).operating_point());
+  EXPECT_EQ(BoostedModel::load(plain_path).operating_probability(), 0.5);
+
+  BoostedModel stated = small_model(2);
+  stated.set_operating_point(OperatingPoint{0.27, "the highest P on a 0.01 grid with validation TAR >= 0.8"});
+  const std::string path = save_new_model_version(stated, "stated", dir.path().string());
+  const BoostedModel loaded = BoostedModel::load(path);
+  ASSERT_TRUE(loaded.operating_point());
+  EXPECT_EQ(loaded.operating_probability(), 0.27);
+  EXPECT_EQ(loaded.operating_point()->rule, "the highest P on a 0.01 grid with validation TAR >= 0.8");
+  EXPECT_EQ(model_file_text(loaded), model_file_text(stated));
+
+  const std::string bad = dir / "bad.yml";
+  write_text(bad, replace_once(test::file_text(path), "probability: 2.7000000000000002e-01", "probability: 1.5"));
+  const std::string message = test::error_message([&] { BoostedModel::load(bad); });
+  EXPECT_NE(message.find(bad + ": 'operating_point.probability' must lie strictly between 0 and 1"), std::string::npos)
+      << message;
+}
+
+// choose_operating_point: the highest P of the 0.01 grid at which at least the target share of the positives
+// is accepted, with the TAR and FAR there in its rule; none when no grid point reaches the target.
+TEST(OperatingPoint, IsTheHighestGridProbabilityReachingTheTargetTar) {
+  // Uncalibrated (P = 1 / (1 + exp(-2 H))): positives at H 0.1, 0.2, ..., 1.0, negatives at -1, -0.5, 0.3.
+  std::vector<double> scores;
+  std::vector<int> labels;
+  for (int k = 1; k <= 10; ++k) {
+    scores.push_back(0.1 * k);
+    labels.push_back(1);
+  }
+  for (const double h : {-1.0, -0.5, 0.3}) {
+    scores.push_back(h);
+    labels.push_back(0);
+  }
+  const ScoreCalibration none;
+  const auto point = choose_operating_point(scores, labels, none, 0.8);
+  ASSERT_TRUE(point);
+  // 8 of 10 positives need H >= 0.3, P = 1 / (1 + exp(-0.6)) = 0.6457: the grid's 0.64 keeps them, 0.65 not.
+  EXPECT_DOUBLE_EQ(point->probability, 0.64);
+  EXPECT_NE(point->rule.find("TAR 0.800, FAR 0.3333"), std::string::npos) << point->rule;
+  EXPECT_DOUBLE_EQ(choose_operating_point(scores, labels, none, 0.1)->probability, 0.88);  // H 1.0: P 0.8808
+  // Every positive needs P >= 0.5498 (H 0.1): the grid's 0.54.
+  EXPECT_DOUBLE_EQ(choose_operating_point(scores, labels, none, 1.0)->probability, 0.54);
+  const std::vector<double> low{-3.0, -3.0};
+  EXPECT_FALSE(choose_operating_point(low, {1, 0}, none, 1.0));  // P 0.0025 < 0.01
+  EXPECT_THROW(choose_operating_point(scores, labels, none, 0.0), Error);
 }
 
 TEST(ModelFile, UnknownFormatVersionIsRefused) {

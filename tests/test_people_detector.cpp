@@ -2,6 +2,8 @@
 // input, and the parallel pipeline: 1 thread and N threads give the same results bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 
@@ -113,6 +115,32 @@ TEST(PeopleDetector, DefaultThresholdKeepsOnlyCandidatesAtTheModelsProbability) 
   EXPECT_EQ(found.size(), expected);
   EXPECT_LT(expected, all.probabilities.size()) << "the threshold should leave some candidates out";
   for (const Detection& d : found) EXPECT_GE(d.probability, 0.5);
+}
+
+// Without --threshold (probability_threshold 0) a model is read at the operating point it states; a given
+// threshold wins; a model that states none is read at 0.5.
+TEST(PeopleDetector, NoThresholdGivenReadsTheModelAtItsOperatingPoint) {
+  BoostedModel model = read_model_file(reference_model());
+  PipelineParams unset;
+  EXPECT_EQ(unset.probability_threshold_for(model), 0.5);
+  const DepthFrame frame = person_at(300, 0);
+  const PipelineFrame all = PeopleDetector(model, unset).pipeline().analyse(frame);
+  ASSERT_FALSE(all.probabilities.empty());
+  // An operating point above every candidate's probability: read there, the frame has nobody in it.
+  std::vector<double> sorted = all.probabilities;
+  std::sort(sorted.begin(), sorted.end());
+  const double operating = (sorted.back() + 1.0) / 2;
+  model.set_operating_point(OperatingPoint{operating, "test"});
+  EXPECT_EQ(unset.probability_threshold_for(model), operating);
+  EXPECT_EQ(unset.score_threshold_for(model), model.calibration().score_at(operating));
+  std::size_t expected = 0;
+  for (double p : all.probabilities) expected += p >= operating ? 1 : 0;
+  EXPECT_EQ(expected, 0u);
+  EXPECT_EQ(PeopleDetector(model, unset).detect(frame).size(), expected);
+  PipelineParams given;
+  given.probability_threshold = sorted.front() / 2;
+  EXPECT_EQ(given.probability_threshold_for(model), sorted.front() / 2);
+  EXPECT_GT(PeopleDetector(model, given).detect(frame).size(), expected);
 }
 
 TEST(PeopleDetector, BadInputIsOneLineError) {

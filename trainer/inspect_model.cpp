@@ -65,6 +65,9 @@ void print_identity(const BoostedModel& model, std::ostream& out) {
   std::snprintf(line, sizeof line, "calibration  %s: P(person) = 1 / (1 + exp(-(%.4f H %+.4f)))%s%s\n", c.method.c_str(),
                 c.a, c.b, c.source.empty() ? "" : ", fitted on ", c.source.c_str());
   out << line;
+  std::snprintf(line, sizeof line, "operating    P(person) >= %.2f: ", model.operating_probability());
+  out << line << (model.operating_point() ? model.operating_point()->rule : std::string("none stated (the default 0.5)"))
+      << "\n";
   out << "backend      " << t.backend << "\n";
   out << "recipe       " << t.recipe << "\n";
   out << "parameters  ";

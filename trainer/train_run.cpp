@@ -328,6 +328,10 @@ void report_model(const BoostedModel& model, const std::string& path) {
     }
     std::fprintf(stderr, "\n");
   }
+  if (model.operating_point()) {
+    std::fprintf(stderr, "rdsf-train: operating point P(person) >= %.2f: %s\n", model.operating_point()->probability,
+                 model.operating_point()->rule.c_str());
+  }
   std::cerr << "rdsf-train: wrote " << path << "\n";
 }
 

@@ -402,14 +402,16 @@ BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const 
     const std::vector<double> final_scores =
         scores_of(*validation.rows, validation.index, validation.owners == nullptr ? RowOwners{} : *validation.owners,
                   [&model](const float* row) { return model.score(row); });
-    record_validation(model, record.validation, final_scores, validation.labels, params.calibration, split.source);
+    record_validation(model, record.validation, final_scores, validation.labels, params, split.source);
   }
   if (!params.feature_columns.empty()) {  // columns of the pool -> features of the spec
     std::vector<WeakClassifier> renumbered = model.weak_classifiers();
     renumber_features(renumbered, feature_of);
     const ScoreCalibration calibration = model.calibration();
+    const std::optional<OperatingPoint> operating_point = model.operating_point();
     model = BoostedModel(params.feature_spec, params.bins, std::move(renumbered));
     model.set_calibration(calibration);
+    model.set_operating_point(operating_point);
   }
   model.training() = record;
   model.set_opencv_model_yaml(std::move(boosted.opencv_yaml));
@@ -419,10 +421,10 @@ BoostedModel finish_model(Boosted boosted, const RoundObserver& observer, const 
 }  // namespace
 
 void record_validation(BoostedModel& model, ValidationFigures& figures, const std::vector<double>& scores,
-                       const std::vector<int>& labels, const std::string& calibration, const std::string& source) {
+                       const std::vector<int>& labels, const BoostTrainingParams& params, const std::string& source) {
   figures.summary = summarise_roc(scores, labels);
   figures.roc = roc_at_far_levels(roc_curve(scores, labels));
-  if (calibration == "platt") {
+  if (params.calibration == "platt") {
     ScoreCalibration c = fit_platt(scores, labels);
     c.source = source;
     model.set_calibration(c);
@@ -438,6 +440,9 @@ void record_validation(BoostedModel& model, ValidationFigures& figures, const st
       (labels[k] == 1 ? tp : fp) += 1;
     }
     figures.by_probability.push_back({p, static_cast<double>(tp) / positives, static_cast<double>(fp) / negatives});
+  }
+  if (params.operating_tar > 0.0) {
+    model.set_operating_point(choose_operating_point(scores, labels, model.calibration(), params.operating_tar));
   }
 }
 
@@ -598,7 +603,7 @@ void record_pooled_validation(BoostedModel& model, const PooledOutOfFold& pooled
     f.roc = roc_at_far_levels(roc_curve(pooled.per_round[r], pooled.labels));
     record.validation.rounds.push_back(f);
   }
-  record_validation(model, record.validation, pooled.scores, pooled.labels, params.calibration, source);
+  record_validation(model, record.validation, pooled.scores, pooled.labels, params, source);
 }
 
 }  // namespace

@@ -78,6 +78,15 @@ const ParameterTable<BoostTrainingParams>& boost_training_parameters() {
                                  return k == 0 || (k >= 2 && k <= 20) ? "" : "must be 0 (off) or 2-20";
                                })),
                      [](const P& p) { return p.folds > 0 ? std::optional<std::string>(parameter_text(p.folds)) : std::nullopt; }),
+      recorded_as<P>(parameter<P, double>("operating-tar", &P::operating_tar,
+                                          "the model states an operating point: the highest P(person) at which at "
+                                          "least this share of the validation people are accepted; rdsf-detect "
+                                          "reads the model there unless given --threshold (0 = none: P >= 0.5)",
+                                          Range::between(0, 1)),
+                     [](const P& p) {
+                       return p.operating_tar > 0 ? std::optional<std::string>(parameter_text(p.operating_tar))
+                                                  : std::nullopt;
+                     }),
       parameter<P, double>("weight-trim", &P::weight_trim,
                 "fraction of the weight trimmed per round (0 = off; OpenCV's 0.95 rate is 0.05)",
                 Range::from_below(0, 1)),

@@ -178,6 +178,15 @@ void write_calibration(FileStorage& fs, const ScoreCalibration& c) {
   fs.endWriteStruct();
 }
 
+// Written only when the model states one: a model without it keeps its bytes.
+void write_operating_point(FileStorage& fs, const std::optional<OperatingPoint>& point) {
+  if (!point) return;
+  fs.startWriteStruct("operating_point", FileNode::MAP);
+  cv::write(fs, "probability", point->probability);
+  cv::write(fs, "rule", point->rule);
+  fs.endWriteStruct();
+}
+
 // ---- reading ----
 
 
@@ -330,6 +339,19 @@ ScoreCalibration read_calibration(const YamlReader& r, const FileNode& root) {
   return out;
 }
 
+// operating_point (format 3, optional): P(person) strictly between 0 and 1.
+std::optional<OperatingPoint> read_operating_point(const YamlReader& r, const FileNode& root) {
+  const FileNode node = YamlReader::child(root, "operating_point");
+  if (node.empty()) return std::nullopt;
+  OperatingPoint point;
+  point.probability = r.real(node, "probability", "operating_point.");
+  if (!(point.probability > 0.0 && point.probability < 1.0)) {
+    r.bad("'operating_point.probability' must lie strictly between 0 and 1");
+  }
+  point.rule = YamlReader::opt_text(node["rule"]);
+  return point;
+}
+
 // training.crops (format 3, optional): how the training crops were cut.
 CropProvenance read_crops_v3(const YamlReader& r, const FileNode& training) {
   CropProvenance crops;
@@ -402,6 +424,7 @@ BoostedModel read_v1_to_v3(const YamlReader& r, const FileNode& root, const Feat
   if (format_version >= 3) model.training().crops = read_crops_v3(r, root["training"]);
   model.set_format_version(format_version);
   if (format_version >= 2) model.set_calibration(read_calibration(r, root));
+  if (format_version >= 3) model.set_operating_point(read_operating_point(r, root));
   const FileNode opencv = root["opencv_model"];
   if (opencv.isMap()) {
     FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
@@ -445,6 +468,7 @@ std::string model_file_text(const BoostedModel& model) {
   write_training(fs, model.training());
   write_classifier(fs, model);
   write_calibration(fs, model.calibration());
+  write_operating_point(fs, model.operating_point());
   if (!model.opencv_model_yaml().empty()) {
     FileStorage embedded(model.opencv_model_yaml(), FileStorage::READ | FileStorage::MEMORY);
     copy_yaml_node(fs, "opencv_model", embedded["opencv_model"]);

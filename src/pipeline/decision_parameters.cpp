@@ -7,7 +7,8 @@ const ParameterTable<PipelineParams>& decision_parameters() {
   using P = PipelineParams;
   static const ParameterTable<P> table = {
       parameter("threshold", &P::probability_threshold,
-                "a candidate is a person when its calibrated P(person) >= this (0 < P < 1)", Range{0.0, 1.0, true, true}),
+                "a candidate is a person when its calibrated P(person) >= this (0 < P < 1; 0: the model's "
+                "operating point, 0.5 for a model that states none)", Range::from_below(0.0, 1.0)),
       parameter("mirror-average", &P::mirror_average,
                 "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right, "
                 "except with a model adapted to a room by rdsf-adapt (0: the crop alone, the thesis's way)",

@@ -11,8 +11,28 @@ std::size_t RoomPresence::empty_frames() const {
   return static_cast<std::size_t>(std::count(empty.begin(), empty.end(), 1));
 }
 
+namespace {
+
+// `probability` for a model read at P >= 0.5, for `model`: the same log-odds from its operating point.
+double at_operating_point(double probability, const BoostedModel& model) {
+  if (!model.operating_point()) return probability;
+  const double op = model.operating_probability();
+  const double odds = probability / (1.0 - probability) * op / (1.0 - op);
+  return odds / (1.0 + odds);
+}
+
+}  // namespace
+
+PresenceParams presence_params_for(const BoostedModel& model, const PresenceParams& params) {
+  PresenceParams moved = params;
+  moved.sighting_probability = at_operating_point(params.sighting_probability, model);
+  moved.confident_probability = at_operating_point(params.confident_probability, model);
+  return moved;
+}
+
 RoomPresence scan_room_presence(const std::string& source, const BoostedModel& model, const PipelineParams& pipeline,
-                                const CameraModel& camera, const PresenceParams& params) {
+                                const CameraModel& camera, const PresenceParams& given) {
+  const PresenceParams params = presence_params_for(model, given);
   PipelineParams p = pipeline;
   p.probability_threshold = params.sighting_probability;
   PeoplePipeline system(p, &model);

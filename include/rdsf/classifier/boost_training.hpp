@@ -49,6 +49,9 @@ struct BoostTrainingParams : RealAdaBoostSettings {
   /// 0.63 -> 0.80 at tree2's size, docs/quality.md). Used when the rows' groups are given, no separate
   /// validation rows are, and early stopping is off (it needs one held-out split); else validation_fraction.
   int folds = 5;
+  /// The model's operating point (operating_point.hpp): the highest P(person) at which at least this share
+  /// of the validation positives are accepted. 0 (default): none stated, the model is read at P >= 0.5.
+  double operating_tar = 0.0;
   FeatureSpec feature_spec;         ///< the features the rows hold and the model reads (the thesis's by default)
   /// When the rows hold only some of the spec's features (a pool, e.g. of the 120,786 rdsf-rect pairs): the
   /// feature of each column, distinct. Empty: every feature, column c = feature c. The model and the
@@ -118,9 +121,10 @@ BoostedModel train_with_group_folds(const cv::Mat1f& rows, const std::vector<int
                                     const BoostTrainingParams& params, const TrainingProgressFn& progress,
                                     const TrainingRowInfo& info);
 
-/// Fills `figures` (summary, ROC points, by_probability) from validation scores and, with calibration
-/// "platt", fits the model's calibration on them.
+/// Fills `figures` (summary, ROC points, by_probability) from validation scores, with params.calibration
+/// "platt" fits the model's calibration on them, and with params.operating_tar > 0 sets the model's
+/// operating point (choose_operating_point, operating_point.hpp).
 void record_validation(BoostedModel& model, ValidationFigures& figures, const std::vector<double>& scores,
-                       const std::vector<int>& labels, const std::string& calibration, const std::string& source);
+                       const std::vector<int>& labels, const BoostTrainingParams& params, const std::string& source);
 
 }  // namespace rdsf

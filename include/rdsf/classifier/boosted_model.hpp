@@ -3,12 +3,14 @@
 // P(person | x) = calibration.probability(H(x)): Platt scaling fitted on validation groups (format 2), or
 // 1 / (1 + exp(-2 H)) for models without one (format 1 files: Real AdaBoost's half log-odds reading).
 // Loaded from a model file (see model_file.hpp for the format, model_registry.hpp for NAME and NAME/vN).
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "rdsf/classifier/bin_scheme.hpp"
+#include "rdsf/classifier/operating_point.hpp"
 #include "rdsf/classifier/platt_calibration.hpp"
 #include "rdsf/classifier/training_record.hpp"
 #include "rdsf/classifier/weak_classifier.hpp"
@@ -33,6 +35,14 @@ class BoostedModel {
   double probability(double score) const { return calibration_.probability(score); }
   const ScoreCalibration& calibration() const { return calibration_; }
   void set_calibration(ScoreCalibration c) { calibration_ = std::move(c); }
+  /// The operating point the model states (operating_point.hpp), if any.
+  const std::optional<OperatingPoint>& operating_point() const { return operating_point_; }
+  void set_operating_point(std::optional<OperatingPoint> point) { operating_point_ = std::move(point); }
+  /// The P(person) a candidate needs to be a person when the user gives no threshold: the stated
+  /// operating point, else kDefaultOperatingProbability (0.5).
+  double operating_probability() const {
+    return operating_point_ ? operating_point_->probability : kDefaultOperatingProbability;
+  }
   /// Every feature index the weak classifiers read, ascending, without repeats.
   std::vector<int> used_features() const;
 
@@ -71,6 +81,7 @@ class BoostedModel {
   TrainingRecord training_;
   std::string opencv_yaml_;
   ScoreCalibration calibration_;
+  std::optional<OperatingPoint> operating_point_;
 };
 
 }  // namespace rdsf

@@ -15,6 +15,8 @@
 //             { kind: tree, feature (the root's), nodes: [ {feature, responses}, ... ] } (breadth first)
 //   calibration: (format 2) method platt|none, a, b, positives, negatives, source:
 //             P(person) = 1 / (1 + exp(-(a H + b))); format 1 files read as method none (a = 2, b = 0)
+//   operating_point: (format 3, optional) probability (0 < P < 1), rule: the P(person) at which the model
+//             is read when the user gives no threshold (operating_point.hpp); absent: P >= 0.5
 //   opencv_model: (OpenCV backend only) the cv::ml::Boost exactly as it wrote itself
 //
 // Reading has one branch per known format version and refuses any other; it accepts every feature spec

@@ -21,13 +21,18 @@ namespace rdsf {
 struct PipelineParams {
   AnalyserParams analyser;
   TrackingParams tracking;
-  /// A candidate is a person when P(person) >= this (the model's calibrated probability).
-  double probability_threshold = 0.5;
+  /// A candidate is a person when P(person) >= this (the model's calibrated probability). 0 (default): the
+  /// model's operating point (BoostedModel::operating_probability: the one it states, else 0.5).
+  double probability_threshold = 0.0;
   /// When set, a candidate is a person when H(x) >= this instead: the thesis's threshold_classifier.
   std::optional<double> score_threshold;
+  /// The P(person) threshold these mean for `model` (probability_threshold, or its operating point).
+  double probability_threshold_for(const BoostedModel& model) const {
+    return probability_threshold > 0.0 ? probability_threshold : model.operating_probability();
+  }
   /// The score threshold these mean for `model`.
   double score_threshold_for(const BoostedModel& model) const {
-    return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold);
+    return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold_for(model));
   }
   /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
   /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.

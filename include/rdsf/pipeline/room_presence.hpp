@@ -12,6 +12,9 @@
 // (confident_track_frames and more). 0.7, not 0.9: the shipped people/v2 gives a person standing at 1.5 m in a
 // synthetic room P 0.75-0.85; a people-free recording whose strongest false positive reaches 0.7 in 5 frames
 // is refused too (the message names the frame: look, and mine it without --empty's check by not giving it).
+// Both probabilities are for a model read at P >= 0.5. For a model that states another operating point op
+// (operating_point.hpp) they keep their log-odds from it: odds(P') = odds(P) odds(op) (presence_params_for);
+// people/v3 (op 0.27) gives a close person a lower P than v2, as it gives every person.
 #include <string>
 #include <vector>
 
@@ -36,6 +39,10 @@ struct RoomPresence {
   std::string confident_track_end;  ///< the frame where that person was last matched
   std::size_t empty_frames() const;
 };
+
+/// `params` for `model`: its probabilities moved to the model's operating point (above); unchanged for a
+/// model that states none.
+PresenceParams presence_params_for(const BoostedModel& model, const PresenceParams& params);
 
 /// Scans `source` (a frame source spec) with `model` (which must outlive the call).
 RoomPresence scan_room_presence(const std::string& source, const BoostedModel& model, const PipelineParams& pipeline,
