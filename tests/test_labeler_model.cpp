@@ -58,11 +58,11 @@ TEST(LabelerModel, SureCandidatesAreAnsweredByTheModelAndJournalled) {
   Synth s;
   const test::RunResult r = s.label_with("", "--model people --accept 0.9 --reject 0.1 --keep-rejected");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
   long by_model = 0;
   for (const auto& row : journal_rows(s.dir / "set/labeler-answers.tsv")) {
     ASSERT_EQ(row.size(), 10u);
-    ASSERT_EQ(row[9].rfind("model people/v2 H=", 0), 0u) << row[9];  // only the model answered (keys: none)
+    ASSERT_EQ(row[9].rfind("model people/v3 H=", 0), 0u) << row[9];  // only the model answered (keys: none)
     const double h = field(row[9], "H"), p = field(row[9], "P");
     EXPECT_NEAR(p, model.probability(h), 1e-3);
     EXPECT_TRUE(row[7] == "y" ? p >= 0.9 : p <= 0.1) << row[7] << " at P " << p;
@@ -73,7 +73,7 @@ TEST(LabelerModel, SureCandidatesAreAnsweredByTheModelAndJournalled) {
   ASSERT_EQ(static_cast<long>(set.records().size()), by_model);  // --keep-rejected: the n answers are stored too
   for (const SampleRecord& rec : set.records()) {
     EXPECT_EQ(rec.origin, "labeler-model");
-    EXPECT_EQ(rec.model, "people/v2");
+    EXPECT_EQ(rec.model, "people/v3");
     ASSERT_TRUE(rec.score.has_value());
     EXPECT_TRUE(rec.label == 1 ? model.probability(*rec.score) >= 0.9 : model.probability(*rec.score) <= 0.1);
   }
@@ -118,7 +118,7 @@ TEST(LabelerModel, ModelOfAnotherFeatureSpecIsRefusedBeforeTheSetChanges) {
   const auto before = std::filesystem::file_size(s.dir / "set/samples.tsv");
   const test::RunResult r = s.label_with("y y", "--feature-spec rdsf:cell=16 --model people");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("people/v2.yml: the model reads feature spec"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("people/v3.yml: the model reads feature spec"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("the sample set"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(std::filesystem::file_size(s.dir / "set/samples.tsv"), before);
@@ -130,7 +130,7 @@ TEST(LabelerModel, AskUncertainPresentsTheWholeSessionClosestToHalfFirstAndBudge
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("answered 6 "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("budget of answers spent"), std::string::npos) << r.err;
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
   const SampleSet set = SampleSet::open_read(s.dir / "set");
   ASSERT_EQ(set.records().size(), 6u);
   std::vector<double> doubt;
