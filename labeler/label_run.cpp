@@ -55,8 +55,9 @@ std::string reason_of(const LabelingSession& session, const PresentedCandidate& 
     const LabelingConfig& c = session.config();
     const BoostedModel& m = *session.model();
     if (c.ask == AskOrder::uncertain) {
-      std::snprintf(text, sizeof text, "asked: uncertain under %s/v%d (|P - 0.5| = %.2f, %zu left)", m.name().c_str(),
-                    m.version(), std::abs(pr - 0.5), session.pending());
+      const double boundary = m.operating_probability();
+      std::snprintf(text, sizeof text, "asked: uncertain under %s/v%d (|P - %.2f| = %.2f, %zu left)", m.name().c_str(),
+                    m.version(), boundary, std::abs(pr - boundary), session.pending());
     } else if (c.model_answers) {
       std::snprintf(text, sizeof text, "asked: model unsure (%.2f < P < %.2f)", c.reject_probability,
                     c.accept_probability);

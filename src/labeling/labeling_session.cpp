@@ -200,7 +200,11 @@ void LabelingSession::order_by_uncertainty() {
     queue_ = std::move(shuffled);
     return;
   }
-  auto doubt = [](const PresentedCandidate& p) { return std::abs(p.frame->probabilities[p.index] - 0.5); };
+  // Closest to where the model is read first: its operating point (0.5 for a model that states none).
+  const double boundary = model_->operating_probability();
+  auto doubt = [boundary](const PresentedCandidate& p) {
+    return std::abs(p.frame->probabilities[p.index] - boundary);
+  };
   std::stable_sort(queue_.begin(), queue_.end(),
                    [&](const PresentedCandidate& a, const PresentedCandidate& b) { return doubt(a) < doubt(b); });
   if (config_.explore_every <= 0 || queue_.size() < 2) return;
