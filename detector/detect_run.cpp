@@ -162,7 +162,14 @@ void create_save_dir(const std::string& dir) {
 void announce(const DetectOptions& o, const FrameSource& source, const std::vector<BoostedModel>& models) {
   std::cerr << "rdsf-detect: " << source.description() << "; " << resolve_thread_count(o.threads)
             << (o.live ? " live worker(s)" : " thread(s)");
-  for (const BoostedModel& m : models) std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
+  for (const BoostedModel& m : models) {
+    std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
+    if (o.pipeline.score_threshold) continue;
+    char threshold[96];
+    std::snprintf(threshold, sizeof threshold, ", people at P >= %.2f%s", o.pipeline.probability_threshold_for(m),
+                  o.pipeline.probability_threshold > 0 ? "" : m.operating_point() ? " (its operating point)" : "");
+    std::cerr << threshold;
+  }
   std::cerr << "\n";
 }
 

@@ -2,10 +2,11 @@
 # The adaptation benchmark (issue 35): how many answers a room costs and what its detector reaches, with
 # the truth as the person (every answer it gives is counted). For every room, its frames are split in time:
 # the earlier part is adapted on, the later part evaluated (TAR at FPPF <= 0.1, rdsf-detect's exact curve):
-#   none            the model as shipped (people/v2)
+#   none            the base model (--people-version: people/v2 by default, the model of the tables in
+#                   docs/adapting-to-your-room.md; 3 for today's default people/v3)
 #   negatives       continued (--init) on the room's negatives and the synthetic base
 #   per candidate   rdsf-adapt --per-candidate --budget B (every candidate the model is unsure of is asked)
-#   per track       rdsf-adapt --budget B (one answer per track), continuing people/v2 for 10 rounds
+#   per track       rdsf-adapt --budget B (one answer per track), continuing the base model for 10 rounds
 #   retrain         per track at the largest budget, trained from nothing (100 rounds) instead
 # A synthetic room whose later half has no counted person (all out of view or less than half visible) has no
 # TAR: it is left out and the next room taken, so --synthetic N rooms are evaluated.
@@ -28,7 +29,7 @@ cd "$(dirname "$0")/.."
 usage() {
   cat <<USAGE
 Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B ..."] [--real DIR] [--base DIR]
-                                      [--modes "M ..."] [--camera 'OPTIONS']
+                                      [--modes "M ..."] [--camera 'OPTIONS'] [--people-version N]
   --out DIR        work folder (default out/adaptation)
   --synthetic N    synthetic held-out rooms to use, 0-16 (default 4)
   --budgets "..."  answer budgets of the per-candidate and per-track runs (default "10 50")
@@ -39,11 +40,14 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
   --adapt-args ".." more options for every rdsf-adapt run, e.g. "--propagate-model-answers on" (default none)
   --camera '...'   rdsf-synth options of the camera the synthetic held-out rooms are seen by, e.g.
                    '--size 512x424 --fov 70.6x60' (a Kinect v2); the base stays Kinect v1 (default none: Kinect v1)
+  --people-version N  the shipped people/vN every room starts from and is judged against (default 2: the
+                   tables' model; 3: today's default); one version per work folder
 USAGE
 }
 out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people base="" modes="track candidate retrain negatives"
-adapt_args_text="" camera_text=""
-script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text --camera=camera_text -- "$@"
+adapt_args_text="" camera_text="" people_version=2
+script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text --camera=camera_text --people-version=people_version -- "$@"
+[ -f "models/people/v$people_version.yml" ] || { echo "adaptation-benchmark: --people-version: no models/people/v$people_version.yml" >&2; exit 2; }
 read -r -a adapt_args <<<"$adapt_args_text"
 read -r -a camera <<<"$camera_text"
 for c in "${camera[@]}"; do
@@ -77,10 +81,15 @@ step "the synthetic base and held-out rooms (reused when present)"
 # scripts/train-default-model.sh trains the shipped model; the small base gives its mined negatives only.
 base_pos=$sets/base-pos base_neg=("$sets/base-neg")
 [ -z "$base" ] || { base_pos=$base/people base_neg=("$base/negatives" "$base/people"); }
+# The small base is rendered as the base model's own training was (v3: furniture without dropout holes).
+base_synth=()
+((people_version >= 3)) && base_synth=(--furniture-dropout 0)
 [ -n "$base" ] || [ -f "$data/base-train/synth.yml" ] ||
-  "$synth" --out "$data/base-train" --force --frames 600 --people 1..4 --seed 11 --clip-frames 15 >/dev/null 2>&1
+  "$synth" --out "$data/base-train" --force --frames 600 --people 1..4 --seed 11 --clip-frames 15 "${base_synth[@]}" \
+    >/dev/null 2>&1
 [ -n "$base" ] || [ -f "$data/base-empty/synth.yml" ] ||
-  "$synth" --out "$data/base-empty" --force --frames 300 --people 1..4 --seed 11 --empty --clip-frames 15 >/dev/null 2>&1
+  "$synth" --out "$data/base-empty" --force --frames 300 --people 1..4 --seed 11 --empty --clip-frames 15 \
+    "${base_synth[@]}" >/dev/null 2>&1
 if ((synthetic > 0)); then
   [ -f "$data/$heldout/synth.yml" ] ||
     "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed 31 --clip-frames 60 "${camera[@]}" >/dev/null 2>&1
@@ -145,7 +154,13 @@ tar_of() {  # model, room -> TAR at FPPF <= 0.1 on the room's later frames
   sed -n 's/.*exact curve: TAR \([0-9.]*\) at FPPF <= 0.1.*/\1/p' "$report/summary.txt"
 }
 field() { awk -F'\t' -v k="$2" '$1 == k { print $2 }' "$1"; }
-[ -f "$models/people/v2.yml" ] || { mkdir -p "$models/people"; cp models/people/v2.yml "$models/people/v2.yml"; }
+# The base model alone in the work folder's people/: 'people' (rdsf-adapt's default, --init people) is it.
+for other in "$models"/people/v*.yml; do
+  [ -e "$other" ] && [ "$other" != "$models/people/v$people_version.yml" ] &&
+    { echo "adaptation-benchmark: $out holds $other, another base than people/v$people_version: use another --out" >&2; exit 1; }
+done
+[ -f "$models/people/v$people_version.yml" ] ||
+  { mkdir -p "$models/people"; cp "models/people/v$people_version.yml" "$models/people/v$people_version.yml"; }
 
 results=$out/results.tsv
 printf 'room\tmode\tbudget\tanswers\tpropagated\tpropagated_wrong\ttar\ttrain_s\n' > "$results"
