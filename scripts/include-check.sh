@@ -30,11 +30,13 @@ for file in src/*/*.cpp include/rdsf/*/*.hpp; do
   area="$(basename "$(dirname "$file")")"
   allowed=" $(allowed_library "$area") "
   if [ "$allowed" = " UNKNOWN " ]; then complain "$file" "folder '$area' is not in scripts/include-check.sh"; continue; fi
-  while IFS= read -r line; do
-    target="$(sed -E 's/^#include [<"]([^">]+)[">].*/\1/' <<<"$line")"
+  while IFS= read -r line; do  # bash's own matching: a process per line made this check take 47 s in CI
+    [[ "$line" =~ ^#include\ [\<\"]([^\"\>]+)[\"\>] ]] || continue
+    target="${BASH_REMATCH[1]}"
     case "$target" in
       rdsf/*/*)
-        to="$(cut -d/ -f2 <<<"$target")"
+        to="${target#rdsf/}"
+        to="${to%%/*}"
         [[ "$allowed" == *" $to "* ]] || complain "$file" "includes $target: $area may include only: $(echo $allowed)"
         ;;
       boost/program_options*|opencv2/highgui*) complain "$file" "includes $target: the library has no command line and no window" ;;
