@@ -18,7 +18,8 @@
 # home_ = UC3M home; docs/quality.md, "Per source") and pooled.
 # Each evaluation prints one row per model: TAR at FPPF <= 0.1 and <= 0.5 (exact curve), best MOTA,
 # candidate recall, the classifier's AUC on the candidates, and the gap between the TAR the model file's
-# validation predicts at P(person) >= 0.5 and the TAR measured on the held-out candidates.
+# validation predicts at its operating point (P >= 0.5 unless the model states one) and the TAR measured on
+# the held-out candidates.
 # Everything goes under out/quality (--out); the tables are collected in REPORT.md there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
