@@ -16,8 +16,9 @@
 // they are journalled with by = "model NAME/vN H=... P=..." and their samples have origin "labeler-model".
 // Ask order: in_order presents frame after frame (the thesis's way); uncertain scores every frame of every
 // source first (on the read-ahead thread) and presents the whole session's candidates closest to the
-// model's operating point first (P = 0.5 for a model that states none, operating_point.hpp), ties in frame order (without a model yet: in a seeded random order). rescore() replaces the model
-// mid-session (the active-learning loop).
+// model's operating point first (P = 0.5 for a model that states none, operating_point.hpp), ties in frame
+// order (without a model yet: in a seeded random order). rescore() replaces the model mid-session (the
+// active-learning loop).
 // Per track (per_track, uncertain order only): a human y or n is followed through the frames before and
 // after by track propagation (track_propagation.hpp, the rule there) and every candidate on the sure part
 // of the track gets the same answer (origin "labeler-track", journalled with by = "track FRAME X,Y,W,H");
