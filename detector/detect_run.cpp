@@ -163,12 +163,7 @@ void announce(const DetectOptions& o, const FrameSource& source, const std::vect
   std::cerr << "rdsf-detect: " << source.description() << "; " << resolve_thread_count(o.threads)
             << (o.live ? " live worker(s)" : " thread(s)");
   for (const BoostedModel& m : models) {
-    std::cerr << "; model " << model_label(m) << " (" << m.path() << ")";
-    if (o.pipeline.score_threshold) continue;
-    char threshold[96];
-    std::snprintf(threshold, sizeof threshold, ", people at P >= %.2f%s", o.pipeline.probability_threshold_for(m),
-                  o.pipeline.probability_threshold > 0 ? "" : m.operating_point() ? " (its operating point)" : "");
-    std::cerr << threshold;
+    std::cerr << "; model " << model_label(m) << " (" << m.path() << "), " << o.pipeline.decision_text(m);
   }
   std::cerr << "\n";
 }

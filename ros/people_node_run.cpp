@@ -166,9 +166,9 @@ class PeopleNode {
 
 int run_people_node(const PeopleNodeOptions& o) {
   BoostedModel model = BoostedModel::load(o.model, o.models_dir);
-  const std::string label = model_label(model) + " (" + model.path() + ")";
   // The model's feature spec unless --feature-spec names one (PeoplePipeline then checks they agree).
   const PipelineParams params = o.feature_spec_given ? o.pipeline : PeopleDetector::params_for(model, o.pipeline);
+  const std::string label = model_label(model) + " (" + model.path() + "), " + params.decision_text(model);
   PeopleDetector detector(std::move(model), params);
   ros::NodeHandle nh;
   PeopleNode node(nh, detector, o);

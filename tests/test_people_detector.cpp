@@ -132,6 +132,7 @@ TEST(PeopleDetector, NoThresholdGivenReadsTheModelAtItsOperatingPoint) {
   const double operating = (sorted.back() + 1.0) / 2;
   model.set_operating_point(OperatingPoint{operating, "test"});
   EXPECT_EQ(unset.probability_threshold_for(model), operating);
+  EXPECT_NE(unset.decision_text(model).find(" (its operating point)"), std::string::npos) << unset.decision_text(model);
   EXPECT_EQ(unset.score_threshold_for(model), model.calibration().score_at(operating));
   std::size_t expected = 0;
   for (double p : all.probabilities) expected += p >= operating ? 1 : 0;
@@ -140,6 +141,10 @@ TEST(PeopleDetector, NoThresholdGivenReadsTheModelAtItsOperatingPoint) {
   PipelineParams given;
   given.probability_threshold = sorted.front() / 2;
   EXPECT_EQ(given.probability_threshold_for(model), sorted.front() / 2);
+  EXPECT_EQ(given.decision_text(model).find("operating point"), std::string::npos) << given.decision_text(model);
+  given.score_threshold = 0.0;
+  EXPECT_EQ(given.decision_text(model), "people at H(x) >= 0.00");
+  given.score_threshold.reset();
   EXPECT_GT(PeopleDetector(model, given).detect(frame).size(), expected);
 }
 

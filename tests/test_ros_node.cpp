@@ -210,6 +210,8 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   // colour, so they are rdsf-detect's; track ids may not be (the histograms come from another frame).
   const std::vector<rdsf_people::People> no_wait = play_to_node("", "node-no-wait.log", log);
   EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped; "), std::string::npos) << log;
+  // No ~threshold: the node says it reads the model at the operating point the model states.
+  EXPECT_NE(log.find(", people at P >= 0.27 (its operating point)"), std::string::npos) << log;
   const std::size_t with = log.find(" with colour");
   ASSERT_NE(with, std::string::npos) << log;
   const std::size_t count_at = log.rfind(' ', with - 1) + 1;

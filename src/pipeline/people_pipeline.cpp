@@ -1,12 +1,26 @@
 #include "rdsf/pipeline/people_pipeline.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "rdsf/candidates/duplicate_candidates.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/pipeline/model_fit.hpp"
 
 namespace rdsf {
+
+std::string PipelineParams::decision_text(const BoostedModel& model) const {
+  char text[96];
+  if (score_threshold) {
+    std::snprintf(text, sizeof text, "people at H(x) >= %.2f", *score_threshold);
+  } else {
+    const bool stated = probability_threshold <= 0.0 && model.operating_point();
+    std::snprintf(text, sizeof text, "people at P >= %.2f%s", probability_threshold_for(model),
+                  stated ? " (its operating point)" : "");
+  }
+  return text;
+}
+
 bool PipelineParams::mirror_average_for(const BoostedModel& model) const {
   return mirror_average && !model.training().adapted_to_a_room();
 }

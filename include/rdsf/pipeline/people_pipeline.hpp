@@ -7,6 +7,7 @@
 // with the time of every stage. Without a model, every candidate is reported unscored and nothing is tracked.
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "rdsf/classifier/boosted_model.hpp"
@@ -34,6 +35,9 @@ struct PipelineParams {
   double score_threshold_for(const BoostedModel& model) const {
     return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold_for(model));
   }
+  /// Where `model` is read, as the programs say it: "people at P >= 0.27 (its operating point)", "people at
+  /// P >= 0.60" (a threshold given), "people at H(x) >= 0.00" (the thesis's score threshold).
+  std::string decision_text(const BoostedModel& model) const;
   /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
   /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
   bool full_feature_vector = false;
