@@ -57,7 +57,7 @@ std::string reason_of(const LabelingSession& session, const PresentedCandidate& 
     if (c.ask == AskOrder::uncertain) {
       const double boundary = m.operating_probability();
       std::snprintf(text, sizeof text, "asked: uncertain under %s/v%d (|P - %.2f| = %.2f, %zu left)", m.name().c_str(),
-                    m.version(), boundary, std::abs(pr - boundary), session.pending());
+                    m.version(), boundary, uncertainty(pr, boundary), session.pending());
     } else if (c.model_answers) {
       std::snprintf(text, sizeof text, "asked: model unsure (%.2f < P < %.2f)", c.reject_probability,
                     c.accept_probability);

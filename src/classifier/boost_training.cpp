@@ -429,17 +429,9 @@ void record_validation(BoostedModel& model, ValidationFigures& figures, const st
     c.source = source;
     model.set_calibration(c);
   }
-  const auto positives = static_cast<double>(std::count(labels.begin(), labels.end(), 1));
-  const double negatives = static_cast<double>(labels.size()) - positives;
   figures.by_probability.clear();
   for (double p : probability_levels()) {
-    const double h = model.calibration().score_at(p);
-    std::size_t tp = 0, fp = 0;
-    for (std::size_t k = 0; k < scores.size(); ++k) {
-      if (scores[k] < h) continue;
-      (labels[k] == 1 ? tp : fp) += 1;
-    }
-    figures.by_probability.push_back({p, static_cast<double>(tp) / positives, static_cast<double>(fp) / negatives});
+    figures.by_probability.push_back(rates_at_probability(scores, labels, model.calibration(), p));
   }
   if (params.operating_tar > 0.0) {
     model.set_operating_point(choose_operating_point(scores, labels, model.calibration(), params.operating_tar));

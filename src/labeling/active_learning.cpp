@@ -14,7 +14,8 @@ std::vector<std::size_t> most_uncertain_first(const std::vector<double>& probabi
   std::vector<std::size_t> order(probabilities.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::abs(probabilities[a] - 0.5) < std::abs(probabilities[b] - 0.5);
+    return uncertainty(probabilities[a], kDefaultOperatingProbability) <
+           uncertainty(probabilities[b], kDefaultOperatingProbability);
   });
   return order;
 }

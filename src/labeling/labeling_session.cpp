@@ -15,6 +15,7 @@
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/ordered_pool.hpp"
 #include "rdsf/dataset/sample_source.hpp"
+#include "rdsf/labeling/active_learning.hpp"
 #include "rdsf/pipeline/model_fit.hpp"
 
 namespace rdsf {
@@ -203,7 +204,7 @@ void LabelingSession::order_by_uncertainty() {
   // Closest to where the model is read first: its operating point (0.5 for a model that states none).
   const double boundary = model_->operating_probability();
   auto doubt = [boundary](const PresentedCandidate& p) {
-    return std::abs(p.frame->probabilities[p.index] - boundary);
+    return uncertainty(p.frame->probabilities[p.index], boundary);
   };
   std::stable_sort(queue_.begin(), queue_.end(),
                    [&](const PresentedCandidate& a, const PresentedCandidate& b) { return doubt(a) < doubt(b); });

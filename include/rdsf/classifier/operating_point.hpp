@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "rdsf/classifier/platt_calibration.hpp"
+#include "rdsf/classifier/training_record.hpp"
 
 namespace rdsf {
 
@@ -27,6 +28,12 @@ struct OperatingPoint {
   double probability = kDefaultOperatingProbability;  ///< 0 < P < 1
   std::string rule;  ///< how it was chosen, with the validation TAR and FAR there
 };
+
+/// Validation TAR and FAR at P(person) >= `probability`: the shares of the positives and of the negatives
+/// (`labels` 1/0) whose score reaches calibration.score_at(probability). What the model file's
+/// validation.by_probability holds at each level, and what choose_operating_point reads at each grid point.
+ProbabilityPoint rates_at_probability(const std::vector<double>& scores, const std::vector<int>& labels,
+                                      const ScoreCalibration& calibration, double probability);
 
 /// The point rdsf-train --operating-tar `target_tar` (0 < T <= 1) chooses; `labels` 1/0 beside `scores`.
 std::optional<OperatingPoint> choose_operating_point(const std::vector<double>& scores, const std::vector<int>& labels,

@@ -1,14 +1,15 @@
 #pragma once
 // The pieces of active learning that the labeler's loop (rdsf-label --loop), the review (rdsf-review) and
 // their benchmark share:
-//   uncertainty  |P(person) - 0.5|: the candidates closest to 0.5 are asked first (uncertainty sampling,
-//                the smallest margin of a two-class model);
+//   uncertainty  |P(person) - 0.5| (- the model's operating point, when it states one): the candidates
+//                closest to it are asked first (uncertainty sampling, the smallest margin of a two-class model);
 //   suspicion    the probability that a stored label is wrong under a model: 1 - P for a person, P for a
 //                not-person; the review shows the most suspicious first;
 //   loop model   a model trained in-process on the labelled rows: the trainer's defaults (Real AdaBoost,
 //                depth-2 trees, learning rate 0.5, Platt calibration) with fewer rounds and a held-out
 //                fraction by group (recording and frame block), so that a retrain costs well under a second
 //                at labelling sizes.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +24,11 @@
 #include "rdsf/dataset/sample_set.hpp"
 
 namespace rdsf {
+
+/// How far a candidate is from where its model is read: |P - boundary|, the boundary being the model's
+/// operating point (BoostedModel::operating_probability, 0.5 for a model that states none). Smallest first
+/// is the most uncertain.
+inline double uncertainty(double probability, double boundary) { return std::abs(probability - boundary); }
 
 /// Indices of `probabilities` closest to 0.5 first; ties in index order.
 std::vector<std::size_t> most_uncertain_first(const std::vector<double>& probabilities);
