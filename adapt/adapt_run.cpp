@@ -140,7 +140,7 @@ std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presen
 void check_empty_recording(const AdaptOptions& o, const BoostedModel& model) {
   if (o.empty.empty()) return;
   const RoomPresence presence = scan_room_presence(o.empty, model, PipelineParams{}, CameraModel::kinect_v1());
-  const PresenceParams rule = presence_params_for(model, PresenceParams{});
+  const PresenceParams& rule = presence.rule;
   if (presence.longest_confident_track >= rule.confident_track_frames) {
     const std::string seen = model_reference(model) + " follows a person over " +
                              std::to_string(presence.longest_confident_track) + " frames with P(person) >= " +

@@ -21,14 +21,16 @@ double at_operating_point(double probability, const BoostedModel& model) {
   return odds / (1.0 + odds);
 }
 
-}  // namespace
-
+// `params` for `model`: its probabilities moved to the model's operating point; unchanged for a model that
+// states none.
 PresenceParams presence_params_for(const BoostedModel& model, const PresenceParams& params) {
   PresenceParams moved = params;
   moved.sighting_probability = at_operating_point(params.sighting_probability, model);
   moved.confident_probability = at_operating_point(params.confident_probability, model);
   return moved;
 }
+
+}  // namespace
 
 RoomPresence scan_room_presence(const std::string& source, const BoostedModel& model, const PipelineParams& pipeline,
                                 const CameraModel& camera, const PresenceParams& given) {
@@ -37,6 +39,7 @@ RoomPresence scan_room_presence(const std::string& source, const BoostedModel& m
   p.probability_threshold = params.sighting_probability;
   PeoplePipeline system(p, &model);
   RoomPresence presence;
+  presence.rule = params;
   std::map<int, int> confident;  // person id -> frames matched with P >= confident_probability
   const auto frames = open_frame_source(source, camera);
   DepthFrame frame;

@@ -13,7 +13,7 @@
 // synthetic room P 0.75-0.85; a people-free recording whose strongest false positive reaches 0.7 in 5 frames
 // is refused too (the message names the frame: look, and mine it without --empty's check by not giving it).
 // Both probabilities are for a model read at P >= 0.5. For a model that states another operating point op
-// (operating_point.hpp) they keep their log-odds from it: odds(P') = odds(P) odds(op) (presence_params_for);
+// (operating_point.hpp) they keep their log-odds from it: odds(P') = odds(P) odds(op) (RoomPresence::rule);
 // people/v3 (op 0.27) gives a close person a lower P than v2, as it gives every person.
 #include <string>
 #include <vector>
@@ -32,6 +32,7 @@ struct PresenceParams {
 };
 
 struct RoomPresence {
+  PresenceParams rule;              ///< the rule as applied: its probabilities at the model's operating point
   std::vector<std::string> frames;  ///< frame names, in order
   std::vector<char> sighting;       ///< per frame: a candidate with P >= sighting_probability
   std::vector<char> empty;          ///< per frame: taken as people-free (the rule above)
@@ -39,10 +40,6 @@ struct RoomPresence {
   std::string confident_track_end;  ///< the frame where that person was last matched
   std::size_t empty_frames() const;
 };
-
-/// `params` for `model`: its probabilities moved to the model's operating point (above); unchanged for a
-/// model that states none.
-PresenceParams presence_params_for(const BoostedModel& model, const PresenceParams& params);
 
 /// Scans `source` (a frame source spec) with `model` (which must outlive the call).
 RoomPresence scan_room_presence(const std::string& source, const BoostedModel& model, const PipelineParams& pipeline,
