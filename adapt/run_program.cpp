@@ -29,12 +29,33 @@ std::string sibling_program(const std::string& name) {
   throw Error(tried.front().string() + ": " + name + " not found beside rdsf-adapt (build or install it too)");
 }
 
+namespace {
+
+// `word` as one shell word: as it is when it holds only characters no shell treats specially, else in single
+// quotes (a quote inside as '\'').
+std::string shell_quoted(const std::string& word) {
+  const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                             "0123456789_-+=.,/:@%") == std::string::npos;
+  if (plain) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
+
 int run_program(const std::string& program, const std::vector<std::string>& args, const std::string& log) {
   std::vector<std::string> all{program};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
+  if (!log.empty()) {  // the command first, as a shell would take it, so that the step can be run by hand
+    std::ofstream out(log, std::ios::app);
+    out << "$";
+    for (const std::string& a : all) out << " " << shell_quoted(a);
+    out << "\n";
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   if (!log.empty()) {

@@ -112,6 +112,13 @@ TEST(Adapt, AnEmptyRecordingTheUserVouchesForIsUsed) {
   EXPECT_NE(r.err.find("taken as empty (--trust-empty) although"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("rdsf-train failed"), std::string::npos) << r.err;  // it went on to the end
   EXPECT_TRUE(std::filesystem::exists(dir / "out/sets/room-negatives/manifest.yml"));
+  // Each step's log begins with its command, to be run by hand; the room's model continues people/v3 but is
+  // not given its base's --operating-tar (measured worse: docs/adapting-to-your-room.md).
+  const std::string train_log = test::file_text(dir / "out/logs/train.log");
+  EXPECT_EQ(train_log.rfind("$ ", 0), 0u) << train_log;
+  EXPECT_NE(train_log.find("/rdsf-train --models-dir "), std::string::npos) << train_log;
+  EXPECT_NE(train_log.find(" --init people "), std::string::npos) << train_log;
+  EXPECT_EQ(train_log.find("--operating-tar"), std::string::npos) << train_log;
   const test::RunResult usage = test::run(adapt() + " --source x --out " + test::quote(dir / "o2") +
                                           " --name room --trust-empty");
   EXPECT_EQ(usage.exit_code, 2) << usage.err;
@@ -194,6 +201,10 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   }
   EXPECT_EQ(room_as_pos, 2);
   EXPECT_EQ(base_as_pos, 1);
+  // A room's model states no operating point (read at P >= 0.5 of its own calibration), and its training's
+  // command heads the step's log.
+  EXPECT_FALSE(adapted.operating_point());
+  EXPECT_EQ(test::file_text(dir / "out/logs/train.log").rfind("$ ", 0), 0u);
 }
 
 // Any resolution (issue 36): a room seen by a Kinect v2-size camera (512x424, 70.6 x 60 degrees: the

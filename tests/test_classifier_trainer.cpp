@@ -314,6 +314,12 @@ TEST_F(TrainerProgram, LeversAreRecordedInTheModelFile) {
   EXPECT_NE(model.operating_point()->rule.find("validation TAR >= 0.9 (TAR "), std::string::npos)
       << model.operating_point()->rule;
   EXPECT_NE(r.err.find("operating point P(person) >= "), std::string::npos) << r.err;
+  // The warning for a weak model: given exactly when the validation FAR at the point (in its rule) is above 0.05.
+  const std::string& rule = model.operating_point()->rule;
+  const double far = std::stod(rule.substr(rule.find("FAR ") + 4));
+  EXPECT_EQ(r.err.find("rdsf-train: warning: at its operating point the model accepts ") != std::string::npos,
+            far > kWeakOperatingFar)
+      << r.err;
   const test::RunResult inspect = train("--inspect " + test::quote(model.path()));
   EXPECT_NE(inspect.out.find("operating    P(person) >= "), std::string::npos) << inspect.out;
 }

@@ -177,6 +177,7 @@ TEST(OperatingPoint, IsTheHighestGridProbabilityReachingTheTargetTar) {
   // 8 of 10 positives need H >= 0.3, P = 1 / (1 + exp(-0.6)) = 0.6457: the grid's 0.64 keeps them, 0.65 not.
   EXPECT_DOUBLE_EQ(point->probability, 0.64);
   EXPECT_NE(point->rule.find("TAR 0.800, FAR 0.3333"), std::string::npos) << point->rule;
+  EXPECT_DOUBLE_EQ(point->validation_far, 1.0 / 3.0);  // what rdsf-train's warning reads (> kWeakOperatingFar)
   EXPECT_DOUBLE_EQ(choose_operating_point(scores, labels, none, 0.1)->probability, 0.88);  // H 1.0: P 0.8808
   // Every positive needs P >= 0.5498 (H 0.1): the grid's 0.54.
   EXPECT_DOUBLE_EQ(choose_operating_point(scores, labels, none, 1.0)->probability, 0.54);

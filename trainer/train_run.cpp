@@ -331,6 +331,13 @@ void report_model(const BoostedModel& model, const std::string& path) {
   if (model.operating_point()) {
     std::fprintf(stderr, "rdsf-train: operating point P(person) >= %.2f: %s\n", model.operating_point()->probability,
                  model.operating_point()->rule.c_str());
+    const double far = model.operating_point()->validation_far;
+    if (far > kWeakOperatingFar) {
+      std::fprintf(stderr,
+                   "rdsf-train: warning: at its operating point the model accepts %.1f %% of its validation "
+                   "non-people (FAR %.3f > %.2f): it tells people from clutter poorly; more rounds or samples help\n",
+                   100.0 * far, far, kWeakOperatingFar);
+    }
   }
   std::cerr << "rdsf-train: wrote " << path << "\n";
 }

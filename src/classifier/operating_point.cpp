@@ -34,7 +34,7 @@ std::optional<OperatingPoint> choose_operating_point(const std::vector<double>& 
     std::snprintf(rule, sizeof rule,
                   "the highest P on a 0.01 grid with validation TAR >= %.3g (TAR %.3f, FAR %.4f there)", target_tar,
                   at.tar, at.far);
-    return OperatingPoint{at.probability, rule};
+    return OperatingPoint{at.probability, rule, at.far};
   }
   return std::nullopt;
 }

@@ -13,6 +13,7 @@
 // at which at least a share T of the validation positives score P >= it (their pooled out-of-fold scores,
 // the calibration the model carries); none when even P >= 0.01 keeps fewer. The choice reads the
 // validation samples only, never frames of a real room.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,7 +28,14 @@ inline constexpr double kDefaultOperatingProbability = 0.5;
 struct OperatingPoint {
   double probability = kDefaultOperatingProbability;  ///< 0 < P < 1
   std::string rule;  ///< how it was chosen, with the validation TAR and FAR there
+  /// The validation FAR at the point when it was chosen in this run (choose_operating_point); a model file
+  /// keeps it in `rule`'s text only, so a loaded point has NaN.
+  double validation_far = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// Above this validation FAR at its operating point rdsf-train warns that the model tells people from clutter
+/// poorly (the thesis's classifier: TAR 0.82 at FAR 0.05).
+inline constexpr double kWeakOperatingFar = 0.05;
 
 /// Validation TAR and FAR at P(person) >= `probability`: the shares of the positives and of the negatives
 /// (`labels` 1/0) whose score reaches calibration.score_at(probability). What the model file's
