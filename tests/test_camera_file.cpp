@@ -166,8 +166,10 @@ TEST(CameraFile, ResizedRealFramesWithTheirCameraModelFindTheSamePeople) {
               << " detections found again (IoU >= 0.7)\n";
     // Measured (2026-12-04, one crop per candidate): 44 of 48 (2 px: 45, 3 px: 43; with row_step 2 a shift
     // loses nothing, 46 of 46, but the resized frames still lose as many: docs/sensors.md); with mirror
-    // averaging (2026-12-05) 43 of 46; people/v3 at its operating point (2026-12-06) 42 of 45.
-    EXPECT_GE(found, 42);
+    // averaging (2026-12-05) 43 of 46; people/v3 at its operating point (2026-12-06) 42 of 45; with the height
+    // limit at detection (--max-height 250, 2026-12-06) 41 of 44 (the one detection it drops, a false
+    // positive, was found after the shift too).
+    EXPECT_GE(found, 41);
     EXPECT_LT(found, people) << "a shift lost nothing: the floor documented in docs/sensors.md has moved";
   }
   const auto resized = [](const DepthFrame& f, cv::Size size) {
@@ -254,9 +256,12 @@ TEST(CameraFile, ResizedRealFramesWithTheirCameraModelFindTheSamePeople) {
     // shift finds 42 of them again, the resized frames 38, 43, 45 and 39 (512x424, 848x480, 1280x720,
     // 512x384) with 9, 2, 2 and 7 other detections and 42, 44, 44 and 41 labelled people: 512x424 stays 4
     // below the shift's floor, 848x480 is above it, 512x384 loses 3 more than under v2 (42 of 46).
+    // With the height limit at detection (2026-12-06): the originals give 44 (the lab's false positive, a tall
+    // object, is gone), found again 37, 42, 44 and 38 with 7, 2, 1 and 5 other detections: every size loses
+    // the same detections as before and that false positive besides.
     const bool stretched_kinect2 = size == cv::Size(512, 424), square = size == cv::Size(512, 384);
-    EXPECT_EQ(people, 45);
-    EXPECT_GE(found, stretched_kinect2 ? 38 : square ? 39 : 43) << size;
+    EXPECT_EQ(people, 44);
+    EXPECT_GE(found, stretched_kinect2 ? 37 : square ? 38 : 42) << size;
     EXPECT_GE(truth_found_resized, 41) << size;
     EXPECT_LE(extra, stretched_kinect2 ? 13 : square ? 8 : 6) << size;
   }

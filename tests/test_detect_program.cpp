@@ -52,11 +52,17 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "frame,candidate,x,y,w,h,depth_mm,score");
   // The fitted box: the slab's extent (300, 40 wide) widened about its centre to 0.3 of its height.
   EXPECT_NE(csv.find("scene,0,266,100,108,360,2000,\n"), std::string::npos) << csv;
-  EXPECT_EQ(count_lines(csv), 1 + 3);  // header, the person, two wall pieces
+  // Header and the person: the two wall pieces either side, 480 px tall at 6 m (5.5 m at their own depth),
+  // are taller than any person (--max-height, 250 cm by default); --max-height 0 keeps them.
+  EXPECT_EQ(count_lines(csv), 1 + 1) << csv;
   const cv::Mat picture = cv::imread(dir / "pics/scene.detections.png");
   ASSERT_FALSE(picture.empty());
   EXPECT_EQ(picture.size(), cv::Size(640, 480));
   EXPECT_FALSE(std::filesystem::exists(dir / "out.csv.partial"));
+  const test::RunResult all = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
+                                        test::quote(dir / "all.csv") + " --max-height 0");
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_EQ(count_lines(test::file_text(dir / "all.csv")), 1 + 3);
 }
 
 // The camera options (cli::CameraOptions) reach the frame analyser: a calibration that makes the Kinect v1's
@@ -68,7 +74,7 @@ TEST(DetectProgram, CameraOptionsReachTheAnalyser) {
   write_scene(dir);
   const auto csv_with = [&](const std::string& name, const std::string& options) {
     const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
-                                        test::quote(dir / name) + " " + options);
+                                        test::quote(dir / name) + " --max-height 0 " + options);
     EXPECT_EQ(r.exit_code, 0) << options << "\n" << r.err;
     return test::file_text(dir / name);
   };
@@ -98,7 +104,7 @@ TEST(DetectProgram, WithoutAModelTheDefaultModelRuns) {
   EXPECT_NE(r.err.find("people at P >= 0.27 (its operating point)"), std::string::npos) << r.err;
   const std::string csv = test::file_text(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')).find("frame,candidate,x,y,w,h,depth_mm,score,"), 0u) << csv;
-  EXPECT_EQ(count_lines(csv), 1 + 3);
+  EXPECT_EQ(count_lines(csv), 1 + 1);  // the person; the wall pieces are too tall (--max-height)
   const test::RunResult both = test::run(program + " --source x --out y.csv --candidates-only --model people");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_NE(both.err.find("exclude each other"), std::string::npos) << both.err;
@@ -329,7 +335,7 @@ TEST(DetectProgram, ThreadCountDoesNotChangeTheCsv) {
   test::write_two_person_frames(dir / "frames");
   const std::string model = std::string(RDSF_SOURCE_DIR) + "/tests/reference_models/rdsf-model-v2-tree.yml";
   const std::string base = test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "frames") +
-                           " --model " + test::quote(model) + " --score-threshold -1000";
+                           " --model " + test::quote(model) + " --score-threshold -1000 --max-height 0";
   std::string first;
   for (const char* threads : {"1", "2", "3"}) {
     const std::string out = dir / (std::string("t") + threads + ".csv");
@@ -353,7 +359,8 @@ TEST(DetectProgram, LiveModePrintsDropsAndLatency) {
   test::TempDir dir;
   test::write_two_person_frames(dir / "frames");
   const std::string base = detect() + " --source " + test::quote(dir / "frames");
-  const test::RunResult r = test::run(base + " --live --threads 2 --fps 100 --out " + test::quote(dir / "live.csv"));
+  const test::RunResult r =
+      test::run(base + " --live --threads 2 --fps 100 --max-height 0 --out " + test::quote(dir / "live.csv"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("rdsf-detect: live: 2 frames arrived"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("paced by --fps"), std::string::npos) << r.err;

@@ -1,5 +1,6 @@
 // An object's height at its own depth and the limit CandidateParams::max_height_cm puts on candidates
-// (include/rdsf/candidates/object_height.hpp; docs/candidates.md, "A person's height at their own depth").
+// (include/rdsf/candidates/object_height.hpp; docs/candidates.md, "A person's height at their own depth"),
+// which the detector sets from PipelineParams::max_person_height_cm (on by default) and mining leaves off.
 #include <gtest/gtest.h>
 
 #include "rdsf/analysis/frame_analyser.hpp"
@@ -7,6 +8,7 @@
 #include "rdsf/candidates/object_height.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/frame_source.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
 
@@ -73,6 +75,14 @@ TEST(ObjectHeight, ADoorFrameIsDroppedAndThePersonBesideItKept) {
     EXPECT_TRUE(same);
   }
   EXPECT_EQ(on.size() + 1 + count_at(off, 6000) - count_at(on, 6000), off.size());
+  // The detector drops the post by default (PipelineParams::max_person_height_cm 250); 0 (the thesis) keeps
+  // it; the analyser the miner and the labeler use keeps it, so training sees every candidate.
+  PipelineParams detector;
+  EXPECT_EQ(detector.max_person_height_cm, 250.0);
+  EXPECT_EQ(count_at(PeoplePipeline(detector, nullptr).analyse(frame).analysis.candidates, 3500), 0);
+  detector.max_person_height_cm = 0;
+  EXPECT_EQ(count_at(PeoplePipeline(detector, nullptr).analyse(frame).analysis.candidates, 3500), 1);
+  EXPECT_EQ(count_at(FrameAnalyser().analyse(frame, false).candidates, 3500), 1);
 }
 
 // On the real people frames the limit drops candidates (walls, shelves) but no person's: every labelled

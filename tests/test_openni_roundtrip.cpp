@@ -245,9 +245,11 @@ TEST(OpenNIRoundTrip, DetectorReadsARecordingLikeAnyOtherSource) {
   write_sequence(dir / "png", 3, false);
   ASSERT_EQ(record("--device " + test::quote(device_uri(dir / "png")) + " --frames 3 --out " +
                    test::quote(dir / "take.oni")).exit_code, 0);
-  // The noise pattern makes one object wider than any person: keep it (max_object_width 0) so frames have rows.
+  // The noise pattern makes one object wider and taller than any person: keep it (max_object_width 0,
+  // max-height 0) so frames have rows.
   const auto r = test::run(test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "take.oni") +
-                           " --candidates-only --max_object_width 0 --out " + test::quote(dir / "out.csv"));
+                           " --candidates-only --max_object_width 0 --max-height 0 --out " +
+                           test::quote(dir / "out.csv"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // The CSV names each frame of the recording: 0, 1, 2.
   std::ifstream csv(dir / "out.csv");

@@ -89,11 +89,6 @@ const ParameterTable<CandidateParams>& candidate_parameters() {
       parameter("max-object-width", &P::max_object_width_cm,
                 "objects wider than this (cm) are walls, not candidates; 0 = thesis (no limit)",
                 Range::at_least(0), std::optional<double>(0.0)),
-      parameter("max-height", &P::max_height_cm,
-                "objects taller than this (cm) at their own depth (the median of their crop's readings) "
-                "are not candidates: door frames, curtains, a person merged with what stands above them "
-                "(250 turns it on); 0 = off, the thesis",
-                Range::at_least(0), std::optional<double>(0.0)),
       parameter("max-person-width", &P::max_person_width_cm,
                 "the widest person (cm): wider objects are tried for splitting by depth jumps, valleys "
                 "and steps, narrower pieces joined", Range::at_least(0)),

@@ -13,6 +13,11 @@ const ParameterTable<PipelineParams>& decision_parameters() {
                 "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right, "
                 "except with a model adapted to a room by rdsf-adapt (0: the crop alone, the thesis's way)",
                 {}, std::optional<bool>(false)),
+      parameter("max-height", &P::max_person_height_cm,
+                "no person is taller than this (cm) at their own depth (the median of the candidate's crop's "
+                "readings): taller candidates (door frames, curtains, far walls) are dropped before scoring; "
+                "detection only, never mining or labelling (0 = off, the thesis)",
+                Range::at_least(0), std::optional<double>(0.0)),
       parameter("suppress-duplicates", &P::suppress_duplicates,
                 "of a whole object and a piece cut out of it that both pass the threshold only the higher-scoring "
                 "one is a person (0: both; with --split-head-keep-whole 1 or --split-keep-whole 1)"),

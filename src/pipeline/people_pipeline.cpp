@@ -25,8 +25,19 @@ bool PipelineParams::mirror_average_for(const BoostedModel& model) const {
   return mirror_average && !model.training().adapted_to_a_room();
 }
 
+namespace {
+
+// The analyser's parameters with the detector's height limit (PipelineParams::max_person_height_cm).
+AnalyserParams with_height_limit(AnalyserParams analyser, double max_person_height_cm) {
+  analyser.candidates.max_height_cm = max_person_height_cm;
+  return analyser;
+}
+
+}  // namespace
+
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
-    : params_(params), model_(model), analyser_(params.analyser), tracker_(params.tracking) {
+    : params_(params), model_(model), analyser_(with_height_limit(params.analyser, params.max_person_height_cm)),
+      tracker_(params.tracking) {
   if (model_ == nullptr) return;
   check_model_fits(*model_, params_.analyser);
   scorer_.emplace(*model_);

@@ -195,15 +195,10 @@ struct CandidateParams {
   double min_fitted_width_cm = 15.0;
   /// Objects wider than this over their passing columns (cm) are walls, not candidates. 0 turns it off.
   double max_object_width_cm = 400.0;
-  /// Objects taller than this (cm) at their own depth (object_height.hpp: the strict box's height at the
-  /// median of the depth crop's readings, not the layer's mean depth) are not candidates: no person is, and
-  /// door frames, curtains, tall furniture and a person joined with what stands above them are. 0 turns it
-  /// off, the default. 250 (a 2 m person's raised hand) turns it on: with people/v2 rdsf-detect --truth
-  /// measured TAR at FPPF <= 0.1 on three sets of 16 synthetic rooms 0.677 -> 0.686 (seed 81, the set the
-  /// rule was tried on), 0.741 -> 0.758 (seed 91, rendered after) and 0.771 -> 0.776 (seed 31), the UC3M lab
-  /// 24 -> 25 of 27 people and the home 19 of 22 either way, with a third fewer candidates. Off: a model
-  /// retrained on its candidates lost 5 of the home's 22 people (docs/quality.md, "A person's height at
-  /// their own depth").
+  /// Objects taller than this (cm) at their own depth (object_height.hpp) are not candidates; 0: off. Not a
+  /// user's option here: PeoplePipeline sets it from PipelineParams::max_person_height_cm (rdsf-detect's
+  /// --max-height, a decision of the detector), and mining and labelling leave it 0, so training sees every
+  /// candidate (a model trained without the tall ones lost the UC3M home's people; docs/quality.md).
   double max_height_cm = 0.0;
   /// The widest a person is expected to be (cm, arms akimbo): wider objects are tried for splitting by
   /// depth jumps, valleys and steps (split), narrower pieces may be joined (join).
