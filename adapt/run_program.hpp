@@ -11,7 +11,8 @@ namespace rdsf {
 std::string sibling_program(const std::string& name);
 
 /// Runs `program` with `args`; its stderr (and stdout) go to `log` (appended), after a line "$ PROGRAM ARGS"
-/// (the command, quoted for a shell), unless `log` is empty (then they stay the terminal's). Returns the exit code; throws Error when it cannot be started or was killed.
+/// (the command, quoted for a shell), unless `log` is empty (then they stay the terminal's). Returns the exit
+/// code; throws Error when it cannot be started or was killed.
 int run_program(const std::string& program, const std::vector<std::string>& args, const std::string& log);
 
 /// The lines of `log` that start with `prefix` ("rdsf-label: "), the last `count` of them.

@@ -75,9 +75,9 @@ struct PipelineParams {
   bool colour_crops_of_all = false;
 };
 
-/// The table of the PipelineParams a user sets (core/parameter_table.hpp): --threshold, --mirror-average
-/// and --max-height (whose thesis values, off, --thesis applies) and --suppress-duplicates. score_threshold (optional, no
-/// default) is cli::add_decision_options' own option.
+/// The table of the PipelineParams a user sets (core/parameter_table.hpp): --threshold, --mirror-average and
+/// --max-height (whose thesis values, off, --thesis applies) and --suppress-duplicates. score_threshold
+/// (optional, no default) is cli::add_decision_options' own option.
 const ParameterTable<PipelineParams>& decision_parameters();
 
 struct PipelineFrame {
