@@ -143,7 +143,10 @@ TEST(PeopleDetector, NoThresholdGivenReadsTheModelAtItsOperatingPoint) {
   EXPECT_EQ(given.probability_threshold_for(model), sorted.front() / 2);
   EXPECT_EQ(given.decision_text(model).find("operating point"), std::string::npos) << given.decision_text(model);
   given.score_threshold = 0.0;
+  EXPECT_EQ(given.decision_text(model), "people at H(x) >= 0.00, none taller than 250 cm");
+  given.max_person_height_cm = 0;  // the limit off (--max-height 0, --thesis): not said
   EXPECT_EQ(given.decision_text(model), "people at H(x) >= 0.00");
+  given.max_person_height_cm = 250;
   given.score_threshold.reset();
   EXPECT_GT(PeopleDetector(model, given).detect(frame).size(), expected);
 }

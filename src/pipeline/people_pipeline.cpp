@@ -18,7 +18,12 @@ std::string PipelineParams::decision_text(const BoostedModel& model) const {
     std::snprintf(text, sizeof text, "people at P >= %.2f%s", probability_threshold_for(model),
                   stated ? " (its operating point)" : "");
   }
-  return text;
+  std::string out = text;
+  if (max_person_height_cm > 0.0) {
+    std::snprintf(text, sizeof text, ", none taller than %.0f cm", max_person_height_cm);
+    out += text;
+  }
+  return out;
 }
 
 bool PipelineParams::mirror_average_for(const BoostedModel& model) const {

@@ -36,7 +36,8 @@ struct PipelineParams {
     return score_threshold ? *score_threshold : model.calibration().score_at(probability_threshold_for(model));
   }
   /// Where `model` is read, as the programs say it: "people at P >= 0.27 (its operating point)", "people at
-  /// P >= 0.60" (a threshold given), "people at H(x) >= 0.00" (the thesis's score threshold).
+  /// P >= 0.60" (a threshold given), "people at H(x) >= 0.00" (the thesis's score threshold); with the
+  /// height limit on, ", none taller than 250 cm" follows.
   std::string decision_text(const BoostedModel& model) const;
   /// Compute every feature of every candidate, then score (the thesis's way, and analysis.features is
   /// filled). Off (default): only the features the model reads (ModelScorer), same scores bit for bit.
