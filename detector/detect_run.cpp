@@ -284,8 +284,7 @@ void evaluate_models(const DetectOptions& o, const std::vector<BoostedModel>& mo
   std::vector<SweepResult> results;
   for (std::size_t m = 0; m < models.size(); ++m) {
     const BoostedModel& model = models[m];
-    const double operating = o.pipeline.score_threshold ? model.probability(*o.pipeline.score_threshold)
-                                                        : o.pipeline.probability_threshold_for(model);
+    const double operating = o.pipeline.probability_threshold_for(model);
     results.push_back(sweep_thresholds(handler.evaluated[m], truth, o.thresholds, o.pipeline.tracking,
                                        model_label(model), model.calibration(), operating));
     results.back().fps = wall_s > 0 ? static_cast<double>(handler.frames) / wall_s : 0.0;

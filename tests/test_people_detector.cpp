@@ -143,6 +143,7 @@ TEST(PeopleDetector, NoThresholdGivenReadsTheModelAtItsOperatingPoint) {
   EXPECT_EQ(given.probability_threshold_for(model), sorted.front() / 2);
   EXPECT_EQ(given.decision_text(model).find("operating point"), std::string::npos) << given.decision_text(model);
   given.score_threshold = 0.0;
+  EXPECT_EQ(given.probability_threshold_for(model), model.probability(0.0));  // the score threshold's P
   EXPECT_EQ(given.decision_text(model), "people at H(x) >= 0.00, none taller than 250 cm");
   given.max_person_height_cm = 0;  // the limit off (--max-height 0, --thesis): not said
   EXPECT_EQ(given.decision_text(model), "people at H(x) >= 0.00");

@@ -27,8 +27,10 @@ struct PipelineParams {
   double probability_threshold = 0.0;
   /// When set, a candidate is a person when H(x) >= this instead: the thesis's threshold_classifier.
   std::optional<double> score_threshold;
-  /// The P(person) threshold these mean for `model` (probability_threshold, or its operating point).
+  /// The P(person) threshold these mean for `model`: the score threshold's probability when one is given,
+  /// else probability_threshold, or its operating point.
   double probability_threshold_for(const BoostedModel& model) const {
+    if (score_threshold) return model.probability(*score_threshold);
     return probability_threshold > 0.0 ? probability_threshold : model.operating_probability();
   }
   /// The score threshold these mean for `model`.
