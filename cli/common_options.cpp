@@ -44,4 +44,15 @@ void add_propagate_model_option(po::options_description& group, bool& from_model
                       "before the first question; u does not undo them");
 }
 
+void add_evaluation_options(po::options_description& group, double& min_visible, int& clip_frames) {
+  group.add_options()
+      ("min-visible", po::value(&min_visible)->default_value(min_visible)->notifier([](double f) {
+        if (!(f >= 0.0 && f <= 1.0)) throw UsageError("--min-visible is a fraction in [0, 1], got " + std::to_string(f));
+      }), "evaluation: people with visible_fraction below this are don't-care (no miss, no false positive)")
+      ("clip-frames", po::value(&clip_frames)->default_value(clip_frames)->notifier([](int n) {
+        if (n < 1) throw UsageError("--clip-frames must be 1 or more, got " + std::to_string(n));
+      }), "evaluation: frames named by number form clips of this many (rdsf-synth's --clip-frames: a room each); "
+          "other names by their stem (lab_juggling2: lab_juggling). TAR's 95 % intervals over clips, clips.csv");
+}
+
 }  // namespace rdsf::cli

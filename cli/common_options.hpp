@@ -11,6 +11,8 @@
 //                     is the library's (PropagationParams::per_place).
 //   --propagate-model-answers on|off  the model's sure answers followed along their tracks too (rdsf-label
 //                     --per-track, rdsf-adapt); the default is the library's (PropagationParams::from_model).
+//   --min-visible F, --clip-frames N  the evaluation against boxes.csv (rdsf-detect, rdsf-pcl-people):
+//                     don't-care people, and the clips of the intervals over clips (clip_bootstrap.hpp).
 #include <string>
 
 #include <boost/program_options.hpp>
@@ -36,5 +38,9 @@ void add_threads_option(boost::program_options::options_description& group, int&
 void add_per_place_option(boost::program_options::options_description& group, bool& per_place);
 /// --propagate-model-answers on|off bound to `from_model` (PropagationParams::from_model).
 void add_propagate_model_option(boost::program_options::options_description& group, bool& from_model);
+
+/// --min-visible F and --clip-frames N bound to `min_visible` and `clip_frames` (their values now are the
+/// defaults shown); F outside [0, 1] or N < 1 is a UsageError.
+void add_evaluation_options(boost::program_options::options_description& group, double& min_visible, int& clip_frames);
 
 }  // namespace rdsf::cli

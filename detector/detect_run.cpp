@@ -286,7 +286,7 @@ void evaluate_models(const DetectOptions& o, const std::vector<BoostedModel>& mo
     const BoostedModel& model = models[m];
     const double operating = o.pipeline.probability_threshold_for(model);
     results.push_back(sweep_thresholds(handler.evaluated[m], truth, o.thresholds, o.pipeline.tracking,
-                                       model_label(model), model.calibration(), operating));
+                                       model_label(model), model.calibration(), operating, o.clip_frames));
     results.back().fps = wall_s > 0 ? static_cast<double>(handler.frames) / wall_s : 0.0;
     // What the model file's validation predicted at (the kept level nearest) the operating probability.
     for (const ProbabilityPoint& p : model.training().validation.by_probability) {

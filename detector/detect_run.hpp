@@ -24,6 +24,7 @@ struct DetectOptions {
   std::string report_dir;  ///< where the evaluation goes
   std::vector<double> thresholds;  ///< the sweep
   double min_visible = 0.5;        ///< people less visible than this are "don't care" in the evaluation
+  int clip_frames = 100;           ///< numbered frames per clip of the intervals over clips (clip_bootstrap.hpp)
   CameraModel camera;
   FrameSourceOptions frames;  ///< the camera model above, whether it was given, a bag's topics
   PipelineParams pipeline;

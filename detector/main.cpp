@@ -40,9 +40,8 @@ int main(int argc, char** argv) {
         ("thresholds", po::value(&thresholds),
          "evaluation tables at these P(person) thresholds: 0.3,0.5,0.7 or from:to:step (default 0.01 0.02 0.05 "
          "0.1 ... 0.95 0.98 0.99); the ROC and DET curves are exact (every distinct score)")
-        ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible),
-         "evaluation: people with visible_fraction below this are don't-care (no miss, no false positive)")
         ("force", po::bool_switch(&o.force), "replace an existing --out file or report");
+    rdsf::cli::add_evaluation_options(options, o.min_visible, o.clip_frames);
     rdsf::cli::add_threads_option(options, o.threads, "threads analysing frames",
                                   "tracking stays in frame order, results do not depend on it");
     options.add_options()

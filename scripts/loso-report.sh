@@ -110,7 +110,7 @@ evaluate() {
     case "$set" in synthetic*) ;; *) inputs+=("$(source_of "$set")") ;; esac
     key="$(cat "${inputs[@]}" | md5sum | cut -c1-12) $stamp"
     [ -f "$dir/$set/summary.md" ] && [ "$(cat "$dir/$set/.command" 2>/dev/null)" = "$key" ] && continue
-    "$detect" --source "$(source_of "$set")" --truth "$(truth_of "$set")" --report-dir "$dir/$set" \
+    "$detect" --source "$(source_of "$set")" --truth "$(truth_of "$set")" --report-dir "$dir/$set" --clip-frames 60 \
       --models-dir "$models_dir" "${args[@]}" "${opts[@]}" --force >/dev/null 2>"$logs/detect.log" ||
       { cat "$logs/detect.log" >&2; exit 1; }
     echo "$key" > "$dir/$set/.command"

@@ -87,7 +87,7 @@ train_recipe treeLast "$sets/negatives" "$sets/hard-negatives" "$sets/people"
 
 step 5 "evaluate on the held-out synthetic sequence$([ -n "$real" ] && [ -f "$real/boxes.csv" ] && echo ' and on real frames')"
 evaluate() {  # source, truth, report folder
-  "$detect" --source "$1" --truth "$2" --report-dir "$3" --models-dir "$models" \
+  "$detect" --source "$1" --truth "$2" --report-dir "$3" --models-dir "$models" --clip-frames 60 \
     --model tree --model tree2 --model hugeTree --model treeLast --save-dir "$3/frames" \
     >/dev/null
 }

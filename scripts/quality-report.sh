@@ -130,7 +130,7 @@ evaluate() {  # report folder, models...
   # The evaluation sets run side by side (rdsf-detect is one process per set).
   local pids=() names=()
   one() {  # name, source, truth
-    "$detect" --source "$2" --truth "$3" --report-dir "$dir/$1" --models-dir "$models" \
+    "$detect" --source "$2" --truth "$3" --report-dir "$dir/$1" --models-dir "$models" --clip-frames 60 \
       "${args[@]}" --force >/dev/null 2>"$logs/detect-$1.log" &
     pids+=($!) names+=("$1")
   }

@@ -1,6 +1,7 @@
 // rdsf-pcl-people: the peer row of the quality report. PCL's ground-based people detector on frames with
 // colour, the floor fitted per recording, written as rdsf-detect's CSV and evaluated with its figures.
 #include "cli/cli.hpp"
+#include "cli/common_options.hpp"
 #include "pcl_people_run.hpp"
 
 #ifndef RDSF_PCL_SVM_FILE
@@ -30,8 +31,8 @@ int main(int argc, char** argv) {
         ("min-height", po::value(&o.min_height_m)->default_value(o.min_height_m), "smallest person cluster height, m")
         ("max-height", po::value(&o.max_height_m)->default_value(o.max_height_m), "largest person cluster height, m")
         ("voxel-size", po::value(&o.voxel_size_m)->default_value(o.voxel_size_m), "voxel grid leaf, m")
-        ("min-visible", po::value(&o.min_visible)->default_value(o.min_visible), "evaluation: people less visible than this are don't-care")
         ("ground-max-tilt", po::value(&o.ground.max_tilt_deg)->default_value(o.ground.max_tilt_deg), "the floor's normal within this of the camera's y axis, degrees");
+    rdsf::cli::add_evaluation_options(options, o.min_visible, o.clip_frames);
     rdsf::cli::CameraOptions camera(options, o.camera);
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;

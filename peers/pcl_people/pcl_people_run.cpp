@@ -159,7 +159,7 @@ void evaluate(const PclPeopleOptions& o, const std::vector<DepthFrame>& frames,
   const ScoreCalibration calibration;  // "none": P = 1 / (1 + exp(-2 c))
   std::vector<SweepResult> results{sweep_thresholds(evaluated, truth, default_probability_thresholds(), tracking,
                                                     "PCL ground-based HOG+SVM", calibration,
-                                                    calibration.probability(o.min_confidence))};
+                                                    calibration.probability(o.min_confidence), o.clip_frames)};
   results.back().fps = fps;
   std::cout << write_evaluation_report(results, o.report_dir);
 }

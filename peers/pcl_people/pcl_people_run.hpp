@@ -33,6 +33,7 @@ struct PclPeopleOptions {
   double min_width_m = 0.1, max_width_m = 8.0;
   double voxel_size_m = 0.06;
   double min_visible = 0.5;
+  int clip_frames = 100;  ///< numbered frames per clip of the intervals over clips (clip_bootstrap.hpp)
   CameraModel camera;
   GroundParams ground;
 };

@@ -11,12 +11,12 @@ namespace {
 
 constexpr double kMinIou = 0.5;
 
+}  // namespace
+
 bool has_candidate(const FrameCandidates& frame, const cv::Rect& person) {
   return std::any_of(frame.candidates.begin(), frame.candidates.end(),
                      [&](const ScoredCandidate& c) { return iou(c.box, person) >= kMinIou; });
 }
-
-}  // namespace
 
 std::vector<char> duplicates_of(const FrameCandidates& frame) {
   std::vector<CandidateKin> kin;

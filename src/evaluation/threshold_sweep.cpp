@@ -49,6 +49,12 @@ RateInterval SweepResult::tar_interval_at_fppf(double max_fppf) const {
   return best != nullptr ? wilson_interval(best->n_det, best->n_people) : RateInterval{};
 }
 
+const ClipInterval& SweepResult::clip_interval_at_fppf(double max_fppf) const {
+  if (max_fppf == 0.1) return clip_interval_01;
+  if (max_fppf == 0.5) return clip_interval_05;
+  throw Error("clip intervals are kept at FPPF <= 0.1 and 0.5, not " + std::to_string(max_fppf));
+}
+
 double SweepResult::candidate_recall() const {
   const long people = operating.all.n_people;
   return people > 0 ? static_cast<double>(people - segmentation_errors) / static_cast<double>(people) : 0.0;
@@ -152,7 +158,7 @@ CandidateFigures classifier_figures(const std::vector<FrameCandidates>& scored, 
 SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const GroundTruth& truth,
                              const std::vector<double>& probabilities, const TrackingParams& tracking,
                              const std::string& model_label, const ScoreCalibration& calibration,
-                             double operating_probability) {
+                             double operating_probability, int clip_frames) {
   SweepResult result;
   result.model = model_label;
   result.operating_probability = operating_probability;
@@ -168,6 +174,11 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
   result.curve = exact_detection_curve(scored, truth, false);
   for (const DetectionFigures& f : result.curve) result.curve_probability.push_back(calibration.probability(f.threshold));
   result.candidates = classifier_figures(scored, truth, calibration.score_at(operating_probability));
+  const ClipResampler by_clip(scored, truth, clip_frames);
+  result.clip_frames = clip_frames;
+  result.clips = by_clip.figures(calibration.score_at(operating_probability));
+  result.clip_interval_01 = by_clip.interval(0.1);
+  result.clip_interval_05 = by_clip.interval(0.5);
   return result;
 }
 
@@ -229,6 +240,30 @@ void write_curve_csv(const std::vector<SweepResult>& results, const std::filesys
   curve_csv.commit();
 }
 
+// "95 % intervals of TAR at FPPF <= 0.1 / 0.5 over the 16 clips: 0.55-0.86, 0.60-0.90", or why there are none.
+std::string clip_interval_text(const ClipInterval& at01, const ClipInterval& at05) {
+  if (!at01.known()) return "one clip: no interval over clips (one scene says nothing of other rooms)";
+  char text[240];
+  std::snprintf(text, sizeof text, "95 %% intervals of TAR at FPPF <= 0.1 / 0.5 over the %d clips: %.2f-%.2f, %.2f-%.2f%s",
+                at01.clips, at01.interval.low, at01.interval.high, at05.interval.low, at05.interval.high,
+                at01.few() ? " (few clips: a bootstrap over so few understates the spread; read the wider interval)" : "");
+  return text;
+}
+
+// "Clips with the fewest people found at the operating point: #4 4 of 32 (4 with a candidate), ..."
+std::string weakest_clips_text(std::vector<ClipFigures> clips, std::size_t most) {
+  clips.erase(std::remove_if(clips.begin(), clips.end(), [](const ClipFigures& c) { return c.people == 0; }), clips.end());
+  const auto found = [](const ClipFigures& c) { return static_cast<double>(c.detected) / static_cast<double>(c.people); };
+  std::stable_sort(clips.begin(), clips.end(), [&](const ClipFigures& a, const ClipFigures& b) { return found(a) < found(b); });
+  std::string text = "Clips with the fewest people found at the operating point (clips.csv has each):";
+  for (std::size_t i = 0; i < clips.size() && i < most; ++i) {
+    text += (i ? ", " : " ") + clips[i].clip + " " + std::to_string(clips[i].detected) + " of " +
+            std::to_string(clips[i].people) + " (" + std::to_string(clips[i].with_candidate) + " with a candidate, " +
+            std::to_string(clips[i].false_positives) + (clips[i].false_positives == 1 ? " false positive)" : " false positives)");
+  }
+  return text;
+}
+
 // One model's part of summary.txt: its tables, best MOTA, the exact curve and the operating point.
 void write_model_summary(std::ostream& out, const SweepResult& r) {
   const SweepRow& best = r.best_mota();
@@ -247,7 +282,8 @@ void write_model_summary(std::ostream& out, const SweepResult& r) {
                 "%.3f at FPPF <= 0.5 (95 %% intervals over the %ld people: %.2f-%.2f, %.2f-%.2f)\n",
                 best.mot.mota(), best.probability, best.mot.motp(), best.mot.mismatches, r.tar_at_fppf(0.1),
                 r.tar_at_fppf(0.5), r.operating.all.n_people, tar01.low, tar01.high, tar05.low, tar05.high);
-  out << line;
+  out << line << " By clip: " << clip_interval_text(r.clip_interval_01, r.clip_interval_05) << "\n";
+  out << " " << weakest_clips_text(r.clips, 3) << "\n";
   std::snprintf(line, sizeof line,
                 " At the operating point P >= %.2f: TAR %.3f, FPPF %.3f, MOTA %.3f. Classifier on the %ld + %ld "
                 "candidates: AUC %.4f, TAR %.3f, FAR %.3f",
@@ -270,8 +306,8 @@ void write_summary_md(const std::vector<SweepResult>& results, const std::filesy
   AtomicTextFile table((folder / "summary.md").string(), true);
   table.stream() << "| model | TAR at FPPF <= 0.1 | TAR at FPPF <= 0.5 | best MOTA (P >=) | MOTP | candidate recall | "
                     "candidate AUC | TAR at P >= op: validation / held-out (gap; held-out 95 % interval) | fps | "
-                    "TAR at FPPF <= 0.1 / 0.5: 95 % interval over the people |\n"
-                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+                    "TAR at FPPF <= 0.1 / 0.5: 95 % interval over the people | ... over clips (clips) |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const SweepResult& r : results) {
     const SweepRow& best = r.best_mota();
     char validation[128] = "no validation";
@@ -281,17 +317,37 @@ void write_summary_md(const std::vector<SweepResult>& results, const std::filesy
                     r.candidates.tar_interval.high);
     }
     const RateInterval tar01 = r.tar_interval_at_fppf(0.1), tar05 = r.tar_interval_at_fppf(0.5);
-    char row[640];
+    char by_clip[96] = "one clip";
+    if (r.clip_interval_01.known()) {
+      std::snprintf(by_clip, sizeof by_clip, "%.2f-%.2f / %.2f-%.2f (%d%s)", r.clip_interval_01.interval.low,
+                    r.clip_interval_01.interval.high, r.clip_interval_05.interval.low, r.clip_interval_05.interval.high,
+                    r.clip_interval_01.clips, r.clip_interval_01.few() ? ", few" : "");
+    }
+    char row[720];
     std::snprintf(row, sizeof row,
                   "| %s | %.3f | %.3f | %.3f (%.2f) | %.1f | %.3f (%ld of %ld) | %.4f | %s at %.2f | %.1f | %.2f-%.2f / "
-                  "%.2f-%.2f |\n",
+                  "%.2f-%.2f | %s |\n",
                   r.model.c_str(), r.tar_at_fppf(0.1), r.tar_at_fppf(0.5), best.mot.mota(), best.probability,
                   best.mot.motp(), r.candidate_recall(), r.operating.all.n_people - r.segmentation_errors,
                   r.operating.all.n_people, r.candidates.auc, validation, r.operating_probability, r.fps, tar01.low,
-                  tar01.high, tar05.low, tar05.high);
+                  tar01.high, tar05.low, tar05.high, by_clip);
     table.stream() << row;
   }
   table.commit();
+}
+
+// clips.csv: every model's clips at its operating probability.
+void write_clips_csv(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
+  AtomicTextFile csv((folder / "clips.csv").string(), true);
+  csv.stream() << "model,clip_frames,probability,clip,frames,people,with_candidate,detected,false_positives\n";
+  for (const SweepResult& r : results) {
+    for (const ClipFigures& c : r.clips) {
+      csv.stream() << r.model << ',' << r.clip_frames << ',' << r.operating_probability << ',' << c.clip << ','
+                   << c.frames << ',' << c.people << ',' << c.with_candidate << ',' << c.detected << ','
+                   << c.false_positives << '\n';
+    }
+  }
+  csv.commit();
 }
 
 // roc.png and det.png: every model on one ROC and one DET chart, the operating threshold marked.
@@ -347,6 +403,7 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   const std::filesystem::path folder(dir);
   write_metrics_csv(results, folder);
   write_curve_csv(results, folder);
+  write_clips_csv(results, folder);
   std::ostringstream summary;
   for (const SweepResult& r : results) write_model_summary(summary, r);
   AtomicTextFile text((folder / "summary.txt").string(), true);

@@ -55,6 +55,9 @@ struct DetectionFigures {
 DetectionFigures detection_figures(const std::vector<FrameCandidates>& frames, const GroundTruth& truth,
                                    double threshold, bool without_segmentation_errors = false);
 
+/// Whether a candidate of `frame` overlaps `person` with IoU >= 0.5 (else a segmentation error).
+bool has_candidate(const FrameCandidates& frame, const cv::Rect& person);
+
 /// Number of people no candidate overlaps with IoU >= 0.5 (segmentation errors).
 long segmentation_errors(const std::vector<FrameCandidates>& frames, const GroundTruth& truth);
 

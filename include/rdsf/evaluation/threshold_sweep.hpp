@@ -6,7 +6,9 @@
 //     probability thresholds P(person) >= p, the tracker being rerun at each on the detections that pass;
 //   - the classifier alone on the recording's candidates (those covering a counted person with IoU >= 0.5
 //     are positives, those covering nobody negatives): AUC, and TAR / FAR at the operating probability,
-//     the figures a model file's validation predicts.
+//     the figures a model file's validation predicts;
+//   - by clip (clip_bootstrap.hpp): each clip's figures at the operating probability, and TAR at FPPF <= 0.1
+//     and 0.5 with a 95 % interval over clips, the spread from room to room that one over people hides.
 // Thresholds are probabilities; a score threshold is h = calibration.score_at(p).
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 
 #include "rdsf/classifier/platt_calibration.hpp"
 #include "rdsf/classifier/training_record.hpp"
+#include "rdsf/evaluation/clip_bootstrap.hpp"
 #include "rdsf/evaluation/clear_mot.hpp"
 #include "rdsf/evaluation/detection_metrics.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
@@ -76,6 +79,14 @@ struct SweepResult {
   RateInterval tar_interval_at_fppf(double max_fppf) const;
   /// People with a candidate (IoU >= 0.5) over people.
   double candidate_recall() const;
+  /// The frames per clip of numbered frames (clip_bootstrap.hpp).
+  int clip_frames = 0;
+  /// Each clip's figures at the operating probability, in order of their first frame.
+  std::vector<ClipFigures> clips;
+  /// TAR at FPPF <= 0.1 and <= 0.5: 95 % intervals over clips (ClipResampler::interval).
+  ClipInterval clip_interval_01, clip_interval_05;
+  /// clip_interval_01 or clip_interval_05 (Error for another max_fppf).
+  const ClipInterval& clip_interval_at_fppf(double max_fppf) const;
 };
 
 /// The default probability thresholds of the tables: 0.01, 0.02, 0.05, 0.10, ..., 0.95, 0.98, 0.99.
@@ -84,10 +95,10 @@ std::vector<double> default_probability_thresholds();
 SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const GroundTruth& truth,
                              const std::vector<double>& probabilities, const TrackingParams& tracking,
                              const std::string& model_label, const ScoreCalibration& calibration,
-                             double operating_probability);
+                             double operating_probability, int clip_frames);
 
-/// Writes metrics.csv (the tables), curve.csv (the exact curves), summary.txt, summary.md (one Markdown row
-/// per model), roc.png and det.png into `dir` (created when missing); returns the summary text (also what
+/// Writes metrics.csv (the tables), curve.csv (the exact curves), clips.csv (each clip at the operating
+/// probability), summary.txt, summary.md (one Markdown row per model), roc.png and det.png into `dir` (created when missing); returns the summary text (also what
 /// summary.txt holds).
 std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir);
 
