@@ -34,6 +34,7 @@ int run_synth(SynthOptions o) {
   cli::Progress progress(std::cerr, "frames", o.params.frames);
   long long boxes = 0;
   for (int i = 0; i < o.params.frames; ++i) {
+    if (i % o.params.clip_frames == 0) writer.add_clip(sequence.describe_clip(i / o.params.clip_frames));
     const synth::SynthFrame frame = sequence.frame(i);
     writer.write(frame);
     boxes += static_cast<long long>(frame.people.size());

@@ -50,6 +50,31 @@ TEST(SynthProgram, WritesAFrameSourceWithBoxesAndItsRecipe) {
   const std::string boxes = rdsf::test::file_text(out + "/boxes.csv");
   EXPECT_EQ(boxes.rfind("frame,person,x,y,w,h,visible_fraction,track\n", 0), 0U) << boxes;
   EXPECT_GT(count_lines(boxes), 1);
+  // clips.csv: one row per clip of 3 frames, each within the generator's ranges (room_generator.hpp).
+  std::istringstream clips(rdsf::test::file_text(out + "/clips.csv"));
+  std::string line;
+  std::getline(clips, line);
+  EXPECT_EQ(line, "clip,first_frame,room,room_width_m,front_wall_m,camera_height_m,pitch_deg,roll_deg,moving,"
+                  "noise_factor,eight_bit_step_mm,people,furniture_shapes");
+  int rows = 0;
+  while (std::getline(clips, line)) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    ASSERT_EQ(f.size(), 13U) << line;
+    EXPECT_EQ(std::stoi(f[0]), rows) << line;
+    EXPECT_EQ(std::stoi(f[1]), 3 * rows) << line;
+    EXPECT_TRUE(f[2] == "room" || f[2] == "corridor" || f[2] == "open-plan") << line;
+    EXPECT_GE(std::stod(f[5]), 0.5) << line;
+    EXPECT_LE(std::stod(f[5]), 1.6) << line;
+    EXPECT_LE(std::abs(std::stod(f[7])), 3.0) << line;
+    EXPECT_TRUE(f[8] == "0" || f[8] == "1") << line;
+    EXPECT_GE(std::stod(f[9]), 1.0) << line;
+    EXPECT_GE(std::stoi(f[11]), 2) << line;
+    EXPECT_LE(std::stoi(f[11]), 3) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 4);
   const std::string info = rdsf::test::file_text(out + "/synth.yml");
   EXPECT_NE(info.find("seed: 4"), std::string::npos) << info;
   EXPECT_NE(info.find("fx="), std::string::npos) << info;

@@ -38,21 +38,39 @@ TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
            "/negatives --rounds 100 --folds 4");
   const test::RunResult r = test::run(tool("rdsf-detect") + " --source " + d + "/test --truth " + d +
                                       "/test/boxes.csv --model system --models-dir " + d + "/models --report-dir " +
-                                      d + "/report --thresholds=0.01:0.99:0.01 --out " + d + "/detections.csv");
+                                      d + "/report --thresholds=0.01:0.99:0.01 --clip-frames 50 --out " + d + "/detections.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::cout << r.out;
-  for (const char* file : {"metrics.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
+  for (const char* file : {"metrics.csv", "clips.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
     EXPECT_TRUE(std::filesystem::exists(d + "/report/" + file)) << file;
   }
-  // summary.md's row ends with the 95 % intervals of TAR at FPPF <= 0.1 and 0.5 over the people.
+  // summary.md's row ends with the 95 % intervals of TAR at FPPF <= 0.1 and 0.5 over the people, then over
+  // the 3 clips (150 frames rendered in clips of 50; fewer than 10 clips are flagged "few").
   {
     std::ifstream md(d + "/report/summary.md");
     std::string header, rule, row;
     std::getline(md, header);
     std::getline(md, rule);
     std::getline(md, row);
-    EXPECT_NE(header.find("| TAR at FPPF <= 0.1 / 0.5: 95 % interval over the people |"), std::string::npos) << header;
-    EXPECT_TRUE(std::regex_search(row, std::regex(R"(\| [01]\.\d\d-[01]\.\d\d / [01]\.\d\d-[01]\.\d\d \|$)"))) << row;
+    EXPECT_NE(header.find("| TAR at FPPF <= 0.1 / 0.5: 95 % interval over the people | ... over clips (clips) |"),
+              std::string::npos)
+        << header;
+    EXPECT_TRUE(std::regex_search(
+        row, std::regex(R"(\| [01]\.\d\d-[01]\.\d\d / [01]\.\d\d-[01]\.\d\d \| [01]\.\d\d-[01]\.\d\d / [01]\.\d\d-[01]\.\d\d \(3, few\) \|$)")))
+        << row;
+  }
+  // The report's clips.csv joins the set's (rdsf-synth's) in scripts/clip-conditions.py: 3 clips, the
+  // people of the report's row, read by condition.
+  {
+    const test::RunResult conditions = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) +
+                                                 "/scripts/clip-conditions.py") + " " + d + "/test:" + d + "/report");
+    ASSERT_EQ(conditions.exit_code, 0) << conditions.err;
+    EXPECT_NE(conditions.out.find("3 clips of 1 sets, 100 people"), std::string::npos) << conditions.out;
+    EXPECT_NE(conditions.out.find("| camera | clips (with people) | people | candidate recall |"), std::string::npos) << conditions.out;
+    const test::RunResult wrong = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) +
+                                            "/scripts/clip-conditions.py") + " " + d + "/test:" + d + "/nothing");
+    EXPECT_EQ(wrong.exit_code, 1);
+    EXPECT_NE(wrong.err.find(d + "/nothing/clips.csv"), std::string::npos) << wrong.err;
   }
   // Best MOTA over the sweep, from metrics.csv (column 15, table "all").
   std::ifstream metrics(d + "/report/metrics.csv");

@@ -419,6 +419,7 @@ RoomKind draw_shell(Rng& rng, const RoomParams& params, Room& room) {
   RoomKind k;
   k.corridor = kind < params.corridor_share;
   k.open_plan = !k.corridor && kind < params.corridor_share + params.open_plan_share;
+  room.kind = k.corridor ? "corridor" : k.open_plan ? "open-plan" : "room";
   if (k.corridor) {
     room.front_z = rng.uniform(6.0, params.deep_front_max_m);
     room.left_x = -rng.uniform(0.8, 1.5);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "rdsf/synth/angle.hpp"
 #include "rdsf/synth/random.hpp"
 
 namespace rdsf::synth {
@@ -45,6 +46,26 @@ void SynthSequence::load_clip(int clip) {
         plan_people(people_rng, clip_.room, count, params_.clip_frames, first_track, params_.people,
                     clip_.camera.start);
   }
+}
+
+ClipDescription SynthSequence::describe_clip(int clip) {
+  load_clip(clip);
+  const CameraPose& start = clip_.camera.start;
+  ClipDescription d;
+  d.clip = clip;
+  d.first_frame = clip * params_.clip_frames;
+  d.room = clip_.room.kind;
+  d.room_width_m = clip_.room.right_x - clip_.room.left_x;
+  d.front_wall_m = clip_.room.front_z - start.z_m;
+  d.camera_height_m = start.height_m;
+  d.pitch_deg = start.pitch_rad * 180.0 / pi;
+  d.roll_deg = start.roll_rad * 180.0 / pi;
+  d.moving = clip_.camera.forward_mps != 0.0 || clip_.camera.yaw_rate_rad_s != 0.0;
+  d.noise_factor = clip_.profile.noise_factor;
+  d.eight_bit_step_mm = clip_.profile.eight_bit_step_mm;
+  d.people = static_cast<int>(clip_.tracks.size());
+  d.furniture_shapes = static_cast<int>(clip_.room.furniture.size());
+  return d;
 }
 
 void SynthSequence::build_scene(int index) {

@@ -1,5 +1,6 @@
 #include "rdsf/synth/synth_writer.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -41,7 +42,7 @@ void prepare_output_folder(const std::string& dir, bool force) {
   int foreign_frames = 0;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, ours) || name == "boxes.csv" || name == "synth.yml" ||
+    if (std::regex_match(name, ours) || name == "boxes.csv" || name == "clips.csv" || name == "synth.yml" ||
         name == CameraFile::kFileName) {
       our_files.push_back(entry.path());
     } else if (ends_with(name, ".depth.png") || ends_with(name, ".rgb.png")) {
@@ -57,7 +58,7 @@ void prepare_output_folder(const std::string& dir, bool force) {
     fail(dir,
          "holds " + std::to_string(foreign_frames) +
              " depth/colour images not named like rdsf-synth output; only NNNNNN.depth.png, NNNNNN.rgb.png, "
-             "boxes.csv, synth.yml and camera.yml are ever replaced: empty the folder yourself");
+             "boxes.csv, clips.csv, synth.yml and camera.yml are ever replaced: empty the folder yourself");
   }
   for (const fs::path& path : our_files) {
     fs::remove(path, ec);
@@ -69,6 +70,17 @@ SynthWriter::SynthWriter(std::string dir, const SynthParams& params, bool force)
     : dir_(std::move(dir)), params_(params), force_(force) {
   boxes_ = std::make_unique<AtomicTextFile>((fs::path(dir_) / "boxes.csv").string(), force_);
   boxes_->stream() << "frame,person,x,y,w,h,visible_fraction,track\n";
+  clips_ = std::make_unique<AtomicTextFile>((fs::path(dir_) / "clips.csv").string(), force_);
+  clips_->stream() << "clip,first_frame,room,room_width_m,front_wall_m,camera_height_m,pitch_deg,roll_deg,moving,"
+                      "noise_factor,eight_bit_step_mm,people,furniture_shapes\n";
+}
+
+void SynthWriter::add_clip(const ClipDescription& c) {
+  char row[256];
+  std::snprintf(row, sizeof row, "%d,%06d,%s,%.2f,%.2f,%.2f,%.1f,%.1f,%d,%.2f,%.1f,%d,%d\n", c.clip, c.first_frame,
+                c.room.c_str(), c.room_width_m, c.front_wall_m, c.camera_height_m, c.pitch_deg, c.roll_deg,
+                c.moving ? 1 : 0, c.noise_factor, c.eight_bit_step_mm, c.people, c.furniture_shapes);
+  clips_->stream() << row;
 }
 
 void SynthWriter::write(const SynthFrame& frame) {
@@ -153,6 +165,7 @@ void SynthWriter::commit(const std::string& command_line) {
   AtomicTextFile info((fs::path(dir_) / "synth.yml").string(), force_);
   info.stream() << describe(params_, command_line);
   info.commit();
+  clips_->commit();
   boxes_->commit();
 }
 

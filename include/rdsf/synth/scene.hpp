@@ -86,6 +86,7 @@ struct Seat {
 };
 
 struct Room {
+  const char* kind = "room";  ///< "room", "corridor" or "open-plan" (room_generator.hpp)
   double left_x = -3, right_x = 3, front_z = 6, back_z = -0.5, ceiling_y = 2.7;
   cv::Vec3b floor_colour{90, 110, 130}, wall_colour{200, 205, 210}, ceiling_colour{230, 230, 230};
   float floor_dropout = 0.05f, wall_dropout = 0.02f;

@@ -39,6 +39,24 @@ struct SynthFrame {
   DepthFrame depth_frame(const CameraModel& camera) const;
 };
 
+/// What a clip is (rdsf-synth's clips.csv): its room, the camera at the clip's first frame and whether it
+/// drives, the sensor's capture profile, and the people planned for it.
+struct ClipDescription {
+  int clip = 0;
+  int first_frame = 0;
+  std::string room;            ///< Room::kind
+  double room_width_m = 0;     ///< between the side walls
+  double front_wall_m = 0;     ///< from the camera's starting point along the room's depth
+  double camera_height_m = 0;
+  double pitch_deg = 0;        ///< downward tilt
+  double roll_deg = 0;
+  bool moving = false;         ///< the camera drives or turns during the clip
+  double noise_factor = 1;     ///< SensorProfile::noise_factor (Xtion-like clips above 1)
+  double eight_bit_step_mm = 0;  ///< SensorProfile::eight_bit_step_mm (0: 16-bit millimetres)
+  int people = 0;
+  int furniture_shapes = 0;    ///< solids of the furniture and clutter (a table is several)
+};
+
 class SynthSequence {
  public:
   /// Throws Error when `params` are impossible (SynthParams::validate).
@@ -52,6 +70,9 @@ class SynthSequence {
   /// The scene of frame `index` and its ideal rendering (for tests and benchmarks).
   const Scene& scene_of(int index);
   const RenderBuffers& render_ideal(int index);
+
+  /// Clip `clip` (0-based; frames clip * clip_frames onwards) as above.
+  ClipDescription describe_clip(int clip);
 
   /// "NNNNNN" for frame `index`.
   static std::string frame_name(std::int64_t index);

@@ -3,11 +3,15 @@
 //   DIR/NNNNNN.depth.png  16-bit depth in millimetres (0 = no reading)
 //   DIR/NNNNNN.rgb.png    registered colour (with rgb)
 //   DIR/boxes.csv         frame,person,x,y,w,h,visible_fraction,track - one row per visible person
+//   DIR/clips.csv         one row per clip (ClipDescription): room kind and size, the camera's height, pitch
+//                         and roll at the clip's first frame and whether it drives, the sensor profile's noise
+//                         factor and 8-bit step, people and furniture; to read detection figures by condition
+//                         (rdsf-detect's clips.csv has the same clips, named "#clip" with --clip-frames)
 //   DIR/synth.yml         how the set was made: seed, options, camera, sensor model
 //   DIR/camera.yml        the camera model (rdsf/frame/camera_file.hpp), only with a field of view (--fov);
 //                         without it readers scale the Kinect v1's model to the size, as the renderer does
-// Every file is written under a temporary name and renamed into place; boxes.csv and synth.yml appear
-// only when the whole set is written. A folder that already holds frames is refused unless `force`.
+// Every file is written under a temporary name and renamed into place; boxes.csv, clips.csv and synth.yml
+// appear only when the whole set is written. A folder that already holds frames is refused unless `force`.
 #include <memory>
 #include <string>
 
@@ -26,6 +30,8 @@ class SynthWriter {
   /// Call prepare_output_folder first.
   SynthWriter(std::string dir, const SynthParams& params, bool force);
   void write(const SynthFrame& frame);
+  /// One row of clips.csv; call once per clip, in order.
+  void add_clip(const ClipDescription& clip);
   /// Writes camera.yml (with a field of view) and synth.yml and puts boxes.csv in place.
   void commit(const std::string& command_line);
 
@@ -37,6 +43,7 @@ class SynthWriter {
   SynthParams params_;
   bool force_;
   std::unique_ptr<AtomicTextFile> boxes_;
+  std::unique_ptr<AtomicTextFile> clips_;
 };
 
 }  // namespace rdsf::synth
