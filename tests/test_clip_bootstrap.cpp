@@ -149,3 +149,47 @@ TEST(ClipBootstrap, EachClipsFiguresAtAThreshold) {
 }
 
 }  // namespace
+
+namespace {
+
+// Ten clips of 10 frames with one person each; `found(clip)` says whether the model finds the person in the
+// frames of that clip (a score of 1 on them), and every frame has a false positive scoring -1.
+ClipResampler model_finding(std::vector<FrameCandidates>& frames, GroundTruth& truth, bool (*found)(int)) {
+  frames.clear();
+  truth.frames.clear();
+  for (int i = 0; i < 100; ++i) add_frame(frames, truth, number(i), found(i / 10), 1.0, true, -1.0);
+  return ClipResampler(frames, truth, 10);
+}
+
+TEST(ClipBootstrap, PairedDifferenceOfTwoModelsOnTheSameClips) {
+  std::vector<FrameCandidates> frames;
+  GroundTruth truth;
+  // a finds the people of clips 0-5; b those of clips 0-6: b is 0.1 better, in one clip of ten.
+  const ClipResampler a = model_finding(frames, truth, [](int clip) { return clip <= 5; });
+  const ClipResampler b = model_finding(frames, truth, [](int clip) { return clip <= 6; });
+  const rdsf::ClipDifference d = rdsf::paired_difference(a, b, 0.1);
+  EXPECT_NEAR(d.difference, 0.1, 1e-12);
+  ASSERT_TRUE(d.interval.known());
+  EXPECT_EQ(d.interval.clips, 10);
+  // Paired, the rooms both models find hard cancel: the difference never goes below 0 and its interval is
+  // at most half as wide as either figure's own (a: 0.3-0.9).
+  EXPECT_GE(d.interval.interval.low, 0.0);
+  EXPECT_LE(d.interval.interval.high, 0.3 + 1e-9);  // a draw holds the one differing clip up to 3 times
+  const rdsf::RateInterval ia = a.interval(0.1).interval, ib = b.interval(0.1).interval;
+  EXPECT_LE(d.interval.interval.high - d.interval.interval.low, (ia.high - ia.low) / 2 + 1e-9)
+      << ia.low << "-" << ia.high;
+  EXPECT_GT(ib.high - ib.low, 0.3);
+  // A model against itself: 0, exactly.
+  const rdsf::ClipDifference same = rdsf::paired_difference(a, a, 0.5);
+  EXPECT_EQ(same.difference, 0.0);
+  EXPECT_EQ(same.interval.interval.low, 0.0);
+  EXPECT_EQ(same.interval.interval.high, 0.0);
+  // Evaluations of other frames are refused.
+  std::vector<FrameCandidates> other_frames;
+  GroundTruth other_truth;
+  for (int i = 0; i < 30; ++i) add_frame(other_frames, other_truth, number(i), true, 1.0, false, 0.0);
+  const ClipResampler other(other_frames, other_truth, 10);
+  EXPECT_THROW(rdsf::paired_difference(a, other, 0.1), rdsf::Error);
+}
+
+}  // namespace

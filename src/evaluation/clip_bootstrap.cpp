@@ -74,24 +74,30 @@ double ClipResampler::tar_at_fppf(const std::vector<int>& weights, double max_fp
   return best;
 }
 
-ClipInterval ClipResampler::interval(double max_fppf, int resamples, std::uint64_t seed) const {
+namespace {
+
+// The percentile bootstrap over clips shared by interval() and paired_difference(): `resamples` draws of as
+// many clips as there are, with replacement, from std::mt19937_64(seed); a draw whose clips hold nobody is
+// left out; `statistic(weights)` of each other draw; its 2.5 % and 97.5 % quantiles.
+template <class Statistic>
+ClipInterval bootstrap(const std::vector<long>& people, int resamples, std::uint64_t seed, Statistic statistic) {
   ClipInterval out;
-  out.clips = clips();
+  out.clips = static_cast<int>(people.size());
   if (out.clips < 2 || resamples < 1) return out;
   std::mt19937_64 random(seed);
-  const std::uint64_t n = clips_.size();
-  std::vector<int> weights(clips_.size());
+  const std::uint64_t n = people.size();
+  std::vector<int> weights(people.size());
   std::vector<double> draws;
   draws.reserve(static_cast<std::size_t>(resamples));
   for (int r = 0; r < resamples; ++r) {
     std::fill(weights.begin(), weights.end(), 0);
-    long people = 0;
+    long drawn = 0;
     for (std::uint64_t i = 0; i < n; ++i) {
       const std::size_t c = static_cast<std::size_t>(random() % n);
       ++weights[c];
-      people += clips_[c].people;
+      drawn += people[c];
     }
-    if (people > 0) draws.push_back(tar_at_fppf(weights, max_fppf));  // a draw of nobody has no TAR
+    if (drawn > 0) draws.push_back(statistic(weights));  // a draw of nobody has no TAR
   }
   if (draws.empty()) {
     out.clips = 0;
@@ -103,6 +109,33 @@ ClipInterval ClipResampler::interval(double max_fppf, int resamples, std::uint64
     return draws[static_cast<std::size_t>(std::lround(position))];
   };
   out.interval = {at(0.025), at(0.975)};
+  return out;
+}
+
+}  // namespace
+
+std::vector<long> ClipResampler::people_per_clip() const {
+  std::vector<long> people;
+  for (const Clip& c : clips_) people.push_back(c.people);
+  return people;
+}
+
+ClipInterval ClipResampler::interval(double max_fppf, int resamples, std::uint64_t seed) const {
+  return bootstrap(people_per_clip(), resamples, seed,
+                   [&](const std::vector<int>& weights) { return tar_at_fppf(weights, max_fppf); });
+}
+
+ClipDifference paired_difference(const ClipResampler& a, const ClipResampler& b, double max_fppf, int resamples,
+                                 std::uint64_t seed) {
+  if (a.names() != b.names() || a.people_per_clip() != b.people_per_clip()) {
+    throw Error("paired_difference: the two evaluations do not hold the same clips");
+  }
+  ClipDifference out;
+  const std::vector<int> all(a.names().size(), 1);
+  out.difference = b.tar_at_fppf(all, max_fppf) - a.tar_at_fppf(all, max_fppf);
+  out.interval = bootstrap(a.people_per_clip(), resamples, seed, [&](const std::vector<int>& weights) {
+    return b.tar_at_fppf(weights, max_fppf) - a.tar_at_fppf(weights, max_fppf);
+  });
   return out;
 }
 

@@ -174,11 +174,11 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
   result.curve = exact_detection_curve(scored, truth, false);
   for (const DetectionFigures& f : result.curve) result.curve_probability.push_back(calibration.probability(f.threshold));
   result.candidates = classifier_figures(scored, truth, calibration.score_at(operating_probability));
-  const ClipResampler by_clip(scored, truth, clip_frames);
+  result.by_clip = std::make_shared<const ClipResampler>(scored, truth, clip_frames);
   result.clip_frames = clip_frames;
-  result.clips = by_clip.figures(calibration.score_at(operating_probability));
-  result.clip_interval_01 = by_clip.interval(0.1);
-  result.clip_interval_05 = by_clip.interval(0.5);
+  result.clips = result.by_clip->figures(calibration.score_at(operating_probability));
+  result.clip_interval_01 = result.by_clip->interval(0.1);
+  result.clip_interval_05 = result.by_clip->interval(0.5);
   return result;
 }
 
@@ -260,6 +260,32 @@ std::string weakest_clips_text(std::vector<ClipFigures> clips, std::size_t most)
     text += (i ? ", " : " ") + clips[i].clip + " " + std::to_string(clips[i].detected) + " of " +
             std::to_string(clips[i].people) + " (" + std::to_string(clips[i].with_candidate) + " with a candidate, " +
             std::to_string(clips[i].false_positives) + (clips[i].false_positives == 1 ? " false positive)" : " false positives)");
+  }
+  return text;
+}
+
+// The end of summary.txt with two or more models: each later one against the first, paired over clips.
+std::string paired_differences_text(const std::vector<SweepResult>& results) {
+  if (results.size() < 2 || !results[0].by_clip) return "";
+  std::string text = "Against " + results[0].model + ", paired over the same clips (95 % intervals; a difference "
+                     "whose interval holds 0 is not shown by these frames):\n";
+  for (std::size_t m = 1; m < results.size(); ++m) {
+    if (!results[m].by_clip) continue;
+    text += " " + results[m].model + ":";
+    for (double max_fppf : {0.1, 0.5}) {
+      const ClipDifference d = paired_difference(*results[0].by_clip, *results[m].by_clip, max_fppf);
+      char part[160];
+      if (d.interval.known()) {
+        std::snprintf(part, sizeof part, " TAR at FPPF <= %.1f %+.3f (%+.3f to %+.3f over %d clips)%s", max_fppf,
+                      d.difference, d.interval.interval.low, d.interval.interval.high, d.interval.clips,
+                      d.interval.few() ? " few" : "");
+      } else {
+        std::snprintf(part, sizeof part, " TAR at FPPF <= %.1f %+.3f (one clip: no interval)", max_fppf, d.difference);
+      }
+      text += part;
+      if (max_fppf == 0.1) text += ";";
+    }
+    text += "\n";
   }
   return text;
 }
@@ -406,6 +432,7 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   write_clips_csv(results, folder);
   std::ostringstream summary;
   for (const SweepResult& r : results) write_model_summary(summary, r);
+  summary << paired_differences_text(results);
   AtomicTextFile text((folder / "summary.txt").string(), true);
   text.stream() << summary.str();
   text.commit();

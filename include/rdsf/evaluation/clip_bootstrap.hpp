@@ -58,6 +58,8 @@ class ClipResampler {
   int clips() const { return static_cast<int>(clips_.size()); }
   /// Clip names in order of their first frame.
   const std::vector<std::string>& names() const { return names_; }
+  /// Counted people per clip, in names() order.
+  std::vector<long> people_per_clip() const;
 
   /// TAR at FPPF <= max_fppf of the exact curve with clip c counted weights[c] times (weights all 1: the
   /// recording's own figure, SweepResult::tar_at_fppf). 0 when no point qualifies or nobody is counted.
@@ -82,5 +84,16 @@ class ClipResampler {
   std::vector<Clip> clips_;
   std::vector<std::string> names_;
 };
+
+/// Model b against model a on the same frames: b's TAR at FPPF <= max_fppf minus a's, and its 95 % interval
+/// over clips from draws that weigh each clip alike for both (a paired bootstrap: the rooms both find hard
+/// cancel, so a difference is pinned far more tightly than either figure). a and b must hold the same clips
+/// in the same order (else Error); the draws are interval()'s, with the same seed.
+struct ClipDifference {
+  double difference = 0;
+  ClipInterval interval;  ///< of the difference; {0, 1} unknown (fewer than two clips)
+};
+ClipDifference paired_difference(const ClipResampler& a, const ClipResampler& b, double max_fppf,
+                                 int resamples = 2000, std::uint64_t seed = 1);
 
 }  // namespace rdsf

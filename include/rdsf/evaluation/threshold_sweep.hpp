@@ -10,6 +10,7 @@
 //   - by clip (clip_bootstrap.hpp): each clip's figures at the operating probability, and TAR at FPPF <= 0.1
 //     and 0.5 with a 95 % interval over clips, the spread from room to room that one over people hides.
 // Thresholds are probabilities; a score threshold is h = calibration.score_at(p).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,8 @@ struct SweepResult {
   ClipInterval clip_interval_01, clip_interval_05;
   /// clip_interval_01 or clip_interval_05 (Error for another max_fppf).
   const ClipInterval& clip_interval_at_fppf(double max_fppf) const;
+  /// The evaluated frames by clip, for differences between models paired over the same clips.
+  std::shared_ptr<const ClipResampler> by_clip;
 };
 
 /// The default probability thresholds of the tables: 0.01, 0.02, 0.05, 0.10, ..., 0.95, 0.98, 0.99.
@@ -98,8 +101,10 @@ SweepResult sweep_thresholds(const std::vector<EvaluatedFrame>& frames, const Gr
                              double operating_probability, int clip_frames);
 
 /// Writes metrics.csv (the tables), curve.csv (the exact curves), clips.csv (each clip at the operating
-/// probability), summary.txt, summary.md (one Markdown row per model), roc.png and det.png into `dir` (created when missing); returns the summary text (also what
-/// summary.txt holds).
+/// probability), summary.txt, summary.md (one Markdown row per model), roc.png and det.png into `dir`
+/// (created when missing); returns the summary text (also what summary.txt holds). With two or more models
+/// on the same frames, the summary ends with each later model's TAR at FPPF <= 0.1 and 0.5 minus the first
+/// model's, with 95 % intervals paired over clips (paired_difference).
 std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir);
 
 }  // namespace rdsf
