@@ -10,6 +10,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -225,10 +226,17 @@ TEST(Adapt, ARoomOfAnotherCameraIsAdapted) {
   const test::RunResult r = test::run(
       adapt() + " --source " + test::quote(dir / "room") + " --truth " + test::quote(dir / "room/boxes.csv") +
       " --out " + test::quote(dir / "out") + " --name room --budget 6 --rounds 3 --threads 2 --base-frames 60" +
-      " --models-dir " + test::quote(models.string()));
+      " --models-dir " + test::quote(models.string()) + " --eval " + test::quote(dir / "room"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(models / "room/v1.yml"));
-  EXPECT_NE(test::file_text(dir / "out/report.txt").find("validation AUC"), std::string::npos);
+  const std::string report = test::file_text(dir / "out/report.txt");
+  EXPECT_NE(report.find("validation AUC"), std::string::npos) << report;
+  // --eval (here the room's own 90 frames, to reach the report): before and after from one rdsf-detect run of
+  // both models, and their difference; 90 frames are one clip of 100, so no interval over clips.
+  EXPECT_TRUE(std::regex_search(report, std::regex(R"(before [01]\.\d{3} \(people\), after [01]\.\d{3}; after - )"
+                                                   R"(before [-+][01]\.\d{3} \(one clip: no interval\))")))
+      << report;
+  EXPECT_NE(test::file_text(dir / "out/adapt-state.tsv").find("tar_difference\t"), std::string::npos);
   EXPECT_NE(test::file_text(dir / "out/empty-frames/frames.txt").find("000089.depth.png"), std::string::npos);
   EXPECT_EQ(test::file_text(dir / "out/empty-frames/camera.yml"), test::file_text(dir / "room/camera.yml"));
   // The room's samples are the 512x424 frames' candidates: answered ones and the mined negatives.
