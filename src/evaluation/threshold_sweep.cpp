@@ -49,12 +49,6 @@ RateInterval SweepResult::tar_interval_at_fppf(double max_fppf) const {
   return best != nullptr ? wilson_interval(best->n_det, best->n_people) : RateInterval{};
 }
 
-const ClipInterval& SweepResult::clip_interval_at_fppf(double max_fppf) const {
-  if (max_fppf == 0.1) return clip_interval_01;
-  if (max_fppf == 0.5) return clip_interval_05;
-  throw Error("clip intervals are kept at FPPF <= 0.1 and 0.5, not " + std::to_string(max_fppf));
-}
-
 double SweepResult::candidate_recall() const {
   const long people = operating.all.n_people;
   return people > 0 ? static_cast<double>(people - segmentation_errors) / static_cast<double>(people) : 0.0;
@@ -242,7 +236,10 @@ void write_curve_csv(const std::vector<SweepResult>& results, const std::filesys
 
 // "95 % intervals of TAR at FPPF <= 0.1 / 0.5 over the 16 clips: 0.55-0.86, 0.60-0.90", or why there are none.
 std::string clip_interval_text(const ClipInterval& at01, const ClipInterval& at05) {
-  if (!at01.known()) return "one clip: no interval over clips (one scene says nothing of other rooms)";
+  if (!at01.known()) {
+    return at01.clips == 1 ? "one clip: no interval over clips (one scene says nothing of other rooms)"
+                           : "no interval over clips (nobody counted in them)";
+  }
   char text[240];
   std::snprintf(text, sizeof text, "95 %% intervals of TAR at FPPF <= 0.1 / 0.5 over the %d clips: %.2f-%.2f, %.2f-%.2f%s",
                 at01.clips, at01.interval.low, at01.interval.high, at05.interval.low, at05.interval.high,
@@ -250,7 +247,8 @@ std::string clip_interval_text(const ClipInterval& at01, const ClipInterval& at0
   return text;
 }
 
-// "Clips with the fewest people found at the operating point: #4 4 of 32 (4 with a candidate), ..."
+// "Clips with the fewest people found at the operating point (...): #4 14 of 85 (14 with a candidate, 2 false
+// positives), ..."
 std::string weakest_clips_text(std::vector<ClipFigures> clips, std::size_t most) {
   clips.erase(std::remove_if(clips.begin(), clips.end(), [](const ClipFigures& c) { return c.people == 0; }), clips.end());
   const auto found = [](const ClipFigures& c) { return static_cast<double>(c.detected) / static_cast<double>(c.people); };
@@ -343,7 +341,8 @@ void write_summary_md(const std::vector<SweepResult>& results, const std::filesy
                     r.candidates.tar_interval.high);
     }
     const RateInterval tar01 = r.tar_interval_at_fppf(0.1), tar05 = r.tar_interval_at_fppf(0.5);
-    char by_clip[96] = "one clip";
+    char by_clip[96];
+    std::snprintf(by_clip, sizeof by_clip, "%s", r.clip_interval_01.clips == 1 ? "one clip" : "none");
     if (r.clip_interval_01.known()) {
       std::snprintf(by_clip, sizeof by_clip, "%.2f-%.2f / %.2f-%.2f (%d%s)", r.clip_interval_01.interval.low,
                     r.clip_interval_01.interval.high, r.clip_interval_05.interval.low, r.clip_interval_05.interval.high,

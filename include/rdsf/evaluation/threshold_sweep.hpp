@@ -86,8 +86,6 @@ struct SweepResult {
   std::vector<ClipFigures> clips;
   /// TAR at FPPF <= 0.1 and <= 0.5: 95 % intervals over clips (ClipResampler::interval).
   ClipInterval clip_interval_01, clip_interval_05;
-  /// clip_interval_01 or clip_interval_05 (Error for another max_fppf).
-  const ClipInterval& clip_interval_at_fppf(double max_fppf) const;
   /// The evaluated frames by clip, for differences between models paired over the same clips.
   std::shared_ptr<const ClipResampler> by_clip;
 };
