@@ -313,6 +313,9 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptSta
 // TAR at FPPF <= 0.1 of the base model and of the adapted one on the eval frames, and the adapted minus the
 // base with its 95 % interval paired over the frames' clips: one rdsf-detect run of both models (its
 // summary.txt holds each model's exact-curve line in order, then the paired differences).
+// Frames per clip of the held-out frames' paired interval: about 3 s of a 30 fps recording.
+constexpr int kEvalClipFrames = 100;
+
 struct BeforeAfter {
   std::string before, after;
   std::string difference;  ///< "+0.083 (+0.000 to +0.167 over 3 clips) few", or "... (one clip: no interval)"
@@ -320,7 +323,8 @@ struct BeforeAfter {
 BeforeAfter compare_on_eval(const AdaptOptions& o, const std::string& adapted, const std::string& dir,
                             const Paths& paths) {
   run_step_program("rdsf-detect", {"--source", o.eval, "--truth", o.truth, "--model", o.model, "--model", adapted,
-                                   "--models-dir", o.models_dir, "--report-dir", dir, "--force"},
+                                   "--models-dir", o.models_dir, "--clip-frames", std::to_string(kEvalClipFrames),
+                                   "--report-dir", dir, "--force"},
                    paths.log("report"));
   const std::string summary = (fs::path(dir) / "summary.txt").string();
   std::ifstream in(summary);
@@ -357,7 +361,8 @@ void report(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
     state.set("tar_after", b.after);
     state.set("tar_difference", b.difference);
     text += "TAR at FPPF <= 0.1 on " + o.eval + ": before " + b.before + " (" + o.model + "), after " + b.after +
-            "; after - before " + b.difference + ", paired over the frames' clips of 100\n";
+            "; after - before " + b.difference + ", paired over the frames' clips of " +
+            std::to_string(kEvalClipFrames) + "\n";
   }
   AtomicTextFile file((fs::path(o.out) / "report.txt").string(), /*overwrite=*/true);
   file.stream() << text;
