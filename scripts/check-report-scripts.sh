@@ -102,4 +102,23 @@ print(m.lzf_decompress(bytes([2, 97, 98, 99, 4 << 5, 2]), 9))'
 expect 1 "LZF data gives 3 bytes" /usr/bin/python3 -c 'import importlib.util as u
 s = u.spec_from_file_location("pf", "scripts/public-frames.py"); m = u.module_from_spec(s); s.loader.exec_module(m)
 m.lzf_decompress(bytes([2, 97, 98, 99]), 9)'
+# paired-clips.py: its help, usage errors, clips that do not match (one line naming the file, exit 1), and the
+# paired difference of two hand-made clips.csv: A finds 5 + 5 of 10 + 10 people, B 10 + 5, a third clip empty.
+expect 0 "A:B \\[A:B \\.\\.\\.\\]" /usr/bin/python3 scripts/paired-clips.py --help
+expect 2 "^paired-clips: 'x' is not A:B" /usr/bin/python3 scripts/paired-clips.py x
+expect 2 "^paired-clips: unknown argument '--bogus'$" /usr/bin/python3 scripts/paired-clips.py --bogus "$empty/a:$empty/b"
+mkdir -p "$empty/a" "$empty/b" "$empty/c"
+header=model,clip_frames,probability,clip,frames,people,with_candidate,detected,false_positives
+printf '%s\nm,60,0.5,#0,60,10,8,5,1\nm,60,0.5,#1,60,10,9,5,0\nm,60,0.5,#2,60,0,0,0,3\n' "$header" >"$empty/a/clips.csv"
+printf '%s\nm,60,0.5,#0,60,10,10,10,1\nm,60,0.5,#1,60,10,9,5,0\nm,60,0.5,#2,60,0,0,0,0\n' "$header" >"$empty/b/clips.csv"
+printf '%s\nm,60,0.5,#0,60,10,8,5,1\nm,60,0.5,#1,60,12,9,5,0\nm,60,0.5,#2,60,0,0,0,3\n' "$header" >"$empty/c/clips.csv"
+expect 0 "^\\| TAR at the operating point \\| 0\\.500 \\| 0\\.750 \\| \\+0\\.250 \\(\\+0\\.000 to \\+0\\.500\\) \\|$" \
+  /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/b"
+expect 0 "^\\| false positives per frame \\| 0\\.022 \\| 0\\.006 \\| -0\\.017 " /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/b"
+expect 0 "^## pooled over the 2 sets: 6 clips, 360 frames, 40 people" \
+  /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/b" "$empty/a:$empty/b"
+expect 1 "^paired-clips: $empty/c/clips.csv: clip #1 has 60 frames and 12 people" \
+  /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/c"
+expect 1 "^paired-clips: $empty/none/clips.csv: No such file" /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/none"
+rm -rf "$empty/a" "$empty/b" "$empty/c"
 echo "check-report-scripts: ok"

@@ -13,7 +13,8 @@ Prints a Markdown table per condition (room kind, camera height, pitch, roll, mo
 8-bit capture, people in the clip, furniture solids): for each value band the clips (and of them those with
 someone at least --min-visible visible), people, candidate recall
 (people with a candidate / people), TAR at the operating point (people detected / people) with its 95 %
-interval over clips (percentile bootstrap, 2,000 draws of the band's clips with replacement, seed 1), and
+interval over clips (percentile bootstrap, 2,000 draws of the band's clips with replacement, seed 1;
+scripts/lib/detect_clips.py), and
 false positives per frame. The clips are the unit: a clip's people are the same people in the same room
 frame after frame, so a band of few clips says little however many people it holds.
 
@@ -24,7 +25,8 @@ import csv
 import os
 import sys
 
-import numpy
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+import detect_clips  # noqa: E402
 
 
 def die(code, message):
@@ -54,32 +56,25 @@ def clips_of(pair, model):
     drawn_path = os.path.join(set_dir, "clips.csv")
     found_path = os.path.join(report_dir, "clips.csv")
     drawn = {int(numeric(drawn_path, r, "clip", int)): r for r in read_csv(drawn_path)}
-    rows = read_csv(found_path)
-    labels = [r["model"] for r in rows]
-    if not labels:
-        die(1, f"{found_path}: no clips")
-    label = model if model is not None else labels[0]
+    try:
+        found, _ = detect_clips.read_clips(found_path, model)
+    except detect_clips.ClipsError as e:
+        die(1, str(e))
     out = []
-    for r in rows:
-        if r["model"] != label:
-            continue
-        name = r["clip"]
+    for item in found:
+        name = item["clip"]
         if not name.startswith("#"):
             die(1, f"{found_path}: clip '{name}' is not numbered: give rdsf-detect --clip-frames")
         c = drawn.get(int(name[1:]))
         if c is None:
             die(1, f"{found_path}: clip {name} is not in {drawn_path} (another --clip-frames?)")
-        item = {k: numeric(found_path, r, k, int) for k in ("frames", "people", "with_candidate", "detected", "false_positives")}
         item["set"] = set_dir
-        item["clip"] = name
         item["room"] = c["room"]
         for k in ("camera_height_m", "pitch_deg", "roll_deg", "noise_factor", "eight_bit_step_mm"):
             item[k] = numeric(drawn_path, c, k)
         for k in ("moving", "people", "furniture_shapes"):
             item["drawn_" + k] = numeric(drawn_path, c, k, int)
         out.append(item)
-    if not out:
-        die(1, f"{found_path}: no clips of model '{label}' (models: {', '.join(sorted(set(labels)))})")
     return out
 
 
@@ -103,17 +98,11 @@ CONDITIONS = [
 ]
 
 
-def interval(clips, draws=2000, seed=1):
+def interval(clips):
     if len(clips) < 2:
         return None
-    people = numpy.array([c["people"] for c in clips], dtype=float)
-    found = numpy.array([c["detected"] for c in clips], dtype=float)
-    rng = numpy.random.default_rng(seed)
-    picks = rng.integers(0, len(clips), size=(draws, len(clips)))
-    p = people[picks].sum(axis=1)
-    f = found[picks].sum(axis=1)
-    rates = numpy.divide(f, p, out=numpy.zeros_like(f), where=p > 0)
-    return numpy.quantile(rates, 0.025), numpy.quantile(rates, 0.975)
+    return detect_clips.quantiles(detect_clips.pooled_rate([c["detected"] for c in clips], [c["people"] for c in clips],
+                                                           detect_clips.draws(len(clips))))
 
 
 def table(name, key, clips):
@@ -139,23 +128,8 @@ def table(name, key, clips):
 
 
 def main(argv):
-    if not argv or argv[0] in ("-h", "--help"):
-        print(__doc__.strip())
-        return 0 if argv else 2
-    model = None
-    pairs = []
-    i = 0
-    while i < len(argv):
-        if argv[i] == "--model":
-            if i + 1 >= len(argv):
-                die(2, "--model needs a value")
-            model = argv[i + 1]
-            i += 2
-        elif argv[i].startswith("-"):
-            die(2, f"unknown argument '{argv[i]}'")
-        else:
-            pairs.append(argv[i])
-            i += 1
+    options, pairs = detect_clips.parse_arguments(argv, {"--model": None}, die, __doc__)
+    model = options["--model"]
     if not pairs:
         die(2, "give at least one SET:REPORT")
     clips = [c for pair in pairs for c in clips_of(pair, model)]

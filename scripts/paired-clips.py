@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Two runs of rdsf-detect on the same frames, compared paired over their clips: is B better than A?
+
+  scripts/paired-clips.py [--model-a LABEL] [--model-b LABEL] A:B [A:B ...]
+
+  A, B    report folders of `rdsf-detect --truth ... --clip-frames N --report-dir` on the same frames and
+          truth (one set per pair), A the "before" (e.g. today's options), B the "after" (another option
+          value, another build); their clips.csv must hold the same clips with the same frames and people
+  --model-a / --model-b LABEL  the model rows to read (clips.csv's `model` column, e.g. "people v3");
+          default: the first model of each file
+
+For each pair and pooled over all pairs' clips it prints candidate recall, TAR at each run's operating point
+and false positives per frame for A and B, and B - A with a 95 % interval paired over the clips: a percentile
+bootstrap (2,000 draws of as many clips as there are, with replacement, numpy's default_rng(1)) in which
+each draw takes the same clips for A and B, so rooms both find hard cancel and a difference is pinned far
+more tightly than either figure. Pooling several renderings (e.g. the six judges of docs/quality.md) gives
+one interval over all their rooms. This is rdsf-detect's "paired over the same clips" paragraph for two
+runs that cannot share one rdsf-detect (candidate options, builds), at the operating point (clips.csv has
+no scores, so not at FPPF <= 0.1).
+
+Exit codes: 0 done, 1 a file that cannot be read or clips that do not match (one line naming the file),
+2 a usage error. Uses Debian's python3-numpy (scripts/setup.sh installs it).
+"""
+import os
+import sys
+
+import numpy
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+import detect_clips  # noqa: E402
+
+
+def die(code, message):
+    print(f"paired-clips: {message}", file=sys.stderr)
+    sys.exit(code)
+
+
+def read_pair(pair, model_a, model_b):
+    """The clips of A and B of one A:B pair, checked to be the same clips with the same frames and people."""
+    if pair.count(":") != 1 or "" in pair.split(":"):
+        die(2, f"'{pair}' is not A:B (two report folders)")
+    a_dir, b_dir = pair.split(":")
+    paths = [os.path.join(a_dir, "clips.csv"), os.path.join(b_dir, "clips.csv")]
+    try:
+        a, label_a = detect_clips.read_clips(paths[0], model_a)
+        b, label_b = detect_clips.read_clips(paths[1], model_b)
+    except detect_clips.ClipsError as e:
+        die(1, str(e))
+    if [c["clip"] for c in a] != [c["clip"] for c in b]:
+        die(1, f"{paths[1]}: its clips are not those of {paths[0]} (another set or --clip-frames?)")
+    for x, y in zip(a, b):
+        if (x["frames"], x["people"]) != (y["frames"], y["people"]):
+            die(1, f"{paths[1]}: clip {y['clip']} has {y['frames']} frames and {y['people']} people, "
+                   f"{paths[0]} {x['frames']} and {x['people']} (another truth or --min-visible?)")
+    return {"name": pair, "a": a, "b": b, "labels": (label_a, label_b)}
+
+
+def column(clips, key):
+    return numpy.array([c[key] for c in clips], dtype=float)
+
+
+def figures(a, b):
+    """Rates of A and B and B - A with paired intervals over the clips (None: fewer than two clips)."""
+    people, frames = column(a, "people"), column(a, "frames")
+    rows = []
+    for name, key, per in (("candidate recall", "with_candidate", people), ("TAR at the operating point", "detected", people),
+                           ("false positives per frame", "false_positives", frames)):
+        xa, xb = column(a, key), column(b, key)
+        total = per.sum()
+        ra = xa.sum() / total if total > 0 else float("nan")
+        rb = xb.sum() / total if total > 0 else float("nan")
+        interval = None
+        if len(a) >= 2:
+            picks = detect_clips.draws(len(a))
+            diff = detect_clips.pooled_rate(xb - xa, per, picks)
+            interval = detect_clips.quantiles(diff)
+        rows.append((name, ra, rb, rb - ra, interval))
+    return rows
+
+
+def report(title, a, b):
+    people = int(column(a, "people").sum())
+    frames = int(column(a, "frames").sum())
+    few = " (few: under 10 clips, read with care)" if len(a) < 10 else ""
+    lines = [f"## {title}: {len(a)} clip{'' if len(a) == 1 else 's'}, {frames} frames, {people} people{few}", "",
+             "| figure | A | B | B - A (95 % paired over clips) |", "| --- | --- | --- | --- |"]
+    for name, ra, rb, d, interval in figures(a, b):
+        span = f"{interval[0]:+.3f} to {interval[1]:+.3f}" if interval else "no interval"
+        lines.append(f"| {name} | {ra:.3f} | {rb:.3f} | {d:+.3f} ({span}) |")
+    return "\n".join(lines)
+
+
+def main(argv):
+    models, pairs = detect_clips.parse_arguments(argv, {"--model-a": None, "--model-b": None}, die, __doc__)
+    if not pairs:
+        die(2, "give at least one A:B pair of report folders")
+    runs = [read_pair(p, models["--model-a"], models["--model-b"]) for p in pairs]
+    label_a, label_b = runs[0]["labels"]
+    print(f"A: {label_a} ({', '.join(r['name'].split(':')[0] for r in runs)})")
+    print(f"B: {label_b} ({', '.join(r['name'].split(':')[1] for r in runs)})\n")
+    for r in runs:
+        print(report(r["name"], r["a"], r["b"]) + "\n")
+    if len(runs) > 1:
+        pooled_a = [c for r in runs for c in r["a"]]
+        pooled_b = [c for r in runs for c in r["b"]]
+        print(report(f"pooled over the {len(runs)} sets", pooled_a, pooled_b))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
