@@ -297,7 +297,7 @@ void evaluate_models(const DetectOptions& o, const std::vector<BoostedModel>& mo
     }
   }
   std::cout << write_evaluation_report(results, o.report_dir);
-  std::cerr << "rdsf-detect: report in " << o.report_dir << " (metrics.csv, curve.csv, clips.csv, summary.txt, summary.md, roc.png, det.png)\n";
+  std::cerr << "rdsf-detect: report in " << o.report_dir << " (" << kEvaluationReportFiles << ")\n";
 }
 
 }  // namespace

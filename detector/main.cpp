@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
          "boxes.csv of the source: evaluate the models (needs --report-dir); without a model, count the people "
          "with a candidate")
         ("report-dir", po::value(&o.report_dir),
-         "write metrics.csv, curve.csv, clips.csv, summary.txt, summary.md, roc.png, det.png here")
+         ("write " + std::string(rdsf::kEvaluationReportFiles) + " here").c_str())
         ("thresholds", po::value(&thresholds),
          "evaluation tables at these P(person) thresholds: 0.3,0.5,0.7 or from:to:step (default 0.01 0.02 0.05 "
          "0.1 ... 0.95 0.98 0.99); the ROC and DET curves are exact (every distinct score)")

@@ -120,5 +120,15 @@ expect 0 "^## pooled over the 2 sets: 6 clips, 360 frames, 40 people" \
 expect 1 "^paired-clips: $empty/c/clips.csv: clip #1 has 60 frames and 12 people" \
   /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/c"
 expect 1 "^paired-clips: $empty/none/clips.csv: No such file" /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/none"
-rm -rf "$empty/a" "$empty/b" "$empty/c"
+# With outcomes.csv in both reports, TAR at FPPF <= 0.1 from each exact curve: 30 frames allow 3 false positives;
+# A's curve reaches 3 of 4 people within them, B's 4 of 4.
+mkdir -p "$empty/d" "$empty/e"
+printf '%s\nm,60,0.5,#0,10,2,2,1,0\nm,60,0.5,#1,10,2,2,1,1\nm,60,0.5,#2,10,0,0,0,1\n' "$header" | tee "$empty/d/clips.csv" >"$empty/e/clips.csv"
+printf 'model,clip,score,outcome\nm,#0,3,detection\nm,#1,2,false_positive\nm,#0,1,detection\nm,#1,0.5,detection\nm,#2,0.4,false_positive\nm,#2,0.3,false_positive\nm,#1,0.1,false_positive\n' >"$empty/d/outcomes.csv"
+printf 'model,clip,score,outcome\nm,#0,3,detection\nm,#0,2.5,detection\nm,#1,2,detection\nm,#1,1.9,detection\nm,#2,1,false_positive\nm,#1,0.7,neutral\n' >"$empty/e/outcomes.csv"
+expect 0 "^\\| TAR at FPPF <= 0\\.1 \\| 0\\.750 \\| 1\\.000 \\| \\+0\\.250 " /usr/bin/python3 scripts/paired-clips.py "$empty/d:$empty/e"
+expect 0 "no outcomes.csv in both reports" /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/b"
+printf 'model,clip,score,outcome\nm,#7,3,detection\n' >"$empty/e/outcomes.csv"
+expect 1 "^paired-clips: $empty/e/outcomes.csv: clip '#7' is not in clips.csv$" /usr/bin/python3 scripts/paired-clips.py "$empty/d:$empty/e"
+rm -rf "$empty/a" "$empty/b" "$empty/c" "$empty/d" "$empty/e"
 echo "check-report-scripts: ok"

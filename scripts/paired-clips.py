@@ -10,13 +10,15 @@
           default: the first model of each file
 
 For each pair and pooled over all pairs' clips it prints candidate recall, TAR at each run's operating point
-and false positives per frame for A and B, and B - A with a 95 % interval paired over the clips: a percentile
+and false positives per frame for A and B (from clips.csv), TAR at FPPF <= 0.1 and 0.5 (from each run's exact
+curve, redone from its outcomes.csv; rdsf-detect writes it since 2026-12-06, older reports have only the first
+three rows), and B - A with a 95 % interval paired over the clips: a percentile
 bootstrap (2,000 draws of as many clips as there are, with replacement, numpy's default_rng(1)) in which
 each draw takes the same clips for A and B, so rooms both find hard cancel and a difference is pinned far
 more tightly than either figure. Pooling several renderings (e.g. the six judges of docs/quality.md) gives
-one interval over all their rooms. This is rdsf-detect's "paired over the same clips" paragraph for two
-runs that cannot share one rdsf-detect (candidate options, builds), at the operating point (clips.csv has
-no scores, so not at FPPF <= 0.1).
+one interval over all their rooms (and one exact curve over all their frames). This is rdsf-detect's
+"paired over the same clips" paragraph for two runs that cannot share one rdsf-detect (candidate options,
+builds); with outcomes.csv each draw's TAR is read off its own weighted exact curve, as rdsf-detect does.
 
 Exit codes: 0 done, 1 a file that cannot be read or clips that do not match (one line naming the file),
 2 a usage error. Uses Debian's python3-numpy (scripts/setup.sh installs it).
@@ -35,8 +37,21 @@ def die(code, message):
     sys.exit(code)
 
 
+def read_outcomes(report_dir, model, clips):
+    """The model's candidates in report_dir/outcomes.csv as clip indices, scores and kinds; None without the file
+    (a report written before rdsf-detect wrote it)."""
+    path = os.path.join(report_dir, "outcomes.csv")
+    if not os.path.exists(path):
+        return None
+    try:
+        return detect_clips.read_outcomes(path, model, {c["clip"]: i for i, c in enumerate(clips)})
+    except detect_clips.ClipsError as e:
+        die(1, str(e))
+
+
 def read_pair(pair, model_a, model_b):
-    """The clips of A and B of one A:B pair, checked to be the same clips with the same frames and people."""
+    """The clips of A and B of one A:B pair, checked to be the same clips with the same frames and people, and
+    their candidates' outcomes when both reports have them."""
     if pair.count(":") != 1 or "" in pair.split(":"):
         die(2, f"'{pair}' is not A:B (two report folders)")
     a_dir, b_dir = pair.split(":")
@@ -52,16 +67,38 @@ def read_pair(pair, model_a, model_b):
         if (x["frames"], x["people"]) != (y["frames"], y["people"]):
             die(1, f"{paths[1]}: clip {y['clip']} has {y['frames']} frames and {y['people']} people, "
                    f"{paths[0]} {x['frames']} and {x['people']} (another truth or --min-visible?)")
-    return {"name": pair, "a": a, "b": b, "labels": (label_a, label_b)}
+    outcomes = (read_outcomes(a_dir, label_a, a), read_outcomes(b_dir, label_b, b))
+    return {"name": pair, "a": a, "b": b, "labels": (label_a, label_b),
+            "outcomes": outcomes if None not in outcomes else None}
+
+
+def pooled(runs):
+    """The runs' clips and outcomes as one run: each set's clip indices moved past the sets before it."""
+    out = {"a": [], "b": [], "outcomes": None}
+    parts = ([], [])
+    for r in runs:
+        offset = len(out["a"])
+        out["a"] += r["a"]
+        out["b"] += r["b"]
+        if r["outcomes"] is not None:
+            for side in (0, 1):
+                clips, scores, kinds = r["outcomes"][side]
+                parts[side].append((clips + offset, scores, kinds))
+    if all(r["outcomes"] is not None for r in runs):
+        out["outcomes"] = tuple(tuple(numpy.concatenate([p[k] for p in parts[side]]) for k in range(3)) for side in (0, 1))
+    return out
 
 
 def column(clips, key):
     return numpy.array([c[key] for c in clips], dtype=float)
 
 
-def figures(a, b):
-    """Rates of A and B and B - A with paired intervals over the clips (None: fewer than two clips)."""
+def figures(run):
+    """Rates of A and B and B - A with paired intervals over the clips (None: fewer than two clips); TAR at FPPF
+    <= 0.1 and 0.5 from the exact curves when both reports have outcomes.csv."""
+    a, b = run["a"], run["b"]
     people, frames = column(a, "people"), column(a, "frames")
+    picks = detect_clips.draws(len(a)) if len(a) >= 2 else None
     rows = []
     for name, key, per in (("candidate recall", "with_candidate", people), ("TAR at the operating point", "detected", people),
                            ("false positives per frame", "false_positives", frames)):
@@ -69,24 +106,34 @@ def figures(a, b):
         total = per.sum()
         ra = xa.sum() / total if total > 0 else float("nan")
         rb = xb.sum() / total if total > 0 else float("nan")
-        interval = None
-        if len(a) >= 2:
-            picks = detect_clips.draws(len(a))
-            diff = detect_clips.pooled_rate(xb - xa, per, picks)
-            interval = detect_clips.quantiles(diff)
+        interval = None if picks is None else detect_clips.quantiles(detect_clips.pooled_rate(xb - xa, per, picks))
         rows.append((name, ra, rb, rb - ra, interval))
+    if run["outcomes"] is not None:
+        curves = [detect_clips.ExactCurve(*run["outcomes"][side], frames, people) for side in (0, 1)]
+        limits = (0.1, 0.5)
+        point = [c.tar_at_fppf(numpy.ones(len(a)), limits) for c in curves]
+        diffs = []
+        for p in ([] if picks is None else picks):
+            w = numpy.bincount(p, minlength=len(a)).astype(float)
+            diffs.append(numpy.subtract(curves[1].tar_at_fppf(w, limits), curves[0].tar_at_fppf(w, limits)))
+        for i, max_fppf in enumerate(limits):
+            interval = detect_clips.quantiles(numpy.array([d[i] for d in diffs])) if diffs else None
+            rows.append((f"TAR at FPPF <= {max_fppf:g}", point[0][i], point[1][i], point[1][i] - point[0][i], interval))
     return rows
 
 
-def report(title, a, b):
+def report(title, run):
+    a = run["a"]
     people = int(column(a, "people").sum())
     frames = int(column(a, "frames").sum())
     few = " (few: under 10 clips, read with care)" if len(a) < 10 else ""
     lines = [f"## {title}: {len(a)} clip{'' if len(a) == 1 else 's'}, {frames} frames, {people} people{few}", "",
              "| figure | A | B | B - A (95 % paired over clips) |", "| --- | --- | --- | --- |"]
-    for name, ra, rb, d, interval in figures(a, b):
+    for name, ra, rb, d, interval in figures(run):
         span = f"{interval[0]:+.3f} to {interval[1]:+.3f}" if interval else "no interval"
         lines.append(f"| {name} | {ra:.3f} | {rb:.3f} | {d:+.3f} ({span}) |")
+    if run["outcomes"] is None:
+        lines.append("\n(no outcomes.csv in both reports: no TAR at FPPF <= 0.1 / 0.5; rdsf-detect writes it since 2026-12-06)")
     return "\n".join(lines)
 
 
@@ -99,11 +146,9 @@ def main(argv):
     print(f"A: {label_a} ({', '.join(r['name'].split(':')[0] for r in runs)})")
     print(f"B: {label_b} ({', '.join(r['name'].split(':')[1] for r in runs)})\n")
     for r in runs:
-        print(report(r["name"], r["a"], r["b"]) + "\n")
+        print(report(r["name"], r) + "\n")
     if len(runs) > 1:
-        pooled_a = [c for r in runs for c in r["a"]]
-        pooled_b = [c for r in runs for c in r["b"]]
-        print(report(f"pooled over the {len(runs)} sets", pooled_a, pooled_b))
+        print(report(f"pooled over the {len(runs)} sets", pooled(runs)))
     return 0
 
 

@@ -41,7 +41,7 @@ TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
                                       d + "/report --thresholds=0.01:0.99:0.01 --clip-frames 50 --out " + d + "/detections.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::cout << r.out;
-  for (const char* file : {"metrics.csv", "clips.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
+  for (const char* file : {"metrics.csv", "clips.csv", "outcomes.csv", "summary.txt", "summary.md", "roc.png", "det.png"}) {
     EXPECT_TRUE(std::filesystem::exists(d + "/report/" + file)) << file;
   }
   // summary.md's row ends with the 95 % intervals of TAR at FPPF <= 0.1 and 0.5 over the people, then over
@@ -71,6 +71,23 @@ TEST(SystemSynthetic, TrainedModelDetectsAndTracksHeldOutPeople) {
                                             "/scripts/clip-conditions.py") + " " + d + "/test:" + d + "/nothing");
     EXPECT_EQ(wrong.exit_code, 1);
     EXPECT_NE(wrong.err.find(d + "/nothing/clips.csv"), std::string::npos) << wrong.err;
+  }
+  // scripts/paired-clips.py redoes the exact curve from outcomes.csv: the report against itself reads the
+  // summary's TAR at FPPF <= 0.1 on both sides and a difference of 0.
+  {
+    const test::RunResult paired = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) +
+                                             "/scripts/paired-clips.py") + " " + d + "/report:" + d + "/report");
+    ASSERT_EQ(paired.exit_code, 0) << paired.err;
+    std::ifstream md(d + "/report/summary.md");
+    std::string line;
+    std::getline(md, line);
+    std::getline(md, line);
+    std::getline(md, line);
+    std::smatch tar;
+    ASSERT_TRUE(std::regex_search(line, tar, std::regex(R"(^\| [^|]+ \| ([01]\.\d{3}) \|)"))) << line;
+    EXPECT_NE(paired.out.find("| TAR at FPPF <= 0.1 | " + tar[1].str() + " | " + tar[1].str() + " | +0.000 (+0.000 to +0.000) |"),
+              std::string::npos)
+        << paired.out;
   }
   // Best MOTA over the sweep, from metrics.csv (column 15, table "all").
   std::ifstream metrics(d + "/report/metrics.csv");

@@ -3,6 +3,7 @@
 #include "cli/cli.hpp"
 #include "cli/common_options.hpp"
 #include "pcl_people_run.hpp"
+#include "rdsf/evaluation/threshold_sweep.hpp"
 
 #ifndef RDSF_PCL_SVM_FILE
 #define RDSF_PCL_SVM_FILE ""
@@ -25,7 +26,7 @@ int main(int argc, char** argv) {
         ("svm", po::value(&o.svm)->default_value(o.svm), "PCL's HOG+SVM file (peers/pcl_people/data: Debian does not ship it)")
         ("out", po::value(&o.out_csv), "write one row per PCL person cluster to this CSV (rdsf-detect's format)")
         ("truth", po::value(&o.truth_csv), "boxes.csv of the source: evaluate (needs --report-dir)")
-        ("report-dir", po::value(&o.report_dir), "write metrics.csv, curve.csv, clips.csv, summary.txt, summary.md, roc.png, det.png here")
+        ("report-dir", po::value(&o.report_dir), ("write " + std::string(rdsf::kEvaluationReportFiles) + " here").c_str())
         ("force", po::bool_switch(&o.force), "replace an existing --out file or report")
         ("min-confidence", po::value(&o.min_confidence)->default_value(o.min_confidence), "a cluster is a person when its HOG+SVM confidence >= this (PCL's app: -1.5)")
         ("min-height", po::value(&o.min_height_m)->default_value(o.min_height_m), "smallest person cluster height, m")

@@ -52,6 +52,65 @@ def read_clips(path, model=None):
     return out, label
 
 
+def read_outcomes(path, model, clip_index):
+    """outcomes.csv at `path` (rdsf-detect's report: each candidate's model, clip, score H(x) and outcome, score
+    descending) for one model: arrays (clip index by `clip_index`, a dict name -> index; score; kind 1 detection,
+    -1 false positive, 0 neutral)."""
+    try:
+        with open(path, newline="") as f:
+            rows = [r for r in csv.DictReader(f) if r.get("model") == model]
+    except OSError as e:
+        raise ClipsError(f"{path}: {e.strerror}") from None
+    kinds = {"detection": 1, "false_positive": -1, "neutral": 0}
+    clips, scores, outcome = [], [], []
+    for r in rows:
+        if r.get("clip") not in clip_index:
+            raise ClipsError(f"{path}: clip '{r.get('clip')}' is not in clips.csv")
+        if r.get("outcome") not in kinds:
+            raise ClipsError(f"{path}: outcome '{r.get('outcome')}' is not detection, false_positive or neutral")
+        try:
+            scores.append(float(r["score"]))
+        except (KeyError, TypeError, ValueError):
+            raise ClipsError(f"{path}: no number in column 'score' of a candidate of clip {r.get('clip')}") from None
+        clips.append(clip_index[r["clip"]])
+        outcome.append(kinds[r["outcome"]])
+    return numpy.array(clips, dtype=int), numpy.array(scores, dtype=float), numpy.array(outcome, dtype=int)
+
+
+class ExactCurve:
+    """The exact detection curve of candidates over clips (exact_curve.hpp), weighted per clip: a point at the end
+    of each run of equal scores, descending; TAR at FPPF <= x is the TAR of the last point whose false
+    positives per frame are within x (they only grow along the curve), 0 when none is. The same reading as
+    rdsf-detect's, so with every weight 1 it gives the summary's TAR at FPPF <= x."""
+
+    def __init__(self, clips, scores, kinds, frames, people):
+        order = numpy.argsort(-scores, kind="stable")
+        self.clips = clips[order]
+        sorted_scores = scores[order]
+        self.detection = (kinds[order] == 1).astype(float)
+        self.false_positive = (kinds[order] == -1).astype(float)
+        self.ends = numpy.append(sorted_scores[1:] != sorted_scores[:-1], True) if len(order) else numpy.array([], dtype=bool)
+        self.frames = numpy.asarray(frames, dtype=float)
+        self.people = numpy.asarray(people, dtype=float)
+
+    def tar_at_fppf(self, weights, limits):
+        """TAR at FPPF <= each of `limits` with clip c counted weights[c] times; NaN when the weighted clips hold
+        nobody."""
+        frames = float(numpy.dot(weights, self.frames))
+        people = float(numpy.dot(weights, self.people))
+        if frames == 0 or people == 0:
+            return [float("nan")] * len(limits)
+        w = weights[self.clips]
+        detections = numpy.cumsum(w * self.detection)[self.ends]
+        fppf = numpy.cumsum(w * self.false_positive)[self.ends] / frames
+        out = []
+        for max_fppf in limits:
+            # false positives only grow along the curve (weights >= 0): the points within the limit come first
+            within = int(numpy.count_nonzero(fppf <= max_fppf))
+            out.append(float(detections[within - 1] / people) if within else 0.0)
+        return out
+
+
 def draws(n, seed=1):
     """DRAWS rows of n clip indices drawn with replacement."""
     return numpy.random.default_rng(seed).integers(0, n, size=(DRAWS, n))

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 
 #include "rdsf/candidates/candidate_finder.hpp"
@@ -375,6 +376,23 @@ void write_clips_csv(const std::vector<SweepResult>& results, const std::filesys
   csv.commit();
 }
 
+// outcomes.csv: every model's candidates with their clip, H(x) (17 digits: equal scores stay equal, they are
+// one point of the exact curve) and outcome, score descending: enough to redo the exact curve of any set of
+// clips, weighted (scripts/paired-clips.py pairs two runs' curves over their clips this way).
+void write_outcomes_csv(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
+  AtomicTextFile csv((folder / "outcomes.csv").string(), true);
+  csv.stream() << "model,clip,score,outcome\n" << std::setprecision(17);
+  for (const SweepResult& r : results) {
+    if (!r.by_clip) continue;
+    const std::vector<std::string>& names = r.by_clip->names();
+    for (const ClipResampler::Outcome& o : r.by_clip->outcomes()) {
+      csv.stream() << r.model << ',' << names[static_cast<std::size_t>(o.clip)] << ',' << o.score << ','
+                   << (o.kind > 0 ? "detection" : (o.kind < 0 ? "false_positive" : "neutral")) << '\n';
+    }
+  }
+  csv.commit();
+}
+
 // roc.png and det.png: every model on one ROC and one DET chart, the operating threshold marked.
 void write_charts(const std::vector<SweepResult>& results, const std::filesystem::path& folder) {
   PlotAxes roc;
@@ -429,6 +447,7 @@ std::string write_evaluation_report(const std::vector<SweepResult>& results, con
   write_metrics_csv(results, folder);
   write_curve_csv(results, folder);
   write_clips_csv(results, folder);
+  write_outcomes_csv(results, folder);
   std::ostringstream summary;
   for (const SweepResult& r : results) write_model_summary(summary, r);
   summary << paired_differences_text(results);

@@ -71,12 +71,16 @@ class ClipResampler {
   /// Each clip's figures at `score_threshold`, in names() order.
   std::vector<ClipFigures> figures(double score_threshold) const;
 
- private:
+  /// A candidate's score, clip (index into names()) and outcome on the exact curve.
   struct Outcome {
     double score;
     int clip;
-    std::int8_t kind;  // 1 detection, -1 false positive, 0 neutral (exact_curve.hpp's CandidateOutcome)
+    std::int8_t kind;  ///< 1 detection, -1 false positive, 0 neutral (exact_curve.hpp's CandidateOutcome)
   };
+  /// Every candidate of every frame, score descending (stable: frame order within a score).
+  const std::vector<Outcome>& outcomes() const { return outcomes_; }
+
+ private:
   struct Clip {
     long frames = 0, people = 0, with_candidate = 0;
   };
