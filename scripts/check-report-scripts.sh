@@ -128,6 +128,9 @@ printf 'model,clip,score,outcome\nm,#0,3,detection\nm,#1,2,false_positive\nm,#0,
 printf 'model,clip,score,outcome\nm,#0,3,detection\nm,#0,2.5,detection\nm,#1,2,detection\nm,#1,1.9,detection\nm,#2,1,false_positive\nm,#1,0.7,neutral\n' >"$empty/e/outcomes.csv"
 expect 0 "^\\| TAR at FPPF <= 0\\.1 \\| 0\\.750 \\| 1\\.000 \\| \\+0\\.250 " /usr/bin/python3 scripts/paired-clips.py "$empty/d:$empty/e"
 expect 0 "no outcomes.csv in both reports" /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/b"
+# pooled: each set's TAR off its own curve, people found summed (two sets of 3 + 3 found of 4 + 4 in A)
+expect 0 "^\\| TAR at FPPF <= 0\\.1 \\| 0\\.750 \\| 1\\.000 \\| \\+0\\.250 \\(\\+0\\.[0-9]+ to \\+0\\.[0-9]+\\) \\|$" \
+  /usr/bin/python3 scripts/paired-clips.py "$empty/d:$empty/e" "$empty/d:$empty/e"
 printf 'model,clip,score,outcome\nm,#7,3,detection\n' >"$empty/e/outcomes.csv"
 expect 1 "^paired-clips: $empty/e/outcomes.csv: clip '#7' is not in clips.csv$" /usr/bin/python3 scripts/paired-clips.py "$empty/d:$empty/e"
 rm -rf "$empty/a" "$empty/b" "$empty/c" "$empty/d" "$empty/e"

@@ -298,14 +298,15 @@ trained_with() {
     [ -n "$value" ] && awk -v a="$value" -v b="${v#*-}" 'BEGIN { exit !(a ~ /^[0-9.e+-]+$/ && a + 0 == b + 0) }' || return 1
   done
 }
-# paired_tar DIR-A DIR-B: B's TAR at the operating point minus A's over the judges' clips pooled, with its 95 %
-# interval paired over those clips (scripts/paired-clips.py on each judge's clips.csv), e.g. "+0.013 (+0.004
-# to +0.022)". Evidence shown beside the rules' figures; the rules above do not read it.
+# paired_tar DIR-A DIR-B: B's TAR at FPPF <= 0.1 minus A's over the judges pooled (people found summed, as
+# jfig's), with its 95 % interval paired over their clips (scripts/paired-clips.py on each judge's clips.csv
+# and outcomes.csv), e.g. "+0.013 (+0.004 to +0.022)". Evidence shown beside the rules' figures (rule (a) reads
+# the same TAR against a fixed bar); the rules above do not read it.
 paired_tar() {
   local j pairs=()
   for j in "${judge_sets[@]}"; do pairs+=("$1/$j:$2/$j"); done
   /usr/bin/python3 scripts/paired-clips.py "${pairs[@]}" |
-    awk -F'|' '/^\| TAR at the operating point / { line = $5 } END { gsub(/^ +| +$/, "", line); print line }' ||
+    awk -F'|' '/^\| TAR at FPPF <= 0\.1 / { line = $5 } END { gsub(/^ +| +$/, "", line); print line }' ||
     { echo "loso-report: scripts/paired-clips.py failed on $1 and $2" >&2; exit 1; }
 }
 # lever_row HELD-OUT CHOICE DEFAULT "A B": one row of the choices table; a training choice made without the
@@ -396,7 +397,7 @@ for n in "${lever_notes[@]}"; do echo "Note: $n." >> "$table"; done
   echo
   jhead="" jrule=""
   for j in "${judge_sets[@]}"; do jhead+=" $(title "$j") |"; jrule+=" --- |"; done
-  echo "| run | options | the judges pooled | TAR at the operating point minus the defaults', paired over the judges' clips (95 %) |$jhead UC3M lab | UC3M home |"
+  echo "| run | options | the judges pooled | TAR at FPPF <= 0.1 minus the defaults', paired over the judges' clips (95 %) |$jhead UC3M lab | UC3M home |"
   echo "| --- | --- | --- | --- |$jrule --- | --- |"
   for c in "${configs[@]}"; do
     name=${c%%|*} f=${c#*|}; jd=$loso/options/$name

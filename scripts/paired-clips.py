@@ -16,7 +16,9 @@ three rows), and B - A with a 95 % interval paired over the clips: a percentile
 bootstrap (2,000 draws of as many clips as there are, with replacement, numpy's default_rng(1)) in which
 each draw takes the same clips for A and B, so rooms both find hard cancel and a difference is pinned far
 more tightly than either figure. Pooling several renderings (e.g. the six judges of docs/quality.md) gives
-one interval over all their rooms (and one exact curve over all their frames). This is rdsf-detect's
+one interval over all their rooms; pooled, TAR at FPPF <= x is each set's own (a set is one recording, the
+unit of false positives per frame) with the people found summed over the sets, as docs/quality.md's "judges
+pooled" are. This is rdsf-detect's
 "paired over the same clips" paragraph for two runs that cannot share one rdsf-detect (candidate options,
 builds); with outcomes.csv each draw's TAR is read off its own weighted exact curve, as rdsf-detect does.
 
@@ -69,28 +71,46 @@ def read_pair(pair, model_a, model_b):
                    f"{paths[0]} {x['frames']} and {x['people']} (another truth or --min-visible?)")
     outcomes = (read_outcomes(a_dir, label_a, a), read_outcomes(b_dir, label_b, b))
     return {"name": pair, "a": a, "b": b, "labels": (label_a, label_b),
-            "outcomes": outcomes if None not in outcomes else None}
+            "sets": [(0, len(a), outcomes if None not in outcomes else None)]}
 
 
 def pooled(runs):
-    """The runs' clips and outcomes as one run: each set's clip indices moved past the sets before it."""
-    out = {"a": [], "b": [], "outcomes": None}
-    parts = ([], [])
+    """The runs as one: their clips in order, and each set's outcomes with the range of its clips (each set keeps
+    its own exact curve)."""
+    out = {"a": [], "b": [], "sets": []}
     for r in runs:
         offset = len(out["a"])
         out["a"] += r["a"]
         out["b"] += r["b"]
-        if r["outcomes"] is not None:
-            for side in (0, 1):
-                clips, scores, kinds = r["outcomes"][side]
-                parts[side].append((clips + offset, scores, kinds))
-    if all(r["outcomes"] is not None for r in runs):
-        out["outcomes"] = tuple(tuple(numpy.concatenate([p[k] for p in parts[side]]) for k in range(3)) for side in (0, 1))
+        out["sets"] += [(offset + start, count, outcomes) for start, count, outcomes in r["sets"]]
+    if any(outcomes is None for _, _, outcomes in out["sets"]):
+        out["sets"] = [(0, len(out["a"]), None)]
     return out
 
 
 def column(clips, key):
     return numpy.array([c[key] for c in clips], dtype=float)
+
+
+class PooledCurves:
+    """One side's TAR at FPPF <= x over several sets: each set's TAR off its own exact curve (a set is one
+    recording, whose false positives per frame the limit is about), people found summed over the sets, as
+    docs/quality.md's "judges pooled" are; for one set, its curve's TAR."""
+
+    def __init__(self, sets, side, frames, people):
+        self.parts = [(start, count, detect_clips.ExactCurve(*outcomes[side], frames[start:start + count], people[start:start + count]))
+                      for start, count, outcomes in sets]
+        self.people = people
+
+    def tar_at_fppf(self, weights, limits):
+        found = numpy.zeros(len(limits))
+        for start, count, curve in self.parts:
+            w = weights[start:start + count]
+            set_people = float(numpy.dot(w, self.people[start:start + count]))
+            if set_people > 0:
+                found += numpy.array(curve.tar_at_fppf(w, limits)) * set_people
+        total = float(numpy.dot(weights, self.people))
+        return found / total if total > 0 else numpy.full(len(limits), numpy.nan)
 
 
 def figures(run):
@@ -108,14 +128,14 @@ def figures(run):
         rb = xb.sum() / total if total > 0 else float("nan")
         interval = None if picks is None else detect_clips.quantiles(detect_clips.pooled_rate(xb - xa, per, picks))
         rows.append((name, ra, rb, rb - ra, interval))
-    if run["outcomes"] is not None:
-        curves = [detect_clips.ExactCurve(*run["outcomes"][side], frames, people) for side in (0, 1)]
+    if run["sets"][0][2] is not None:
+        curves = [PooledCurves(run["sets"], side, frames, people) for side in (0, 1)]
         limits = (0.1, 0.5)
         point = [c.tar_at_fppf(numpy.ones(len(a)), limits) for c in curves]
         diffs = []
         for p in ([] if picks is None else picks):
             w = numpy.bincount(p, minlength=len(a)).astype(float)
-            diffs.append(numpy.subtract(curves[1].tar_at_fppf(w, limits), curves[0].tar_at_fppf(w, limits)))
+            diffs.append(curves[1].tar_at_fppf(w, limits) - curves[0].tar_at_fppf(w, limits))
         for i, max_fppf in enumerate(limits):
             interval = detect_clips.quantiles(numpy.array([d[i] for d in diffs])) if diffs else None
             rows.append((f"TAR at FPPF <= {max_fppf:g}", point[0][i], point[1][i], point[1][i] - point[0][i], interval))
@@ -132,7 +152,7 @@ def report(title, run):
     for name, ra, rb, d, interval in figures(run):
         span = f"{interval[0]:+.3f} to {interval[1]:+.3f}" if interval else "no interval"
         lines.append(f"| {name} | {ra:.3f} | {rb:.3f} | {d:+.3f} ({span}) |")
-    if run["outcomes"] is None:
+    if run["sets"][0][2] is None:
         lines.append("\n(no outcomes.csv in both reports: no TAR at FPPF <= 0.1 / 0.5; rdsf-detect writes it since 2026-12-06)")
     return "\n".join(lines)
 
