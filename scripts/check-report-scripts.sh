@@ -120,6 +120,9 @@ expect 0 "^## pooled over the 2 sets: 6 clips, 360 frames, 40 people" \
 expect 1 "^paired-clips: $empty/c/clips.csv: clip #1 has 60 frames and 12 people" \
   /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/c"
 expect 1 "^paired-clips: $empty/none/clips.csv: No such file" /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/none"
+cat "$empty/a/clips.csv" <(tail -n +2 "$empty/a/clips.csv") >"$empty/c/clips.csv"
+expect 1 "^paired-clips: $empty/c/clips.csv: clip #0 of model 'm' is listed more than once" \
+  /usr/bin/python3 scripts/paired-clips.py "$empty/a:$empty/c"
 # With outcomes.csv in both reports, TAR at FPPF <= 0.1 from each exact curve: 30 frames allow 3 false positives;
 # A's curve reaches 3 of 4 people within them, B's 4 of 4.
 mkdir -p "$empty/d" "$empty/e"

@@ -49,6 +49,9 @@ def read_clips(path, model=None):
     if not out:
         models = sorted({r.get("model") or "" for r in rows})
         raise ClipsError(f"{path}: no clips of model '{label}' (models: {', '.join(models)})")
+    if len({c["clip"] for c in out}) != len(out):
+        raise ClipsError(f"{path}: clip {out[0]['clip']} of model '{label}' is listed more than once (two models of "
+                         "one label in one report: evaluate them in separate runs)")
     return out, label
 
 
