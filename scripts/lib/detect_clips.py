@@ -1,8 +1,11 @@
-"""What the Python helpers of scripts/ share about rdsf-detect's clips.csv: one reader, one bootstrap over clips.
+"""What the Python helpers of scripts/ share about rdsf-detect's report by clip: one reader of clips.csv and of
+outcomes.csv, the exact curve redone from the latter with weights per clip, one bootstrap over clips, and the
+scripts' argument reader.
 
 clips.csv (rdsf-detect --truth --report-dir DIR; docs/detect-and-evaluate.md, "By clip") has a row per model and
 clip at the model's operating point: model, clip_frames, probability, clip, frames, people (counted: at least
---min-visible visible), with_candidate, detected, false_positives.
+--min-visible visible), with_candidate, detected, false_positives. outcomes.csv has a row per model and
+candidate, score descending: model, clip, score (H(x)), outcome (detection, false_positive, neutral).
 
 The bootstrap draws clips with replacement, as many as there are, 2,000 times from numpy's default_rng(seed):
 a clip's people are the same people in the same room frame after frame, so clips, not person-frames, are the
