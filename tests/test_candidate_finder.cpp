@@ -26,6 +26,30 @@ const Candidate* find_at_depth(const std::vector<Candidate>& candidates, double 
 
 }  // namespace
 
+// A gap of missing readings only (label 0) is crossed up to hole_gap_px rows; one holding a pixel of a
+// farther layer, or longer than the limit, still breaks the run; nearer pixels in a gap are the occlusion
+// gap's (not crossed here: no occlusion limit).
+TEST(ColumnRuns, HoleGapsOfMissingReadingsOnlyAreCrossedUpToTheirLimit) {
+  cv::Mat1b labels = cv::Mat1b::zeros(60, 4);
+  for (int c = 0; c < 4; ++c) {
+    labels(cv::Rect(c, 0, 1, 10)).setTo(2);   // rows 0..9 of layer 2
+    labels(cv::Rect(c, 22, 1, 30)).setTo(2);  // rows 22..51 after a gap of 12 rows
+  }
+  labels(15, 2) = 3;                          // column 2: a farther pixel in the gap
+  labels(15, 3) = 1;                          // column 3: a nearer pixel in the gap
+  const std::vector<int> holes = {0, 0, 12, 0};
+  const auto crossed = column_runs(labels, 3, 3, {}, holes);
+  EXPECT_EQ(crossed[2][0].top, 0);   // missing readings only, 12 rows <= 12: one run 0..51
+  EXPECT_EQ(crossed[2][0].bottom, 51);
+  EXPECT_EQ(crossed[2][2].top, 22);  // a farther layer's pixel in the gap: broken
+  EXPECT_EQ(crossed[2][3].top, 22);  // a nearer one: the occlusion gap's rule, limit 0 here: broken
+  const auto shorter = column_runs(labels, 3, 3, {}, {0, 0, 11, 0});
+  EXPECT_EQ(shorter[2][0].top, 22);  // 12 rows > 11
+  const auto off = column_runs(labels, 3, 3);
+  EXPECT_EQ(off[2][0].top, 22);      // no hole limit: k alone
+  EXPECT_EQ(off[2][0].bottom, 51);
+}
+
 TEST(ColumnRuns, LongestRunToleratesGapsOfK) {
   cv::Mat1b labels = cv::Mat1b::zeros(40, 3);
   labels(cv::Rect(0, 2, 1, 5)).setTo(1);    // column 0: rows 2..6
@@ -38,6 +62,29 @@ TEST(ColumnRuns, LongestRunToleratesGapsOfK) {
   EXPECT_EQ(runs[1][1].top, 0);  // the gap of 5 > k breaks it: 0..3 is longer than 9..10
   EXPECT_EQ(runs[1][1].bottom, 3);
   EXPECT_EQ(runs[1][2].length(), 0);
+}
+
+// A person at 2 m whose body a band of missing readings crosses (dark trousers): each half is 160 rows,
+// 61 cm, under far_height (90 cm), so the thesis's runs give no candidate; with hole_gap the run crosses
+// the 40-row band (15 cm at 2 m) and the person is one candidate, head to feet. A band holding the wall's
+// readings (the person's legs apart, the wall seen between them) is not crossed.
+TEST(CandidateFinder, HoleGapJoinsAPersonCutByMissingReadings) {
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  test::paint(frame, {300, 260, 40, 40}, 0);
+  AnalyserParams on;
+  on.candidates.hole_gap_cm = 20;  // 52 rows at 2 m
+  EXPECT_EQ(find_at_depth(analyse(frame).candidates, 2000, 320), nullptr);
+  const FrameAnalysis crossed = analyse(frame, on);
+  const Candidate* person = find_at_depth(crossed.candidates, 2000, 320);
+  ASSERT_NE(person, nullptr);
+  EXPECT_EQ(person->strict_box.y, 100);
+  EXPECT_EQ(person->strict_box.height, 360);
+  on.candidates.hole_gap_cm = 10;  // 26 rows < 40
+  EXPECT_EQ(find_at_depth(analyse(frame, on).candidates, 2000, 320), nullptr);
+  on.candidates.hole_gap_cm = 20;
+  test::paint(frame, {300, 260, 40, 40}, 4000);
+  EXPECT_EQ(find_at_depth(analyse(frame, on).candidates, 2000, 320), nullptr);
 }
 
 TEST(CandidateFinder, PersonBeforeWall) {

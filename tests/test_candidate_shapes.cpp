@@ -328,6 +328,7 @@ TEST(CandidateShapes, ThesisPresetTurnsEveryDepartureOff) {
   const AnalyserParams t = thesis_params();
   EXPECT_FALSE(t.segmentation.left_border_jump);
   EXPECT_EQ(t.candidates.occlusion_gap_cm, 0);
+  EXPECT_EQ(t.candidates.hole_gap_cm, 0);
   EXPECT_EQ(t.candidates.floor_tolerance_mm, 0);
   EXPECT_FALSE(t.candidates.height_at_column_depth);
   EXPECT_EQ(t.candidates.fit.reach_cm, 0);

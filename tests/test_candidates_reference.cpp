@@ -19,9 +19,10 @@
 namespace rdsf {
 namespace {
 
-void expect_same_runs(const cv::Mat1b& labels, int layers, int k, const std::vector<int>& occlusion, const std::string& what) {
-  const auto fast = column_runs(labels, layers, k, occlusion);
-  const auto reference = test::column_runs_reference(labels, layers, k, occlusion);
+void expect_same_runs(const cv::Mat1b& labels, int layers, int k, const std::vector<int>& occlusion,
+                      const std::string& what, const std::vector<int>& holes = {}) {
+  const auto fast = column_runs(labels, layers, k, occlusion, holes);
+  const auto reference = test::column_runs_reference(labels, layers, k, occlusion, holes);
   ASSERT_EQ(fast.size(), reference.size());
   for (std::size_t l = 0; l < fast.size(); ++l) {
     for (std::size_t c = 0; c < fast[l].size(); ++c) {
@@ -51,10 +52,11 @@ TEST(CandidatesReference, ColumnRunsSameOnRandomLabelMaps) {
     const int rows = 1 + static_cast<int>(rng() % 70), cols = 1 + static_cast<int>(rng() % 9);
     const int layers = 1 + static_cast<int>(rng() % 5);
     const cv::Mat1b labels = random_label_map(rng, rows, cols, layers);
-    std::vector<int> occlusion(static_cast<std::size_t>(layers) + 1);
+    std::vector<int> occlusion(static_cast<std::size_t>(layers) + 1), holes(occlusion.size());
     for (int& o : occlusion) o = static_cast<int>(rng() % 12);
+    for (int& h : holes) h = static_cast<int>(rng() % 30);
     expect_same_runs(labels, layers, static_cast<int>(rng() % 8), trial % 2 ? occlusion : std::vector<int>{},
-                     "trial " + std::to_string(trial));
+                     "trial " + std::to_string(trial), trial % 3 ? holes : std::vector<int>{});
   }
 }
 
@@ -69,7 +71,10 @@ TEST(CandidatesReference, ColumnRunsSameOnWideMapsWithManyLayers) {
     if (trial % 7 == 0) labels.setTo(255, labels == static_cast<std::uint8_t>(layers));
     std::vector<int> occlusion(static_cast<std::size_t>(layers) + 1);
     for (int& o : occlusion) o = static_cast<int>(rng() % 12);
-    expect_same_runs(labels, layers, static_cast<int>(rng() % 8), occlusion, "wide trial " + std::to_string(trial));
+    std::vector<int> holes(occlusion.size());
+    for (int& h : holes) h = static_cast<int>(rng() % 30);
+    expect_same_runs(labels, layers, static_cast<int>(rng() % 8), occlusion, "wide trial " + std::to_string(trial),
+                     trial % 2 ? holes : std::vector<int>{});
   }
 }
 
@@ -144,7 +149,7 @@ TEST(CandidatesReference, SameOnSyntheticFrames) {
     const Segmentation s = segment_depth(depth, {});
     const int layers = static_cast<int>(s.layers.size());
     expect_same_runs(s.labels, layers, 6, std::vector<int>(static_cast<std::size_t>(layers) + 1, 40),
-                     "frame " + std::to_string(i));
+                     "frame " + std::to_string(i), std::vector<int>(static_cast<std::size_t>(layers) + 1, i % 2 ? 30 : 0));
     std::vector<char> passing(static_cast<std::size_t>(depth.cols), 1);
     for (const DepthLayer& layer : s.layers) {
       const int fast = floor_trimmed_bottom(depth, s.labels, layer.label, 100, 400, 50, 470, 150.0, passing,

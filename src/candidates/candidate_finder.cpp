@@ -104,12 +104,14 @@ std::vector<Candidate> find_candidates(const DepthFrame& frame, const Segmentati
   std::vector<Candidate> candidates;
   const int layer_count = static_cast<int>(segmentation.layers.size());
   if (layer_count == 0) return candidates;
-  std::vector<int> occlusion_px(static_cast<std::size_t>(layer_count) + 1, 0);
+  std::vector<int> occlusion_px(static_cast<std::size_t>(layer_count) + 1, 0), hole_px(occlusion_px.size(), 0);
   for (const DepthLayer& layer : segmentation.layers) {
+    const double depth_mm = std::max(1.0, layer.mean_depth_mm);
     occlusion_px[static_cast<std::size_t>(layer.label)] =
-        static_cast<int>(frame.camera.rows_px(params.occlusion_gap_cm, std::max(1.0, layer.mean_depth_mm)));
+        static_cast<int>(frame.camera.rows_px(params.occlusion_gap_cm, depth_mm));
+    hole_px[static_cast<std::size_t>(layer.label)] = static_cast<int>(frame.camera.rows_px(params.hole_gap_cm, depth_mm));
   }
-  const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px);
+  const auto runs = column_runs(segmentation.labels, layer_count, params.k, occlusion_px, hole_px);
   const cv::Rect image(0, 0, frame.depth_mm.cols, frame.depth_mm.rows);
   // Columns per row of the same length at the same depth: 1 for square pixels (every camera model the
   // workbench knows but a stretched frame's), so that a box half as wide as it is tall is so in metres.

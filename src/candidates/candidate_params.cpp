@@ -25,6 +25,9 @@ const ParameterTable<CandidateParams>& candidate_parameters() {
       parameter("occlusion-gap", &P::occlusion_gap_cm,
                 "a column's run goes on across nearer things up to this height (cm); 0 = thesis",
                 Range::at_least(0), std::optional<double>(0.0)),
+      parameter("hole-gap", &P::hole_gap_cm,
+                "a column's run goes on across missing readings only up to this height (cm); 0 = off",
+                Range::at_least(0), std::optional<double>(0.0)),
       parameter("floor-tolerance", &P::floor_tolerance_mm,
                 "cut bottom rows nearer than the object's median depth by more than this (mm): floor; 0 "
                 "= thesis",

@@ -53,17 +53,20 @@ inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, 
 //   nearer bit L   some segment of a label in 1..L-1 since then (L's something_nearer is true)
 // A segment of label s sets farther bits 1..s-1 and, when s > 0, nearer bits s+1..layer_count; for
 // 1 <= s <= layer_count it then goes on with or restarts label s's run as the reference does and clears
-// s's bits. Segments of label 0 (no reading) change nothing (their run is slot 0's); labels above layer_count
-// only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
+// s's bits (a gap since L's last segment that set neither held missing readings only). Segments of label 0
+// (no reading) change nothing (their run is slot 0's); labels above layer_count only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
 // instead of once per layer present in its column, with no other branch on the data. Words: 64-bit words
 // of a bit set (labels 0..layer_count).
 template <int Words>
 class RunScanner {
  public:
-  RunScanner(int width, int layer_count, int k, const std::vector<int>& occlusion_gap_px)
+  RunScanner(int width, int layer_count, int k, const std::vector<int>& occlusion_gap_px,
+             const std::vector<int>& hole_gap_px)
       : width_(width), slots_(static_cast<std::size_t>(layer_count) + 1), k_(k) {
     occlusion_.assign(slots_, 0);
+    hole_.assign(slots_, 0);
     for (std::size_t l = 1; l < slots_ && l < occlusion_gap_px.size(); ++l) occlusion_[l] = occlusion_gap_px[l];
+    for (std::size_t l = 1; l < slots_ && l < hole_gap_px.size(); ++l) hole_[l] = hole_gap_px[l];
     for (int s = 0; s < 256; ++s) {
       slot_of_[s] = static_cast<std::uint8_t>(s >= 1 && s <= layer_count ? s : 0);
       for (int w = 0; w < Words; ++w) below_[s][w] = above_[s][w] = 0;
@@ -134,7 +137,8 @@ class RunScanner {
     // The run's update without a branch on the data (masks: all ones where a condition holds).
     const int gap = first - run.last - 1;
     const int occluded = nothing_farther & something_nearer & (gap <= occlusion_[static_cast<std::size_t>(slot)]);
-    const int restart = -((run.last < 0) | ((gap > k_) & (occluded ^ 1)));
+    const int holed = nothing_farther & (something_nearer ^ 1) & (gap <= hole_[static_cast<std::size_t>(slot)]);
+    const int restart = -((run.last < 0) | ((gap > k_) & (occluded ^ 1) & (holed ^ 1)));
     const int start = (first & restart) | (run.start & ~restart);
     run.start = start;
     run.last = last;
@@ -148,6 +152,7 @@ class RunScanner {
   const std::size_t slots_;  // labels 0..layer_count
   const int k_;
   std::vector<int> occlusion_;
+  std::vector<int> hole_;
   std::uint8_t slot_of_[256];
   Word below_[256][Words], above_[256][Words];
   std::vector<Column> columns_;
@@ -156,8 +161,8 @@ class RunScanner {
 
 template <int Words>
 void scan_runs(const cv::Mat1b& labels, int layer_count, int k, const std::vector<int>& occlusion_gap_px,
-               std::vector<std::vector<ColumnRun>>& best) {
-  RunScanner<Words> scanner(labels.cols, layer_count, k, occlusion_gap_px);
+               const std::vector<int>& hole_gap_px, std::vector<std::vector<ColumnRun>>& best) {
+  RunScanner<Words> scanner(labels.cols, layer_count, k, occlusion_gap_px, hole_gap_px);
   scanner.scan(labels);
   for (int l = 1; l <= layer_count; ++l) {
     for (int c = 0; c < labels.cols; ++c) best[static_cast<std::size_t>(l)][static_cast<std::size_t>(c)] = scanner.best(l, c);
@@ -167,18 +172,19 @@ void scan_runs(const cv::Mat1b& labels, int layer_count, int k, const std::vecto
 }  // namespace
 
 std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int layer_count, int k,
-                                                const std::vector<int>& occlusion_gap_px) {
+                                                const std::vector<int>& occlusion_gap_px,
+                                                const std::vector<int>& hole_gap_px) {
   std::vector<std::vector<ColumnRun>> best(static_cast<std::size_t>(std::max(0, layer_count)) + 1,
                                            std::vector<ColumnRun>(static_cast<std::size_t>(labels.cols)));
   if (labels.empty() || layer_count <= 0) return best;
   // Labels are bytes: no pixel holds a label above 255, so those layers have no runs.
   const int counted = std::min(layer_count, 255);
   if (counted < 64) {
-    scan_runs<1>(labels, counted, k, occlusion_gap_px, best);
+    scan_runs<1>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
   } else if (counted < 128) {
-    scan_runs<2>(labels, counted, k, occlusion_gap_px, best);
+    scan_runs<2>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
   } else {
-    scan_runs<4>(labels, counted, k, occlusion_gap_px, best);
+    scan_runs<4>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
   }
   return best;
 }

@@ -23,7 +23,8 @@ struct ReferenceSegment {
 };
 
 inline std::vector<std::vector<ColumnRun>> column_runs_reference(const cv::Mat1b& labels, int layer_count, int k,
-                                                                const std::vector<int>& occlusion_gap_px = {}) {
+                                                                const std::vector<int>& occlusion_gap_px = {},
+                                                                const std::vector<int>& hole_gap_px = {}) {
   const int width = labels.cols, height = labels.rows;
   std::vector<std::vector<ColumnRun>> best(static_cast<std::size_t>(layer_count) + 1,
                                            std::vector<ColumnRun>(static_cast<std::size_t>(width)));
@@ -48,6 +49,8 @@ inline std::vector<std::vector<ColumnRun>> column_runs_reference(const cv::Mat1b
       if (!present[static_cast<std::size_t>(label)]) continue;
       const int occlusion_limit =
           static_cast<std::size_t>(label) < occlusion_gap_px.size() ? occlusion_gap_px[static_cast<std::size_t>(label)] : 0;
+      const int hole_limit =
+          static_cast<std::size_t>(label) < hole_gap_px.size() ? hole_gap_px[static_cast<std::size_t>(label)] : 0;
       ColumnRun& b = best[static_cast<std::size_t>(label)][static_cast<std::size_t>(c)];
       int start = -1, last = -1;
       // Since `last`: no pixel of a farther layer, and some of a nearer one (missing readings are allowed
@@ -61,7 +64,8 @@ inline std::vector<std::vector<ColumnRun>> column_runs_reference(const cv::Mat1b
         }
         const int gap = s.first - last - 1;
         const bool occluded = nothing_farther && something_nearer && gap <= occlusion_limit;
-        if (start < 0 || (gap > k && !occluded)) start = s.first;
+        const bool holed = nothing_farther && !something_nearer && gap <= hole_limit;  // missing readings only
+        if (start < 0 || (gap > k && !occluded && !holed)) start = s.first;
         last = s.last;
         nothing_farther = true;
         something_nearer = false;

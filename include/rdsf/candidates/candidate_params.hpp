@@ -173,6 +173,10 @@ struct CandidateParams {
   /// up to this real height (cm): a table before a person's legs does not cut the person in two. 0 turns
   /// it off (the thesis's behaviour).
   double occlusion_gap_cm = 60.0;
+  /// A column's run goes on across gaps of missing readings only (no pixel of any layer: holes a sensor
+  /// leaves on dark clothes, hair or noise) up to this real height (cm) at the layer's mean depth; gaps up
+  /// to k rows are crossed anyway. 0 turns it off (the default and the thesis's behaviour).
+  double hole_gap_cm = 0.0;
   /// Floor trimming: rows at the bottom of an object whose farthest layer pixel is nearer than the object's
   /// median depth by more than this (mm) are floor in front of the feet, not the object, and are cut off
   /// the box. 0 turns it off (the thesis's behaviour).
