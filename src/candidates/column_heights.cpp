@@ -56,8 +56,9 @@ inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, 
 // s's bits (a gap since L's last segment that set neither held missing readings only). Segments of label 0
 // (no reading) change nothing (their run is slot 0's); labels above layer_count only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
 // instead of once per layer present in its column, with no other branch on the data. Words: 64-bit words
-// of a bit set (labels 0..layer_count).
-template <int Words>
+// of a bit set (labels 0..layer_count). Holes: some layer has a hole gap limit (the test costs the scan a
+// tenth of its time, so a scan without limits leaves it out).
+template <int Words, bool Holes>
 class RunScanner {
  public:
   RunScanner(int width, int layer_count, int k, const std::vector<int>& occlusion_gap_px,
@@ -137,7 +138,7 @@ class RunScanner {
     // The run's update without a branch on the data (masks: all ones where a condition holds).
     const int gap = first - run.last - 1;
     const int occluded = nothing_farther & something_nearer & (gap <= occlusion_[static_cast<std::size_t>(slot)]);
-    const int holed = nothing_farther & (something_nearer ^ 1) & (gap <= hole_[static_cast<std::size_t>(slot)]);
+    const int holed = Holes ? nothing_farther & (something_nearer ^ 1) & (gap <= hole_[static_cast<std::size_t>(slot)]) : 0;
     const int restart = -((run.last < 0) | ((gap > k_) & (occluded ^ 1) & (holed ^ 1)));
     const int start = (first & restart) | (run.start & ~restart);
     run.start = start;
@@ -159,13 +160,26 @@ class RunScanner {
   std::vector<Run> runs_;  // per column, per slot
 };
 
-template <int Words>
+template <int Words, bool Holes>
 void scan_runs(const cv::Mat1b& labels, int layer_count, int k, const std::vector<int>& occlusion_gap_px,
                const std::vector<int>& hole_gap_px, std::vector<std::vector<ColumnRun>>& best) {
-  RunScanner<Words> scanner(labels.cols, layer_count, k, occlusion_gap_px, hole_gap_px);
+  RunScanner<Words, Holes> scanner(labels.cols, layer_count, k, occlusion_gap_px, hole_gap_px);
   scanner.scan(labels);
   for (int l = 1; l <= layer_count; ++l) {
     for (int c = 0; c < labels.cols; ++c) best[static_cast<std::size_t>(l)][static_cast<std::size_t>(c)] = scanner.best(l, c);
+  }
+}
+
+// The bit sets' width for `counted` labels.
+template <bool Holes>
+void scan_with(const cv::Mat1b& labels, int counted, int k, const std::vector<int>& occlusion_gap_px,
+               const std::vector<int>& hole_gap_px, std::vector<std::vector<ColumnRun>>& best) {
+  if (counted < 64) {
+    scan_runs<1, Holes>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
+  } else if (counted < 128) {
+    scan_runs<2, Holes>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
+  } else {
+    scan_runs<4, Holes>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
   }
 }
 
@@ -179,12 +193,10 @@ std::vector<std::vector<ColumnRun>> column_runs(const cv::Mat1b& labels, int lay
   if (labels.empty() || layer_count <= 0) return best;
   // Labels are bytes: no pixel holds a label above 255, so those layers have no runs.
   const int counted = std::min(layer_count, 255);
-  if (counted < 64) {
-    scan_runs<1>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
-  } else if (counted < 128) {
-    scan_runs<2>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
+  if (std::any_of(hole_gap_px.begin(), hole_gap_px.end(), [](int rows) { return rows > 0; })) {
+    scan_with<true>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
   } else {
-    scan_runs<4>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
+    scan_with<false>(labels, counted, k, occlusion_gap_px, hole_gap_px, best);
   }
   return best;
 }
