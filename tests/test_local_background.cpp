@@ -9,7 +9,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include "rdsf/analysis/frame_analyser.hpp"
-#include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/segmentation/background_model.hpp"
 #include "rdsf/segmentation/local_background.hpp"
@@ -102,15 +101,9 @@ TEST(LocalBackground, AFreeStandingPersonGetsNoDuplicate) {
   for (std::size_t i = 0; i < off.candidates.size(); ++i) EXPECT_EQ(on.candidates[i].fitted_box, off.candidates[i].fitted_box);
 }
 
-// Off in the analyser's defaults (mining, labelling) and under the thesis; on at 70 cm in the detector's
-// (PipelineParams, from detector_analyser_params(): nothing else differs from the analyser's defaults).
-TEST(LocalBackground, OnAtDetectionOffForMiningAndUnderTheThesis) {
+TEST(LocalBackground, OffByDefaultAndUnderTheThesis) {
   EXPECT_EQ(AnalyserParams{}.local_front_reach_cm, 0.0);
   EXPECT_EQ(thesis_params(local_front(70)).local_front_reach_cm, 0.0);
-  EXPECT_EQ(PipelineParams{}.analyser.local_front_reach_cm, 70.0);
-  AnalyserParams detector = detector_analyser_params();
-  detector.local_front_reach_cm = 0.0;
-  EXPECT_EQ(parameter_values(analyser_parameters(), detector), parameter_values(analyser_parameters(), AnalyserParams{}));
 }
 
 // Each thread fills a buffer of its own (frame_analyser.cpp): frames of two sizes, interleaved, on 1 and 3

@@ -28,8 +28,7 @@ const ParameterTable<AnalyserParams>& analyser_parameters() {
     t.push_back(parameter("local-front", &P::local_front_reach_cm,
                           "without --background: add as candidates the objects nearer than their surroundings on "
                           "both sides along the row within this reach (cm; a person before a wall), by "
-                          "--background-margin and --background-relative; 0 = off (detection defaults to 70, "
-                          "mining and labelling to 0)",
+                          "--background-margin and --background-relative; 0 = off",
                           Range::between(0, 500), std::optional<double>(0.0)));
     t.push_back(parameter("reference-focal", &P::reference_focal_px,
                           "pixel counts (--row-step, --n, --k, --column-gap) are for a camera of this focal length "
@@ -38,12 +37,6 @@ const ParameterTable<AnalyserParams>& analyser_parameters() {
     return t;
   }();
   return table;
-}
-
-AnalyserParams detector_analyser_params() {
-  AnalyserParams params;
-  params.local_front_reach_cm = 70.0;
-  return params;
 }
 
 AnalyserParams thesis_params(AnalyserParams params) { return with_thesis_values(analyser_parameters(), params); }

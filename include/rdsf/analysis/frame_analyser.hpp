@@ -43,20 +43,9 @@ struct AnalyserParams {
   BackgroundParams background_margins;
   /// Without a background model: the objects in front of their surroundings along each row within this
   /// reach (cm; segmentation/local_background.hpp) are added as candidates beside the layers', as a
-  /// background's are. 0: off (the analyser's default, so mining and labelling, and the thesis's); the
-  /// detector starts from detector_analyser_params(), where it is 70.
+  /// background's are. 0: off (the default and the thesis's).
   double local_front_reach_cm = 0.0;
 };
-
-/// The analyser's parameters a detector starts from (PipelineParams::analyser: rdsf-detect, the ROS node,
-/// PeopleDetector, rdsf-adapt's detection steps): AnalyserParams' defaults with local_front_reach_cm 70 cm,
-/// a person standing before a wall in the wall's depth layer found as what stands in front of it. Chosen by
-/// a rule written before its runs with people/v3 (docs/quality.md, "What stands in front, at detection"):
-/// TAR at the operating point +0.005 (95 % paired over 96 synthetic rooms +0.002 to +0.009) at +0.002 false
-/// positives per frame, +0.007 on 64 rooms rendered after, one more UC3M lab person, nothing real lost; about
-/// 1 ms a frame more on one core. Mining, labelling and training keep 0: a model trained on these candidates
-/// lost the UC3M home's people (docs/quality.md, "A people version trained with the two rules").
-AnalyserParams detector_analyser_params();
 
 /// The table of AnalyserParams: the segmentation's and candidates' rows, then the reported box
 /// (core/parameter_table.hpp). The feature spec has its own parser (FeatureSpec::parse).

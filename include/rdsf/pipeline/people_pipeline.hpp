@@ -20,8 +20,7 @@
 namespace rdsf {
 
 struct PipelineParams {
-  /// detector_analyser_params(): the analyser's defaults with what stands in front of its surroundings on.
-  AnalyserParams analyser = detector_analyser_params();
+  AnalyserParams analyser;
   TrackingParams tracking;
   /// A candidate is a person when P(person) >= this (the model's calibrated probability). 0 (default): the
   /// model's operating point (BoostedModel::operating_probability: the one it states, else 0.5).
