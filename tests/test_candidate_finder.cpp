@@ -65,9 +65,9 @@ TEST(ColumnRuns, LongestRunToleratesGapsOfK) {
 }
 
 // A person at 2 m whose body a band of missing readings crosses (dark trousers): each half is 160 rows,
-// 61 cm, under far_height (90 cm), so the thesis's runs give no candidate; with hole_gap the run crosses
-// the 40-row band (15 cm at 2 m) and the person is one candidate, head to feet. A band holding the wall's
-// readings (the person's legs apart, the wall seen between them) is not crossed.
+// 61 cm, under far_height (90 cm), so the default runs (gaps of k = 6 rows) give no candidate; with
+// hole_gap the run crosses the 40-row band (15 cm at 2 m) and the person is one candidate, head to feet. A
+// band holding the wall's readings (the person's legs apart, the wall seen between them) is not crossed.
 TEST(CandidateFinder, HoleGapJoinsAPersonCutByMissingReadings) {
   DepthFrame frame = test::wall_frame(4000);
   test::paint(frame, {300, 100, 40, 360}, 2000);

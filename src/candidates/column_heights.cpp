@@ -54,9 +54,10 @@ inline Word changed_columns(const std::uint8_t* above, const std::uint8_t* row, 
 // A segment of label s sets farther bits 1..s-1 and, when s > 0, nearer bits s+1..layer_count; for
 // 1 <= s <= layer_count it then goes on with or restarts label s's run as the reference does and clears
 // s's bits (a gap since L's last segment that set neither held missing readings only). Segments of label 0
-// (no reading) change nothing (their run is slot 0's); labels above layer_count only mark the flags (their runs go to slot 0, which is never reported). Each segment is visited once
-// instead of once per layer present in its column, with no other branch on the data. Words: 64-bit words
-// of a bit set (labels 0..layer_count). Holes: some layer has a hole gap limit (the test costs the scan a
+// (no reading) change nothing (their run is slot 0's); labels above layer_count only mark the flags (their
+// runs go to slot 0, which is never reported). Each segment is visited once instead of once per layer
+// present in its column, with no other branch on the data. Words: 64-bit words of a bit set (labels
+// 0..layer_count). Holes: some layer has a hole gap limit (the test costs the scan a
 // tenth of its time, so a scan without limits leaves it out).
 template <int Words, bool Holes>
 class RunScanner {
