@@ -304,14 +304,23 @@ trained_with() {
 }
 # paired_tar DIR-A DIR-B: B's TAR at FPPF <= 0.1 minus A's over the judges pooled (people found summed, as
 # jfig's), with its 95 % interval paired over their clips (scripts/paired-clips.py on each judge's clips.csv
-# and outcomes.csv), e.g. "+0.013 (+0.004 to +0.022)". Rule (a) of binary_choice reads its lower bound; the
-# evidence table shows it for every value.
+# and outcomes.csv), e.g. "+0.013 (+0.004 to +0.022)". Rule (a) of binary_choice reads its lower bound for
+# each source, the evidence table shows it for every value: each pair is bootstrapped once a run (about 2 s)
+# and kept in $paired_memo, which this run emptied before its runs were read (binary_choice runs in a
+# subshell, so the memo is files, not a variable).
+paired_memo=$loso/.paired
+rm -rf "$paired_memo" && mkdir -p "$paired_memo"
 paired_tar() {
-  local j pairs=()
-  for j in "${judge_sets[@]}"; do pairs+=("$1/$j:$2/$j"); done
-  /usr/bin/python3 scripts/paired-clips.py "${pairs[@]}" |
-    awk -F'|' '/^\| TAR at FPPF <= 0\.1 / { line = $5 } END { gsub(/^ +| +$/, "", line); print line }' ||
-    { echo "loso-report: scripts/paired-clips.py failed on $1 and $2" >&2; exit 1; }
+  local j pairs=() memo
+  memo=$paired_memo/$(basename "$1")--$(basename "$2")
+  if [ ! -s "$memo" ]; then
+    for j in "${judge_sets[@]}"; do pairs+=("$1/$j:$2/$j"); done
+    /usr/bin/python3 scripts/paired-clips.py "${pairs[@]}" |
+      awk -F'|' '/^\| TAR at FPPF <= 0\.1 / { line = $5 } END { gsub(/^ +| +$/, "", line); print line }' > "$memo.tmp" ||
+      { echo "loso-report: scripts/paired-clips.py failed on $1 and $2" >&2; exit 1; }
+    mv "$memo.tmp" "$memo"
+  fi
+  cat "$memo"
 }
 # lever_row HELD-OUT CHOICE DEFAULT "A B": one row of the choices table; a training choice made without the
 # source that is not the default gets a note (the model was not retrained with it).
