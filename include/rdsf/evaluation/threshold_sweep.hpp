@@ -103,10 +103,11 @@ inline constexpr const char* kEvaluationReportFiles =
     "metrics.csv, curve.csv, clips.csv, outcomes.csv, summary.txt, summary.md, roc.png, det.png";
 
 /// Writes metrics.csv (the tables), curve.csv (the exact curves), clips.csv (each clip at the operating
-/// probability), outcomes.csv (each candidate's clip, score and outcome on the exact curve), summary.txt, summary.md (one Markdown row per model), roc.png and det.png into `dir`
-/// (created when missing); returns the summary text (also what summary.txt holds). With two or more models
-/// on the same frames, the summary ends with each later model's TAR at FPPF <= 0.1 and 0.5 minus the first
-/// model's, with 95 % intervals paired over clips (paired_difference).
+/// probability), outcomes.csv (each candidate's clip, score and outcome on the exact curve), summary.txt,
+/// summary.md (one Markdown row per model), roc.png and det.png into `dir` (created when missing); returns
+/// the summary text (also what summary.txt holds). With two or more models on the same frames, the summary
+/// ends with each later model's TAR at FPPF <= 0.1 and 0.5 minus the first model's, with 95 % intervals
+/// paired over clips (paired_difference).
 std::string write_evaluation_report(const std::vector<SweepResult>& results, const std::string& dir);
 
 }  // namespace rdsf
