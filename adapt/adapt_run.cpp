@@ -12,6 +12,7 @@
 
 #include "adapt/adapt_state.hpp"
 #include "adapt/run_program.hpp"
+#include "cli/cli.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/atomic_file.hpp"
@@ -103,6 +104,46 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
   }
 }
 
+// The analyser options every step runs with: the ones given, the model's stated ones for the rest.
+struct StepOptions {
+  AnalyserParams analyser;
+  /// For the steps' programs: every option whose value differs from the default or that the model states
+  /// (a program given --model would take the model's value for an option not on its command line).
+  std::vector<std::string> arguments;
+  /// What the adapted model states (--detection-options of rdsf-train): none when no option was given (nor
+  /// --thesis) and the model states none (the adapted model then runs with the detector's own, as its base).
+  RecordedParameters stated;
+};
+
+StepOptions step_options(const AdaptOptions& o, const BoostedModel& model) {
+  StepOptions s;
+  s.analyser = o.given.for_model(o.analyser, &model);
+  const RecordedParameters all = stated_options(s.analyser), departures = departures_from_defaults(all);
+  RecordedParameters passed;
+  for (const auto& option : all) {
+    const bool stated = std::any_of(model.detection_options().begin(), model.detection_options().end(),
+                                    [&](const auto& m) { return m.first == option.first; });
+    if (stated || std::find(departures.begin(), departures.end(), option) != departures.end()) passed.push_back(option);
+  }
+  s.arguments = cli::analyser_arguments(passed);
+  if (!o.given.keys.empty() || !o.given.take_stated || !model.detection_options().empty()) s.stated = all;
+  return s;
+}
+
+// The room presence scan's pipeline: the steps' analyser options as they are.
+PipelineParams presence_params(const StepOptions& step) {
+  PipelineParams p;
+  p.analyser = step.analyser;
+  p.analyser_given.take_stated = false;
+  return p;
+}
+
+// `args` with the steps' analyser options after them.
+std::vector<std::string> with_options(std::vector<std::string> args, const StepOptions& s) {
+  args.insert(args.end(), s.arguments.begin(), s.arguments.end());
+  return args;
+}
+
 // A list file of the room's frames taken as empty (absolute paths), for rdsf-mine.
 // A list file's frames take the camera.yml of the list's folder (png_folder_source.hpp), so the room's own
 // camera.yml (its camera model and depth unit) is written beside the list, in a folder of their own.
@@ -137,9 +178,9 @@ std::string write_empty_frames(const AdaptOptions& o, const RoomPresence& presen
 // tracker, follows one person over PresenceParams::confident_track_frames frames (docs/adapting-to-your-room.md).
 // With --trust-empty (the user has looked at the frame named: nobody is there) it is used all the same: what
 // the model follows there is then the room's strongest false positive, its hardest negative.
-void check_empty_recording(const AdaptOptions& o, const BoostedModel& model) {
+void check_empty_recording(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step) {
   if (o.empty.empty()) return;
-  const RoomPresence presence = scan_room_presence(o.empty, model, PipelineParams{}, CameraModel::kinect_v1());
+  const RoomPresence presence = scan_room_presence(o.empty, model, presence_params(step), CameraModel::kinect_v1());
   const PresenceParams& rule = presence.rule;
   if (presence.longest_confident_track >= rule.confident_track_frames) {
     const std::string seen = model_reference(model) + " follows a person over " +
@@ -161,7 +202,7 @@ void check_empty_recording(const AdaptOptions& o, const BoostedModel& model) {
 // base"): rdsf-synth's seed 11, --base-frames frames of 1-4 people in rooms of 15 frames and half as many of
 // the same rooms empty; its people labelled from the generator's truth (assisted, no question asked) and its
 // empty frames mined. The same options give the same sets.
-void render_base(const AdaptOptions& o, const Paths& paths) {
+void render_base(const AdaptOptions& o, const StepOptions& step, const Paths& paths) {
   const std::string frames = paths.base_part("frames"), empty = paths.base_part("empty");
   const std::string count = std::to_string(o.base_frames), empty_count = std::to_string(std::max(1, o.base_frames / 2));
   const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15", "--force"};
@@ -174,21 +215,26 @@ void render_base(const AdaptOptions& o, const Paths& paths) {
   args.insert(args.end(), scene.begin(), scene.end());
   run_step_program("rdsf-synth", args, paths.log("base"));
   say("base: labelling its people from the generator's truth (rdsf-label) and mining its empty frames (rdsf-mine)");
-  run_step_program("rdsf-label", {"--source", frames, "--out", paths.base_part("people"), "--truth",
-                                  (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null", "--keep-rejected",
-                                  "--threads", std::to_string(o.threads)},
+  run_step_program("rdsf-label",
+                   with_options({"--source", frames, "--out", paths.base_part("people"), "--truth",
+                                 (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null", "--keep-rejected",
+                                 "--threads", std::to_string(o.threads)},
+                                step),
                    paths.log("base"));
-  run_step_program("rdsf-mine", {"--source", empty, "--out", paths.base_part("negatives"), "--threads",
+  run_step_program("rdsf-mine",
+                   with_options({"--source", empty, "--out", paths.base_part("negatives"), "--threads",
                                  std::to_string(o.threads)},
+                                step),
                    paths.log("base"));
   say("a synthetic base rendered in " + paths.base + " (" + count + " frames with people, " + empty_count + " empty)");
 }
 
 // Step 1: the room's negatives, the model's false positives first.
-void room_negatives(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
+void room_negatives(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
+                    const Paths& paths) {
   std::string source = o.empty;  // checked by check_empty_recording
   if (o.empty.empty()) {
-    const RoomPresence presence = scan_room_presence(o.source, model, PipelineParams{}, CameraModel::kinect_v1());
+    const RoomPresence presence = scan_room_presence(o.source, model, presence_params(step), CameraModel::kinect_v1());
     say(std::to_string(presence.empty_frames()) + " of " + std::to_string(presence.frames.size()) +
         " frames taken as empty (no candidate with P >= 0.2 within 15 frames, runs of 10 frames or more)");
     if (!o.truth.empty()) {  // how often that took a person as empty
@@ -210,8 +256,8 @@ void room_negatives(const AdaptOptions& o, const BoostedModel& model, AdaptState
   }
   char min_score[32];
   std::snprintf(min_score, sizeof min_score, "%.6g", model.calibration().score_at(0.5));
-  const std::vector<std::string> common{"--source", source, "--out", paths.negatives, "--threads",
-                                        std::to_string(o.threads)};
+  const std::vector<std::string> common =
+      with_options({"--source", source, "--out", paths.negatives, "--threads", std::to_string(o.threads)}, step);
   std::vector<std::string> hard = common;  // the model's false positives first, then every other candidate
   hard.insert(hard.end(), {"--model", o.model, "--models-dir", o.models_dir, "--min-score", min_score});
   run_step_program("rdsf-mine", hard, paths.log("negatives"));
@@ -238,7 +284,7 @@ Answers count_answers(const std::string& room_set) {
 }
 
 // Step 2: the person answers what the model is unsure of, one answer per track, within the budget.
-void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
+void room_answers(const AdaptOptions& o, const StepOptions& step, AdaptState& state, const Paths& paths) {
   const long left = o.budget - count_answers(paths.room).human;  // a resumed run spends only the rest
   if (left > 0) {
     std::vector<std::string> args{"--source", o.source, "--out", paths.room, "--model", o.model, "--models-dir",
@@ -249,7 +295,7 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
     if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
     if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
     const bool window = o.truth.empty() && o.answers.empty();
-    run_step_program("rdsf-label", args, window ? std::string() : paths.log("answers"));
+    run_step_program("rdsf-label", with_options(args, step), window ? std::string() : paths.log("answers"));
   }
   const Answers a = count_answers(paths.room);
   state.set("answers.human", std::to_string(a.human));
@@ -261,7 +307,8 @@ void room_answers(const AdaptOptions& o, AdaptState& state, const Paths& paths) 
 }
 
 // Step 3: the room's samples with the base sets; the new model's path goes to the state.
-void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
+void train_room_model(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
+                      const Paths& paths) {
   // A set given K times puts each of its samples K times among the rows: weight K, each copy in the validation
   // group of its frame. Without a base there is nothing to weigh against, and validation then splits samples,
   // not frames (below), which would put copies on both sides: the room's sets once.
@@ -298,6 +345,12 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, AdaptSta
                                 "adapted_base=" + (base.empty() ? std::string("none") : base)}) {
     args.insert(args.end(), {"--provenance", kv});
   }
+  if (!step.stated.empty()) {  // the options the room's samples were cut with, which the model then runs with
+    args.push_back("--detection-options");
+    const RecordedParameters departures = departures_from_defaults(step.stated);
+    for (const auto& [key, text] : departures) args.push_back(key + "=" + text);
+    if (departures.empty()) args.push_back("defaults");
+  }
   const auto t0 = Clock::now();
   run_step_program("rdsf-train", args, paths.log("train"));
   const std::vector<std::string> wrote = log_lines(paths.log("train"), "rdsf-train: wrote ", 1);
@@ -320,11 +373,13 @@ struct BeforeAfter {
   std::string before, after;
   std::string difference;  ///< "+0.083 (+0.000 to +0.167 over 3 clips) few", or "... (one clip: no interval)"
 };
-BeforeAfter compare_on_eval(const AdaptOptions& o, const std::string& adapted, const std::string& dir,
-                            const Paths& paths) {
-  run_step_program("rdsf-detect", {"--source", o.eval, "--truth", o.truth, "--model", o.model, "--model", adapted,
-                                   "--models-dir", o.models_dir, "--clip-frames", std::to_string(kEvalClipFrames),
-                                   "--report-dir", dir, "--force"},
+BeforeAfter compare_on_eval(const AdaptOptions& o, const StepOptions& step, const std::string& adapted,
+                            const std::string& dir, const Paths& paths) {
+  run_step_program("rdsf-detect",
+                   with_options({"--source", o.eval, "--truth", o.truth, "--model", o.model, "--model", adapted,
+                                 "--models-dir", o.models_dir, "--clip-frames", std::to_string(kEvalClipFrames),
+                                 "--report-dir", dir, "--force"},
+                                step),
                    paths.log("report"));
   const std::string summary = (fs::path(dir) / "summary.txt").string();
   std::ifstream in(summary);
@@ -344,7 +399,7 @@ BeforeAfter compare_on_eval(const AdaptOptions& o, const std::string& adapted, c
 }
 
 // Step 4: before / after on held-out frames, else the answers and the new model's own validation.
-void report(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
+void report(const AdaptOptions& o, const StepOptions& step, AdaptState& state, const Paths& paths) {
   const BoostedModel adapted = BoostedModel::load(state.get("model"));
   const RocSummary& v = adapted.training().validation.summary;
   char line[400];
@@ -356,7 +411,7 @@ void report(const AdaptOptions& o, AdaptState& state, const Paths& paths) {
                 state.get("train_seconds").c_str(), v.auc, v.tar_at_far_1);
   std::string text = std::string(line) + "\n";
   if (!o.truth.empty() && !o.eval.empty()) {
-    const BeforeAfter b = compare_on_eval(o, state.get("model"), (fs::path(o.out) / "report").string(), paths);
+    const BeforeAfter b = compare_on_eval(o, step, state.get("model"), (fs::path(o.out) / "report").string(), paths);
     state.set("tar_before", b.before);
     state.set("tar_after", b.after);
     state.set("tar_difference", b.difference);
@@ -384,23 +439,25 @@ void step(AdaptState& state, const std::string& name, const std::function<void()
 
 int run_adapt(const AdaptOptions& o) {
   const BoostedModel model = BoostedModel::load(o.model, o.models_dir);
+  const StepOptions options = step_options(o, model);
   check_room(o, model);  // bad input is refused before anything is written
-  check_empty_recording(o, model);
+  check_empty_recording(o, model, options);
   AdaptState state(o.out);
   state.pin("room", fs::absolute(o.source).string());
   state.pin("name", o.name);
+  state.pin("analyser_options", option_words(departures_from_defaults(stated_options(options.analyser))));
   const Paths paths(o.out);
   fs::create_directories(paths.logs);
   AdaptOptions with_base = o;
   if (o.base_pos.empty() && o.base_neg.empty() && o.base_frames > 0) {
-    step(state, "base", [&] { render_base(o, paths); });
+    step(state, "base", [&] { render_base(o, options, paths); });
     with_base.base_pos = {paths.base_part("people")};
     with_base.base_neg = {paths.base_part("negatives")};
   }
-  step(state, "negatives", [&] { room_negatives(o, model, state, paths); });
-  step(state, "answers", [&] { room_answers(o, state, paths); });
-  step(state, "train", [&] { train_room_model(with_base, model, state, paths); });
-  step(state, "report", [&] { report(o, state, paths); });
+  step(state, "negatives", [&] { room_negatives(o, model, options, state, paths); });
+  step(state, "answers", [&] { room_answers(o, options, state, paths); });
+  step(state, "train", [&] { train_room_model(with_base, model, options, state, paths); });
+  step(state, "report", [&] { report(o, options, state, paths); });
   return 0;
 }
 

@@ -9,13 +9,16 @@
 //   2. answers    the model answers what it is sure of, the person the rest, most uncertain first, one
 //                 answer per track, within --budget (rdsf-label --ask uncertain --per-track)
 //   3. train      the room's samples with the base sets, continuing the model (--init) or from nothing
-//                 (rdsf-train), saved as a new version of --name with the room, answers and base recorded
+//                 (rdsf-train), saved as a new version of --name with the room, answers and base recorded,
+//                 stating the analyser options the steps ran with (--detection-options)
 //   4. report     before / after on held-out frames with --truth and --eval (rdsf-detect), else the
 //                 answers spent and the new model's validation
 #include <string>
 #include <vector>
 
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/labeling/track_propagation.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 
 namespace rdsf {
 
@@ -45,6 +48,11 @@ struct AdaptOptions {
   /// (the room's samples alone).
   int base_frames = 600;
   int threads = 0;
+  /// The frame analyser's options (segmentation, candidates) and which were given: every step runs with the
+  /// given ones, the model's stated ones for the rest (pipeline/stated_options.hpp), and the adapted model
+  /// states them all when any was given or the model states any.
+  AnalyserParams analyser;
+  GivenOptions given;
 };
 
 int run_adapt(const AdaptOptions& options);

@@ -10,7 +10,8 @@ const rdsf::cli::ProgramInfo kProgram{
     "Adapts a model to a room in resumable steps, each one of the workbench's programs: a synthetic base when\n"
     "none is given (rdsf-synth, rdsf-label, rdsf-mine), negatives (rdsf-mine), the person's answers, one per\n"
     "track (rdsf-label --per-track), training (rdsf-train --init), report (rdsf-detect). Killed, it resumes at\n"
-    "the step it was in; nothing answered is lost.\n"
+    "the step it was in; nothing answered is lost. Candidate and segmentation options given here are used by\n"
+    "every step, and the adapted model states them, so rdsf-detect and the ROS node run it with them.\n"
     "docs/adapting-to-your-room.md"};
 
 int main(int argc, char** argv) {
@@ -50,11 +51,16 @@ int main(int argc, char** argv) {
     rdsf::cli::add_per_place_option(options, o.per_place);
     rdsf::cli::add_propagate_model_option(options, o.propagate_model);
     rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
+    options.add(rdsf::cli::analyser_options(o.analyser));
     options.add_options()
         ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")
         ("chart-png", po::value(&chart_png), "with --chart: the picture to write");
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values)) return 0;
+    o.given = rdsf::cli::given_analyser_options(values);
+    if (!values["feature-spec"].defaulted()) {
+      throw rdsf::cli::UsageError("--feature-spec: the adapted model keeps the features of the model it adapts");
+    }
     if (!chart.empty()) {
       if (chart_png.empty()) throw rdsf::cli::UsageError("--chart needs --chart-png");
       rdsf::write_adaptation_chart(chart, chart_png);

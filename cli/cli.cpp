@@ -139,10 +139,36 @@ po::options_description analyser_options(AnalyserParams& p) {
   po::options_description candidates("Candidates (shape)");
   add_table_options(candidates, ParameterTable<AnalyserParams>(rows.begin() + segmentation_rows, rows.end()), p);
   candidates.add_options()("thesis", po::bool_switch(),
-                           "the thesis's exact behaviour: every departure off (options given explicitly still win)");
+                           "the thesis's exact behaviour: every departure off, and no detection option a model states "
+                           "taken (options given explicitly still win)");
   po::options_description all;
   all.add(segmentation).add(candidates).add(feature_spec_options(p.features));
   return all;
+}
+
+GivenOptions given_analyser_options(const po::variables_map& values) {
+  GivenOptions given;
+  for (const Parameter<AnalyserParams>& row : analyser_parameters()) {
+    const auto it = values.find(row.name);
+    if (it != values.end() && !it->second.defaulted()) given.keys.push_back(parameter_key(row.name));
+  }
+  const auto thesis = values.find("thesis");
+  given.take_stated = thesis == values.end() || !thesis->second.as<bool>();
+  return given;
+}
+
+std::vector<std::string> analyser_arguments(const RecordedParameters& options) {
+  std::vector<std::string> out;
+  for (const auto& [key, text] : options) {
+    const std::string name = canonical_option_name(key);
+    const Parameter<AnalyserParams>* row = find_parameter(analyser_parameters(), name);
+    if (row != nullptr && row->is_switch) {
+      if (text == "1") out.push_back("--" + name);
+      continue;
+    }
+    out.insert(out.end(), {"--" + name, text});
+  }
+  return out;
 }
 
 po::options_description background_options(std::string& dir, BackgroundParams& params) {

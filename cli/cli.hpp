@@ -77,6 +77,15 @@ void apply_overrides(const ParameterTable<Params>& table, Params& params,
 /// Options of the frame analyser (segmentation, candidates: analyser_parameters()), bound to `params`.
 po::options_description analyser_options(AnalyserParams& params);
 
+/// After parse(), with analyser_options() among the options: the keys of the analyser options given (on the
+/// command line, in --config, as a ROS parameter), and whether a model's stated detection options are taken
+/// for the rest (pipeline/stated_options.hpp): not under --thesis.
+GivenOptions given_analyser_options(const po::variables_map& values);
+
+/// Analyser options as a program's arguments: {"--hole-gap", "20", ...}; a switch row (--relaxed) is its name
+/// alone when on and left out when off. For a program that runs others with its own options (rdsf-adapt).
+std::vector<std::string> analyser_arguments(const RecordedParameters& options);
+
 /// --background DIR (a background model of the room, rdsf-background; off when not given) bound to `dir`, and
 /// the foreground rule's margins (background_parameters()) bound to `params`.
 po::options_description background_options(std::string& dir, BackgroundParams& params);

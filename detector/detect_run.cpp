@@ -30,6 +30,7 @@
 #include "rdsf/pipeline/live_pipeline.hpp"
 #include "rdsf/pipeline/parallel_pipeline.hpp"
 #include "rdsf/pipeline/people_overlay.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 
 namespace rdsf {
 namespace {
@@ -132,12 +133,35 @@ void check_outputs(const DetectOptions& o) {
   if (o.show) gui::require_display("rdsf-detect --show", "drop --show or use --save-dir to get pictures");
 }
 
-/// The pipeline's parameters for these models: the detector computes the first model's feature spec unless
-/// --feature-spec names one (then they must agree: PeoplePipeline refuses otherwise). Further models score
-/// the same crops in their own specs.
+/// The first key whose text differs between two models' analyser options, as "key a (first) / b (second)".
+std::string first_difference(const RecordedParameters& a, const RecordedParameters& b) {
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    if (a[i] != b[i]) return a[i].first + " " + a[i].second + " / " + b[i].second;
+  }
+  return "";
+}
+
+/// The pipeline's parameters for these models: the first model's stated detection options for the options
+/// not given (stated_options.hpp; every further model must run with the same, as they score the same
+/// candidates), and the detector computes the first model's feature spec unless --feature-spec names one
+/// (then they must agree: PeoplePipeline refuses otherwise). Further models score the same crops in their
+/// own specs.
 PipelineParams pipeline_params_for(const DetectOptions& o, const std::vector<BoostedModel>& models) {
   PipelineParams params = o.pipeline;
   cli::apply_background(o.background, params.analyser);
+  if (!models.empty()) {
+    const GivenOptions& given = params.analyser_given;
+    const RecordedParameters first = stated_options(given.for_model(params.analyser, &models.front()));
+    for (std::size_t m = 1; m < models.size(); ++m) {
+      const std::string differs = first_difference(first, stated_options(given.for_model(params.analyser, &models[m])));
+      if (!differs.empty()) {
+        throw cli::UsageError("models " + model_label(models.front()) + " and " + model_label(models[m]) +
+                              " run with other detection options (" + differs +
+                              "): they score the same candidates, so give that option, or evaluate them apart");
+      }
+    }
+    params.analyser = given.for_model(params.analyser, &models.front());
+  }
   if (!models.empty() && !o.feature_spec_given) params.analyser.features = models.front().feature_spec();
   // The evaluation sweeps tracking over every candidate's colour histogram, not only the detections'.
   params.colour_crops_of_all = !o.truth_csv.empty();
@@ -166,6 +190,8 @@ void announce(const DetectOptions& o, const FrameSource& source, const std::vect
     std::cerr << "; model " << model_label(m) << " (" << m.path() << "), " << o.pipeline.decision_text(m);
   }
   std::cerr << "\n";
+  const std::string stated = models.empty() ? "" : o.pipeline.analyser_given.said_of(models.front());
+  if (!stated.empty()) std::cerr << "rdsf-detect: " << stated << "\n";
 }
 
 /// Each frame after tracking, in frame order, one at a time (on the calling thread, or a live worker):
@@ -175,7 +201,7 @@ class FrameHandler {
   FrameHandler(const DetectOptions& o, const std::vector<BoostedModel>& models, const GroundTruth& truth,
                const PeoplePipeline& pipeline, DetectionCsv* csv, std::optional<std::int64_t> frame_count)
       : evaluated(models.size()), o_(o), models_(models), truth_(truth), pipeline_(pipeline), csv_(csv),
-        box_(o.pipeline.analyser.reported_box), progress_(std::cerr, "frames", frame_count) {
+        box_(pipeline.params().analyser.reported_box), progress_(std::cerr, "frames", frame_count) {
     for (const BoostedModel& m : models) scorers_.emplace_back(m);
   }
 
@@ -333,7 +359,8 @@ int run_detect(const DetectOptions& o) {
   PeoplePipeline pipeline(pipeline_params_for(o, models), models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.frames);
   std::unique_ptr<DetectionCsv> csv;
-  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), o.pipeline.analyser.reported_box);
+  const BoxKind box = pipeline.params().analyser.reported_box;
+  if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), box);
   if (!o.save_dir.empty()) create_save_dir(o.save_dir);
   announce(o, *source, models);
 
@@ -341,7 +368,7 @@ int run_detect(const DetectOptions& o) {
   const double wall_s = process_frames(o, pipeline, *source, handler);
   finish_run(o, *source, pipeline, csv.get(), handler, wall_s, !models.empty());
 
-  if (evaluate) std::cerr << handler.coverage.summary(o.pipeline.analyser.reported_box);
+  if (evaluate) std::cerr << handler.coverage.summary(box);
   if (evaluate && !models.empty()) evaluate_models(o, models, truth, handler, wall_s);
   return 0;
 }

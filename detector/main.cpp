@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     o.feature_spec_given = !values["feature-spec"].defaulted();
+    o.pipeline.analyser_given = rdsf::cli::given_analyser_options(values);
     o.thresholds = thresholds.empty() ? rdsf::default_probability_thresholds() : rdsf::cli::parse_thresholds(thresholds);
     rdsf::check_options(o);
     return rdsf::run_detect(o);

@@ -97,10 +97,13 @@ ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Cl
 }
 
 /// --model, checked against the set's feature spec and crops before the set is opened or created, so that
-/// a wrong model changes nothing. Null without --model.
-std::unique_ptr<BoostedModel> load_model(const LabelOptions& o) {
+/// a wrong model changes nothing; the analyser takes the detection options it states for the options not
+/// given (stated_options.hpp). Null without --model.
+std::unique_ptr<BoostedModel> load_model(LabelOptions& o) {
   if (o.model.empty()) return nullptr;
   auto model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
+  o.session.analyser = o.given.for_model(o.session.analyser, model.get());
+  if (const std::string stated = o.given.said_of(*model); !stated.empty()) std::cerr << "rdsf-label: " << stated << "\n";
   const bool exists = std::filesystem::exists(std::filesystem::path(o.out_set) / "manifest.yml");
   const FeatureSpec set_spec = exists ? SampleSet::open_read(o.out_set).feature_spec() : o.session.analyser.features;
   if (!(model->feature_spec() == set_spec)) {
@@ -368,7 +371,8 @@ void check_options(const LabelOptions& o) {
   if (o.budget < 0) throw cli::UsageError("--budget must be 0 (no limit) or more");
 }
 
-int run_label(const LabelOptions& o) {
+int run_label(const LabelOptions& options) {
+  LabelOptions o = options;
   const bool headless = !o.answers.empty() || o.session.truth_is_oracle;
   if (!headless) gui::require_display("rdsf-label", "label on this machine with --answers FILE (or - for stdin) instead");
   const std::unique_ptr<BoostedModel> model = load_model(o);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "rdsf/labeling/labeling_session.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 
 namespace rdsf {
 
@@ -10,6 +11,7 @@ struct LabelOptions {
   LabelingConfig session;
   std::string out_set;
   std::string model;           ///< empty: no model
+  GivenOptions given;          ///< the analyser options given: the model's stated ones fill the rest
   std::string models_dir = "models";
   std::string truth_csv;       ///< empty: no assisted mode
   std::string answers;         ///< empty: window; "-": stdin; else a file

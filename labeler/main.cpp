@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     options.add(rdsf::cli::analyser_options(o.session.analyser));
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
+    o.given = rdsf::cli::given_analyser_options(values);
     rdsf::apply_option_text(text, o);
     rdsf::check_options(o);
     return rdsf::run_label(o);

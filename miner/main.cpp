@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values, camera)) return 0;
     o.min_score_given = !values["min-score"].defaulted();
+    o.given = rdsf::cli::given_analyser_options(values);
     return o.merge.empty() ? rdsf::run_mine(o) : rdsf::run_merge(o);
   });
 }

@@ -66,6 +66,8 @@ int run_mine(MineOptions& o) {
   std::optional<BoostedModel> model;
   if (!o.model.empty()) {
     model = BoostedModel::load(o.model, o.models_dir);
+    p.analyser = o.given.for_model(p.analyser, &*model);  // its stated detection options, for those not given
+    if (const std::string stated = o.given.said_of(*model); !stated.empty()) std::cerr << "rdsf-mine: " << stated << "\n";
     check_model_fits(*model, p.analyser);
     const BoostedModel& m = *model;
     const ModelScorer scorer(m);  // only the features the model reads

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "rdsf/dataset/negative_miner.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 
 namespace rdsf {
 
@@ -12,6 +13,7 @@ struct MineOptions {
   std::string out;                  ///< the sample set folder (created when absent)
   std::string shard = "1/1";        ///< --shard i/n, parsed into mine.shard_index / shard_count
   std::string model;                ///< hard-negative mode: model file or name
+  GivenOptions given;               ///< the analyser options given: the model's stated ones fill the rest
   std::string models_dir = "models";
   double min_score = 0;
   bool min_score_given = false;     ///< --min-score was on the command line

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     o.feature_spec_given = !values["feature-spec"].defaulted();
+    o.pipeline.analyser_given = rdsf::cli::given_analyser_options(values);
     // Waiting, a frame's colour is its own: a pair's stamps are close. Not waiting (the default), it is the
     // previous frame's: the default gap allows a frame period at 10 frames/s and up.
     if (o.colour_wait && values["colour-gap-ms"].defaulted()) o.colour_gap_ms = rdsf::kColourGapWaitingMs;

@@ -54,6 +54,22 @@ std::string own_models(const test::TempDir& dir) {
   return test::quote(models.string());
 }
 
+// A models folder of the test's own holding people/v2, and the command that adapts the 60-frame room
+// rendered in `dir` with its truth, headless (`budget` answers, 3 rounds, no base) into `dir`/out.
+struct SmallRoomRun {
+  std::filesystem::path models;
+  std::string command;
+};
+SmallRoomRun small_room_run(const test::TempDir& dir, int budget) {
+  SmallRoomRun run{dir.path() / "models", ""};
+  std::filesystem::create_directories(run.models / "people");
+  std::filesystem::copy_file(models_dir() + "/people/v2.yml", run.models / "people/v2.yml");
+  run.command = adapt() + " --source " + test::quote(dir / "room") + " --truth " + test::quote(dir / "room/boxes.csv") +
+                " --out " + test::quote(dir / "out") + " --name room --budget " + std::to_string(budget) +
+                " --rounds 3 --threads 2 --base-frames 0 --models-dir " + test::quote(run.models.string());
+  return run;
+}
+
 // `text` with its one `from` replaced by `to`.
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
@@ -250,6 +266,37 @@ TEST(Adapt, ARoomOfAnotherCameraIsAdapted) {
   }
 }
 
+// Analyser options given to rdsf-adapt reach every step's program (their logs hold the command lines) and
+// the adapted model states them (format 4), so rdsf-detect runs it with them; a rerun in the same folder with
+// another value is refused before anything is done.
+TEST(Adapt, CandidateOptionsReachEveryStepAndTheAdaptedModelStatesThem) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
+  const SmallRoomRun run = small_room_run(dir, 4);
+  const std::filesystem::path& models = run.models;
+  const std::string command = run.command + " --eval " + test::quote(dir / "room");
+  const test::RunResult r = test::run(command + " --hole-gap 20");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* log : {"negatives", "answers", "report"}) {
+    EXPECT_NE(test::file_text(dir / ("out/logs/" + std::string(log) + ".log")).find("--hole-gap 20"), std::string::npos)
+        << log;
+  }
+  EXPECT_NE(test::file_text(dir / "out/logs/train.log").find("--detection-options hole_gap=20"), std::string::npos);
+  const BoostedModel adapted = BoostedModel::load((models / "room/v1.yml").string());
+  EXPECT_EQ(adapted.format_version(), 4);
+  const RecordedParameters& stated = adapted.detection_options();
+  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("hole_gap"), std::string("20"))),
+            stated.end());
+  const test::RunResult detect = test::run(test::quote(test::program("rdsf-detect")) + " --source " +
+                                           test::quote(dir / "room") + " --model " +
+                                           test::quote((models / "room/v1.yml").string()) + " --frames 2 --out " +
+                                           test::quote(dir / "d.csv"));
+  EXPECT_NE(detect.err.find("states its detection options (--hole-gap 20)"), std::string::npos) << detect.err;
+  const test::RunResult again = test::run(command + " --hole-gap 30");
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_NE(again.err.find("'--hole-gap 20', not '--hole-gap 30'"), std::string::npos) << again.err;
+}
+
 TEST(Adapt, RoomWeightBelowOneIsAUsageError) {
   test::TempDir dir;
   const test::RunResult r =
@@ -262,13 +309,9 @@ TEST(Adapt, RoomWeightBelowOneIsAUsageError) {
 TEST(Adapt, AKilledRunResumes) {
   test::TempDir dir;
   ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
-  const std::filesystem::path models = dir.path() / "models";
-  std::filesystem::create_directories(models / "people");
-  std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
-  const std::string command = adapt() + " --source " + test::quote(dir / "room") + " --truth " +
-                              test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
-                              " --name room --budget 8 --rounds 3 --threads 2 --base-frames 0 --models-dir " +
-                              test::quote(models.string());
+  const SmallRoomRun run = small_room_run(dir, 8);
+  const std::filesystem::path& models = run.models;
+  const std::string& command = run.command;
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {

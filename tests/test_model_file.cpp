@@ -2,6 +2,7 @@
 // unknown format versions and foreign feature specs, and the reference files every release must load.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -292,8 +293,62 @@ TEST(ReferenceModels, FormatVersion1NativeLoadsWithKnownScores) {
 // The file of the newest format, read and written again, is the same text to the byte: the reader keeps
 // every entry (training record, validation figures, rounds) and the writer writes them as they were.
 TEST(ReferenceModels, NewestFormatReadAndWrittenAgainIsTheSameText) {
-  const std::string path = reference_path("rdsf-model-v3-crops.yml");
-  EXPECT_EQ(model_file_text(read_model_file(path)), test::file_text(path));
+  for (const char* name : {"rdsf-model-v3-crops.yml", "rdsf-model-v4-detection-options.yml"}) {
+    const std::string path = reference_path(name);
+    EXPECT_EQ(model_file_text(read_model_file(path)), test::file_text(path)) << name;
+  }
+}
+
+// Format 4: the v3 file's model stating its detection options; the same scores, the options read back.
+TEST(ReferenceModels, FormatVersion4StatesItsDetectionOptions) {
+  const BoostedModel v3 = BoostedModel::load(reference_path("rdsf-model-v3-crops.yml"));
+  const BoostedModel v4 = BoostedModel::load(reference_path("rdsf-model-v4-detection-options.yml"));
+  EXPECT_EQ(v3.format_version(), 3);
+  EXPECT_TRUE(v3.detection_options().empty());
+  EXPECT_EQ(v4.format_version(), 4);
+  const cv::Mat1f input = reference_input();
+  EXPECT_EQ(v4.score(input[0]), v3.score(input[0]));
+  EXPECT_NEAR(v4.score(input[0]), 0.41297738721671357, 1e-9);
+  const RecordedParameters& stated = v4.detection_options();
+  EXPECT_GE(stated.size(), 50u);
+  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("hole_gap"), std::string("20"))),
+            stated.end());
+  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("k"), std::string("6"))), stated.end());
+}
+
+// A model stating no options is written as format 3, without the section; stating them, as format 4; a bad
+// section is one line naming the file and the option.
+TEST(ModelFile, DetectionOptionsMakeFormatFourAndBadOnesAreRefused) {
+  const test::TempDir dir("rdsf-model-file");
+  BoostedModel plain = small_model(2);
+  EXPECT_EQ(model_file_text(plain).find("detection_options"), std::string::npos);
+  EXPECT_NE(model_file_text(plain).find("format_version: 3\n"), std::string::npos);
+  BoostedModel stated = small_model(2);
+  stated.set_detection_options({{"hole_gap", "20"}, {"box", "strict"}});
+  const std::string path = save_new_model_version(stated, "stated", dir.path().string());
+  EXPECT_NE(test::file_text(path).find("format_version: 4\n"), std::string::npos);
+  const BoostedModel loaded = BoostedModel::load(path);
+  EXPECT_EQ(loaded.detection_options(), stated.detection_options());
+  EXPECT_EQ(model_file_text(loaded), model_file_text(stated));
+
+  const std::string text = test::file_text(path), bad = dir / "bad.yml";
+  const auto refusal = [&](const std::string& from, const std::string& to) {
+    write_text(bad, replace_once(text, from, to));
+    return test::error_message([&] { BoostedModel::load(bad); });
+  };
+  EXPECT_NE(refusal("hole_gap: \"20\"", "hole_gap: \"-2\"").find(bad + ": 'detection_options': hole-gap must be at least 0"),
+            std::string::npos);
+  EXPECT_NE(refusal("hole_gap: \"20\"", "frobnicate: \"20\"").find(bad + ": 'detection_options': 'frobnicate' is not a known option"),
+            std::string::npos);
+  EXPECT_NE(refusal("hole_gap: \"20\"", "hole_gap: \"twenty\"").find("hole-gap must be a number, not 'twenty'"),
+            std::string::npos);
+  EXPECT_NE(refusal("box: strict", "box: round").find("box is fitted or strict, not 'round'"), std::string::npos);
+  EXPECT_NE(refusal("detection_options:", "options_detected:").find(bad + ": missing 'detection_options'"),
+            std::string::npos);
+  write_text(bad, replace_once(text, "format_version: 4", "format_version: 3"));  // format 3 does not read them
+  EXPECT_TRUE(BoostedModel::load(bad).detection_options().empty());
+  EXPECT_NE(refusal("format_version: 4", "format_version: 5").find("this build reads versions 1 to 4"),
+            std::string::npos);
 }
 
 TEST(ReferenceModels, FormatVersion1OpenCvLoadsWithKnownScores) {

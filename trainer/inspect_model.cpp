@@ -10,6 +10,7 @@
 #include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/classifier/model_file.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 #include "trainer/train_run.hpp"
 
 namespace rdsf {
@@ -67,6 +68,12 @@ void print_identity(const BoostedModel& model, std::ostream& out) {
   out << line;
   std::snprintf(line, sizeof line, "operating    P(person) >= %.2f: ", model.operating_probability());
   out << line << (model.operating_point() ? model.operating_point()->rule : std::string("none stated (the default 0.5)"))
+      << "\n";
+  const std::string departures = option_words(departures_from_defaults(model.detection_options()));
+  out << "detection    "
+      << (model.detection_options().empty() ? std::string("no options stated (the detector's own)")
+          : departures.empty()              ? std::string("states this build's default options")
+                                            : "states " + departures + " (the rest at this build's defaults)")
       << "\n";
   out << "backend      " << t.backend << "\n";
   out << "recipe       " << t.recipe << "\n";

@@ -38,7 +38,11 @@ po::options_description train_options(TrainOptions& o) {
        "more weak classifiers after its own, its bins; the new model holds both. Default: none (from nothing)")
       ("provenance", po::value(&o.provenance)->composing(),
        "KEY=VALUE recorded among the model file's training parameters (repeat; KEY of a-z, 0-9 and _), e.g. "
-       "the room and answers rdsf-adapt trained on");
+       "the room and answers rdsf-adapt trained on")
+      ("detection-options", po::value(&o.detection_options)->multitoken()->composing(),
+       "NAME=VALUE ... (analyser options, e.g. hole-gap=20) or 'defaults': the model states every candidate and "
+       "segmentation option, at these values and this build's defaults for the rest, and detectors take them "
+       "for the options their user does not give. Default: the --init model's, else none stated");
   po::options_description how("Boosting (default: the recipe's value, else the one shown)");
   cli::add_override_options(how, boost_training_parameters(), BoostTrainingParams{}, o.boosting);
   how.add_options()

@@ -18,6 +18,7 @@
 #include "rdsf/dataset/recipe.hpp"
 #include "trainer/ranks.hpp"
 #include "rdsf/dataset/thesis_text.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 #include "trainer/training_samples.hpp"
 
 namespace rdsf {
@@ -137,9 +138,31 @@ std::string data_text(const ChosenSamples& train, const ChosenSamples& validatio
   return text;
 }
 
-/// What the command line asks for, checked: the effective recipe, the model's name and the --provenance pairs.
+/// --detection-options read: every analyser option at its default but the NAME=VALUE words given
+/// (pipeline/stated_options.hpp); none for no words. Throws cli::UsageError naming the word.
+RecordedParameters stated_detection_options(const std::vector<std::string>& words) {
+  if (words.empty()) return {};
+  RecordedParameters given;
+  for (const std::string& word : words) {
+    if (word == "defaults" && words.size() == 1) break;
+    const std::size_t eq = word.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw cli::UsageError("--detection-options '" + word + "': give NAME=VALUE (an analyser option) or 'defaults'");
+    }
+    given.emplace_back(parameter_key(cli::canonical_option_name(word.substr(0, eq))), word.substr(eq + 1));
+  }
+  try {
+    return stated_options(with_recorded_values(analyser_parameters(), given, AnalyserParams{}));
+  } catch (const Error& e) {
+    throw cli::UsageError("--detection-options: " + std::string(e.what()));
+  }
+}
+
+/// What the command line asks for, checked: the effective recipe, the model's name, the --provenance pairs
+/// and the detection options stated.
 struct TrainingPlan {
   std::vector<std::pair<std::string, std::string>> provenance;
+  RecordedParameters detection_options;
   Recipe recipe;
   std::string name;
 };
@@ -159,6 +182,7 @@ TrainingPlan plan_training(const TrainOptions& o, const RowShards& shards) {
     }
     plan.provenance.emplace_back(key, kv.substr(eq + 1));
   }
+  plan.detection_options = stated_detection_options(o.detection_options);
   plan.recipe = effective_recipe(o);
   const BoostTrainingParams& p = plan.recipe.params;
   if (shards.distributed()) {
@@ -389,6 +413,9 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
                                            separate ? &validation.rows : nullptr,
                                            separate ? &validation.labels : nullptr, info);
   record_provenance(model.training(), o, plan, train, validation, init_reference);
+  model.set_detection_options(!plan.detection_options.empty() ? plan.detection_options
+                              : init                          ? init->detection_options()
+                                                              : RecordedParameters{});
 
   std::string path;  // rank 0 writes the model; every rank learns whether it could
   on_every_rank(shards, "writing the model", [&] {

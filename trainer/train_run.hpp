@@ -36,6 +36,10 @@ struct TrainOptions {
   std::string init;
   /// Extra provenance recorded with the training parameters, "key=value" each (rdsf-adapt: room, answers, base).
   std::vector<std::string> provenance;
+  /// The detection options the model states (NAME=VALUE each, NAME an analyser option such as hole-gap;
+  /// "defaults" alone: this build's defaults): every analyser option at its default but those given.
+  /// Empty: the --init model's stated options, else none (pipeline/stated_options.hpp).
+  std::vector<std::string> detection_options;
   std::string inspect;      ///< model to describe instead of training
   int top = 20;             ///< --inspect: features listed
   std::string export_text;  ///< write the chosen samples here instead of training

@@ -12,6 +12,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/classifier/yaml_node_copy.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/yaml_reader.hpp"
@@ -187,6 +188,14 @@ void write_operating_point(FileStorage& fs, const std::optional<OperatingPoint>&
   fs.endWriteStruct();
 }
 
+// Written only when the model states them (format 4): (key, text) pairs as the analyser table's rows.
+void write_detection_options(FileStorage& fs, const RecordedParameters& options) {
+  if (options.empty()) return;
+  fs.startWriteStruct("detection_options", FileNode::MAP);
+  for (const auto& [key, value] : options) cv::write(fs, writable_key(key), value);
+  fs.endWriteStruct();
+}
+
 // ---- reading ----
 
 
@@ -352,6 +361,24 @@ std::optional<OperatingPoint> read_operating_point(const YamlReader& r, const Fi
   return point;
 }
 
+// detection_options (format 4, required there): a mapping of analyser option keys to texts, each a row of
+// analyser_parameters() with a value the row accepts.
+RecordedParameters read_detection_options(const YamlReader& r, const FileNode& root) {
+  const FileNode node = r.need(root, "detection_options", "");
+  if (!node.isMap() || node.size() == 0) r.bad("'detection_options' must be a mapping of options to values");
+  RecordedParameters options;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    const std::string key = (*it).name();
+    options.emplace_back(key, r.text(node, key, "detection_options."));
+  }
+  try {
+    with_recorded_values(analyser_parameters(), options, AnalyserParams{});
+  } catch (const Error& e) {
+    r.bad("'detection_options': " + std::string(e.what()));
+  }
+  return options;
+}
+
 // training.crops (format 3, optional): how the training crops were cut.
 CropProvenance read_crops_v3(const YamlReader& r, const FileNode& training) {
   CropProvenance crops;
@@ -367,7 +394,7 @@ CropProvenance read_crops_v3(const YamlReader& r, const FileNode& training) {
 
 // Formats 1, 2 and 3 share their layout; 2 adds `calibration`, trees and validation.by_probability; 3
 // adds training.crops.
-BoostedModel read_v1_to_v3(const YamlReader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
+BoostedModel read_v1_to_v4(const YamlReader& r, const FileNode& root, const FeatureSpec* expected, int format_version) {
   const FeatureSpec spec = read_feature_spec_v1(r, root, expected);
   const FileNode classifier = r.need(root, "classifier", "");
   const FileNode bins_node = r.need(classifier, "bins", "classifier.");
@@ -425,6 +452,7 @@ BoostedModel read_v1_to_v3(const YamlReader& r, const FileNode& root, const Feat
   model.set_format_version(format_version);
   if (format_version >= 2) model.set_calibration(read_calibration(r, root));
   if (format_version >= 3) model.set_operating_point(read_operating_point(r, root));
+  if (format_version >= 4) model.set_detection_options(read_detection_options(r, root));
   const FileNode opencv = root["opencv_model"];
   if (opencv.isMap()) {
     FileStorage out(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
@@ -448,10 +476,11 @@ BoostedModel read_opened(const YamlReader& r, const FileNode& root, const Featur
     case 1:
     case 2:
     case 3:
-      return read_v1_to_v3(r, root, expected, format_version);
+    case 4:
+      return read_v1_to_v4(r, root, expected, format_version);
     default:
       r.bad("model format version " + std::to_string(format_version) + " is not known (this build reads " +
-            "versions 1 to 3; a newer rdsf wrote it?)");
+            "versions 1 to 4; a newer rdsf wrote it?)");
   }
 }
 
@@ -460,7 +489,7 @@ BoostedModel read_opened(const YamlReader& r, const FileNode& root, const Featur
 std::string model_file_text(const BoostedModel& model) {
   FileStorage fs(".yml", FileStorage::WRITE | FileStorage::MEMORY | FileStorage::FORMAT_YAML);
   cv::write(fs, "format", std::string(kModelFormat));
-  cv::write(fs, "format_version", kModelFormatVersion);
+  cv::write(fs, "format_version", model.detection_options().empty() ? kModelFormatVersion : kModelFormatVersionStated);
   cv::write(fs, "name", model.name());
   cv::write(fs, "version", model.version());
   cv::write(fs, "created", model.created());
@@ -469,6 +498,7 @@ std::string model_file_text(const BoostedModel& model) {
   write_classifier(fs, model);
   write_calibration(fs, model.calibration());
   write_operating_point(fs, model.operating_point());
+  write_detection_options(fs, model.detection_options());
   if (!model.opencv_model_yaml().empty()) {
     FileStorage embedded(model.opencv_model_yaml(), FileStorage::READ | FileStorage::MEMORY);
     copy_yaml_node(fs, "opencv_model", embedded["opencv_model"]);

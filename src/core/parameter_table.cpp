@@ -1,6 +1,7 @@
 #include "rdsf/core/parameter_table.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +28,21 @@ std::string parameter_key(const std::string& name) {
   std::string key = name;
   std::replace(key.begin(), key.end(), '-', '_');
   return key;
+}
+
+ParameterValue parameter_value_of_text(const std::string& text, const ParameterValue& like, const std::string& name) {
+  if (std::holds_alternative<std::string>(like)) return text;
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  if (std::holds_alternative<double>(like)) {
+    const double d = std::strtod(begin, &end);
+    if (text.empty() || *end != '\0' || errno == ERANGE) parameter_detail::refuse(name, "must be a number, not '" + text + "'");
+    return d;
+  }
+  const long long whole = std::strtoll(begin, &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE) parameter_detail::refuse(name, "must be an integer, not '" + text + "'");
+  return convert_parameter(static_cast<std::int64_t>(whole), like, name);
 }
 
 namespace parameter_detail {

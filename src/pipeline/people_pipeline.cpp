@@ -38,11 +38,17 @@ AnalyserParams with_height_limit(AnalyserParams analyser, double max_person_heig
   return analyser;
 }
 
+// `params` with the analyser options `model` runs with (stated_options.hpp).
+PipelineParams running(PipelineParams params, const BoostedModel* model) {
+  params.analyser = params.analyser_given.for_model(params.analyser, model);
+  return params;
+}
+
 }  // namespace
 
 PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
-    : params_(params), model_(model), analyser_(with_height_limit(params.analyser, params.max_person_height_cm)),
-      tracker_(params.tracking) {
+    : params_(running(std::move(params), model)), model_(model),
+      analyser_(with_height_limit(params_.analyser, params_.max_person_height_cm)), tracker_(params_.tracking) {
   if (model_ == nullptr) return;
   check_model_fits(*model_, params_.analyser);
   scorer_.emplace(*model_);

@@ -14,6 +14,7 @@
 #include "rdsf/classifier/platt_calibration.hpp"
 #include "rdsf/classifier/training_record.hpp"
 #include "rdsf/classifier/weak_classifier.hpp"
+#include "rdsf/core/parameter_table.hpp"
 #include "rdsf/features/feature_spec.hpp"
 
 namespace rdsf {
@@ -43,6 +44,12 @@ class BoostedModel {
   double operating_probability() const {
     return operating_point_ ? operating_point_->probability : kDefaultOperatingProbability;
   }
+  /// The frame analyser's options the model states it was trained and measured with: (key, text) of every
+  /// row of analyser_parameters() (segmentation, candidates), or none (empty: the detector's own options).
+  /// A detector takes them for every option its user does not give (pipeline/stated_options.hpp); model
+  /// files hold them from format 4 (model_file.hpp).
+  const RecordedParameters& detection_options() const { return detection_options_; }
+  void set_detection_options(RecordedParameters options) { detection_options_ = std::move(options); }
   /// Every feature index the weak classifiers read, ascending, without repeats.
   std::vector<int> used_features() const;
 
@@ -82,6 +89,7 @@ class BoostedModel {
   std::string opencv_yaml_;
   ScoreCalibration calibration_;
   std::optional<OperatingPoint> operating_point_;
+  RecordedParameters detection_options_;
 };
 
 }  // namespace rdsf

@@ -47,6 +47,10 @@ std::string parameter_key(const std::string& name);
 /// throws Error("name must be <type>") when it cannot.
 ParameterValue convert_parameter(const ParameterValue& value, const ParameterValue& like, const std::string& name);
 
+/// `text` in parameter_text's form read as a value of `like`'s type: "1" / "0" for bool, an integer, a number
+/// (any strtod form), text as is; throws Error("name must be ...") when it is none.
+ParameterValue parameter_value_of_text(const std::string& text, const ParameterValue& like, const std::string& name);
+
 template <typename Params>
 struct Parameter {
   std::string name;
@@ -257,6 +261,22 @@ RecordedParameters parameter_values(const ParameterTable<Params>& table, const P
     }
   }
   return out;
+}
+
+/// `params` with the value of each (key, text) of `values` set through `table`'s row of that key (text read
+/// by parameter_value_of_text, checked by the row), except the keys in `skip`. Throws Error("'key' is not a
+/// known option") for a key of no row, or the row's own Error("name must be ...").
+template <typename Params>
+Params with_recorded_values(const ParameterTable<Params>& table, const RecordedParameters& values, Params params,
+                            const std::vector<std::string>& skip = {}) {
+  for (const auto& [key, text] : values) {
+    if (std::find(skip.begin(), skip.end(), key) != skip.end()) continue;
+    const auto row = std::find_if(table.begin(), table.end(),
+                                  [&key = key](const Parameter<Params>& r) { return parameter_key(r.name) == key; });
+    if (row == table.end()) parameter_detail::refuse("'" + key + "'", "is not a known option");
+    row->set(params, parameter_value_of_text(text, row->get(params), row->name));
+  }
+  return params;
 }
 
 /// `row` with its `record` set to `text`'s answer: no pair when it gives none, else (key, text).

@@ -15,12 +15,17 @@
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_frame.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 #include "rdsf/tracking/tracker.hpp"
 
 namespace rdsf {
 
 struct PipelineParams {
+  /// The frame analyser's options. With a model that states detection options (stated_options.hpp), each
+  /// option not among analyser_given's takes the model's value (PeoplePipeline's params() are the result).
   AnalyserParams analyser;
+  /// The analyser options the user gave, which keep their values whatever the model states.
+  GivenOptions analyser_given;
   TrackingParams tracking;
   /// A candidate is a person when P(person) >= this (the model's calibrated probability). 0 (default): the
   /// model's operating point (BoostedModel::operating_probability: the one it states, else 0.5).

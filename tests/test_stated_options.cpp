@@ -1,0 +1,161 @@
+// A model's stated detection options (pipeline/stated_options.hpp): the options a user gives keep their
+// values, the model's fill the rest, --thesis takes none; the pipeline runs the model with them; rdsf-detect
+// writes the same rows for a model stating an option as for the option given, refuses two models that would
+// need other candidates, and says what the model states; rdsf-train states them and refuses bad ones.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "rdsf/classifier/model_file.hpp"
+#include "rdsf/core/error.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
+#include "support/depth_scenes.hpp"
+#include "support/test_support.hpp"
+
+using namespace rdsf;
+
+namespace {
+
+std::string shipped(const std::string& name) { return std::string(RDSF_SOURCE_DIR) + "/models/people/" + name; }
+
+BoostedModel stating(const AnalyserParams& params) {
+  BoostedModel model = BoostedModel::load(shipped("v2.yml"));
+  model.set_detection_options(stated_options(params));
+  return model;
+}
+
+}  // namespace
+
+TEST(StatedOptions, TextIsReadAsTheRowsType) {
+  EXPECT_EQ(parameter_value_of_text("1", ParameterValue(false), "x"), ParameterValue(true));
+  EXPECT_EQ(parameter_value_of_text("0", ParameterValue(true), "x"), ParameterValue(false));
+  EXPECT_EQ(parameter_value_of_text("7", ParameterValue(0), "x"), ParameterValue(7));
+  EXPECT_EQ(parameter_value_of_text("0.3", ParameterValue(0.0), "x"), ParameterValue(0.3));
+  EXPECT_EQ(parameter_value_of_text("1500", ParameterValue(0.0), "x"), ParameterValue(1500.0));
+  EXPECT_EQ(parameter_value_of_text("fitted", ParameterValue(std::string()), "x"), ParameterValue(std::string("fitted")));
+  EXPECT_NE(test::error_message([] { parameter_value_of_text("2", ParameterValue(false), "relaxed"); })
+                .find("relaxed must be 0 or 1"),
+            std::string::npos);
+  EXPECT_NE(test::error_message([] { parameter_value_of_text("1.5", ParameterValue(0), "k"); })
+                .find("k must be an integer, not '1.5'"),
+            std::string::npos);
+  EXPECT_THROW(parameter_value_of_text("", ParameterValue(0.0), "x"), Error);
+  EXPECT_THROW(parameter_value_of_text("1e999", ParameterValue(0.0), "x"), Error);
+}
+
+// Every analyser option is stated, at its value; the departures are what differs from the defaults.
+TEST(StatedOptions, AModelStatesEveryOptionAndItsDeparturesAreNamed) {
+  AnalyserParams params;
+  const RecordedParameters defaults = stated_options(params);
+  EXPECT_EQ(defaults.size(), analyser_parameters().size());
+  EXPECT_TRUE(departures_from_defaults(defaults).empty());
+  params.candidates.hole_gap_cm = 20;
+  params.candidates.k = 8;
+  params.reported_box = BoxKind::strict;
+  EXPECT_EQ(option_words(departures_from_defaults(stated_options(params))), "--k 8 --hole-gap 20 --box strict");
+}
+
+// Given options keep their values, the model fills the rest, --thesis (take_stated false) or no model leaves
+// the parameters as they are.
+TEST(StatedOptions, GivenOptionsKeepTheirValuesAndTheModelFillsTheRest) {
+  AnalyserParams model_params;
+  model_params.candidates.hole_gap_cm = 20;
+  model_params.candidates.k = 8;
+  const BoostedModel model = stating(model_params);
+  AnalyserParams user;
+  user.candidates.k = 4;
+  GivenOptions given;
+  given.keys = {"k"};
+  const AnalyserParams run = given.for_model(user, &model);
+  EXPECT_EQ(run.candidates.k, 4);
+  EXPECT_EQ(run.candidates.hole_gap_cm, 20.0);
+  EXPECT_EQ(GivenOptions{}.for_model(user, &model).candidates.k, 8);  // nothing given: the model's every value
+  GivenOptions thesis;
+  thesis.take_stated = false;
+  EXPECT_EQ(thesis.for_model(user, &model).candidates.hole_gap_cm, 0.0);
+  EXPECT_EQ(given.for_model(user, nullptr).candidates.hole_gap_cm, 0.0);
+  const BoostedModel none = BoostedModel::load(shipped("v2.yml"));  // states nothing: the user's values
+  EXPECT_EQ(stated_options(GivenOptions{}.for_model(user, &none)), stated_options(user));
+}
+
+// The pipeline runs the model with its stated options: a model stating a minimum width no object has finds
+// no candidate; the option given, or no model, finds them; params() says what ran.
+TEST(StatedOptions, ThePipelineRunsTheModelWithThem) {
+  DepthFrame frame = test::wall_frame(4500);
+  test::paint(frame, {300, 100, 40, 360}, 2000);  // a body
+  AnalyserParams wide;
+  wide.candidates.min_width_cm = 300;
+  const BoostedModel model = stating(wide);
+  PipelineParams params;
+  const PeoplePipeline stated(params, &model);
+  EXPECT_EQ(stated.params().analyser.candidates.min_width_cm, 300.0);
+  EXPECT_TRUE(stated.analyse(frame).analysis.candidates.empty());
+  params.analyser_given.keys = {"min_width"};
+  const PeoplePipeline given(params, &model);
+  EXPECT_EQ(given.params().analyser.candidates.min_width_cm, AnalyserParams{}.candidates.min_width_cm);
+  EXPECT_FALSE(given.analyse(frame).analysis.candidates.empty());
+  EXPECT_FALSE(PeoplePipeline(PipelineParams{}, nullptr).analyse(frame).analysis.candidates.empty());
+}
+
+// rdsf-detect with a model that states --hole-gap 20 --k 8 writes the rows of the same model with those
+// options given; an option given wins; --thesis takes none; two models that would need other candidates
+// are refused unless the option that differs is given.
+TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
+  const test::TempDir dir("rdsf-stated");
+  ASSERT_EQ(test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
+                      " --force --frames 20 --people 1..2 --clip-frames 20 --seed 7")
+                .exit_code,
+            0);
+  AnalyserParams params;
+  params.candidates.hole_gap_cm = 20;
+  params.candidates.k = 8;
+  const std::string model = dir / "stating.yml";
+  {
+    std::ofstream out(model);
+    out << model_file_text(stating(params));
+  }
+  const std::string detect = test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "room") +
+                             " --threads 2 --force --out ";
+  const auto rows = [&](const std::string& name, const std::string& options) {
+    const test::RunResult r = test::run(detect + test::quote(dir / name) + " " + options);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return test::file_text(dir / name);
+  };
+  const std::string v2 = test::quote(shipped("v2.yml")), s = test::quote(model);
+  const std::string by_model = rows("a.csv", "--model " + s);
+  EXPECT_FALSE(by_model.empty());
+  EXPECT_EQ(by_model, rows("b.csv", "--model " + v2 + " --hole-gap 20 --k 8"));
+  EXPECT_NE(by_model, rows("c.csv", "--model " + v2));  // the options change the candidates here
+  EXPECT_EQ(rows("d.csv", "--model " + s + " --k 6"), rows("e.csv", "--model " + v2 + " --hole-gap 20"));
+  EXPECT_EQ(rows("f.csv", "--model " + s + " --thesis"), rows("g.csv", "--model " + v2 + " --thesis"));
+  const test::RunResult said = test::run(detect + test::quote(dir / "h.csv") + " --model " + s);
+  EXPECT_NE(said.err.find("states its detection options (--k 8 --hole-gap 20): taken for the options not given"),
+            std::string::npos)
+      << said.err;
+  const test::RunResult two = test::run(detect + test::quote(dir / "i.csv") + " --model " + s + " --model " + v2);
+  EXPECT_EQ(two.exit_code, 2) << two.err;
+  EXPECT_NE(two.err.find("run with other detection options (k 8 / 6)"), std::string::npos) << two.err;
+  EXPECT_EQ(test::run(detect + test::quote(dir / "j.csv") + " --model " + s + " --model " + v2 + " --k 8 --hole-gap 20")
+                .exit_code,
+            0);
+}
+
+// rdsf-train --detection-options: bad words are usage errors before any sample is read.
+TEST(StatedOptions, TrainProgramRefusesBadDetectionOptions) {
+  const test::TempDir dir("rdsf-stated");
+  const std::string train = test::quote(test::program("rdsf-train")) + " --name x --models-dir " +
+                            test::quote(dir / "models") + " --pos " + test::quote(dir / "none") + " --neg " +
+                            test::quote(dir / "none") + " --detection-options ";
+  for (const auto& [words, message] : std::vector<std::pair<std::string, std::string>>{
+           {"hole-gap=-1", "--detection-options: hole-gap must be at least 0"},
+           {"frob=1", "--detection-options: 'frob' is not a known option"},
+           {"hole-gap", "--detection-options 'hole-gap': give NAME=VALUE (an analyser option) or 'defaults'"},
+           {"defaults k=3", "--detection-options 'defaults': give NAME=VALUE"}}) {
+    const test::RunResult r = test::run(train + words);
+    EXPECT_EQ(r.exit_code, 2) << words << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "models"));
+}
