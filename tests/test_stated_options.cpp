@@ -43,6 +43,9 @@ TEST(StatedOptions, TextIsReadAsTheRowsType) {
             std::string::npos);
   EXPECT_THROW(parameter_value_of_text("", ParameterValue(0.0), "x"), Error);
   EXPECT_THROW(parameter_value_of_text("1e999", ParameterValue(0.0), "x"), Error);
+  EXPECT_THROW(parameter_value_of_text("inf", ParameterValue(0.0), "x"), Error);
+  EXPECT_THROW(parameter_value_of_text("nan", ParameterValue(0.0), "x"), Error);
+  EXPECT_THROW(parameter_value_of_text("3x", ParameterValue(0), "x"), Error);
 }
 
 // Every analyser option is stated, at its value; the departures are what differs from the defaults.

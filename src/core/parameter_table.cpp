@@ -37,7 +37,9 @@ ParameterValue parameter_value_of_text(const std::string& text, const ParameterV
   errno = 0;
   if (std::holds_alternative<double>(like)) {
     const double d = std::strtod(begin, &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE) parameter_detail::refuse(name, "must be a number, not '" + text + "'");
+    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(d)) {
+      parameter_detail::refuse(name, "must be a number, not '" + text + "'");
+    }
     return d;
   }
   const long long whole = std::strtoll(begin, &end, 10);
