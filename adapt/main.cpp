@@ -51,16 +51,13 @@ int main(int argc, char** argv) {
     rdsf::cli::add_per_place_option(options, o.per_place);
     rdsf::cli::add_propagate_model_option(options, o.propagate_model);
     rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
-    options.add(rdsf::cli::analyser_options(o.analyser));
+    options.add(rdsf::cli::analyser_options(o.analyser, /*feature_spec=*/false));  // the model's features
     options.add_options()
         ("chart", po::value(&chart), "instead: draw scripts/adaptation-benchmark.sh's results.tsv as --chart-png")
         ("chart-png", po::value(&chart_png), "with --chart: the picture to write");
     po::variables_map values;
     if (!rdsf::cli::parse(argc, argv, kProgram, options, values)) return 0;
     o.given = rdsf::cli::given_analyser_options(values);
-    if (!values["feature-spec"].defaulted()) {
-      throw rdsf::cli::UsageError("--feature-spec: the adapted model keeps the features of the model it adapts");
-    }
     if (!chart.empty()) {
       if (chart_png.empty()) throw rdsf::cli::UsageError("--chart needs --chart-png");
       rdsf::write_adaptation_chart(chart, chart_png);

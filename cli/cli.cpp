@@ -131,7 +131,7 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
   return true;
 }
 
-po::options_description analyser_options(AnalyserParams& p) {
+po::options_description analyser_options(AnalyserParams& p, bool feature_spec) {
   const ParameterTable<AnalyserParams>& rows = analyser_parameters();
   const std::size_t segmentation_rows = segmentation_parameters().size();
   po::options_description segmentation("Segmentation (depth layers)");
@@ -142,7 +142,8 @@ po::options_description analyser_options(AnalyserParams& p) {
                            "the thesis's exact behaviour: every departure off, and no detection option a model states "
                            "taken (options given explicitly still win)");
   po::options_description all;
-  all.add(segmentation).add(candidates).add(feature_spec_options(p.features));
+  all.add(segmentation).add(candidates);
+  if (feature_spec) all.add(feature_spec_options(p.features));
   return all;
 }
 

@@ -74,8 +74,9 @@ template <typename Params>
 void apply_overrides(const ParameterTable<Params>& table, Params& params,
                      const std::vector<std::pair<std::string, ParameterValue>>& given);
 
-/// Options of the frame analyser (segmentation, candidates: analyser_parameters()), bound to `params`.
-po::options_description analyser_options(AnalyserParams& params);
+/// Options of the frame analyser (segmentation, candidates: analyser_parameters()), bound to `params`, and
+/// --feature-spec unless `feature_spec` is false (a program that keeps its model's features: rdsf-adapt).
+po::options_description analyser_options(AnalyserParams& params, bool feature_spec = true);
 
 /// After parse(), with analyser_options() among the options: the keys of the analyser options given (on the
 /// command line, in --config, as a ROS parameter), and whether a model's stated detection options are taken
