@@ -103,7 +103,7 @@ TEST(StatedOptions, ThePipelineRunsTheModelWithThem) {
 }
 
 // rdsf-detect with a model that states --hole-gap 20 --k 8 writes the rows of the same model with those
-// options given; an option given wins; --thesis takes none; two models that would need other candidates
+// options given; an option given (on the command line or in --config) wins; --thesis takes none; two models that would need other candidates
 // are refused unless the option that differs is given.
 TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
   const test::TempDir dir("rdsf-stated");
@@ -133,6 +133,11 @@ TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
   EXPECT_NE(by_model, rows("c.csv", "--model " + v2));  // the options change the candidates here
   EXPECT_EQ(rows("d.csv", "--model " + s + " --k 6"), rows("e.csv", "--model " + v2 + " --hole-gap 20"));
   EXPECT_EQ(rows("f.csv", "--model " + s + " --thesis"), rows("g.csv", "--model " + v2 + " --thesis"));
+  {  // an option in a --config file is given too
+    std::ofstream config(dir / "k.ini");
+    config << "k = 6\n";
+  }
+  EXPECT_EQ(rows("k.csv", "--model " + s + " --config " + test::quote(dir / "k.ini")), rows("l.csv", "--model " + v2 + " --hole-gap 20"));
   const test::RunResult said = test::run(detect + test::quote(dir / "h.csv") + " --model " + s);
   EXPECT_NE(said.err.find("states its detection options (--k 8 --hole-gap 20): taken for the options not given"),
             std::string::npos)
