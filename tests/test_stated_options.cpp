@@ -1,11 +1,13 @@
 // A model's stated detection options (pipeline/stated_options.hpp): the options a user gives keep their
 // values, the model's fill the rest, --thesis takes none; the pipeline runs the model with them; rdsf-detect
 // writes the same rows for a model stating an option as for the option given, refuses two models that would
-// need other candidates, and says what the model states; rdsf-train states them and refuses bad ones.
+// need other candidates, and says what the model states; rdsf-mine --model mines their candidates;
+// rdsf-train refuses bad ones.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "rdsf/classifier/model_file.hpp"
 #include "rdsf/core/error.hpp"
@@ -148,6 +150,48 @@ TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
   EXPECT_EQ(test::run(detect + test::quote(dir / "j.csv") + " --model " + s + " --model " + v2 + " --k 8 --hole-gap 20")
                 .exit_code,
             0);
+}
+
+// rdsf-mine --model (hard negatives) mines the candidates of the model's stated options: the same boxes and
+// crops as the options given, and it says so.
+TEST(StatedOptions, MineProgramTakesThemFromItsModel) {
+  const test::TempDir dir("rdsf-stated");
+  ASSERT_EQ(test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
+                      " --force --frames 10 --people 1..2 --clip-frames 10 --seed 7")
+                .exit_code,
+            0);
+  AnalyserParams params;
+  params.candidates.hole_gap_cm = 20;
+  params.candidates.k = 8;
+  const std::string model = dir / "stating.yml";
+  {
+    std::ofstream out(model);
+    out << model_file_text(stating(params));
+  }
+  const std::string mine = test::quote(test::program("rdsf-mine")) + " --source " + test::quote(dir / "room") +
+                           " --min-score -1000 --threads 2 --out ";
+  const auto mined = [&](const std::string& set, const std::string& options) {
+    const test::RunResult r = test::run(mine + test::quote(dir / set) + " " + options);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::string rows;  // frame, boxes, layer depth and crop hash of each sample
+    std::istringstream in(test::file_text(dir / (set + "/samples.tsv")));
+    for (std::string line; std::getline(in, line);) {
+      std::vector<std::string> f;
+      std::istringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, '\t');) f.push_back(cell);
+      if (f.size() < 20) continue;
+      for (std::size_t i = 4; i < 14; ++i) rows += f[i] + ",";
+      rows += f[19] + "\n";
+    }
+    return std::make_pair(rows, r.err);
+  };
+  const auto [by_model, said] = mined("a", "--model " + test::quote(model));
+  EXPECT_NE(by_model.find("000000"), std::string::npos);
+  EXPECT_EQ(by_model, mined("b", "--model " + test::quote(shipped("v2.yml")) + " --hole-gap 20 --k 8").first);
+  EXPECT_NE(by_model, mined("c", "--model " + test::quote(shipped("v2.yml"))).first);
+  EXPECT_NE(said.find("rdsf-mine: model people v2 states its detection options (--k 8 --hole-gap 20)"),
+            std::string::npos)
+      << said;
 }
 
 // rdsf-train --detection-options: bad words are usage errors before any sample is read.
