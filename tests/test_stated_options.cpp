@@ -28,6 +28,24 @@ BoostedModel stating(const AnalyserParams& params) {
   return model;
 }
 
+// `frames` frames of a small synthetic room (seed 7) in `dir`/room.
+bool render_room(const test::TempDir& dir, int frames) {
+  return test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") + " --force --frames " +
+                   std::to_string(frames) + " --people 1..2 --clip-frames " + std::to_string(frames) + " --seed 7")
+             .exit_code == 0;
+}
+
+// people/v2 stating --hole-gap 20 --k 8, written as `dir`/stating.yml; its path.
+std::string write_stating_model(const test::TempDir& dir) {
+  AnalyserParams params;
+  params.candidates.hole_gap_cm = 20;
+  params.candidates.k = 8;
+  const std::string path = dir / "stating.yml";
+  std::ofstream out(path);
+  out << model_file_text(stating(params));
+  return path;
+}
+
 }  // namespace
 
 TEST(StatedOptions, TextIsReadAsTheRowsType) {
@@ -105,22 +123,12 @@ TEST(StatedOptions, ThePipelineRunsTheModelWithThem) {
 }
 
 // rdsf-detect with a model that states --hole-gap 20 --k 8 writes the rows of the same model with those
-// options given; an option given (on the command line or in --config) wins; --thesis takes none; two models that would need other candidates
-// are refused unless the option that differs is given.
+// options given; an option given (on the command line or in --config) wins; --thesis takes none; two models
+// that would need other candidates are refused unless the option that differs is given.
 TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
   const test::TempDir dir("rdsf-stated");
-  ASSERT_EQ(test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
-                      " --force --frames 20 --people 1..2 --clip-frames 20 --seed 7")
-                .exit_code,
-            0);
-  AnalyserParams params;
-  params.candidates.hole_gap_cm = 20;
-  params.candidates.k = 8;
-  const std::string model = dir / "stating.yml";
-  {
-    std::ofstream out(model);
-    out << model_file_text(stating(params));
-  }
+  ASSERT_TRUE(render_room(dir, 20));
+  const std::string model = write_stating_model(dir);
   const std::string detect = test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "room") +
                              " --threads 2 --force --out ";
   const auto rows = [&](const std::string& name, const std::string& options) {
@@ -156,18 +164,8 @@ TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
 // crops as the options given, and it says so.
 TEST(StatedOptions, MineProgramTakesThemFromItsModel) {
   const test::TempDir dir("rdsf-stated");
-  ASSERT_EQ(test::run(test::quote(test::program("rdsf-synth")) + " --out " + test::quote(dir / "room") +
-                      " --force --frames 10 --people 1..2 --clip-frames 10 --seed 7")
-                .exit_code,
-            0);
-  AnalyserParams params;
-  params.candidates.hole_gap_cm = 20;
-  params.candidates.k = 8;
-  const std::string model = dir / "stating.yml";
-  {
-    std::ofstream out(model);
-    out << model_file_text(stating(params));
-  }
+  ASSERT_TRUE(render_room(dir, 10));
+  const std::string model = write_stating_model(dir);
   const std::string mine = test::quote(test::program("rdsf-mine")) + " --source " + test::quote(dir / "room") +
                            " --min-score -1000 --threads 2 --out ";
   const auto mined = [&](const std::string& set, const std::string& options) {
