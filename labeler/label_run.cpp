@@ -384,7 +384,8 @@ int run_label(const LabelOptions& options) {
         [](char c) { return label_keys::from_key_code(static_cast<unsigned char>(c)); }, "y n s u q");
   }
   SampleSetWriter writer = SampleSetWriter::open_or_create(o.out_set, o.session.analyser.features, o.session.camera,
-                                                           "rdsf-label", crop_provenance(o.session.analyser.candidates));
+                                                           "rdsf-label", crop_provenance(o.session.analyser.candidates),
+                                                           stated_options(o.session.analyser));
   for (const std::string& repair : writer.repairs()) {  // what a crash left: torn rows, orphan or unusable crops
     std::cerr << "rdsf-label: " << writer.dir() << ": repaired " << repair << "\n";
   }

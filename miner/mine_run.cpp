@@ -80,7 +80,8 @@ int run_mine(MineOptions& o) {
 
   NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
   SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.analyser.features, p.camera, "rdsf-mine",
-                                                           crop_provenance(p.analyser.candidates));
+                                                           crop_provenance(p.analyser.candidates),
+                                                           stated_options(p.analyser));
   report_open(writer, "rdsf-mine");
   std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
             << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";
@@ -126,7 +127,7 @@ int run_merge(const MineOptions& o) {
   const SampleSet first = SampleSet::open_read(o.merge.front());
   SampleSetWriter writer =
       SampleSetWriter::open_or_create(o.out, first.feature_spec(), first.manifest().camera, "rdsf-mine --merge",
-                                      first.manifest().crops);
+                                      first.manifest().crops, first.manifest().analyser_options);
   report_open(writer, "rdsf-mine");
   const MergeResult result = merge_sample_sets(o.merge, writer);
   std::cerr << "rdsf-mine: merged " << result.inputs << " sets into " << o.out << ": added " << result.added

@@ -1,8 +1,9 @@
 // A model's stated detection options (pipeline/stated_options.hpp): the options a user gives keep their
 // values, the model's fill the rest, --thesis takes none; the pipeline runs the model with them; rdsf-detect
 // writes the same rows for a model stating an option as for the option given, refuses two models that would
-// need other candidates, and says what the model states; rdsf-mine --model mines their candidates;
-// rdsf-train refuses bad ones.
+// need other candidates, and says what the model states; rdsf-mine --model mines their candidates; sets
+// record the options their candidates were found with and rdsf-train states what they all record; rdsf-train
+// refuses bad --detection-options.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include "rdsf/classifier/model_file.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set_manifest.hpp"
 #include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/pipeline/stated_options.hpp"
 #include "support/depth_scenes.hpp"
@@ -190,6 +192,56 @@ TEST(StatedOptions, MineProgramTakesThemFromItsModel) {
   EXPECT_NE(said.find("rdsf-mine: model people v2 states its detection options (--k 8 --hole-gap 20)"),
             std::string::npos)
       << said;
+}
+
+// A set records the analyser options its candidates were found with; appending or merging candidates found
+// with others is refused; rdsf-train has its model state the options every set records alike, and none
+// when they differ (then the --init model's), unless --detection-options says otherwise.
+TEST(StatedOptions, SetsRecordThemAndTrainingStatesWhatEverySetRecords) {
+  const test::TempDir dir("rdsf-stated");
+  ASSERT_TRUE(render_room(dir, 30));
+  const std::string room = test::quote(dir / "room");
+  const auto mine = [&](const std::string& set, const std::string& options) {
+    return test::run(test::quote(test::program("rdsf-mine")) + " --source " + room + " --out " + test::quote(dir / set) +
+                     " " + options);
+  };
+  const auto label = [&](const std::string& set, const std::string& options) {
+    return test::run(test::quote(test::program("rdsf-label")) + " --source " + room + " --out " +
+                     test::quote(dir / set) + " --truth " + test::quote(dir / "room/boxes.csv") +
+                     " --answers /dev/null --keep-rejected " + options);
+  };
+  ASSERT_EQ(mine("neg", "--narrow-fitted-width 20").exit_code, 0);
+  ASSERT_EQ(label("pos", "--narrow-fitted-width 20").exit_code, 0);
+  const SampleSetManifest manifest = SampleSetManifest::read(dir / "neg/manifest.yml");
+  AnalyserParams narrow;
+  narrow.candidates.narrow.fitted_width_cm = 20;
+  EXPECT_EQ(manifest.analyser_options, stated_options(narrow));
+  EXPECT_EQ(SampleSetManifest::parse(manifest.to_text(), "again.yml").analyser_options, manifest.analyser_options);
+
+  const test::RunResult other = mine("neg", "");
+  EXPECT_EQ(other.exit_code, 1) << other.err;
+  EXPECT_NE(other.err.find("sample set's candidates were found with other options (narrow_fitted_width 20, now 0)"),
+            std::string::npos)
+      << other.err;
+  ASSERT_EQ(mine("plain", "").exit_code, 0);
+  const test::RunResult merged =
+      test::run(test::quote(test::program("rdsf-mine")) + " --merge " + test::quote(dir / "neg") + " " +
+                test::quote(dir / "plain") + " --out " + test::quote(dir / "both"));
+  EXPECT_NE(merged.exit_code, 0);
+  EXPECT_NE(merged.err.find("other analyser options than the output's; not merged"), std::string::npos) << merged.err;
+
+  const std::string train = test::quote(test::program("rdsf-train")) + " --models-dir " + test::quote(dir / "models") +
+                            " --rounds 3 --folds 0 --group-frames 0 --pos " + test::quote(dir / "pos") + " --neg ";
+  const auto stated_by = [&](const std::string& name, const std::string& rest) {
+    const test::RunResult r = test::run(train + rest + " --name " + name);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return BoostedModel::load(dir / ("models/" + name + "/v1.yml")).detection_options();
+  };
+  EXPECT_EQ(stated_by("agreed", test::quote(dir / "neg")), stated_options(narrow));
+  EXPECT_TRUE(stated_by("differ", test::quote(dir / "plain")).empty());  // the sets record other options
+  AnalyserParams hole;
+  hole.candidates.hole_gap_cm = 20;
+  EXPECT_EQ(stated_by("given", test::quote(dir / "neg") + " --detection-options hole-gap=20"), stated_options(hole));
 }
 
 // rdsf-train --detection-options: bad words are usage errors before any sample is read.

@@ -42,7 +42,8 @@ po::options_description train_options(TrainOptions& o) {
       ("detection-options", po::value(&o.detection_options)->multitoken()->composing(),
        "NAME=VALUE ... (analyser options, e.g. hole-gap=20) or 'defaults': the model states every candidate and "
        "segmentation option, at these values and this build's defaults for the rest, and detectors take them "
-       "for the options their user does not give. Default: the --init model's, else none stated");
+       "for the options their user does not give. Default: the options every sample set records alike (rdsf-mine "
+       "and rdsf-label record theirs), else the --init model's, else none stated");
   po::options_description how("Boosting (default: the recipe's value, else the one shown)");
   cli::add_override_options(how, boost_training_parameters(), BoostTrainingParams{}, o.boosting);
   how.add_options()

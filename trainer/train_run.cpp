@@ -311,6 +311,23 @@ std::string continue_from(const BoostedModel& init, const TrainOptions& o, const
   return reference;
 }
 
+/// The detection options the model states (stated_options.hpp): --detection-options when given, else the
+/// analyser options every training and validation set records alike (the candidates it learned), else the
+/// --init model's, else none. A set's options this build does not know are not stated (a warning says so).
+RecordedParameters stated_by_model(const TrainingPlan& plan, const ChosenSamples& train, const ChosenSamples& validation,
+                                   const std::optional<BoostedModel>& init) {
+  if (!plan.detection_options.empty()) return plan.detection_options;
+  const bool agree = validation.labels.empty() || validation.analyser_options == train.analyser_options;
+  if (agree && !train.analyser_options.empty()) {
+    try {
+      return stated_options(with_recorded_values(analyser_parameters(), train.analyser_options, AnalyserParams{}));
+    } catch (const Error& e) {
+      std::cerr << "rdsf-train: warning: the sets' analyser options are not stated (" << e.what() << ")\n";
+    }
+  }
+  return init ? init->detection_options() : RecordedParameters{};
+}
+
 /// Writes where the model came from into its training record.
 void record_provenance(TrainingRecord& record, const TrainOptions& o, const TrainingPlan& plan,
                        const ChosenSamples& train, const ChosenSamples& validation, const std::string& init_reference) {
@@ -413,9 +430,7 @@ int run_train(const TrainOptions& o, const RowShards& shards) {
                                            separate ? &validation.rows : nullptr,
                                            separate ? &validation.labels : nullptr, info);
   record_provenance(model.training(), o, plan, train, validation, init_reference);
-  model.set_detection_options(!plan.detection_options.empty() ? plan.detection_options
-                              : init                          ? init->detection_options()
-                                                              : RecordedParameters{});
+  model.set_detection_options(stated_by_model(plan, train, validation, init));
 
   std::string path;  // rank 0 writes the model; every rank learns whether it could
   on_every_rank(shards, "writing the model", [&] {

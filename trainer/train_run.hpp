@@ -38,7 +38,8 @@ struct TrainOptions {
   std::vector<std::string> provenance;
   /// The detection options the model states (NAME=VALUE each, NAME an analyser option such as hole-gap;
   /// "defaults" alone: this build's defaults): every analyser option at its default but those given.
-  /// Empty: the --init model's stated options, else none (pipeline/stated_options.hpp).
+  /// Empty: the options every sample set records alike, else the --init model's, else none
+  /// (pipeline/stated_options.hpp).
   std::vector<std::string> detection_options;
   std::string inspect;      ///< model to describe instead of training
   int top = 20;             ///< --inspect: features listed

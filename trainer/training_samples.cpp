@@ -221,6 +221,19 @@ void append_augmented(const ClassPick& pos, const std::vector<std::pair<std::siz
       << " more positives\n";
 }
 
+// The analyser options every set records, when they all record the same; else none.
+RecordedParameters agreed_analyser_options(const std::vector<SampleSet>& pos, const std::vector<SampleSet>& neg) {
+  std::optional<RecordedParameters> agreed;
+  for (const std::vector<SampleSet>* sets : {&pos, &neg}) {
+    for (const SampleSet& set : *sets) {
+      const RecordedParameters& options = set.manifest().analyser_options;
+      if (options.empty() || (agreed && *agreed != options)) return {};
+      agreed = options;
+    }
+  }
+  return agreed.value_or(RecordedParameters{});
+}
+
 }  // namespace
 
 ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int threads) {
@@ -233,6 +246,7 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
   ChosenSamples out;
   out.spec = *spec;
   out.crops = crops;
+  out.analyser_options = agreed_analyser_options(pos.sets, neg.sets);
   const std::size_t samples = pos.chosen.size() + neg.chosen.size();
   out.columns = feature_pool_columns(choice, out.spec, samples, log);
   const RdsfExtractor extractor(out.spec);

@@ -52,6 +52,8 @@ struct SampleChoice {
 struct ChosenSamples {
   FeatureSpec spec;         ///< of the sets
   CropProvenance crops;     ///< how the sets' crops were cut (unknown when none records it)
+  /// The analyser options the sets' candidates were found with, when every set records the same; else none.
+  RecordedParameters analyser_options;
   std::vector<int> columns; ///< feature of each column when the rows hold a pool; empty: all features
   cv::Mat1f rows;           ///< one feature row per sample, positives first (this rank's rows only)
   std::vector<int> labels;  ///< 1 / 0

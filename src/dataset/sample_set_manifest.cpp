@@ -1,5 +1,6 @@
 #include "rdsf/dataset/sample_set_manifest.hpp"
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,11 @@ std::string SampleSetManifest::to_text() const {
     fs << "crops" << "{";
     cv::write(fs, "window_box", crops.window_box);
     fs << "window_scale" << crops.window_scale;
+    fs << "}";
+  }
+  if (!analyser_options.empty()) {
+    fs << "analyser_options" << "{";
+    for (const auto& [key, value] : analyser_options) cv::write(fs, key, value);
     fs << "}";
   }
   // Text through cv::write: `fs << text` would take a text starting with [ { ] } for a bracket.
@@ -82,6 +88,17 @@ SampleSetManifest parse_opened(const YamlReader& r) {
     m.crops.window_box = r.text(crops, "window_box", "crops.");
     m.crops.window_scale = r.real(crops, "window_scale", "crops.");
     if (!(m.crops.window_scale > 0.0)) r.bad("'crops.window_scale' must be positive");
+  }
+  if (r.has(root, "analyser_options")) {
+    const cv::FileNode options = root["analyser_options"];
+    if (!options.isMap()) r.bad("'analyser_options' must be a mapping of options to values");
+    for (auto it = options.begin(); it != options.end(); ++it) {
+      const std::string key = (*it).name();
+      const bool name = !key.empty() && std::islower(static_cast<unsigned char>(key[0])) != 0 &&
+                        key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
+      if (!name) r.bad("'analyser_options' holds '" + one_line(key) + "', which is no option's name");
+      m.analyser_options.emplace_back(key, r.text(options, key, "analyser_options."));
+    }
   }
   m.created = r.text(root, "created");
   m.created_by = YamlReader::opt_text(YamlReader::child(root, "created_by"));

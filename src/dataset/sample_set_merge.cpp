@@ -31,6 +31,10 @@ MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, Sample
     const std::string crops_differ =
         crop_provenance_mismatch(set.manifest().crops, "its crops", out.manifest().crops, "the output's");
     if (!crops_differ.empty()) fail(dir, "crops were cut differently: " + crops_differ + "; not merged");
+    const RecordedParameters& options = set.manifest().analyser_options;
+    if (!options.empty() && !out.manifest().analyser_options.empty() && options != out.manifest().analyser_options) {
+      fail(dir, "its candidates were found with other analyser options than the output's; not merged");
+    }
     inputs.push_back(std::move(set));
   }
   MergeResult result;

@@ -78,7 +78,8 @@ SampleSetWriter::~SampleSetWriter() = default;
 
 SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const FeatureSpec& spec,
                                                 const CameraModel& camera, const std::string& created_by,
-                                                const CropProvenance& crops) {
+                                                const CropProvenance& crops,
+                                                const RecordedParameters& analyser_options) {
   std::error_code ec;
   create_folders_durably(dir);
   SampleSetLock lock(dir);
@@ -103,6 +104,7 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
     manifest.feature_spec = spec;
     manifest.camera = camera;
     manifest.crops = crops;
+    manifest.analyser_options = analyser_options;
     manifest.created = utc_now_iso8601();
     manifest.created_by = created_by;
     manifest.write((root / "manifest.yml").string());  // last: a set exists once its manifest does
@@ -116,6 +118,15 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
   const std::string crops_differ =
       crop_provenance_mismatch(writer.manifest().crops, "the set's crops", crops, "the new crops");
   if (!crops_differ.empty()) fail(dir, "sample set's crops were cut differently: " + crops_differ + "; use another set");
+  const RecordedParameters& had = writer.manifest().analyser_options;
+  if (!had.empty() && !analyser_options.empty() && had != analyser_options) {
+    for (std::size_t i = 0; i < had.size() && i < analyser_options.size(); ++i) {
+      if (had[i] == analyser_options[i]) continue;
+      fail(dir, "sample set's candidates were found with other options (" + had[i].first + " " + had[i].second +
+                    ", now " + analyser_options[i].second + "); give the set's options or use another set");
+    }
+    fail(dir, "sample set's candidates were found with other options; give the set's options or use another set");
+  }
   return writer;
 }
 

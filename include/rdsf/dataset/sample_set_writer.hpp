@@ -41,9 +41,12 @@ class SampleSetWriter {
   /// Opens the set in `dir` for appending, creating it (and the folder) when it does not exist yet.
   /// An existing set must have the same feature spec (throws Error naming both hashes otherwise) and, when
   /// both are known, crops cut the same way (`crops`: crop_provenance(detector params); unknown for samples
-  /// without crops). A folder that exists but is not a sample set (other files, no manifest.yml) is refused.
+  /// without crops) and candidates found with the same analyser options (`analyser_options`: every option's
+  /// (key, text), stated_options(params); empty: not known). A new set records both. A folder that exists
+  /// but is not a sample set (other files, no manifest.yml) is refused.
   static SampleSetWriter open_or_create(const std::string& dir, const FeatureSpec& spec, const CameraModel& camera,
-                                        const std::string& created_by, const CropProvenance& crops = {});
+                                        const std::string& created_by, const CropProvenance& crops = {},
+                                        const RecordedParameters& analyser_options = {});
   /// Opens an existing set for appending; throws Error when `dir` holds no sample set.
   static SampleSetWriter open_existing(const std::string& dir);
 
