@@ -110,8 +110,8 @@ struct StepOptions {
   /// For the steps' programs: every option whose value differs from the default or that the model states
   /// (a program given --model would take the model's value for an option not on its command line).
   std::vector<std::string> arguments;
-  /// What the adapted model states (--detection-options of rdsf-train): none when no option was given (nor
-  /// --thesis) and the model states none (the adapted model then runs with the detector's own, as its base).
+  /// What the adapted model is told to state (--detection-options of rdsf-train): none when no option was
+  /// given (nor --thesis) and the model states none; rdsf-train then states what the sample sets record.
   RecordedParameters stated;
 };
 

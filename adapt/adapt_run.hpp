@@ -50,7 +50,7 @@ struct AdaptOptions {
   int threads = 0;
   /// The frame analyser's options (segmentation, candidates) and which were given: every step runs with the
   /// given ones, the model's stated ones for the rest (pipeline/stated_options.hpp), and the adapted model
-  /// states them all when any was given or the model states any.
+  /// states them all when any was given or the model states any (else what its sample sets record).
   AnalyserParams analyser;
   GivenOptions given;
 };
