@@ -133,14 +133,6 @@ void check_outputs(const DetectOptions& o) {
   if (o.show) gui::require_display("rdsf-detect --show", "drop --show or use --save-dir to get pictures");
 }
 
-/// The first key whose text differs between two models' analyser options, as "key a (first) / b (second)".
-std::string first_difference(const RecordedParameters& a, const RecordedParameters& b) {
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
-    if (a[i] != b[i]) return a[i].first + " " + a[i].second + " / " + b[i].second;
-  }
-  return "";
-}
-
 /// The pipeline's parameters for these models: the first model's stated detection options for the options
 /// not given (stated_options.hpp; every further model must run with the same, as they score the same
 /// candidates), and the detector computes the first model's feature spec unless --feature-spec names one
@@ -153,10 +145,11 @@ PipelineParams pipeline_params_for(const DetectOptions& o, const std::vector<Boo
     const GivenOptions& given = params.analyser_given;
     const RecordedParameters first = stated_options(given.for_model(params.analyser, &models.front()));
     for (std::size_t m = 1; m < models.size(); ++m) {
-      const std::string differs = first_difference(first, stated_options(given.for_model(params.analyser, &models[m])));
-      if (!differs.empty()) {
+      const RecordedParameters other = stated_options(given.for_model(params.analyser, &models[m]));
+      if (const std::optional<std::size_t> i = first_difference(first, other)) {  // both list every option
         throw cli::UsageError("models " + model_label(models.front()) + " and " + model_label(models[m]) +
-                              " run with other detection options (" + differs +
+                              " run with other detection options (" + first[*i].first + " " + first[*i].second +
+                              " / " + other[*i].second +
                               "): they score the same candidates, so give that option, or evaluate them apart");
       }
     }

@@ -152,7 +152,7 @@ RecordedParameters stated_detection_options(const std::vector<std::string>& word
     given.emplace_back(parameter_key(cli::canonical_option_name(word.substr(0, eq))), word.substr(eq + 1));
   }
   try {
-    return stated_options(with_recorded_values(analyser_parameters(), given, AnalyserParams{}));
+    return stated_options(given);
   } catch (const Error& e) {
     throw cli::UsageError("--detection-options: " + std::string(e.what()));
   }
@@ -320,7 +320,7 @@ RecordedParameters stated_by_model(const TrainingPlan& plan, const ChosenSamples
   const bool agree = validation.labels.empty() || validation.analyser_options == train.analyser_options;
   if (agree && !train.analyser_options.empty()) {
     try {
-      return stated_options(with_recorded_values(analyser_parameters(), train.analyser_options, AnalyserParams{}));
+      return stated_options(train.analyser_options);
     } catch (const Error& e) {
       std::cerr << "rdsf-train: warning: the sets' analyser options are not stated (" << e.what() << ")\n";
     }

@@ -30,6 +30,14 @@ std::string parameter_key(const std::string& name) {
   return key;
 }
 
+std::optional<std::size_t> first_difference(const RecordedParameters& a, const RecordedParameters& b) {
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    if (a[i] != b[i]) return i;
+  }
+  if (a.size() != b.size()) return std::min(a.size(), b.size());
+  return std::nullopt;
+}
+
 ParameterValue parameter_value_of_text(const std::string& text, const ParameterValue& like, const std::string& name) {
   if (std::holds_alternative<std::string>(like)) return text;
   const char* begin = text.c_str();

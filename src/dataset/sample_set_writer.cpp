@@ -119,13 +119,13 @@ SampleSetWriter SampleSetWriter::open_or_create(const std::string& dir, const Fe
       crop_provenance_mismatch(writer.manifest().crops, "the set's crops", crops, "the new crops");
   if (!crops_differ.empty()) fail(dir, "sample set's crops were cut differently: " + crops_differ + "; use another set");
   const RecordedParameters& had = writer.manifest().analyser_options;
-  if (!had.empty() && !analyser_options.empty() && had != analyser_options) {
-    for (std::size_t i = 0; i < had.size() && i < analyser_options.size(); ++i) {
-      if (had[i] == analyser_options[i]) continue;
-      fail(dir, "sample set's candidates were found with other options (" + had[i].first + " " + had[i].second +
-                    ", now " + analyser_options[i].second + "); give the set's options or use another set");
-    }
-    fail(dir, "sample set's candidates were found with other options; give the set's options or use another set");
+  const std::optional<std::size_t> i = first_difference(had, analyser_options);
+  if (!had.empty() && !analyser_options.empty() && i) {
+    const std::string which = *i < had.size() && *i < analyser_options.size()
+                                  ? " (" + had[*i].first + " " + had[*i].second + ", now " + analyser_options[*i].second + ")"
+                                  : "";
+    fail(dir, "sample set's candidates were found with other options" + which +
+                  "; give the set's options or use another set");
   }
   return writer;
 }

@@ -14,6 +14,10 @@ RecordedParameters stated_options(const AnalyserParams& params) {
   return out;
 }
 
+RecordedParameters stated_options(const RecordedParameters& values) {
+  return stated_options(with_recorded_values(analyser_parameters(), values, AnalyserParams{}));
+}
+
 AnalyserParams GivenOptions::for_model(AnalyserParams params, const BoostedModel* model) const {
   if (model == nullptr || !take_stated) return params;
   return with_recorded_values(analyser_parameters(), model->detection_options(), std::move(params), keys);

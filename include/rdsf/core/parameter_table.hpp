@@ -47,6 +47,10 @@ std::string parameter_key(const std::string& name);
 /// throws Error("name must be <type>") when it cannot.
 ParameterValue convert_parameter(const ParameterValue& value, const ParameterValue& like, const std::string& name);
 
+/// The first position at which two recorded lists differ (a key or a text, or one list ending first), or
+/// none when they are the same.
+std::optional<std::size_t> first_difference(const RecordedParameters& a, const RecordedParameters& b);
+
 /// `text` in parameter_text's form read as a value of `like`'s type: "1" / "0" for bool, an integer, a finite
 /// number (any strtod form), text as is; throws Error("name must be ...") when it is none.
 ParameterValue parameter_value_of_text(const std::string& text, const ParameterValue& like, const std::string& name);

@@ -20,6 +20,10 @@ namespace rdsf {
 /// What a model states of `params`: (key, text) of every row of analyser_parameters(), in table order.
 RecordedParameters stated_options(const AnalyserParams& params);
 
+/// The same of the defaults with `values` ((key, text) pairs) set: what --detection-options and the sample sets'
+/// records make a model state. Throws Error naming an unknown key or a value its option refuses.
+RecordedParameters stated_options(const RecordedParameters& values);
+
 /// The analyser options a user gave, which a model's stated options never replace.
 struct GivenOptions {
   /// The keys (parameter_key: "hole_gap") of the options given on the command line, in --config or as ROS
