@@ -164,7 +164,7 @@ std::vector<std::string> analyser_arguments(const RecordedParameters& options) {
     const std::string name = canonical_option_name(key);
     const Parameter<AnalyserParams>* row = find_parameter(analyser_parameters(), name);
     if (row != nullptr && row->is_switch) {
-      if (text == "1") out.push_back("--" + name);
+      out.push_back("--" + name + "=" + text);
       continue;
     }
     out.insert(out.end(), {"--" + name, text});

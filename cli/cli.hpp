@@ -52,7 +52,7 @@ bool parse(int argc, char** argv, const ProgramInfo& info, const po::options_des
 
 /// The options of a parameter table's rows (core/parameter_table.hpp), bound to `params`: each row's name,
 /// its help with the default `params` holds now, its type; a value the row's check refuses is a UsageError
-/// ("--row-step must be at least 1"). Switch rows are flags without a value.
+/// ("--row-step must be at least 1"). Switch rows are flags (`--relaxed`), also given off as `--relaxed 0`.
 template <typename Params>
 void add_table_options(po::options_description& group, const ParameterTable<Params>& table, Params& params);
 
@@ -83,8 +83,9 @@ po::options_description analyser_options(AnalyserParams& params, bool feature_sp
 /// for the rest (pipeline/stated_options.hpp): not under --thesis.
 GivenOptions given_analyser_options(const po::variables_map& values);
 
-/// Analyser options as a program's arguments: {"--hole-gap", "20", ...}; a switch row (--relaxed) is its name
-/// alone when on and left out when off. For a program that runs others with its own options (rdsf-adapt).
+/// Analyser options as a program's arguments: {"--hole-gap", "20", ...}; a switch row is `--relaxed=1` or
+/// `--relaxed=0` (given off, it wins over a model stating it on). For a program that runs others with its own
+/// options (rdsf-adapt).
 std::vector<std::string> analyser_arguments(const RecordedParameters& options);
 
 /// --background DIR (a background model of the room, rdsf-background; off when not given) bound to `dir`, and
@@ -164,17 +165,24 @@ auto with_type_of(const ParameterValue& value, Make&& make) {
 
 namespace detail {
 
-/// An option per row that is not hidden (a switch row a flag), its default `params`' value; each value
-/// po::notify stores (switches only when on) goes to `take(row, value)`.
+/// The value of a switch row: `--relaxed` alone is on, `--relaxed 0` (or `=0`) off, so that an option a model
+/// states on can be given off (pipeline/stated_options.hpp); 1, 0, on, off, true, false, yes, no.
+inline po::typed_value<bool>* switch_value() { return po::value<bool>()->implicit_value(true, "1"); }
+
+/// An option per row that is not hidden (a switch row a flag that may be given =0), its default `params`'
+/// value; each value po::notify stores goes to `take(row, value)`.
 template <typename Params, typename Take>
 void add_row_options(po::options_description& group, const ParameterTable<Params>& table, const Params& params,
                      Take take) {
   for (const Parameter<Params>& row : table) {
     if (row.hidden) continue;
     if (row.is_switch) {
-      group.add_options()(row.name.c_str(), po::bool_switch()->notifier([take, row](bool on) {
-        if (on) take(row, ParameterValue(true));
-      }), row.help.c_str());
+      const bool now = std::get<bool>(row.get(params));
+      group.add_options()(row.name.c_str(),
+                          switch_value()->default_value(now, now ? "1" : "0")->notifier([take, row](bool on) {
+                            take(row, ParameterValue(on));
+                          }),
+                          row.help.c_str());
       continue;
     }
     with_type_of(row.get(params), [&](const auto& now) {
@@ -213,8 +221,8 @@ void add_override_options(po::options_description& group, const ParameterTable<P
     if (row.hidden) continue;
     const std::string help = row.help + ". Default " + (row.is_switch ? std::string("off") : parameter_text(row.get(defaults)));
     if (row.is_switch) {
-      group.add_options()(row.name.c_str(), po::bool_switch()->notifier([&given, name = row.name](bool on) {
-        if (on) given.emplace_back(name, true);
+      group.add_options()(row.name.c_str(), detail::switch_value()->notifier([&given, name = row.name](bool on) {
+        given.emplace_back(name, on);
       }), help.c_str());
       continue;
     }

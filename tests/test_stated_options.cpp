@@ -48,6 +48,18 @@ std::string write_stating_model(const test::TempDir& dir) {
   return path;
 }
 
+// rdsf-detect on `dir`/room, writing to the path that follows.
+std::string detect_command(const test::TempDir& dir) {
+  return test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "room") + " --threads 2 --force --out ";
+}
+
+// The rows rdsf-detect writes to `dir`/`name` with `options` (it must succeed).
+std::string detect_rows(const test::TempDir& dir, const std::string& name, const std::string& options) {
+  const test::RunResult r = test::run(detect_command(dir) + test::quote(dir / name) + " " + options);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return test::file_text(dir / name);
+}
+
 }  // namespace
 
 TEST(StatedOptions, TextIsReadAsTheRowsType) {
@@ -131,13 +143,8 @@ TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
   const test::TempDir dir("rdsf-stated");
   ASSERT_TRUE(render_room(dir, 20));
   const std::string model = write_stating_model(dir);
-  const std::string detect = test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "room") +
-                             " --threads 2 --force --out ";
-  const auto rows = [&](const std::string& name, const std::string& options) {
-    const test::RunResult r = test::run(detect + test::quote(dir / name) + " " + options);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return test::file_text(dir / name);
-  };
+  const std::string detect = detect_command(dir);
+  const auto rows = [&](const std::string& name, const std::string& options) { return detect_rows(dir, name, options); };
   const std::string v2 = test::quote(shipped("v2.yml")), s = test::quote(model);
   const std::string by_model = rows("a.csv", "--model " + s);
   EXPECT_FALSE(by_model.empty());
@@ -160,6 +167,38 @@ TEST(StatedOptions, DetectProgramTakesThemUnlessGiven) {
   EXPECT_EQ(test::run(detect + test::quote(dir / "j.csv") + " --model " + s + " --model " + v2 + " --k 8 --hole-gap 20")
                 .exit_code,
             0);
+}
+
+// A switch a model states on (--relaxed) can be given off: `--relaxed 0` or `--relaxed=0` on the command line or `relaxed = 0`
+// in --config wins, `--relaxed` alone is on; a program running others passes it as `--relaxed=0` (rdsf-adapt).
+TEST(StatedOptions, ASwitchTheModelStatesOnCanBeGivenOff) {
+  const test::TempDir dir("rdsf-stated");
+  ASSERT_TRUE(render_room(dir, 20));
+  AnalyserParams relaxed;
+  relaxed.candidates.mode = HeightMode::relaxed;
+  const std::string model = dir / "relaxed.yml";
+  {
+    std::ofstream out(model);
+    out << model_file_text(stating(relaxed));
+  }
+  const auto rows = [&](const std::string& name, const std::string& options) { return detect_rows(dir, name, options); };
+  const std::string v2 = test::quote(shipped("v2.yml")), s = test::quote(model);
+  const std::string detect = detect_command(dir);
+  const std::string strict = rows("strict.csv", "--model " + v2);
+  const std::string stated = rows("stated.csv", "--model " + s);
+  EXPECT_NE(stated, strict);  // relaxed changes the candidates here
+  EXPECT_EQ(stated, rows("on.csv", "--model " + v2 + " --relaxed"));
+  EXPECT_EQ(stated, rows("on1.csv", "--model " + v2 + " --relaxed=1"));
+  EXPECT_EQ(rows("off.csv", "--model " + s + " --relaxed=0"), strict);
+  EXPECT_EQ(rows("off0.csv", "--relaxed 0 --model " + s), strict);
+  {
+    std::ofstream config(dir / "strict.ini");
+    config << "relaxed = 0\n";
+  }
+  EXPECT_EQ(rows("config.csv", "--model " + s + " --config " + test::quote(dir / "strict.ini")), strict);
+  const test::RunResult bad = test::run(detect + test::quote(dir / "bad.csv") + " --model " + s + " --relaxed=2");
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("relaxed"), std::string::npos) << bad.err;
 }
 
 // rdsf-mine --model (hard negatives) mines the candidates of the model's stated options: the same boxes and

@@ -64,7 +64,7 @@ struct Parameter {
   std::function<void(Params&, const ParameterValue&)> set;
   std::optional<ParameterValue> thesis;   ///< under --thesis, when a departure from the thesis
   std::optional<ParameterValue> classic;  ///< under rdsf-synth's --classic, when the variety changed it
-  bool is_switch = false;                 ///< a flag without a value on the command line (--relaxed)
+  bool is_switch = false;                 ///< a flag on the command line (--relaxed; --relaxed=0 gives it off)
   bool hidden = false;                    ///< no command-line option: a member only a preset sets
   /// What provenance records of this row; empty: (parameter_key(name), parameter_text(get(params))).
   std::function<RecordedParameters(const Params&)> record;
