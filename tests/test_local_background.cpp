@@ -130,3 +130,104 @@ TEST(LocalBackground, ResultsDoNotDependOnTheThreadCountOrTheFrameSizes) {
   EXPECT_GE(added, 3u);  // the people against the wall
   EXPECT_EQ(test::candidate_boxes(params, frames, 3), one);
 }
+
+namespace {
+
+// A frame of `cols` x `rows` readings: runs of one depth (a wall, a body) with holes, 0 and 65535 now and then.
+cv::Mat1w random_depths(int cols, int rows, std::uint32_t seed) {
+  cv::Mat1w d(rows, cols);
+  std::uint32_t x = seed;
+  const auto next = [&x] { return x = x * 1664525u + 1013904223u; };
+  std::uint16_t v = 2000;
+  for (auto it = d.begin(); it != d.end(); ++it) {
+    const std::uint32_t r = next() >> 8;
+    if (r % 7 == 0) v = static_cast<std::uint16_t>(500 + (next() >> 8) % 7500);
+    *it = r % 23 == 0 ? 0 : r % 97 == 0 ? 65535 : static_cast<std::uint16_t>(v + (r >> 12) % 40);
+  }
+  return d;
+}
+
+// far(x, y) of local_background.hpp's header, computed the plain way: cells' maxima, each side's maximum by a
+// loop over its cells.
+cv::Mat1w reference_far(const cv::Mat1w& depth, double fx, double reach_mm) {
+  const int g = kLocalBackgroundGridPx, gc = (depth.cols + g - 1) / g, gr = (depth.rows + g - 1) / g;
+  cv::Mat1w far(depth.size());
+  for (int i = 0; i < gr; ++i) {
+    std::vector<int> cell(static_cast<std::size_t>(gc), 0);
+    for (int r = i * g; r < std::min(depth.rows, i * g + g); ++r) {
+      for (int c = 0; c < depth.cols; ++c) cell[static_cast<std::size_t>(c / g)] = std::max<int>(cell[static_cast<std::size_t>(c / g)], depth(r, c));
+    }
+    for (int j = 0; j < gc; ++j) {
+      int behind = 1;
+      const int d = cell[static_cast<std::size_t>(j)];
+      if (d > 0 && j > 0 && j < gc - 1) {
+        const long w = std::max(1L, std::lround(fx * reach_mm / g / d));
+        int left = 0, right = 0;
+        for (long k = std::max(0L, j - w); k < j; ++k) left = std::max(left, cell[static_cast<std::size_t>(k)]);
+        for (long k = j + 1; k <= std::min<long>(gc - 1, j + w); ++k) right = std::max(right, cell[static_cast<std::size_t>(k)]);
+        if (std::min(left, right) > 0) behind = std::min(left, right);
+      }
+      for (int r = i * g; r < std::min(depth.rows, i * g + g); ++r) {
+        for (int c = j * g; c < std::min(depth.cols, j * g + g); ++c) far(r, c) = static_cast<std::uint16_t>(behind);
+      }
+    }
+  }
+  return far;
+}
+
+}  // namespace
+
+// The cell maxima (a vectorised band maximum), the table of reaches and the range maxima give far() of the
+// header exactly, on frames whose sizes are no multiple of the cells or of a vector, for three reaches.
+TEST(LocalBackground, EqualsTheRuleComputedThePlainWay) {
+  for (const cv::Size size : {cv::Size(83, 37), cv::Size(640, 480), cv::Size(21, 5)}) {
+    const cv::Mat1w depth = random_depths(size.width, size.height, 11u + static_cast<std::uint32_t>(size.width));
+    CameraModel camera = CameraModel::kinect_v1().scaled_to(size.width, size.height);
+    for (const double reach_mm : {150.0, 700.0, 3000.0}) {
+      const cv::Mat1w far = local_background(depth, camera, reach_mm), expected = reference_far(depth, camera.fx_px, reach_mm);
+      EXPECT_EQ(cv::countNonZero(far != expected), 0) << size << " reach " << reach_mm;
+    }
+  }
+}
+
+// foreground_mask and in_front_of (eight or sixteen pixels at a time) against the rule one pixel at a time in
+// 64 bits, and in_front_of's layer figures against sums over every pixel, with margins at their limits
+// (margin_relative 1: the 32-bit path) and labels beyond the layers (dropped).
+TEST(LocalBackground, FrontRuleAndItsLayerFiguresEqualThePlainWay) {
+  const cv::Mat1w depth = random_depths(83, 37, 5u), room = random_depths(83, 37, 9u);
+  Segmentation segmentation;
+  segmentation.labels.create(depth.size());
+  for (int l = 1; l <= 3; ++l) segmentation.layers.push_back(DepthLayer{});
+  for (std::size_t i = 0; i < segmentation.layers.size(); ++i) segmentation.layers[i].label = static_cast<int>(i + 1);
+  for (int r = 0; r < depth.rows; ++r) {
+    for (int c = 0; c < depth.cols; ++c) segmentation.labels(r, c) = static_cast<std::uint8_t>(depth(r, c) == 0 ? 0 : (r * 7 + c / 5) % 5);
+  }
+  for (const BackgroundParams params : {BackgroundParams{}, BackgroundParams{0.0, 0.0}, BackgroundParams{10000.0, 0.5},
+                                        BackgroundParams{37.0, 0.123}, BackgroundParams{0.0, 1.0}}) {
+    const cv::Mat1b mask = foreground_mask(depth, room, params);
+    const Segmentation front = in_front_of(segmentation, depth, room, params);
+    const std::uint64_t m = static_cast<std::uint64_t>(std::lround(params.margin_mm)),
+                        q = static_cast<std::uint64_t>(std::lround(params.margin_relative * 65536.0));
+    std::vector<std::uint64_t> sum(4, 0), count(4, 0), lo(4, 65535), hi(4, 0);
+    for (int r = 0; r < depth.rows; ++r) {
+      for (int c = 0; c < depth.cols; ++c) {
+        const std::uint64_t d = depth(r, c), b = room(r, c), margin = std::max(m, (b * q + 32768) >> 16);
+        const bool in_front = d > 0 && (b == 0 || d + margin < b);
+        ASSERT_EQ(mask(r, c), in_front ? 255 : 0) << "pixel " << c << "," << r;
+        const int label = segmentation.labels(r, c);
+        const int expected = in_front && label <= 3 ? label : 0;
+        ASSERT_EQ(front.labels(r, c), expected) << "pixel " << c << "," << r;
+        if (expected == 0) continue;
+        sum[expected] += d, ++count[expected], lo[expected] = std::min(lo[expected], d), hi[expected] = std::max(hi[expected], d);
+      }
+    }
+    for (const DepthLayer& layer : front.layers) {
+      const auto k = static_cast<std::size_t>(layer.label);
+      EXPECT_EQ(layer.pixel_count, static_cast<std::int64_t>(count[k]));
+      if (count[k] == 0) continue;
+      EXPECT_EQ(layer.mean_depth_mm, static_cast<double>(sum[k]) / static_cast<double>(count[k]));
+      EXPECT_EQ(layer.min_depth_mm, lo[k]);
+      EXPECT_EQ(layer.max_depth_mm, hi[k]);
+    }
+  }
+}

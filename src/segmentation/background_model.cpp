@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
@@ -42,20 +45,87 @@ void BackgroundModel::check_fits(const DepthFrame& frame) const {
 
 namespace {
 
-// The rule in whole millimetres, eight or more pixels at a time (the compiler vectorises the row loop):
-// margin = max(M, (b * R + 32768) >> 16) with M = round(margin_mm), R = round(margin_relative * 65536)
-// (b * R < 2^32 for b < 2^16, R <= 2^16), and d is in front when d > 0 and (b == 0 or d + margin < b).
+// The rule in whole millimetres: margin = max(M, (b * R + 32768) >> 16) with M = round(margin_mm),
+// R = round(margin_relative * 65536) (b * R < 2^32 for b < 2^16, R <= 2^16), and d is in front when d > 0 and
+// (b == 0 or d + margin < b); front[c] is 0xff or 0.
+// With SSE2 and R < 2^16 (margin_relative below 1) eight pixels at a time in 16-bit lanes, exactly: the
+// rounded product is the high half of b * R plus the top bit of its low half; M <= 10000 and the relative
+// part <= b fit 16 bits; d + margin saturates at 65535, which is never below a b < 2^16, as the exact sum
+// (>= 65535) is not. The rest of a row, and R = 2^16, in 32 bits one pixel at a time.
 struct FrontRule {
   std::uint32_t margin_mm, relative_q16;
   explicit FrontRule(const BackgroundParams& p)
       : margin_mm(static_cast<std::uint32_t>(std::lround(p.margin_mm))),
         relative_q16(static_cast<std::uint32_t>(std::lround(p.margin_relative * 65536.0))) {}
+  std::uint8_t pixel(std::uint32_t depth, std::uint32_t room) const {
+    const std::uint32_t relative = (room * relative_q16 + 32768u) >> 16;
+    const std::uint32_t margin = relative > margin_mm ? relative : margin_mm;
+    return static_cast<std::uint8_t>(-static_cast<int>((depth != 0) & ((room == 0) | (depth + margin < room))));
+  }
   void row(const std::uint16_t* d, const std::uint16_t* b, std::uint8_t* front, int n) const {
-    for (int c = 0; c < n; ++c) {
-      const std::uint32_t depth = d[c], room = b[c];
-      const std::uint32_t relative = (room * relative_q16 + 32768u) >> 16;
-      const std::uint32_t margin = relative > margin_mm ? relative : margin_mm;
-      front[c] = static_cast<std::uint8_t>(-static_cast<int>((depth != 0) & ((room == 0) | (depth + margin < room))));
+    int c = 0;
+#ifdef __SSE2__
+    if (relative_q16 < 65536u && margin_mm < 65536u) {
+      const __m128i r = _mm_set1_epi16(static_cast<short>(relative_q16)), m = _mm_set1_epi16(static_cast<short>(margin_mm));
+      const __m128i zero = _mm_setzero_si128();
+      for (; c + 16 <= n; c += 16) {
+        __m128i halves[2];
+        for (int h = 0; h < 2; ++h) {
+          const __m128i depth = _mm_loadu_si128(reinterpret_cast<const __m128i*>(d + c + 8 * h));
+          const __m128i room = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b + c + 8 * h));
+          const __m128i relative =
+              _mm_add_epi16(_mm_mulhi_epu16(room, r), _mm_srli_epi16(_mm_mullo_epi16(room, r), 15));
+          const __m128i margin = _mm_add_epi16(_mm_subs_epu16(relative, m), m);  // max(relative, M)
+          const __m128i sum = _mm_adds_epu16(depth, margin);
+          const __m128i below = _mm_cmpeq_epi16(_mm_subs_epu16(room, sum), zero);  // not sum < room
+          const __m128i no_room = _mm_cmpeq_epi16(room, zero), no_depth = _mm_cmpeq_epi16(depth, zero);
+          halves[h] = _mm_andnot_si128(no_depth, _mm_or_si128(no_room, _mm_andnot_si128(below, _mm_set1_epi16(-1))));
+        }
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(front + c), _mm_packs_epi16(halves[0], halves[1]));
+      }
+    }
+#endif
+    for (; c < n; ++c) front[c] = pixel(d[c], b[c]);
+  }
+};
+
+// The end of the run of label[c]'s value that starts at c: the first column after c of another value, or n.
+int run_end(const std::uint8_t* label, int c, int n) {
+  const std::uint8_t k = label[c];
+  int end = c + 1;
+#ifdef __SSE2__
+  const __m128i same = _mm_set1_epi8(static_cast<char>(k));
+  for (; end + 16 <= n; end += 16) {
+    const auto equal = static_cast<unsigned>(
+        _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(label + end)), same)));
+    if (equal != 0xffffu) return end + __builtin_ctz(~equal);
+  }
+#endif
+  while (end < n && label[end] == k) ++end;
+  return end;
+}
+
+// Adds pixels c..end-1 of one row, all of layer k, to k's count, sum, nearest and farthest (a loop the compiler
+// vectorises).
+struct LayerSums {
+  std::vector<std::uint64_t> sum;
+  std::vector<std::int64_t> pixels;
+  std::vector<std::uint16_t> nearest, farthest;
+  explicit LayerSums(std::size_t count) : sum(count, 0), pixels(count, 0), nearest(count, 65535), farthest(count, 0) {}
+  void add(std::size_t k, const std::uint16_t* d, int c, int end) {
+    pixels[k] += end - c;
+    for (; c < end; c += 65536) {  // a 32-bit sum holds 65536 readings
+      const int stop = std::min(end, c + 65536);
+      std::uint32_t s = 0;
+      std::uint16_t lo = 65535, hi = 0;
+      for (int i = c; i < stop; ++i) {
+        s += d[i];
+        lo = std::min(lo, d[i]);
+        hi = std::max(hi, d[i]);
+      }
+      sum[k] += s;
+      nearest[k] = std::min(nearest[k], lo);
+      farthest[k] = std::max(farthest[k], hi);
     }
   }
 };
@@ -86,9 +156,7 @@ Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& dept
   out.iterations = segmentation.iterations;
   out.labels.create(segmentation.labels.size());
   const std::size_t count = out.layers.size() + 1;
-  std::vector<std::uint64_t> sum(count, 0);
-  std::vector<std::int64_t> pixels(count, 0);
-  std::vector<std::uint16_t> nearest(count, 65535), farthest(count, 0);
+  LayerSums sums(count);
   for (int r = 0; r < depth_mm.rows; ++r) {
     const std::uint8_t* in = segmentation.labels.ptr<std::uint8_t>(r);
     const std::uint16_t* b = background_mm.ptr<std::uint16_t>(r);
@@ -96,32 +164,25 @@ Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& dept
     std::uint8_t* label = out.labels.ptr<std::uint8_t>(r);
     rule.row(d, b, front.data(), cols);
     for (int c = 0; c < cols; ++c) label[c] = in[c] & front[c];
-    for (int c = 0; c < cols; ++c) {
-      std::uint64_t eight = 0;  // most of a row is not in front: skip it eight labels at a time
-      if (c + 8 <= cols && (std::memcpy(&eight, label + c, 8), eight == 0)) {
-        c += 7;
-        continue;
-      }
-      const std::size_t k = label[c];  // 0: no reading or not in front
-      if (k == 0) continue;
+    for (int c = 0; c < cols;) {  // by runs of one label: a person's or a piece of furniture's pixels in a row
+      const std::uint8_t k = label[c];  // 0: no reading or not in front (most of a row)
+      const int end = run_end(label, c, cols);
       if (k >= count) {
-        label[c] = 0;
-        continue;
+        std::memset(label + c, 0, static_cast<std::size_t>(end - c));
+      } else if (k != 0) {
+        sums.add(k, d, c, end);
       }
-      sum[k] += d[c];
-      ++pixels[k];
-      nearest[k] = std::min(nearest[k], d[c]);
-      farthest[k] = std::max(farthest[k], d[c]);
+      c = end;
     }
   }
   for (DepthLayer& layer : out.layers) {
     const auto k = static_cast<std::size_t>(layer.label);
     if (k >= count) continue;
-    layer.pixel_count = pixels[k];
-    if (pixels[k] == 0) continue;
-    layer.mean_depth_mm = static_cast<double>(sum[k]) / static_cast<double>(pixels[k]);
-    layer.min_depth_mm = nearest[k];
-    layer.max_depth_mm = farthest[k];
+    layer.pixel_count = sums.pixels[k];
+    if (sums.pixels[k] == 0) continue;
+    layer.mean_depth_mm = static_cast<double>(sums.sum[k]) / static_cast<double>(sums.pixels[k]);
+    layer.min_depth_mm = sums.nearest[k];
+    layer.max_depth_mm = sums.farthest[k];
   }
   return out;
 }

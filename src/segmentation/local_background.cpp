@@ -29,8 +29,7 @@ class RowMaxima {
   }
   // The maximum of samples first..last (first <= last, both within the row).
   std::uint16_t max(int first, int last) const {
-    int k = 0;
-    while ((2 << k) <= last - first + 1) ++k;
+    const int k = 31 - __builtin_clz(static_cast<unsigned>(last - first + 1));  // the largest 2^k <= the length
     const std::uint16_t* level = &table_[static_cast<std::size_t>(k) * n_];
     return std::max(level[first], level[last - (1 << k) + 1]);
   }
@@ -39,6 +38,22 @@ class RowMaxima {
   std::vector<std::uint16_t> table_;
   int levels_ = 0, n_ = 0;
 };
+
+// w(d) = max(1, round(reach_px_mm / d)) grid columns for every depth d > 0, as a table: one division and
+// rounding per depth value once per reach (this thread's, rebuilt when the reach changes), not per cell.
+const std::vector<std::uint16_t>& reach_cells(double reach_px_mm) {
+  thread_local std::vector<std::uint16_t> table;
+  thread_local double made_for = -1.0;
+  if (made_for != reach_px_mm) {
+    table.assign(65536, 1);
+    for (int d = 1; d < 65536; ++d) {
+      const long w = std::max(1L, std::lround(reach_px_mm / d));
+      table[static_cast<std::size_t>(d)] = static_cast<std::uint16_t>(std::min(w, 65535L));
+    }
+    made_for = reach_px_mm;
+  }
+  return table;
+}
 
 }  // namespace
 
@@ -51,26 +66,32 @@ void local_background(const cv::Mat1w& depth_mm, const CameraModel& camera, doub
   // w in grid columns for depth d: round(fx * R / d / g) = round(reach_px_mm / d).
   const double reach_px_mm = camera.fx_px * reach_mm / g;
   far.create(depth_mm.size());  // kept when it has the size already: no new pages to fault in a frame
+  const std::vector<std::uint16_t>& w_of = reach_cells(reach_px_mm);
   std::vector<std::uint16_t> cells(static_cast<std::size_t>(grid_cols)), behind(static_cast<std::size_t>(grid_cols));
-  std::vector<std::uint16_t> expanded(static_cast<std::size_t>(grid_cols) * g);
+  std::vector<std::uint16_t> expanded(static_cast<std::size_t>(grid_cols) * g), column_max(static_cast<std::size_t>(cols));
   RowMaxima maxima;
   for (int gr = 0; gr < grid_rows; ++gr) {
     const int first_row = gr * g, end_row = std::min(rows, first_row + g);
-    std::fill(cells.begin(), cells.end(), 0);
-    for (int r = first_row; r < end_row; ++r) {  // each cell's farthest reading
+    // Each cell's farthest reading: the maximum over the band's rows per column (a loop the compiler
+    // vectorises), then over each cell's g columns.
+    std::copy_n(depth_mm.ptr<std::uint16_t>(first_row), cols, column_max.begin());
+    for (int r = first_row + 1; r < end_row; ++r) {
       const std::uint16_t* d = depth_mm.ptr<std::uint16_t>(r);
-      for (int j = 0; j < grid_cols; ++j) {
-        std::uint16_t m = cells[j];
-        for (int c = j * g; c < std::min(cols, j * g + g); ++c) m = std::max(m, d[c]);
-        cells[j] = m;
-      }
+      std::uint16_t* m = column_max.data();
+      for (int c = 0; c < cols; ++c) m[c] = std::max(m[c], d[c]);
+    }
+    for (int j = 0; j < grid_cols; ++j) {
+      const int first = j * g, end = std::min(cols, first + g);
+      std::uint16_t m = column_max[static_cast<std::size_t>(first)];
+      for (int c = first + 1; c < end; ++c) m = std::max(m, column_max[static_cast<std::size_t>(c)]);
+      cells[static_cast<std::size_t>(j)] = m;
     }
     maxima.build(cells);
     for (int j = 0; j < grid_cols; ++j) {
       const std::uint16_t d = cells[j];
       behind[j] = 1;
       if (d == 0 || j == 0 || j == grid_cols - 1) continue;  // no reading, or a side without a cell
-      const int w = std::max(1, static_cast<int>(std::lround(reach_px_mm / d)));
+      const int w = w_of[d];
       const std::uint16_t b =
           std::min(maxima.max(std::max(0, j - w), j - 1), maxima.max(j + 1, std::min(grid_cols - 1, j + w)));
       if (b > 0) behind[j] = b;

@@ -13,7 +13,8 @@
 // which nothing is.
 // It is computed on a grid of kGridPx x kGridPx cells, each standing for its farthest reading (a cell's
 // holes do not make it a hole), with d, the sides and w in cells, and every pixel of a cell gets its
-// cell's far (the sides' maxima by a sparse table: a handful of operations a cell whatever the reach).
+// cell's far (the sides' maxima by a sparse table: a handful of operations a cell whatever the reach; w of
+// each depth from a table made once per reach).
 #include <opencv2/core.hpp>
 
 #include "rdsf/frame/camera_model.hpp"
