@@ -52,40 +52,36 @@ void parse_shard(const std::string& text, MineParams& params) {
   params.shard_count = count;
 }
 
-int run_mine(MineOptions& o) {
-  MineParams& p = o.mine;
-  parse_shard(o.shard, p);
-  try {  // the limits are checked in one place, the library's; on the command line they are usage errors
-    check_mine_params(p);
+namespace {
+
+// The options, checked in one place: the shard, the library's limits (usage errors here), --min-score.
+void check_mine_options(MineOptions& o) {
+  parse_shard(o.shard, o.mine);
+  try {
+    check_mine_params(o.mine);
   } catch (const Error& e) {
     throw cli::UsageError(e.what());
   }
-  if (o.model.empty() && o.min_score_given) {
-    throw cli::UsageError("--min-score needs --model (hard-negative mode)");
-  }
-  std::optional<BoostedModel> model;
-  if (!o.model.empty()) {
-    model = BoostedModel::load(o.model, o.models_dir);
-    p.analyser = o.given.for_model(p.analyser, &*model);  // its stated detection options, for those not given
-    if (const std::string stated = o.given.said_of(*model); !stated.empty()) std::cerr << "rdsf-mine: " << stated << "\n";
-    check_model_fits(*model, p.analyser);
-    const BoostedModel& m = *model;
-    const ModelScorer scorer(m);  // only the features the model reads
-    p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
-    p.min_score = o.min_score;
-    p.model = model_reference(m);
-    std::cerr << "rdsf-mine: hard-negative mode: keeping candidates that " << p.model << " (" << m.path()
-              << ") scores >= " << p.min_score << "\n";
-  }
+  if (o.model.empty() && o.min_score_given) throw cli::UsageError("--min-score needs --model (hard-negative mode)");
+}
 
-  NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
-  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.analyser.features, p.camera, "rdsf-mine",
-                                                           crop_provenance(p.analyser.candidates),
-                                                           stated_options(p.analyser));
-  report_open(writer, "rdsf-mine");
-  std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
-            << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";
+// Hard-negative mode: the model's stated detection options for those not given, and its scorer (only the
+// features it reads) keeping the candidates it scores >= --min-score.
+void take_hard_negative_model(const MineOptions& o, MineParams& p) {
+  const BoostedModel model = BoostedModel::load(o.model, o.models_dir);
+  p.analyser = o.given.for_model(p.analyser, &model);
+  if (const std::string stated = o.given.said_of(model); !stated.empty()) std::cerr << "rdsf-mine: " << stated << "\n";
+  check_model_fits(model, p.analyser);
+  const ModelScorer scorer(model);
+  p.scorer = [scorer](const cv::Mat1w& crop) { return scorer.score(crop); };
+  p.min_score = o.min_score;
+  p.model = model_reference(model);
+  std::cerr << "rdsf-mine: hard-negative mode: keeping candidates that " << p.model << " (" << model.path()
+            << ") scores >= " << p.min_score << "\n";
+}
 
+// Mines every source into `writer` with a progress line; the wall time in seconds.
+MineStats mine_with_progress(NegativeMiner& miner, SampleSetWriter& writer, double& seconds) {
   std::optional<cli::Progress> progress;
   auto extra = [](const MineStats& s) {
     return "candidates " + std::to_string(s.candidates) + "  kept " + std::to_string(s.kept) + "  duplicates " +
@@ -100,7 +96,11 @@ int run_mine(MineOptions& o) {
   });
   if (!progress) progress.emplace(std::cerr, "frames", stats.total_frames);
   progress->finish(stats.frames, extra(stats));
-  const double seconds = progress->elapsed_s();
+  seconds = progress->elapsed_s();
+  return stats;
+}
+
+void report_mining(const MineStats& stats, const MineParams& p, double seconds) {
   const double frames = static_cast<double>(stats.frames);
   std::fprintf(stderr,
                "rdsf-mine: %lld frames, %.2f candidates per frame, kept %lld, duplicates skipped %lld, %.1f s "
@@ -116,6 +116,24 @@ int run_mine(MineOptions& o) {
                  scored > 0 ? static_cast<double>(scored - stats.below_score) / static_cast<double>(scored) : 0.0);
   }
   if (stats.reached_max) std::cerr << "rdsf-mine: stopped: the set holds --max " << p.max_negatives << " negatives\n";
+}
+
+}  // namespace
+
+int run_mine(MineOptions& o) {
+  check_mine_options(o);
+  MineParams& p = o.mine;
+  if (!o.model.empty()) take_hard_negative_model(o, p);
+  NegativeMiner miner(p);  // opens the sources: a bad one fails before the set is created
+  SampleSetWriter writer = SampleSetWriter::open_or_create(o.out, p.analyser.features, p.camera, "rdsf-mine",
+                                                           crop_provenance(p.analyser.candidates),
+                                                           stated_options(p.analyser));
+  report_open(writer, "rdsf-mine");
+  std::cerr << "rdsf-mine: mining " << p.sources.size() << " source(s) into " << o.out << " (shard "
+            << p.shard_index << "/" << p.shard_count << ", stride " << p.stride << ")\n";
+  double seconds = 0;
+  const MineStats stats = mine_with_progress(miner, writer, seconds);
+  report_mining(stats, p, seconds);
   std::cerr << "rdsf-mine: " << o.out << " holds " << writer.records().size() << " samples\n";
   return 0;
 }
