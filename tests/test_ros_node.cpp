@@ -253,6 +253,23 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped; 14 with colour"), std::string::npos)
       << log;
   compare(in_front, expected_background);
+
+  // A switch row as a bool parameter (~relaxed true reaches --relaxed=true; ~background stays on the server):
+  // rdsf-detect --background --relaxed's candidates, which differ from the run before.
+  const test::RunResult relaxed_run =
+      test::run(test::program("rdsf-detect") + " --source " + test::quote(frames) + " --model people --models-dir " +
+                test::quote(models) + " --background " + test::quote(background) + " --relaxed --out " +
+                test::quote(dir / "detect-relaxed.csv"));
+  ASSERT_EQ(relaxed_run.exit_code, 0) << relaxed_run.err;
+  const std::vector<CsvFrame> expected_relaxed = read_detect_csv(dir / "detect-relaxed.csv");
+  int differ = 0;
+  for (std::size_t i = 0; i < expected_background.size() && i < expected_relaxed.size(); ++i) {
+    differ += expected_relaxed[i].candidates != expected_background[i].candidates ? 1 : 0;
+  }
+  EXPECT_GT(differ, 0);  // relaxed heights change the candidates of these frames
+  const std::vector<rdsf_people::People> relaxed = play_to_node(" _relaxed:=true", "node-relaxed.log", log);
+  EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped"), std::string::npos) << log;
+  compare(relaxed, expected_relaxed);
   spinner.stop();
   ros::shutdown();
   core.stop();
