@@ -237,12 +237,15 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   const test::RunResult learned = test::run(test::program("rdsf-background") + " --source " + test::quote(frames) +
                                             " --out " + test::quote(background));
   ASSERT_EQ(learned.exit_code, 0) << learned.err;
-  const test::RunResult with_background =
-      test::run(test::program("rdsf-detect") + " --source " + test::quote(frames) + " --model people --models-dir " +
-                test::quote(models) + " --background " + test::quote(background) + " --out " +
-                test::quote(dir / "detect-background.csv"));
-  ASSERT_EQ(with_background.exit_code, 0) << with_background.err;
-  const std::vector<CsvFrame> expected_background = read_detect_csv(dir / "detect-background.csv");
+  // rdsf-detect's frames with `options`, written to `file`.
+  auto detect_with = [&](const std::string& options, const std::string& file) {
+    const test::RunResult run = test::run(test::program("rdsf-detect") + " --source " + test::quote(frames) +
+                                          " --model people --models-dir " + test::quote(models) + " " + options +
+                                          " --out " + test::quote(dir / file));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return read_detect_csv(dir / file);
+  };
+  const std::vector<CsvFrame> expected_background = detect_with("--background " + test::quote(background), "detect-background.csv");
   int more = 0;
   for (std::size_t i = 0; i < expected.size() && i < expected_background.size(); ++i) {
     more += expected_background[i].candidates - expected[i].candidates;
@@ -256,12 +259,8 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
 
   // A switch row as a bool parameter (~relaxed true reaches --relaxed=true; ~background stays on the server):
   // rdsf-detect --background --relaxed's candidates, which differ from the run before.
-  const test::RunResult relaxed_run =
-      test::run(test::program("rdsf-detect") + " --source " + test::quote(frames) + " --model people --models-dir " +
-                test::quote(models) + " --background " + test::quote(background) + " --relaxed --out " +
-                test::quote(dir / "detect-relaxed.csv"));
-  ASSERT_EQ(relaxed_run.exit_code, 0) << relaxed_run.err;
-  const std::vector<CsvFrame> expected_relaxed = read_detect_csv(dir / "detect-relaxed.csv");
+  const std::vector<CsvFrame> expected_relaxed =
+      detect_with("--background " + test::quote(background) + " --relaxed", "detect-relaxed.csv");
   int differ = 0;
   for (std::size_t i = 0; i < expected_background.size() && i < expected_relaxed.size(); ++i) {
     differ += expected_relaxed[i].candidates != expected_background[i].candidates ? 1 : 0;
