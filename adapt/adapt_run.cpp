@@ -23,6 +23,7 @@
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
+#include "rdsf/pipeline/candidate_switches.hpp"
 #include "rdsf/pipeline/room_presence.hpp"
 
 namespace rdsf {
@@ -32,12 +33,15 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct Paths {
-  std::string negatives, room, logs, base;
+  std::string negatives, room, logs, base, root;
   explicit Paths(const std::string& out)
       : negatives((fs::path(out) / "sets" / "room-negatives").string()),
         room((fs::path(out) / "sets" / "room").string()),
         logs((fs::path(out) / "logs").string()),
-        base((fs::path(out) / "base").string()) {}
+        base((fs::path(out) / "base").string()),
+        root(out) {}
+  /// The sample set of the trial of a candidate switch (its option's name).
+  std::string trial(const std::string& option) const { return (fs::path(root) / "sets" / ("trial-" + option)).string(); }
   std::string base_part(const std::string& part) const { return (fs::path(base) / part).string(); }
   std::string log(const std::string& step) const { return (fs::path(logs) / (step + ".log")).string(); }
 };
@@ -267,6 +271,7 @@ void room_negatives(const AdaptOptions& o, const BoostedModel& model, const Step
 
 struct Answers {
   long human = 0, propagated = 0;  ///< the person's answers, and the labels their tracks and places gave
+  long human_people = 0;           ///< of the person's answers, the y
   long by_model_track = 0;         ///< labels along the model's own sure answers' tracks (no person's answer)
 };
 
@@ -277,15 +282,80 @@ Answers count_answers(const std::string& room_set) {
   const AnswerJournal answers(journal.string());
   for (const JournalEntry& e : answers.in_force()) {
     a.human += e.by == "human" ? 1 : 0;
+    a.human_people += e.by == "human" && e.answer == 'y' ? 1 : 0;
     a.propagated += e.by.rfind("track ", 0) == 0 || e.by.rfind("place ", 0) == 0 ? 1 : 0;
     a.by_model_track += e.by.rfind("model-track ", 0) == 0 ? 1 : 0;
   }
   return a;
 }
 
+// The switches a room may try: not given, not stated by the model, not under --thesis.
+std::vector<CandidateSwitch> switches_to_try(const AdaptOptions& o, const BoostedModel& model) {
+  std::vector<CandidateSwitch> out;
+  if (!o.try_switches || !o.given.take_stated) return out;
+  for (const CandidateSwitch& sw : candidate_switches()) {
+    const std::string key = parameter_key(sw.option);
+    const bool given = std::find(o.given.keys.begin(), o.given.keys.end(), key) != o.given.keys.end();
+    const bool stated = std::any_of(model.detection_options().begin(), model.detection_options().end(),
+                                    [&](const auto& m) { return m.first == key; });
+    if (!given && !stated) out.push_back(sw);
+  }
+  return out;
+}
+
+// Step "switches": each switch tried in the room; its state row says on or off, answers.trials the answers.
+void try_switches(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
+                  const Paths& paths) {
+  if (state.done("base") || state.done("negatives") || state.done("answers")) {  // a folder begun before trials
+    say("switches: not tried: this folder's later steps ran before (their samples were cut without trials)");
+    return;
+  }
+  long spent = 0;
+  const long most = o.budget / 2;  // the trials never take more than half the budget: the room's questions come
+  for (const CandidateSwitch& sw : switches_to_try(o, model)) {
+    const std::string set = paths.trial(sw.option);
+    const long left = std::min<long>(o.trial_budget, most - spent) - count_answers(set).human;
+    if (left > 0) {
+      say("trying --" + sw.option + " " + sw.on + " (" + sw.finds + "): are the candidates only it adds people? (at "
+          "most " + std::to_string(left) + " answers, likeliest first)");
+      std::vector<std::string> args{"--source", o.source, "--out", set, "--model", o.model, "--models-dir",
+                                    o.models_dir, "--ask", "likely", "--no-model-answers", "--per-track",
+                                    "--per-place", o.per_place ? "on" : "off", "--keep-rejected", "--budget",
+                                    std::to_string(left), "--only-added-by", sw.option, "--threads",
+                                    std::to_string(o.threads)};
+      if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
+      if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
+      args = with_options(args, step);
+      args.insert(args.end(), {"--" + sw.option, sw.on});
+      const bool window = o.truth.empty() && o.answers.empty();
+      run_step_program("rdsf-label", args, window ? std::string() : paths.log("switches"));
+    }
+    const Answers a = count_answers(set);  // the person's own y decide, not the labels their tracks gave
+    spent += a.human;
+    state.set("switch." + sw.option, a.human_people > 0 ? "on" : "off");
+    say("--" + sw.option + " " + sw.on + ": " + std::to_string(a.human_people) + " of " + std::to_string(a.human) +
+        " answers confirmed a person only it finds: " + (a.human_people > 0 ? "on" : "off"));
+  }
+  state.set("answers.trials", std::to_string(spent));
+}
+
+// The options after the switches' trials: those taken given as if on the command line (every later step runs
+// with them and the adapted model states them).
+AdaptOptions with_switches_taken(const AdaptOptions& o, const AdaptState& state) {
+  AdaptOptions taken = o;
+  for (const CandidateSwitch& sw : candidate_switches()) {
+    if (state.get("switch." + sw.option) != "on") continue;
+    const Parameter<AnalyserParams>& row = *find_parameter(analyser_parameters(), sw.option);
+    row.set(taken.analyser, parameter_value_of_text(sw.on, row.get(taken.analyser), row.name));
+    taken.given.keys.push_back(parameter_key(sw.option));
+  }
+  return taken;
+}
+
 // Step 2: the person answers what the model is unsure of, one answer per track, within the budget.
 void room_answers(const AdaptOptions& o, const StepOptions& step, AdaptState& state, const Paths& paths) {
-  const long left = o.budget - count_answers(paths.room).human;  // a resumed run spends only the rest
+  const long trials = std::atol(state.get("answers.trials").c_str());
+  const long left = o.budget - trials - count_answers(paths.room).human;  // a resumed run spends only the rest
   if (left > 0) {
     std::vector<std::string> args{"--source", o.source, "--out", paths.room, "--model", o.model, "--models-dir",
                                   o.models_dir, "--ask", "uncertain", "--keep-rejected", "--budget",
@@ -298,10 +368,11 @@ void room_answers(const AdaptOptions& o, const StepOptions& step, AdaptState& st
     run_step_program("rdsf-label", with_options(args, step), window ? std::string() : paths.log("answers"));
   }
   const Answers a = count_answers(paths.room);
-  state.set("answers.human", std::to_string(a.human));
+  state.set("answers.human", std::to_string(a.human + trials));  // every answer the person gave
   state.set("answers.propagated", std::to_string(a.propagated));
   state.set("answers.model_track", std::to_string(a.by_model_track));
-  say(std::to_string(a.human) + " answers given, " + std::to_string(a.propagated) +
+  say(std::to_string(a.human) + " answers given (and " + std::to_string(trials) + " in the switches' trials), " +
+      std::to_string(a.propagated) +
       " labels propagated along their tracks, " + std::to_string(a.by_model_track) +
       " along the tracks of the model's sure answers");
 }
@@ -314,14 +385,21 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, const St
   // not frames (below), which would put copies on both sides: the room's sets once.
   const bool no_base = o.base_pos.empty() && o.base_neg.empty();
   const int copies = no_base ? 1 : o.room_weight;
+  std::vector<std::string> room_sets;  // the room's answers and those of the switches taken, the sets made
+  for (const CandidateSwitch& sw : candidate_switches()) {
+    if (state.get("switch." + sw.option) == "on") room_sets.push_back(paths.trial(sw.option));
+  }
+  room_sets.insert(room_sets.begin(), paths.room);
+  const auto not_made = [](const std::string& set) { return !fs::exists(fs::path(set) / "manifest.yml"); };
+  room_sets.erase(std::remove_if(room_sets.begin(), room_sets.end(), not_made), room_sets.end());
   std::vector<std::string> args{"--models-dir", o.models_dir, "--name", o.name, "--pos"};
-  args.insert(args.end(), static_cast<std::size_t>(copies), paths.room);
+  for (int k = 0; k < copies; ++k) args.insert(args.end(), room_sets.begin(), room_sets.end());
   args.insert(args.end(), o.base_pos.begin(), o.base_pos.end());
   args.push_back("--neg");
   const bool room_negatives = !state.get("negatives").empty();
   for (int k = 0; k < copies; ++k) {
     if (room_negatives) args.push_back(paths.negatives);
-    args.push_back(paths.room);
+    args.insert(args.end(), room_sets.begin(), room_sets.end());
   }
   args.insert(args.end(), o.base_neg.begin(), o.base_neg.end());
   const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : 10;
@@ -437,17 +515,21 @@ void step(AdaptState& state, const std::string& name, const std::function<void()
 
 }  // namespace
 
-int run_adapt(const AdaptOptions& o) {
-  const BoostedModel model = BoostedModel::load(o.model, o.models_dir);
-  const StepOptions options = step_options(o, model);
-  check_room(o, model);  // bad input is refused before anything is written
-  check_empty_recording(o, model, options);
-  AdaptState state(o.out);
-  state.pin("room", fs::absolute(o.source).string());
-  state.pin("name", o.name);
-  state.pin("analyser_options", option_words(departures_from_defaults(stated_options(options.analyser))));
-  const Paths paths(o.out);
+int run_adapt(const AdaptOptions& given) {
+  const BoostedModel model = BoostedModel::load(given.model, given.models_dir);
+  const StepOptions tried = step_options(given, model);
+  check_room(given, model);  // bad input is refused before anything is written
+  check_empty_recording(given, model, tried);
+  AdaptState state(given.out);
+  state.pin("room", fs::absolute(given.source).string());
+  state.pin("name", given.name);
+  state.pin("analyser_options", option_words(departures_from_defaults(stated_options(tried.analyser))));
+  state.pin("try_switches", given.try_switches ? "on" : "off");
+  const Paths paths(given.out);
   fs::create_directories(paths.logs);
+  step(state, "switches", [&] { try_switches(given, model, tried, state, paths); });
+  const AdaptOptions o = with_switches_taken(given, state);
+  const StepOptions options = step_options(o, model);
   AdaptOptions with_base = o;
   if (o.base_pos.empty() && o.base_neg.empty() && o.base_frames > 0) {
     step(state, "base", [&] { render_base(o, options, paths); });

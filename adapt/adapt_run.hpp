@@ -3,6 +3,11 @@
 // workbench's programs (docs/adapting-to-your-room.md), resumable after a kill (adapt_state.hpp):
 //   0. base       without --base-pos/--base-neg: a small synthetic base rendered and labelled here (rdsf-synth,
 //                 rdsf-label from its truth, rdsf-mine), so that the room's few samples never train alone
+//   -. switches   the candidate switches (pipeline/candidate_switches.hpp) not given nor stated, each tried in
+//                 the room: the person is asked, likeliest first, about the candidates only it adds (rdsf-label
+//                 --ask likely --only-added-by, one answer per track, --trial-budget answers each, at most half
+//                 the --budget in all);
+//                 a switch with a person confirmed among them is on for every later step and the adapted model
 //   1. negatives  the room's people-free frames mined (rdsf-mine): the --empty recording, the shipped
 //                 model's false positives (hard negatives) first; without one, the stretches of the room
 //                 recording where the model and the tracker see nobody (pipeline/room_presence.hpp)
@@ -47,6 +52,10 @@ struct AdaptOptions {
   /// Without base sets: frames with people of the base rendered here (and half as many empty); 0: no base
   /// (the room's samples alone).
   int base_frames = 600;
+  /// Try the candidate switches in the room (the "switches" step); each trial spends at most trial_budget of
+  /// the budget's answers, all of them at most half the budget.
+  bool try_switches = true;
+  int trial_budget = 3;
   int threads = 0;
   /// The frame analyser's options (segmentation, candidates) and which were given: every step runs with the
   /// given ones, the model's stated ones for the rest (pipeline/stated_options.hpp), and the adapted model

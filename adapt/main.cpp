@@ -48,6 +48,13 @@ int main(int argc, char** argv) {
         ("base-frames", po::value(&o.base_frames)->default_value(o.base_frames),
          "without --base-pos/--base-neg: render a synthetic base of this many frames with people (and half as "
          "many empty) in DIR/base, once; 0: train on the room's samples alone (they can make the model worse)");
+    options.add_options()
+        ("try-switches", po::value(&o.try_switches)->default_value(o.try_switches, o.try_switches ? "on" : "off"),
+         "on or off: try each candidate switch not given (--local-front 70, --border-height 25, "
+         "--narrow-fitted-width 20, --hole-gap 20) in the room first: the person is asked about the candidates "
+         "only it adds, likeliest first; one confirmed person turns it on for every step and the adapted model")
+        ("trial-budget", po::value(&o.trial_budget)->default_value(o.trial_budget),
+         "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)");
     rdsf::cli::add_per_place_option(options, o.per_place);
     rdsf::cli::add_propagate_model_option(options, o.propagate_model);
     rdsf::cli::add_threads_option(options, o.threads, "threads of each step");
@@ -73,6 +80,7 @@ int main(int argc, char** argv) {
     if (o.rounds < 0) throw rdsf::cli::UsageError("--rounds must be 0 (the default) or more");
     if (o.room_weight < 1) throw rdsf::cli::UsageError("--room-weight must be at least 1");
     if (o.base_frames < 0) throw rdsf::cli::UsageError("--base-frames must be 0 (no base) or more");
+    if (o.trial_budget < 1) throw rdsf::cli::UsageError("--trial-budget must be at least 1 (--try-switches off tries none)");
     return rdsf::run_adapt(o);
   });
 }

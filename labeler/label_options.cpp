@@ -24,7 +24,11 @@ cli::po::options_description label_options(LabelOptions& o, LabelOptionText& tex
        "with --model: candidates with P(person) <= this are answered n by the model, never shown")
       ("no-model-answers", po::bool_switch(&text.no_model_answers), "with --model: ask every candidate (only show the score)")
       ("ask", po::value(&text.ask)->default_value(text.ask),
-       "order: frame after frame; uncertain (needs --model): the whole session closest to P = 0.5 first")
+       "order: frame after frame; uncertain (needs --model): the whole session closest to P = 0.5 first; likely "
+       "(needs --model): the whole session, the highest P(person) first")
+      ("only-added-by", po::value(&o.only_added_by),
+       "an analyser option (e.g. local-front): only the candidates it adds are asked and stored, not those the "
+       "same options with it at its default make too (IoU >= 0.5); rdsf-adapt's trials of the candidate switches")
       ("loop", po::bool_switch(&o.loop),
        "active learning: ask --batch answers (most uncertain first), retrain in-process, re-score, ask the next "
        "batch; models saved as --loop-model NAME/vN; implies --ask uncertain and --keep-rejected")
@@ -53,7 +57,7 @@ cli::po::options_description label_options(LabelOptions& o, LabelOptionText& tex
       ("answers", po::value(&o.answers), "headless: read keys from this file (- = stdin) instead of a window")
       ("keep-rejected", po::bool_switch(&o.session.keep_rejected), "store 'n' answers as negatives (label 0)")
       ("per-track", po::bool_switch(&o.session.per_track),
-       "one answer per track (needs --ask uncertain): a y or n is given to the candidates on the same person's "
+       "one answer per track (needs --ask uncertain or likely): a y or n is given to the candidates on the same person's "
        "track in the frames before and after while the track is sure (docs/adapting-to-your-room.md); the window "
        "shows the track as a strip of crops; u undoes the whole track");
   cli::add_per_place_option(options, o.session.propagation.per_place);

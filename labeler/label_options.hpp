@@ -11,7 +11,7 @@ namespace rdsf {
 /// The options' text before it becomes LabelOptions (apply_option_text).
 struct LabelOptionText {
   bool no_model_answers = false;  ///< --no-model-answers
-  std::string ask = "order";      ///< --ask order|uncertain
+  std::string ask = "order";      ///< --ask order|uncertain|likely
   int explore = 5;                ///< --explore N (with --loop)
 };
 

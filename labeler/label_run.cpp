@@ -54,7 +54,10 @@ std::string reason_of(const LabelingSession& session, const PresentedCandidate& 
     const double pr = p.frame->probabilities[p.index];
     const LabelingConfig& c = session.config();
     const BoostedModel& m = *session.model();
-    if (c.ask == AskOrder::uncertain) {
+    if (c.ask == AskOrder::likely) {
+      std::snprintf(text, sizeof text, "asked: likeliest first under %s/v%d (P = %.2f, %zu left)", m.name().c_str(),
+                    m.version(), pr, session.pending());
+    } else if (c.ask == AskOrder::uncertain) {
       const double boundary = m.operating_probability();
       std::snprintf(text, sizeof text, "asked: uncertain under %s/v%d (|P - %.2f| = %.2f, %zu left)", m.name().c_str(),
                     m.version(), boundary, uncertainty(pr, boundary), session.pending());
@@ -114,6 +117,20 @@ std::unique_ptr<BoostedModel> load_model(LabelOptions& o) {
   const std::string misfit = model_fit_problem(*model, o.session.analyser);  // crops cut the same way
   if (!misfit.empty()) fail(model->path(), misfit);
   return model;
+}
+
+/// `analyser` with the option `name` at its default: what the candidates --only-added-by leaves out come from.
+/// A usage error when it is at its default already (it would add nothing).
+AnalyserParams without_option(const AnalyserParams& analyser, const std::string& name) {
+  const Parameter<AnalyserParams>& row = *find_parameter(analyser_parameters(), cli::canonical_option_name(name));
+  const ParameterValue fallback = row.get(AnalyserParams{});
+  if (row.get(analyser) == fallback) {
+    throw cli::UsageError("--only-added-by " + name + ": --" + row.name + " is at its default (" +
+                          parameter_text(fallback) + ") here, so it adds no candidate");
+  }
+  AnalyserParams without = analyser;
+  row.set(without, fallback);
+  return without;
 }
 
 /// --truth with the hardly visible people marked (their candidates are asked). Null without --truth.
@@ -312,6 +329,10 @@ void Labeler::report(bool with_truth) const {
                st.unanswered + (quit_ || budget_spent_ ? static_cast<long>(session_.pending_in_frame()) : 0L),
                budget_spent_ ? " (budget of answers spent: run again to resume)"
                              : quit_ ? " (quit: run again to resume)" : "");
+  if (!o_.only_added_by.empty()) {
+    std::fprintf(stderr, "rdsf-label: only what --%s adds: %ld candidates left out (made without it too)\n",
+                 cli::canonical_option_name(o_.only_added_by).c_str(), st.not_added);
+  }
   if (o_.session.truth_is_oracle && session_.model() != nullptr) {
     const long by_model = st.model_positives + st.model_negatives;
     std::fprintf(stderr, "rdsf-label: truth oracle: %ld of %ld model answers wrong (%.2f%%), %ld in the truth's uncertain band\n",
@@ -366,8 +387,13 @@ void check_options(const LabelOptions& o) {
   }
   if (s.truth_is_oracle && o.truth_csv.empty()) throw cli::UsageError("--truth-oracle needs --truth");
   if (o.loop && o.batch < 1) throw cli::UsageError("--batch must be at least 1");
-  if (s.ask == AskOrder::uncertain && o.model.empty() && !o.loop) throw cli::UsageError("--ask uncertain needs --model");
-  if (s.per_track && s.ask != AskOrder::uncertain) throw cli::UsageError("--per-track needs --ask uncertain (or --loop)");
+  if (reads_whole_session(s.ask) && o.model.empty() && !o.loop) {
+    throw cli::UsageError(std::string("--ask ") + (s.ask == AskOrder::likely ? "likely" : "uncertain") + " needs --model");
+  }
+  if (s.per_track && !reads_whole_session(s.ask)) throw cli::UsageError("--per-track needs --ask uncertain or likely (or --loop)");
+  if (!o.only_added_by.empty() && find_parameter(analyser_parameters(), cli::canonical_option_name(o.only_added_by)) == nullptr) {
+    throw cli::UsageError("--only-added-by " + o.only_added_by + ": not a candidate or segmentation option");
+  }
   if (o.budget < 0) throw cli::UsageError("--budget must be 0 (no limit) or more");
 }
 
@@ -376,6 +402,7 @@ int run_label(const LabelOptions& options) {
   const bool headless = !o.answers.empty() || o.session.truth_is_oracle;
   if (!headless) gui::require_display("rdsf-label", "label on this machine with --answers FILE (or - for stdin) instead");
   const std::unique_ptr<BoostedModel> model = load_model(o);
+  if (!o.only_added_by.empty()) o.session.only_added_beyond = without_option(o.session.analyser, o.only_added_by);
   const std::unique_ptr<GroundTruth> truth = read_truth(o);
   std::unique_ptr<gui::ScriptedKeys> scripted;
   if (headless && !o.session.truth_is_oracle) {

@@ -22,10 +22,14 @@ struct LabelOptions {
   long loop_answer_after = 30;  ///< --loop: models saved as models_dir/loop_model/vN.yml
   long budget = 0;             ///< stop after this many human answers; 0: no limit
   double min_visible = 0.5;    ///< assisted mode: people less visible than this are don't-care
+  /// An analyser option (--only-added-by NAME): only the candidates it adds are asked and stored, those the
+  /// same options with NAME at its default make too are left out (LabelingConfig::only_added_beyond).
+  std::string only_added_by;
 };
 
 /// Checks the options together (cli::UsageError naming the option, exit 2): --accept and --reject,
-/// --truth-oracle, --batch, --ask uncertain, --per-track, --budget. Call once, before run_label.
+/// --truth-oracle, --batch, --ask uncertain/likely, --per-track, --budget, --only-added-by's name. Call once,
+/// before run_label.
 void check_options(const LabelOptions& options);
 
 int run_label(const LabelOptions& options);

@@ -346,3 +346,52 @@ TEST(Adapt, AKilledRunResumes) {
   EXPECT_GT(human, 0);
   EXPECT_LE(human, 8);  // the budget over both runs
 }
+
+// A room whose person stands 25 cm before a wall (one depth layer with it: no candidate of the defaults)
+// and moves along it. Trying the candidate switches, the person (the truth) is asked about what each adds,
+// likeliest first; the candidate --local-front adds is the person, so it is taken: every later step runs with
+// it and the adapted model states it; the trials' answers count in the budget. --try-switches off tries none
+// (and finds nobody to train on).
+TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
+  test::TempDir dir;
+  std::filesystem::create_directories(dir / "room");
+  {
+    std::ofstream boxes(dir / "room/boxes.csv");
+    boxes << "frame,person,x,y,w,h\n";
+    for (int i = 0; i < 20; ++i) {
+      DepthFrame frame = test::wall_frame(3000);
+      const cv::Rect body(200 + 8 * i, 100, 60, 330);
+      test::paint(frame, {body.x + 18, body.y, 24, 40}, 2750);  // the head
+      test::paint(frame, {body.x, body.y + 40, body.width, body.height - 40}, 2750);
+      char name[16];
+      std::snprintf(name, sizeof name, "%06d", i);
+      write_png_atomically(dir / (std::string("room/") + name + ".depth.png"), frame.depth_mm);
+      boxes << name << ",1," << body.x << "," << body.y << "," << body.width << "," << body.height << "\n";
+    }
+  }
+  const SmallRoomRun run = small_room_run(dir, 8);
+  const test::RunResult r = test::run(run.command + " --trial-budget 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string state = test::file_text(dir / "out/adapt-state.tsv");
+  EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
+  EXPECT_NE(r.err.find("--local-front 70: 1 of 1 answers confirmed a person only it finds: on"), std::string::npos) << r.err;
+  EXPECT_NE(test::file_text(dir / "out/logs/switches.log").find("--only-added-by local-front"), std::string::npos);
+  EXPECT_NE(test::file_text(dir / "out/logs/answers.log").find("--local-front 70"), std::string::npos);
+  const std::regex human("answers.human\t([0-9]+)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(state, m, human)) << state;
+  EXPECT_LE(std::stoi(m[1]), 8);
+  EXPECT_GE(std::stoi(m[1]), 1);
+  const RecordedParameters stated = BoostedModel::load((run.models / "room/v1.yml").string()).detection_options();
+  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
+            stated.end());
+
+  const test::RunResult off = test::run(
+      replace(replace(run.command, "--name room", "--name plain"), test::quote(dir / "out"), test::quote(dir / "off")) +
+      " --try-switches off");
+  // Without the switch the room's person has no candidate: nothing to train on (and no base here).
+  EXPECT_EQ(off.exit_code, 1) << off.err;
+  EXPECT_NE(off.err.find("no positives to train with"), std::string::npos) << off.err;
+  EXPECT_EQ(test::file_text(dir / "off/adapt-state.tsv").find("switch."), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "off/logs/switches.log"));
+}

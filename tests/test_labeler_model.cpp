@@ -180,3 +180,39 @@ TEST(LabelerModel, AskUncertainGivesTheSameSessionOnEveryThreadCount) {
   EXPECT_GE(rows.size(), 8u);  // the eight answers, plus what the model answered
   EXPECT_EQ(rows, stored(three));
 }
+
+// --ask likely presents the whole session highest P(person) first; --only-added-by leaves out the candidates
+// the same options without the option make too (what is stored are candidates only the option adds), and
+// refuses an option at its default or a name that is no analyser option.
+TEST(LabelerModel, AskLikelyAndOnlyWhatAnOptionAdds) {
+  Synth s;
+  const test::RunResult r = s.label_with(std::string(50, 'y'), "--model people --no-model-answers --ask likely --budget 5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
+  const SampleSet set = SampleSet::open_read(s.dir / "set");
+  ASSERT_EQ(set.records().size(), 5u);
+  std::vector<double> p;
+  for (const SampleRecord& rec : set.records()) p.push_back(model.probability(*rec.score));
+  EXPECT_TRUE(std::is_sorted(p.rbegin(), p.rend()));  // the likeliest first
+  std::filesystem::remove_all(s.dir / "set");
+
+  // --occlusion-gap 0 (the default 60) makes other candidates; only those no candidate of the default matches.
+  const test::RunResult added = s.label_with(std::string(400, 'n'),
+                                             "--model people --no-model-answers --keep-rejected --occlusion-gap 0 "
+                                             "--only-added-by occlusion-gap");
+  ASSERT_EQ(added.exit_code, 0) << added.err;
+  EXPECT_NE(added.err.find("only what --occlusion-gap adds: "), std::string::npos) << added.err;
+  const test::RunResult all = test::run(label() + " --source " + test::quote(s.dir / "synth") + " --out " +
+                                        test::quote(s.dir / "all") + " --models-dir " + models() +
+                                        " --answers " + test::quote(s.dir / "keys") +
+                                        " --model people --no-model-answers --keep-rejected --occlusion-gap 0");
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  const std::size_t only = SampleSet::open_read(s.dir / "set").records().size();
+  EXPECT_LT(only, SampleSet::open_read(s.dir / "all").records().size());  // some were left out
+
+  for (const char* bad : {"--only-added-by occlusion-gap", "--only-added-by frobnicate --occlusion-gap 0"}) {
+    const test::RunResult refused = s.label_with("y", std::string("--model people ") + bad);
+    EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.err;
+    EXPECT_NE(refused.err.find("--only-added-by"), std::string::npos) << refused.err;
+  }
+}

@@ -33,7 +33,8 @@ std::string model_answerer(const BoostedModel& model, double score, double proba
 AskOrder parse_ask_order(const std::string& text) {
   if (text == "order") return AskOrder::in_order;
   if (text == "uncertain") return AskOrder::uncertain;
-  throw Error("unknown ask order '" + text + "' (known: order, uncertain)");
+  if (text == "likely") return AskOrder::likely;
+  throw Error("unknown ask order '" + text + "' (known: order, uncertain, likely)");
 }
 
 CandidateKey PresentedCandidate::key() const { return {frame->source, frame->frame.name, candidate().strict_box}; }
@@ -53,9 +54,10 @@ LabelingSession::LabelingSession(LabelingConfig config, SampleSetWriter& writer,
     throw Error("--accept " + std::to_string(config_.accept_probability) + " must be at least --reject " +
                 std::to_string(config_.reject_probability) + ", both in [0, 1]");
   }
-  if (config_.per_track && config_.ask != AskOrder::uncertain) {
-    throw Error("one answer per track needs the uncertain ask order (the whole session read first)");
+  if (config_.per_track && !reads_whole_session(config_.ask)) {
+    throw Error("one answer per track needs the uncertain or likely ask order (the whole session read first)");
   }
+  if (config_.only_added_beyond) beyond_.emplace(*config_.only_added_beyond);
   if (model_ != nullptr && !(model_->feature_spec() == writer_.manifest().feature_spec)) {
     throw Error(model_->path() + ": the model reads feature spec " + model_->feature_spec().hash() +
                 ", the sample set " + writer_.dir() + " holds " + writer_.manifest().feature_spec.hash() +
@@ -114,6 +116,15 @@ std::shared_ptr<LoadedFrame> LabelingSession::read_next() {
 
 void LabelingSession::analyse_loaded(LoadedFrame& loaded) const {
   loaded.analysis = analyser_.analyse(loaded.frame, /*with_features=*/false);
+  if (beyond_) {
+    const std::vector<Candidate> without = beyond_->analyse(loaded.frame, /*with_features=*/false).candidates;
+    const BoxKind box = config_.analyser.reported_box;
+    for (const Candidate& c : loaded.analysis.candidates) {
+      loaded.made_without.push_back(std::any_of(without.begin(), without.end(), [&](const Candidate& o) {
+        return iou(labelling_box(c, box), labelling_box(o, box)) >= 0.5;
+      }));
+    }
+  }
   score(loaded);
   if (truth_ == nullptr) return;
   for (const Candidate& c : loaded.analysis.candidates) {
@@ -146,6 +157,10 @@ void LabelingSession::take_frame(std::shared_ptr<const LoadedFrame> frame) {
   }
   for (std::size_t i : order) {
     const PresentedCandidate p{frame, i};
+    if (!frame->made_without.empty() && frame->made_without[i]) {
+      ++stats_.not_added;
+      continue;
+    }
     if (journal_.answered(p.key())) {
       ++stats_.already_answered;
       continue;
@@ -199,6 +214,12 @@ void LabelingSession::order_by_uncertainty() {
     std::deque<PresentedCandidate> shuffled;
     for (std::size_t i : order) shuffled.push_back(queue_[i]);
     queue_ = std::move(shuffled);
+    return;
+  }
+  if (config_.ask == AskOrder::likely) {  // the likeliest people first, no exploration
+    std::stable_sort(queue_.begin(), queue_.end(), [](const PresentedCandidate& a, const PresentedCandidate& b) {
+      return a.frame->probabilities[a.index] > b.frame->probabilities[b.index];
+    });
     return;
   }
   // Closest to where the model is read first: its operating point (0.5 for a model that states none).
@@ -268,11 +289,11 @@ void LabelingSession::rescore(const BoostedModel& model, bool may_answer) {
   }
   config_.model_answers = answers;
   queue_ = std::move(kept);
-  if (config_.ask == AskOrder::uncertain) order_by_uncertainty();
+  if (reads_whole_session(config_.ask)) order_by_uncertainty();
 }
 
 const PresentedCandidate* LabelingSession::current() {
-  if (config_.ask == AskOrder::uncertain && !sources_done_) {
+  if (reads_whole_session(config_.ask) && !sources_done_) {
     // The whole session first: the frame the read-ahead thread holds, then every other frame read in
     // order and analysed and scored on config_.threads workers, taken in frame order (ordered_pool.hpp).
     if (std::shared_ptr<LoadedFrame> first = prefetch_.get()) {  // rethrows a source's error here

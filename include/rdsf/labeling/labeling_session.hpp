@@ -60,10 +60,16 @@ namespace rdsf {
 inline constexpr double kDefaultAcceptProbability = 0.99;
 inline constexpr double kDefaultRejectProbability = 0.01;
 
-enum class AskOrder { in_order, uncertain };
+/// in_order: frame after frame; uncertain: the whole session, closest to the model's operating point first;
+/// likely: the whole session, the highest P(person) first (which of the candidates an option adds are people:
+/// rdsf-adapt's trials of the candidate switches).
+enum class AskOrder { in_order, uncertain, likely };
 
-/// "order" or "uncertain"; throws Error naming the known ones otherwise.
+/// "order", "uncertain" or "likely"; throws Error naming the known ones otherwise.
 AskOrder parse_ask_order(const std::string& text);
+
+/// Whether the order reads (analyses and scores) the whole session before the first question.
+inline bool reads_whole_session(AskOrder order) { return order != AskOrder::in_order; }
 
 struct LabelingConfig {
   std::vector<std::string> sources;
@@ -93,8 +99,12 @@ struct LabelingConfig {
   /// The truth is the person (benchmarks): it answers only the candidates presented (as a human answer,
   /// see oracle_key()) instead of the sure ones silently.
   bool truth_is_oracle = false;
-  /// One answer per track (the header's comment); needs ask == uncertain (the whole session is read first).
+  /// One answer per track (the header's comment); needs an order that reads the whole session first.
   bool per_track = false;
+  /// Only what an option adds: a candidate that the analyser with these parameters makes too (a candidate
+  /// of it whose labelling box overlaps its own at IoU >= 0.5 in the frame) is neither asked, nor answered,
+  /// nor stored (rdsf-label --only-added-by NAME: the same options with NAME at its default).
+  std::optional<AnalyserParams> only_added_beyond;
   PropagationParams propagation;
   AnalyserParams analyser;
   CameraModel camera;
@@ -108,6 +118,8 @@ struct LoadedFrame {
   std::vector<double> probabilities;  ///< per candidate P(person) = model calibration of scores
   std::vector<double> truth_iou;   ///< per candidate, best IoU with a counted ground-truth person; empty without truth
   std::vector<double> ignored_iou; ///< per candidate, best IoU with a don't-care (hardly visible) person
+  /// With only_added_beyond: per candidate, whether that analyser makes it too (never presented); else empty.
+  std::vector<bool> made_without;
   std::int64_t ordinal = 0;        ///< 1-based over all sources
 };
 
@@ -126,6 +138,7 @@ struct LabelingStats {
   /// and those in the truth's uncertain band (neither right nor wrong)
   long model_wrong = 0, model_in_band = 0;
   long already_answered = 0;                                                 ///< skipped on resume
+  long not_added = 0;  ///< only_added_beyond: candidates left out, the other analyser makes them too
   /// per_track: labels given by propagation, and (with truth) those the truth contradicts or leaves in
   /// its uncertain band
   long propagated_positives = 0, propagated_negatives = 0, propagated_wrong = 0, propagated_in_band = 0;
@@ -232,6 +245,7 @@ class LabelingSession {
   void score(LoadedFrame& frame) const;
   /// Answers the candidate from truth or the model when they are sure; false when it must be asked.
   bool answer_without_asking(const PresentedCandidate& p);
+  /// Orders the queue as config_.ask says (uncertain: with exploration; likely: highest P first).
   void order_by_uncertainty();
 
   LabelingConfig config_;
@@ -241,6 +255,7 @@ class LabelingSession {
   std::optional<ModelScorer> scorer_;  ///< the model, computing only the features it reads (in its own spec)
   const GroundTruth* truth_;
   FrameAnalyser analyser_;
+  std::optional<FrameAnalyser> beyond_;  ///< config_.only_added_beyond's analyser
   AnswerJournal journal_;
   std::size_t source_index_ = 0;
   std::unique_ptr<FrameSource> source_;
