@@ -7,8 +7,9 @@
 
 const rdsf::cli::ProgramInfo kProgram{
     "rdsf-adapt", "--source ROOM [--empty EMPTY] --out DIR --name NAME [--budget N] [--truth boxes.csv [--eval HELD_OUT]]",
-    "Adapts a model to a room in resumable steps, each one of the workbench's programs: a synthetic base when\n"
-    "none is given (rdsf-synth, rdsf-label, rdsf-mine), negatives (rdsf-mine), the person's answers, one per\n"
+    "Adapts a model to a room in resumable steps, each one of the workbench's programs: the candidate switches\n"
+    "tried (rdsf-label --only-added-by: is what each adds a person?), a synthetic base when none is given\n"
+    "(rdsf-synth, rdsf-label, rdsf-mine), negatives (rdsf-mine), the person's answers, one per\n"
     "track (rdsf-label --per-track), training (rdsf-train --init), report (rdsf-detect). Killed, it resumes at\n"
     "the step it was in; nothing answered is lost. Candidate and segmentation options given here are used by\n"
     "every step, and the adapted model states them, so rdsf-detect and the ROS node run it with them.\n"
