@@ -42,11 +42,14 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
                    '--size 512x424 --fov 70.6x60' (a Kinect v2); the base stays Kinect v1 (default none: Kinect v1)
   --people-version N  the shipped people/vN every room starts from and is judged against (default 2: the
                    tables' model; 3: today's default); one version per work folder
+  --seed N         rdsf-synth's seed of the 16 synthetic held-out rooms (default 31: the quality report's;
+                   another renders other rooms, e.g. to check a choice made on these)
 USAGE
 }
 out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people base="" modes="track candidate retrain negatives"
-adapt_args_text="" camera_text="" people_version=2
-script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text --camera=camera_text --people-version=people_version -- "$@"
+adapt_args_text="" camera_text="" people_version=2 seed=31
+script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text --camera=camera_text --people-version=people_version --seed=seed -- "$@"
+case "$seed" in ''|*[!0-9]*) echo "adaptation-benchmark: --seed takes a whole number" >&2; exit 2 ;; esac
 [ -f "models/people/v$people_version.yml" ] || { echo "adaptation-benchmark: --people-version: no models/people/v$people_version.yml" >&2; exit 2; }
 read -r -a adapt_args <<<"$adapt_args_text"
 read -r -a camera <<<"$camera_text"
@@ -55,7 +58,8 @@ for c in "${camera[@]}"; do
 done
 # The held-out rooms of another camera are rendered into folders of their own.
 heldout=heldout
-[ -z "$camera_text" ] || heldout=heldout-$(echo "${camera[*]}" | md5sum | cut -c1-8)
+[ "$seed" = 31 ] || heldout=heldout-seed$seed
+[ -z "$camera_text" ] || heldout=$heldout-$(echo "${camera[*]}" | md5sum | cut -c1-8)
 case "$synthetic" in ''|*[!0-9]*) echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2 ;; esac
 ((synthetic <= 16)) || { echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2; }
 for m in $modes; do
@@ -92,9 +96,9 @@ base_synth=()
     "${base_synth[@]}" >/dev/null 2>&1
 if ((synthetic > 0)); then
   [ -f "$data/$heldout/synth.yml" ] ||
-    "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed 31 --clip-frames 60 "${camera[@]}" >/dev/null 2>&1
+    "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed "$seed" --clip-frames 60 "${camera[@]}" >/dev/null 2>&1
   [ -f "$data/$heldout-empty/synth.yml" ] ||
-    "$synth" --out "$data/$heldout-empty" --force --frames 960 --people 1..4 --seed 31 --empty --clip-frames 60 \
+    "$synth" --out "$data/$heldout-empty" --force --frames 960 --people 1..4 --seed "$seed" --empty --clip-frames 60 \
       "${camera[@]}" >/dev/null 2>&1
 fi
 [ -n "$base" ] || [ -f "$sets/base-neg/manifest.yml" ] || "$mine" --source "$data/base-empty" --out "${base_neg[0]}" --threads $threads 2>/dev/null
