@@ -48,13 +48,17 @@ struct Latency {
 };
 
 // Why a candidate is shown: the person's time is spent here because neither truth nor model is sure.
-std::string reason_of(const LabelingSession& session, const PresentedCandidate& p) {
+// `added_by`: --only-added-by's option (a trial of a candidate switch), else empty.
+std::string reason_of(const LabelingSession& session, const PresentedCandidate& p, const std::string& added_by) {
   char text[160];
   if (!p.frame->probabilities.empty()) {
     const double pr = p.frame->probabilities[p.index];
     const LabelingConfig& c = session.config();
     const BoostedModel& m = *session.model();
-    if (c.ask == AskOrder::likely) {
+    if (c.ask == AskOrder::likely && !added_by.empty()) {
+      std::snprintf(text, sizeof text, "asked: does --%s add a person? likeliest first (P = %.2f, %zu left)",
+                    cli::canonical_option_name(added_by).c_str(), pr, session.pending());
+    } else if (c.ask == AskOrder::likely) {
       std::snprintf(text, sizeof text, "asked: likeliest first under %s/v%d (P = %.2f, %zu left)", m.name().c_str(),
                     m.version(), pr, session.pending());
     } else if (c.ask == AskOrder::uncertain) {
@@ -73,7 +77,7 @@ std::string reason_of(const LabelingSession& session, const PresentedCandidate& 
 }
 
 ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Clock::time_point start,
-                       const std::string& message) {
+                       const std::string& message, const std::string& added_by) {
   const LabelingStats& st = session.stats();
   ScreenStatus s;
   s.frame_ordinal = p.frame->ordinal;
@@ -93,7 +97,7 @@ ScreenStatus status_of(LabelingSession& session, const PresentedCandidate& p, Cl
       s.model_track_labels = st.model_track_positives + st.model_track_negatives;
     }
   }
-  s.reason = reason_of(session, p);
+  s.reason = reason_of(session, p, added_by);
   if (!p.frame->truth_iou.empty()) s.truth_iou = p.frame->truth_iou[p.index];
   s.message = message;
   return s;
@@ -243,7 +247,7 @@ class Labeler {
   }
 
   char key_from_window(const PresentedCandidate& p) {
-    ScreenStatus status = status_of(session_, p, start_, message_);
+    ScreenStatus status = status_of(session_, p, start_, message_, o_.only_added_by);
     status.zoom = zoom_;
     cv::Mat3b screen = render_label_screen(p, status);
     if (o_.session.per_track) screen = add_track_strip(screen, p, session_.track_preview('y'), session_.place_preview());
