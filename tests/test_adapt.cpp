@@ -350,8 +350,8 @@ TEST(Adapt, AKilledRunResumes) {
 // A room whose person stands 25 cm before a wall (one depth layer with it: no candidate of the defaults)
 // and moves along it. Trying the candidate switches, the person (the truth) is asked about what each adds,
 // likeliest first; the candidate --local-front adds is the person, so it is taken: every later step runs with
-// it and the adapted model states it; the trials' answers count in the budget. --try-switches off tries none
-// (and finds nobody to train on).
+// it and the adapted model states it; the trials' answers count in the budget; the report gives the model as
+// given before, then with the switch. --try-switches off tries none (and finds nobody to train on).
 TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   test::TempDir dir;
   std::filesystem::create_directories(dir / "room");
@@ -370,10 +370,15 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
     }
   }
   const SmallRoomRun run = small_room_run(dir, 8);
-  const test::RunResult r = test::run(run.command + " --trial-budget 1");
+  const test::RunResult r = test::run(run.command + " --trial-budget 1 --eval " + test::quote(dir / "room"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string state = test::file_text(dir / "out/adapt-state.tsv");
   EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
+  // The report's before is the model as given (nobody found: no candidate), then with the switch, then after.
+  const std::string report = test::file_text(dir / "out/report.txt");
+  EXPECT_NE(report.find(": before 0.000 ("), std::string::npos) << report;
+  EXPECT_NE(report.find(", with the switches taken (--local-front 70) "), std::string::npos) << report;
+  EXPECT_NE(state.find("tar_before_switches\t"), std::string::npos) << state;
   EXPECT_NE(r.err.find("--local-front 70: 1 of 1 answers confirmed a person only it finds: on"), std::string::npos) << r.err;
   EXPECT_NE(test::file_text(dir / "out/logs/switches.log").find("--only-added-by local-front"), std::string::npos);
   EXPECT_NE(test::file_text(dir / "out/logs/answers.log").find("--local-front 70"), std::string::npos);
