@@ -17,9 +17,11 @@
 // Ask order: in_order presents frame after frame (the thesis's way); uncertain scores every frame of every
 // source first (on the read-ahead thread) and presents the whole session's candidates closest to the
 // model's operating point first (P = 0.5 for a model that states none, operating_point.hpp), ties in frame
-// order (without a model yet: in a seeded random order). rescore() replaces the model mid-session (the
-// active-learning loop).
-// Per track (per_track, uncertain order only): a human y or n is followed through the frames before and
+// order (without a model yet: in a seeded random order); likely reads the session in the same way and presents
+// the highest P(person) first. rescore() replaces the model mid-session (the active-learning loop).
+// Only what an option adds (only_added_beyond): each frame is analysed again with the other parameters, and
+// a candidate that analysis makes too (labelling boxes at IoU >= 0.5) is never presented, answered or stored.
+// Per track (per_track, uncertain or likely order): a human y or n is followed through the frames before and
 // after by track propagation (track_propagation.hpp, the rule there) and every candidate on the sure part
 // of the track gets the same answer (origin "labeler-track", journalled with by = "track FRAME X,Y,W,H");
 // the candidates where the track became unsure are presented next. Undo of the answer undoes them all. A
