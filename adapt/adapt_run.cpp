@@ -119,15 +119,21 @@ struct StepOptions {
   RecordedParameters stated;
 };
 
+// Whether `model` states the analyser option of `key` (parameter_key: "hole_gap").
+bool states(const BoostedModel& model, const std::string& key) {
+  return std::any_of(model.detection_options().begin(), model.detection_options().end(),
+                     [&](const auto& stated) { return stated.first == key; });
+}
+
 StepOptions step_options(const AdaptOptions& o, const BoostedModel& model) {
   StepOptions s;
   s.analyser = o.given.for_model(o.analyser, &model);
   const RecordedParameters all = stated_options(s.analyser), departures = departures_from_defaults(all);
   RecordedParameters passed;
   for (const auto& option : all) {
-    const bool stated = std::any_of(model.detection_options().begin(), model.detection_options().end(),
-                                    [&](const auto& m) { return m.first == option.first; });
-    if (stated || std::find(departures.begin(), departures.end(), option) != departures.end()) passed.push_back(option);
+    if (states(model, option.first) || std::find(departures.begin(), departures.end(), option) != departures.end()) {
+      passed.push_back(option);
+    }
   }
   s.arguments = cli::analyser_arguments(passed);
   if (!o.given.keys.empty() || !o.given.take_stated || !model.detection_options().empty()) s.stated = all;
@@ -296,9 +302,7 @@ std::vector<CandidateSwitch> switches_to_try(const AdaptOptions& o, const Booste
   for (const CandidateSwitch& sw : candidate_switches()) {
     const std::string key = parameter_key(sw.option);
     const bool given = std::find(o.given.keys.begin(), o.given.keys.end(), key) != o.given.keys.end();
-    const bool stated = std::any_of(model.detection_options().begin(), model.detection_options().end(),
-                                    [&](const auto& m) { return m.first == key; });
-    if (!given && !stated) out.push_back(sw);
+    if (!given && !states(model, key)) out.push_back(sw);
   }
   return out;
 }
@@ -339,12 +343,20 @@ void try_switches(const AdaptOptions& o, const BoostedModel& model, const StepOp
   state.set("answers.trials", std::to_string(spent));
 }
 
+// The switches the trials took (the state's switch.NAME rows), in candidate_switches() order.
+std::vector<CandidateSwitch> switches_taken(const AdaptState& state) {
+  std::vector<CandidateSwitch> out;
+  for (const CandidateSwitch& sw : candidate_switches()) {
+    if (state.get("switch." + sw.option) == "on") out.push_back(sw);
+  }
+  return out;
+}
+
 // The options after the switches' trials: those taken given as if on the command line (every later step runs
 // with them and the adapted model states them).
 AdaptOptions with_switches_taken(const AdaptOptions& o, const AdaptState& state) {
   AdaptOptions taken = o;
-  for (const CandidateSwitch& sw : candidate_switches()) {
-    if (state.get("switch." + sw.option) != "on") continue;
+  for (const CandidateSwitch& sw : switches_taken(state)) {
     const Parameter<AnalyserParams>& row = *find_parameter(analyser_parameters(), sw.option);
     row.set(taken.analyser, parameter_value_of_text(sw.on, row.get(taken.analyser), row.name));
     taken.given.keys.push_back(parameter_key(sw.option));
@@ -385,11 +397,8 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, const St
   // not frames (below), which would put copies on both sides: the room's sets once.
   const bool no_base = o.base_pos.empty() && o.base_neg.empty();
   const int copies = no_base ? 1 : o.room_weight;
-  std::vector<std::string> room_sets;  // the room's answers and those of the switches taken, the sets made
-  for (const CandidateSwitch& sw : candidate_switches()) {
-    if (state.get("switch." + sw.option) == "on") room_sets.push_back(paths.trial(sw.option));
-  }
-  room_sets.insert(room_sets.begin(), paths.room);
+  std::vector<std::string> room_sets{paths.room};  // the room's answers and those of the switches taken, if made
+  for (const CandidateSwitch& sw : switches_taken(state)) room_sets.push_back(paths.trial(sw.option));
   const auto not_made = [](const std::string& set) { return !fs::exists(fs::path(set) / "manifest.yml"); };
   room_sets.erase(std::remove_if(room_sets.begin(), room_sets.end(), not_made), room_sets.end());
   std::vector<std::string> args{"--models-dir", o.models_dir, "--name", o.name, "--pos"};
@@ -461,35 +470,43 @@ std::string evaluate(const AdaptOptions& o, const StepOptions& step, const std::
   return (fs::path(dir) / "summary.txt").string();
 }
 
-BeforeAfter compare_on_eval(const AdaptOptions& o, const StepOptions& step, const std::string& adapted,
-                            const std::string& dir, const Paths& paths) {
-  const std::string summary = evaluate(o, step, {o.model, adapted}, dir, paths);
-  std::ifstream in(summary);
+// What a summary.txt says: each model's TAR at FPPF <= 0.1 (its exact-curve line, in model order) and, with
+// two models, the paired difference's text.
+struct SummaryFigures {
   std::vector<std::string> tars;
   std::string difference;
+};
+SummaryFigures read_summary(const std::string& summary) {
+  std::ifstream in(summary);
+  SummaryFigures f;
   const std::string curve = "exact curve: TAR ", paired = ": TAR at FPPF <= 0.1 ";
   for (std::string line; std::getline(in, line);) {
     const std::size_t at = line.find(curve);
-    if (at != std::string::npos) tars.push_back(line.substr(at + curve.size(), line.find(' ', at + curve.size()) - at - curve.size()));
+    if (at != std::string::npos) {
+      f.tars.push_back(line.substr(at + curve.size(), line.find(' ', at + curve.size()) - at - curve.size()));
+    }
     const std::size_t d = line.find(paired);
     if (d != std::string::npos && line.rfind(' ', 0) == 0) {
-      difference = line.substr(d + paired.size(), line.find(';', d) - d - paired.size());
+      f.difference = line.substr(d + paired.size(), line.find(';', d) - d - paired.size());
     }
   }
-  if (tars.size() != 2 || difference.empty()) fail(summary, "no TAR at FPPF <= 0.1 of both models in it");
-  return {tars[0], tars[1], difference};
+  return f;
+}
+
+BeforeAfter compare_on_eval(const AdaptOptions& o, const StepOptions& step, const std::string& adapted,
+                            const std::string& dir, const Paths& paths) {
+  const std::string summary = evaluate(o, step, {o.model, adapted}, dir, paths);
+  const SummaryFigures f = read_summary(summary);
+  if (f.tars.size() != 2 || f.difference.empty()) fail(summary, "no TAR at FPPF <= 0.1 of both models in it");
+  return {f.tars[0], f.tars[1], f.difference};
 }
 
 // TAR at FPPF <= 0.1 of the model as given (without the switches its trials took) on the eval frames.
 std::string tar_as_given(const AdaptOptions& o, const StepOptions& tried, const std::string& dir, const Paths& paths) {
   const std::string summary = evaluate(o, tried, {o.model}, dir, paths);
-  std::ifstream in(summary);
-  const std::string curve = "exact curve: TAR ";
-  for (std::string line; std::getline(in, line);) {
-    const std::size_t at = line.find(curve);
-    if (at != std::string::npos) return line.substr(at + curve.size(), line.find(' ', at + curve.size()) - at - curve.size());
-  }
-  fail(summary, "no TAR at FPPF <= 0.1 in it");
+  const SummaryFigures f = read_summary(summary);
+  if (f.tars.size() != 1) fail(summary, "no TAR at FPPF <= 0.1 in it");
+  return f.tars[0];
 }
 
 // Step 4: before / after on held-out frames, else the answers and the new model's own validation. With switches
@@ -510,10 +527,8 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
     const BeforeAfter b = compare_on_eval(o, step, state.get("model"), (fs::path(o.out) / "report").string(), paths);
     state.set("tar_after", b.after);
     state.set("tar_difference", b.difference);
-    std::string taken;  // the switches the trials took
-    for (const CandidateSwitch& sw : candidate_switches()) {
-      if (state.get("switch." + sw.option) == "on") taken += (taken.empty() ? "--" : " --") + sw.option + " " + sw.on;
-    }
+    std::string taken;  // the switches the trials took, as options
+    for (const CandidateSwitch& sw : switches_taken(state)) taken += (taken.empty() ? "--" : " --") + sw.option + " " + sw.on;
     if (taken.empty()) {
       state.set("tar_before", b.before);
       text += "TAR at FPPF <= 0.1 on " + o.eval + ": before " + b.before + " (" + o.model + "), after " + b.after +
