@@ -397,10 +397,10 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, const St
   // not frames (below), which would put copies on both sides: the room's sets once.
   const bool no_base = o.base_pos.empty() && o.base_neg.empty();
   const int copies = no_base ? 1 : o.room_weight;
-  std::vector<std::string> room_sets{paths.room};  // the room's answers and those of the switches taken, if made
+  // The room's answers (its set exists: the trials leave half the budget to the questions) and those of the
+  // switches taken (each holds the person's y that took it).
+  std::vector<std::string> room_sets{paths.room};
   for (const CandidateSwitch& sw : switches_taken(state)) room_sets.push_back(paths.trial(sw.option));
-  const auto not_made = [](const std::string& set) { return !fs::exists(fs::path(set) / "manifest.yml"); };
-  room_sets.erase(std::remove_if(room_sets.begin(), room_sets.end(), not_made), room_sets.end());
   std::vector<std::string> args{"--models-dir", o.models_dir, "--name", o.name, "--pos"};
   for (int k = 0; k < copies; ++k) args.insert(args.end(), room_sets.begin(), room_sets.end());
   args.insert(args.end(), o.base_pos.begin(), o.base_pos.end());
