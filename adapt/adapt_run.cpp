@@ -295,21 +295,31 @@ Answers count_answers(const std::string& room_set) {
   return a;
 }
 
-// The switches a room may try: not given, not stated by the model, not under --thesis.
+// The switches a room may try: not given, not turned on by the model (a model states every option, most at
+// their defaults: people/v4 states local_front 70 and every other switch off), not under --thesis.
 std::vector<CandidateSwitch> switches_to_try(const AdaptOptions& o, const BoostedModel& model) {
   std::vector<CandidateSwitch> out;
   if (!o.try_switches || !o.given.take_stated) return out;
+  const RecordedParameters turned = departures_from_defaults(model.detection_options());
   for (const CandidateSwitch& sw : candidate_switches()) {
     const std::string key = parameter_key(sw.option);
     const bool given = std::find(o.given.keys.begin(), o.given.keys.end(), key) != o.given.keys.end();
-    if (!given && !states(model, key)) out.push_back(sw);
+    const bool stated_on = std::any_of(turned.begin(), turned.end(), [&](const auto& t) { return t.first == key; });
+    if (!given && !stated_on) out.push_back(sw);
   }
   return out;
 }
 
+// `o` with switch `sw` on, as if given on the command line (a model's stated value of it is not taken).
+AdaptOptions with_switch(AdaptOptions o, const CandidateSwitch& sw) {
+  const Parameter<AnalyserParams>& row = *find_parameter(analyser_parameters(), sw.option);
+  row.set(o.analyser, parameter_value_of_text(sw.on, row.get(o.analyser), row.name));
+  o.given.keys.push_back(parameter_key(sw.option));
+  return o;
+}
+
 // Step "switches": each switch tried in the room; its state row says on or off, answers.trials the answers.
-void try_switches(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
-                  const Paths& paths) {
+void try_switches(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
   if (state.done("base") || state.done("negatives") || state.done("answers")) {  // a folder begun before trials
     say("switches: not tried: this folder's later steps ran before (their samples were cut without trials)");
     return;
@@ -329,8 +339,7 @@ void try_switches(const AdaptOptions& o, const BoostedModel& model, const StepOp
                                     std::to_string(o.threads)};
       if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
       if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
-      args = with_options(args, step);
-      args.insert(args.end(), {"--" + sw.option, sw.on});
+      args = with_options(args, step_options(with_switch(o, sw), model));  // the switch on, once among them
       const bool window = o.truth.empty() && o.answers.empty();
       run_step_program("rdsf-label", args, window ? std::string() : paths.log("switches"));
     }
@@ -356,11 +365,7 @@ std::vector<CandidateSwitch> switches_taken(const AdaptState& state) {
 // with them and the adapted model states them).
 AdaptOptions with_switches_taken(const AdaptOptions& o, const AdaptState& state) {
   AdaptOptions taken = o;
-  for (const CandidateSwitch& sw : switches_taken(state)) {
-    const Parameter<AnalyserParams>& row = *find_parameter(analyser_parameters(), sw.option);
-    row.set(taken.analyser, parameter_value_of_text(sw.on, row.get(taken.analyser), row.name));
-    taken.given.keys.push_back(parameter_key(sw.option));
-  }
+  for (const CandidateSwitch& sw : switches_taken(state)) taken = with_switch(std::move(taken), sw);
   return taken;
 }
 
@@ -573,7 +578,7 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("try_switches", given.try_switches ? "on" : "off");
   const Paths paths(given.out);
   fs::create_directories(paths.logs);
-  step(state, "switches", [&] { try_switches(given, model, tried, state, paths); });
+  step(state, "switches", [&] { try_switches(given, model, state, paths); });
   const AdaptOptions o = with_switches_taken(given, state);
   const StepOptions options = step_options(o, model);
   AdaptOptions with_base = o;

@@ -110,7 +110,6 @@ std::unique_ptr<BoostedModel> load_model(LabelOptions& o) {
   if (o.model.empty()) return nullptr;
   auto model = std::make_unique<BoostedModel>(BoostedModel::load(o.model, o.models_dir));
   o.session.analyser = o.given.for_model(o.session.analyser, model.get());
-  if (const std::string stated = o.given.said_of(*model); !stated.empty()) std::cerr << "rdsf-label: " << stated << "\n";
   const bool exists = std::filesystem::exists(std::filesystem::path(o.out_set) / "manifest.yml");
   const FeatureSpec set_spec = exists ? SampleSet::open_read(o.out_set).feature_spec() : o.session.analyser.features;
   if (!(model->feature_spec() == set_spec)) {
@@ -120,6 +119,8 @@ std::unique_ptr<BoostedModel> load_model(LabelOptions& o) {
   }
   const std::string misfit = model_fit_problem(*model, o.session.analyser);  // crops cut the same way
   if (!misfit.empty()) fail(model->path(), misfit);
+  // Said once the model is taken: a refused model's error stays the one line.
+  if (const std::string stated = o.given.said_of(*model); !stated.empty()) std::cerr << "rdsf-label: " << stated << "\n";
   return model;
 }
 

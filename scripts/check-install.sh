@@ -46,10 +46,10 @@ fi
 
 # 2. The shipped model and recipes, from a working folder without models/.
 models="$prefix/share/rdsf/models"
-[ -f "$models/people/v3.yml" ] && [ -f "$models/recipes/tree.yml" ] || fail "no default model or recipes under $models"
+[ -f "$models/people/v4.yml" ] && [ -f "$models/recipes/tree.yml" ] || fail "no default model or recipes under $models"
 inspect=$(cd "$work" && "$prefix/bin/rdsf-train" --inspect people --top 1) || fail "installed rdsf-train --inspect people failed"
-grep -qF "($models/people/v3.yml)" <<<"$inspect" || fail "installed rdsf-train did not resolve 'people' to $models/people/v3.yml: $(head -1 <<<"$inspect")"
-echo "check-install: installed programs resolve the default model to $models/people/v3.yml"
+grep -qF "($models/people/v4.yml)" <<<"$inspect" || fail "installed rdsf-train did not resolve 'people' to $models/people/v4.yml: $(head -1 <<<"$inspect")"
+echo "check-install: installed programs resolve the default model to $models/people/v4.yml"
 
 # 3. The example, built against the package.
 cmake -S "$source_dir/examples/detect-people" -B "$work/example" -DCMAKE_BUILD_TYPE=Release \
@@ -58,7 +58,7 @@ cmake -S "$source_dir/examples/detect-people" -B "$work/example" -DCMAKE_BUILD_T
 cmake --build "$work/example" >>"$work/example.log" 2>&1 || { tail -30 "$work/example.log" >&2; fail "the example does not build"; }
 "$prefix/bin/rdsf-synth" --out "$work/frames" --frames 4 --people 2..2 --seed 7 --rgb >/dev/null 2>&1 ||
   fail "installed rdsf-synth failed"
-"$work/example/detect-people" "$work/frames" "$models/people/v3.yml" >"$work/detections.txt" ||
+"$work/example/detect-people" "$work/frames" "$models/people/v4.yml" >"$work/detections.txt" ||
   fail "the example failed on 4 synthetic frames"
 head -1 "$work/detections.txt" | grep -qF "# rdsf $version," || fail "the example reports another version: $(head -1 "$work/detections.txt")"
 n='-?[0-9]+\.[0-9]{2}'

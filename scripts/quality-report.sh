@@ -10,10 +10,12 @@
 #      iterated hard-negative bootstrapping), each evaluated on the held-out sequence and on real frames
 #   4. the recipes table: the four recipes with the chosen defaults, evaluated the same way
 #   5. the shipped default models (models/people/v*.yml, trained by scripts/train-default-model.sh on their
-#      own synthetic rooms), evaluated the same way (whole runs only)
+#      own synthetic rooms), evaluated the same way (whole runs and --only shipped); a model that states
+#      detection options (people/v4: --local-front 70) runs with them and so scores other candidates: it is
+#      evaluated on its own, the models stating none together
 #   6. the peer row: PCL's ground-based people detector (peers/pcl_people, rdsf-pcl-people; libpcl-dev is
 #      installed here, CI does not need it) on the real frames with colour, beside the shipped models on the
-#      same frames (whole runs only; --no-peer skips it)
+#      same frames (whole runs and --only shipped; --no-peer skips it)
 # Real frames are reported per source (the frames' name prefixes: lab_ = UC3M lab, lab_height included, and
 # home_ = UC3M home; docs/quality.md, "Per source") and pooled.
 # Each evaluation prints one row per model: TAR at FPPF <= 0.1 and <= 0.5 (exact curve), best MOTA,
@@ -27,7 +29,7 @@ cd "$(dirname "$0")/.."
 
 usage() {
   cat <<USAGE
-Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes] [--test-frames N]
+Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only levers|recipes|shipped] [--test-frames N]
                                 [--synth-variety 'RDSF-SYNTH OPTIONS'] [--no-peer] [--docs]
   --out DIR      output folder (default out/quality); recordings and sample sets there are reused (the
                  hard negatives and lever models are made again: a rerun gives a fresh run's figures)
@@ -37,7 +39,8 @@ Usage: scripts/quality-report.sh [--out DIR] [--real DIR] [--no-real] [--only le
   --docs         also write the report to docs/quality-report.md (the checked-in results; a whole run only)
   --real DIR     real frames with boxes.csv (default ../shared/realdata/people)
   --no-real      skip the real frames
-  --only WHAT    run only the lever table or only the recipes table
+  --only WHAT    run only the lever table, only the recipes table, or only the shipped models and the peer
+                 (shipped: renders the held-out sequence alone, trains nothing)
   --synth-variety 'OPTIONS'  extra rdsf-synth options for the TRAINING renderings (training, its empty
                  rooms, the other empty rooms; not the held-out sequence), e.g. a data lever: use another
                  --out (the renderings there are made with them)
@@ -52,7 +55,7 @@ docs=0
 variety=""
 peer=1
 script_options quality-report --out=out --real=real --no-real=real= --only=only --test-frames=test_frames --docs=docs=1 --synth-variety=variety --no-peer=peer=0 -- "$@"
-case "$only" in ""|levers|recipes) ;; *) echo "quality-report: --only takes levers or recipes" >&2; exit 2 ;; esac
+case "$only" in ""|levers|recipes|shipped) ;; *) echo "quality-report: --only takes levers, recipes or shipped" >&2; exit 2 ;; esac
 if ((docs)) && [ -n "$only" ]; then echo "quality-report: --docs needs the whole report (no --only)" >&2; exit 2; fi
 case "$test_frames" in ''|*[!0-9]*|0) echo "quality-report: --test-frames takes a positive number of frames" >&2; exit 2 ;; esac
 
@@ -89,9 +92,11 @@ render() {
 }
 test=test-$test_frames
 read -r -a variety_args <<<"$variety"
-render train --frames 900 --people 1..4 --seed 11 --rgb --clip-frames 15 "${variety_args[@]}"
-render empty --frames 500 --people 1..4 --seed 11 --empty --rgb --clip-frames 15 "${variety_args[@]}"
-render empty-hard --frames 500 --people 0..0 --seed 21 --empty --rgb --clip-frames 15 "${variety_args[@]}"
+if [ "$only" != shipped ]; then  # the training recordings: the shipped models were trained elsewhere
+  render train --frames 900 --people 1..4 --seed 11 --rgb --clip-frames 15 "${variety_args[@]}"
+  render empty --frames 500 --people 1..4 --seed 11 --empty --rgb --clip-frames 15 "${variety_args[@]}"
+  render empty-hard --frames 500 --people 0..0 --seed 21 --empty --rgb --clip-frames 15 "${variety_args[@]}"
+fi
 render "$test" --frames "$test_frames" --people 1..4 --seed 31 --rgb --clip-frames 60
 for i in "${!render_pids[@]}"; do
   wait "${render_pids[$i]}" || { tail -3 "$logs/render-${render_names[$i]}.log" >&2; exit 1; }
@@ -116,10 +121,12 @@ if ((have_real)); then
   mapfile -t real_sets < <(real_source_sets "$real" "$out")
 fi
 
-step "mine negatives and label positives"
-"$mine" --source "$data/empty" --out "$sets/negatives" 2>"$logs/mine.log" || { cat "$logs/mine.log" >&2; exit 1; }
-"$label" --source "$data/train" --out "$sets/people" --truth "$data/train/boxes.csv" --answers /dev/null \
-  --keep-rejected 2>"$logs/label.log" || { cat "$logs/label.log" >&2; exit 1; }
+if [ "$only" != shipped ]; then
+  step "mine negatives and label positives"
+  "$mine" --source "$data/empty" --out "$sets/negatives" 2>"$logs/mine.log" || { cat "$logs/mine.log" >&2; exit 1; }
+  "$label" --source "$data/train" --out "$sets/people" --truth "$data/train/boxes.csv" --answers /dev/null \
+    --keep-rejected 2>"$logs/label.log" || { cat "$logs/label.log" >&2; exit 1; }
+fi
 
 # The main job's tree2 at scale 0.3: 1208 positives, 2245 negatives, 100 rounds.
 pos=1208 neg=2245
@@ -212,7 +219,7 @@ report=$run/REPORT.md
 } > "$report"
 
 # A common hard-negative set mined with the thesis baseline, so that every lever trains on the same data.
-if [ "$only" != "recipes" ]; then
+if [ -z "$only" ] || [ "$only" = levers ]; then
   step "lever table"
   # The hard negatives and the lever models follow the models of this run: made again each time, so that a
   # rerun in the same --out gives the figures of a fresh run (reused hard-negative sets had collected every
@@ -259,7 +266,7 @@ if [ "$only" != "recipes" ]; then
   } >> "$report"
 fi
 
-if [ "$only" != "levers" ]; then
+if [ -z "$only" ] || [ "$only" = recipes ]; then
   step "recipes with the defaults"
   count() { awk -v s="$1" 'BEGIN { printf "%d", s * 0.3 + 0.5 }'; }
   recipe_neg=("$sets/negatives" "$sets/people")
@@ -277,16 +284,29 @@ if [ "$only" != "levers" ]; then
   table_of "$run/recipes" "The thesis's recipes (scale 0.3) with the workbench's defaults" >> "$report"
 fi
 
-if [ -z "$only" ]; then
+if [ -z "$only" ] || [ "$only" = shipped ]; then
   step "evaluate the shipped default models"
-  shipped=(models/people/v*.yml)
+  # A model that states detection options (model file format 4) runs with them and scores other candidates
+  # than the rest, which rdsf-detect will not score side by side: each such model has a table of its own.
+  plain=() stating=()
+  for m in models/people/v*.yml; do
+    if grep -q '^detection_options:' "$m"; then stating+=("$m"); else plain+=("$m"); fi
+  done
   with_colour=1
-  evaluate "$run/shipped" "${shipped[@]}"
+  ((${#plain[@]})) && evaluate "$run/shipped" "${plain[@]}"
+  declare -A states=()  # model file -> its options as rdsf-detect printed them ("--local-front 70")
+  for m in "${stating[@]}"; do
+    evaluate "$run/shipped-$(basename "$m" .yml)" "$m"
+    states[$m]=$(sed -n 's/.*states its detection options (\([^)]*\)).*/\1/p' "$logs/detect-synthetic.log" | head -1)
+  done
   with_colour=0
-  table_of "$run/shipped" "The shipped default models (scripts/train-default-model.sh: their own synthetic rooms, seed 11)" >> "$report"
+  ((${#plain[@]})) && table_of "$run/shipped" "The shipped default models stating no detection options (scripts/train-default-model.sh: their own synthetic rooms, seed 11)" >> "$report"
+  for m in "${stating[@]}"; do
+    table_of "$run/shipped-$(basename "$m" .yml)" "The shipped default model people/$(basename "$m" .yml), with the detection options it states (${states[$m]})" >> "$report"
+  done
 fi
 
-if [ -z "$only" ] && ((peer)) && ((have_real)); then
+if { [ -z "$only" ] || [ "$only" = shipped ]; } && ((peer)) && ((have_real)); then
   step "the PCL peer row"
   # PCL is large and only this report needs it: installed here, not by scripts/setup.sh.
   if ! dpkg-query -W -f='${Status}' libpcl-dev 2>/dev/null | grep -q "ok installed"; then

@@ -259,8 +259,11 @@ TEST(CameraFile, ResizedRealFramesWithTheirCameraModelFindTheSamePeople) {
     // With the height limit at detection (2026-12-06): the originals give 44 (the lab's false positive, a tall
     // object, is gone), found again 37, 42, 44 and 38 with 7, 2, 1 and 5 other detections: every size loses
     // the same detections as before and that false positive besides.
+    // people/v4 (v3 with --local-front 70, 2026-12-06): the originals give 45 (44 labelled people: the lab's
+    // person before the wall), a shift finds 42 of them again, the resized frames 38, 42, 44 and 39 with 6, 3,
+    // 2 and 4 other detections and 42, 44, 44 and 41 labelled people.
     const bool stretched_kinect2 = size == cv::Size(512, 424), square = size == cv::Size(512, 384);
-    EXPECT_EQ(people, 44);
+    EXPECT_EQ(people, 45);
     EXPECT_GE(found, stretched_kinect2 ? 37 : square ? 38 : 42) << size;
     EXPECT_GE(truth_found_resized, 41) << size;
     EXPECT_LE(extra, stretched_kinect2 ? 13 : square ? 8 : 6) << size;

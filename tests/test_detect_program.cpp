@@ -100,7 +100,10 @@ TEST(DetectProgram, WithoutAModelTheDefaultModelRuns) {
   const test::RunResult r = test::run(program + " --source " + test::quote(dir.path().string()) + " --out " +
                                       test::quote(dir / "out.csv") + " --models-dir " + test::quote(dir / "none"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("model people v3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("model people v4"), std::string::npos) << r.err;
+  // ... which runs with the option it states (people/v4: what stands in front of its surroundings).
+  EXPECT_NE(r.err.find("model people v4 states its detection options (--local-front 70): taken for the options not "
+                       "given"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("people at P >= 0.27 (its operating point), none taller than 250 cm"), std::string::npos)
       << r.err;
   const std::string csv = test::file_text(dir / "out.csv");

@@ -1,6 +1,6 @@
 // rdsf-label with a model: the model answers the candidates it is sure about (journalled "by model" with its
 // name, version and score, never shown), --ask uncertain presents the whole session closest to the model's
-// operating point (P = 0.27 for people/v3) first, --budget stops after N human answers; a wrong model or
+// operating point (P = 0.27 for people/v4) first, --budget stops after N human answers; a wrong model or
 // thresholds change nothing.
 #include <gtest/gtest.h>
 
@@ -19,6 +19,9 @@ namespace {
 
 std::string label() { return test::quote(test::program("rdsf-label")); }
 std::string models() { return test::quote(std::string(RDSF_SOURCE_DIR) + "/models"); }
+/// What `--model people` names: the newest shipped version.
+const std::string kDefaultModel = "people/v4";
+BoostedModel default_model() { return BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/" + kDefaultModel + ".yml"); }
 
 struct Synth {
   test::TempDir dir;
@@ -59,11 +62,11 @@ TEST(LabelerModel, SureCandidatesAreAnsweredByTheModelAndJournalled) {
   Synth s;
   const test::RunResult r = s.label_with("", "--model people --accept 0.9 --reject 0.1 --keep-rejected");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
+  const BoostedModel model = default_model();
   long by_model = 0;
   for (const auto& row : journal_rows(s.dir / "set/labeler-answers.tsv")) {
     ASSERT_EQ(row.size(), 10u);
-    ASSERT_EQ(row[9].rfind("model people/v3 H=", 0), 0u) << row[9];  // only the model answered (keys: none)
+    ASSERT_EQ(row[9].rfind("model " + kDefaultModel + " H=", 0), 0u) << row[9];  // only the model answered (keys: none)
     const double h = field(row[9], "H"), p = field(row[9], "P");
     EXPECT_NEAR(p, model.probability(h), 1e-3);
     EXPECT_TRUE(row[7] == "y" ? p >= 0.9 : p <= 0.1) << row[7] << " at P " << p;
@@ -74,7 +77,7 @@ TEST(LabelerModel, SureCandidatesAreAnsweredByTheModelAndJournalled) {
   ASSERT_EQ(static_cast<long>(set.records().size()), by_model);  // --keep-rejected: the n answers are stored too
   for (const SampleRecord& rec : set.records()) {
     EXPECT_EQ(rec.origin, "labeler-model");
-    EXPECT_EQ(rec.model, "people/v3");
+    EXPECT_EQ(rec.model, kDefaultModel);
     ASSERT_TRUE(rec.score.has_value());
     EXPECT_TRUE(rec.label == 1 ? model.probability(*rec.score) >= 0.9 : model.probability(*rec.score) <= 0.1);
   }
@@ -119,7 +122,7 @@ TEST(LabelerModel, ModelOfAnotherFeatureSpecIsRefusedBeforeTheSetChanges) {
   const auto before = std::filesystem::file_size(s.dir / "set/samples.tsv");
   const test::RunResult r = s.label_with("y y", "--feature-spec rdsf:cell=16 --model people");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("people/v3.yml: the model reads feature spec"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(kDefaultModel + ".yml: the model reads feature spec"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("the sample set"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(std::filesystem::file_size(s.dir / "set/samples.tsv"), before);
@@ -131,8 +134,8 @@ TEST(LabelerModel, AskUncertainPresentsTheWholeSessionClosestToTheOperatingPoint
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("answered 6 "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("budget of answers spent"), std::string::npos) << r.err;
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
-  // Uncertain is near where the model is read: people/v3 states P >= 0.27, not 0.5.
+  const BoostedModel model = default_model();
+  // Uncertain is near where the model is read: people/v4 states P >= 0.27, not 0.5.
   const double boundary = model.operating_probability();
   EXPECT_EQ(boundary, 0.27);
   const SampleSet set = SampleSet::open_read(s.dir / "set");
@@ -188,7 +191,7 @@ TEST(LabelerModel, AskLikelyAndOnlyWhatAnOptionAdds) {
   Synth s;
   const test::RunResult r = s.label_with(std::string(50, 'y'), "--model people --no-model-answers --ask likely --budget 5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
+  const BoostedModel model = default_model();
   const SampleSet set = SampleSet::open_read(s.dir / "set");
   ASSERT_EQ(set.records().size(), 5u);
   std::vector<double> p;

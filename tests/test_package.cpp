@@ -31,6 +31,7 @@ TEST(ShippedModels, BuildTreeProgramsUseTheSourceTreeModels) {
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v1.yml"));
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v2.yml"));
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v3.yml"));
+  EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v4.yml"));
 }
 
 TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
@@ -40,7 +41,7 @@ TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
   std::string resolved;
   EXPECT_NO_THROW(resolved = rdsf::resolve_model(rdsf::kDefaultModelName));
   fs::current_path(before);
-  EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / rdsf::kDefaultModelName / "v3.yml");  // the newest
+  EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / rdsf::kDefaultModelName / "v4.yml");  // the newest
 }
 
 // NAME/vN too: `--model people/v1` from any folder that has no models/people of its own; a folder that has

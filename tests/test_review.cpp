@@ -85,7 +85,7 @@ TEST(Review, MostSuspiciousFirstUnderAModel) {
                       test::quote(dir / "set") + " --answers " + test::quote(dir / "answers"))
                 .exit_code,
             0);
-  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v3.yml");
+  const BoostedModel model = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v4.yml");
   const SampleSet before = SampleSet::open_read(dir / "set");
   ASSERT_GT(before.records().size(), 3u);
   ModelScorer scorer(model);
@@ -101,7 +101,7 @@ TEST(Review, MostSuspiciousFirstUnderAModel) {
   const SampleSet after = SampleSet::open_read(dir / "set");
   EXPECT_EQ(after.count(0), 1u);
   for (const SampleRecord& s : after.records()) EXPECT_NE(s.id, least);  // the flipped one is gone
-  EXPECT_EQ(after.records().back().model, "people/v3");
+  EXPECT_EQ(after.records().back().model, "people/v4");  // --model people: the newest shipped
 }
 
 TEST(Review, HalfDoneFlipOfAKilledReviewIsFinished) {

@@ -7,7 +7,8 @@
 //                     = the detector's default
 // A candidate option that helps one model can cost another (docs/quality.md: new candidate kinds hurt
 // models trained without them), so the options belong with the model that was measured with them. A
-// model that states none (every shipped model, people/v1-v3) runs with the detector's own options.
+// model that states none (people/v1-v3, a lab's own models unless told) runs with the detector's own
+// options; the default people/v4 states --local-front 70 (docs/quality.md, "people/v4").
 #include <string>
 #include <vector>
 
