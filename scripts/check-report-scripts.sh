@@ -59,6 +59,9 @@ expect 2 "--seed takes a whole number" scripts/adaptation-benchmark.sh --seed x1
 expect 2 "--frames takes a positive number" scripts/propagation-report.sh --frames 0
 expect 2 "--seeds takes numbers" scripts/propagation-report.sh --seeds "31 x"
 expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only levers
+expect 2 "--only takes levers, recipes or shipped" scripts/quality-report.sh --only bogus
+expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only shipped
+expect 2 "--people-version takes 2, 3 or 4" scripts/train-default-model.sh --people-version 5
 expect 2 "--cameras takes kinect1 or mix" scripts/train-default-model.sh --cameras bogus
 expect 2 "--seed takes a whole number" scripts/train-default-model.sh --seed x
 expect 2 "--seed 2 models are not for --install" scripts/train-default-model.sh --seed 2 --install
