@@ -60,10 +60,10 @@ struct SmallRoomRun {
   std::filesystem::path models;
   std::string command;
 };
-SmallRoomRun small_room_run(const test::TempDir& dir, int budget) {
+SmallRoomRun small_room_run(const test::TempDir& dir, int budget, const std::string& version = "v2") {
   SmallRoomRun run{dir.path() / "models", ""};
   std::filesystem::create_directories(run.models / "people");
-  std::filesystem::copy_file(models_dir() + "/people/v2.yml", run.models / "people/v2.yml");
+  std::filesystem::copy_file(models_dir() + "/people/" + version + ".yml", run.models / ("people/" + version + ".yml"));
   run.command = adapt() + " --source " + test::quote(dir / "room") + " --truth " + test::quote(dir / "room/boxes.csv") +
                 " --out " + test::quote(dir / "out") + " --name room --budget " + std::to_string(budget) +
                 " --rounds 3 --threads 2 --base-frames 0 --models-dir " + test::quote(run.models.string());
@@ -347,6 +347,23 @@ TEST(Adapt, AKilledRunResumes) {
   EXPECT_LE(human, 8);  // the budget over both runs
 }
 
+// `dir`/room: 20 frames of a person 25 cm before a wall at 3 m, moving right, and its boxes.csv.
+void write_room_before_a_wall(const test::TempDir& dir) {
+  std::filesystem::create_directories(dir / "room");
+  std::ofstream boxes(dir / "room/boxes.csv");
+  boxes << "frame,person,x,y,w,h\n";
+  for (int i = 0; i < 20; ++i) {
+    DepthFrame frame = test::wall_frame(3000);
+    const cv::Rect body(200 + 8 * i, 100, 60, 330);
+    test::paint(frame, {body.x + 18, body.y, 24, 40}, 2750);  // the head
+    test::paint(frame, {body.x, body.y + 40, body.width, body.height - 40}, 2750);
+    char name[16];
+    std::snprintf(name, sizeof name, "%06d", i);
+    write_png_atomically(dir / (std::string("room/") + name + ".depth.png"), frame.depth_mm);
+    boxes << name << ",1," << body.x << "," << body.y << "," << body.width << "," << body.height << "\n";
+  }
+}
+
 // A room whose person stands 25 cm before a wall (one depth layer with it: no candidate of the defaults)
 // and moves along it. Trying the candidate switches, the person (the truth) is asked about what each adds,
 // likeliest first; the candidate --local-front adds is the person, so it is taken: every later step runs with
@@ -354,21 +371,7 @@ TEST(Adapt, AKilledRunResumes) {
 // given before, then with the switch. --try-switches off tries none (and finds nobody to train on).
 TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   test::TempDir dir;
-  std::filesystem::create_directories(dir / "room");
-  {
-    std::ofstream boxes(dir / "room/boxes.csv");
-    boxes << "frame,person,x,y,w,h\n";
-    for (int i = 0; i < 20; ++i) {
-      DepthFrame frame = test::wall_frame(3000);
-      const cv::Rect body(200 + 8 * i, 100, 60, 330);
-      test::paint(frame, {body.x + 18, body.y, 24, 40}, 2750);  // the head
-      test::paint(frame, {body.x, body.y + 40, body.width, body.height - 40}, 2750);
-      char name[16];
-      std::snprintf(name, sizeof name, "%06d", i);
-      write_png_atomically(dir / (std::string("room/") + name + ".depth.png"), frame.depth_mm);
-      boxes << name << ",1," << body.x << "," << body.y << "," << body.width << "," << body.height << "\n";
-    }
-  }
+  write_room_before_a_wall(dir);
   const SmallRoomRun run = small_room_run(dir, 8);
   const test::RunResult r = test::run(run.command + " --trial-budget 1 --eval " + test::quote(dir / "room"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -399,4 +402,33 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   EXPECT_NE(off.err.find("no positives to train with"), std::string::npos) << off.err;
   EXPECT_EQ(test::file_text(dir / "off/adapt-state.tsv").find("switch."), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "off/logs/switches.log"));
+}
+
+// people/v4 states --local-front 70 (and every other option at its default): the room's steps run with the
+// front, so the wall room's person has a candidate without any trial; --local-front is not tried (the model
+// turns it on), the other switches are, each named once on its trial's command line (a stating model's step
+// options name every option: the switch once more was a usage error of rdsf-label).
+TEST(Adapt, ASwitchTheModelTurnsOnIsNotTriedTheOthersAre) {
+  test::TempDir dir;
+  write_room_before_a_wall(dir);
+  const SmallRoomRun run = small_room_run(dir, 8, "v4");
+  const test::RunResult r = test::run(run.command + " --trial-budget 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("trying --local-front"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("trying --border-height 25"), std::string::npos) << r.err;
+  const std::string state = test::file_text(dir / "out/adapt-state.tsv");
+  EXPECT_EQ(state.find("switch.local-front"), std::string::npos) << state;
+  EXPECT_NE(state.find("switch.border-height\t"), std::string::npos) << state;
+  const std::string trials = test::file_text(dir / "out/logs/switches.log");
+  const std::string first_command = trials.substr(0, trials.find('\n'));
+  std::size_t named = 0;
+  for (std::size_t at = first_command.find("--border-height"); at != std::string::npos;
+       at = first_command.find("--border-height", at + 1)) {
+    ++named;
+  }
+  EXPECT_EQ(named, 1u) << first_command;
+  EXPECT_NE(test::file_text(dir / "out/logs/answers.log").find("--local-front 70"), std::string::npos);
+  const RecordedParameters stated = BoostedModel::load((run.models / "room/v1.yml").string()).detection_options();
+  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
+            stated.end());
 }
