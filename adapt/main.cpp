@@ -51,9 +51,10 @@ int main(int argc, char** argv) {
          "many empty) in DIR/base, once; 0: train on the room's samples alone (they can make the model worse)");
     options.add_options()
         ("try-switches", po::value(&o.try_switches)->default_value(o.try_switches, o.try_switches ? "on" : "off"),
-         "on or off: try each candidate switch not given nor turned on by the model (--local-front 70, --border-height 25, "
-         "--narrow-fitted-width 20, --hole-gap 20) in the room first: the person is asked about the candidates "
-         "only it adds, likeliest first; one confirmed person turns it on for every step and the adapted model")
+         "on or off: try each candidate switch not given nor turned on by the model (--local-front 70, "
+         "--border-height 25, --narrow-fitted-width 20, --hole-gap 20) in the room first: the person is asked about "
+         "the candidates only it adds, likeliest first; one confirmed person turns it on for every step and the "
+         "adapted model")
         ("trial-budget", po::value(&o.trial_budget)->default_value(o.trial_budget),
          "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)");
     rdsf::cli::add_per_place_option(options, o.per_place);
