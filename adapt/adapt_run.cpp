@@ -416,7 +416,7 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, const St
     args.insert(args.end(), room_sets.begin(), room_sets.end());
   }
   args.insert(args.end(), o.base_neg.begin(), o.base_neg.end());
-  const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : 10;
+  const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : kContinuedRounds;
   // One held-out fifth for validation and calibration (--folds 0): K fold models would cost K trainings.
   args.insert(args.end(), {"--rounds", std::to_string(rounds), "--folds", "0"});
   if (!o.retrain) args.insert(args.end(), {"--init", o.model});

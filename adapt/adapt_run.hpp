@@ -27,6 +27,12 @@
 
 namespace rdsf {
 
+/// Rounds a room's model continues the given one by default (--rounds 0). 5 since 2026-12-07: against 10, on four
+/// renderings of 16 rooms (rule R16, judged on a fresh one) it found 2-7 more people in three and the same in the
+/// fourth, and lost 8 instead of 16 of the people the shipped model found; 30 made the lab room worse
+/// (docs/adapting-to-your-room.md, "Five rounds").
+inline constexpr int kContinuedRounds = 5;
+
 struct AdaptOptions {
   std::string source;   ///< the room recording (frames with people)
   std::string empty;    ///< the room without people (optional)
@@ -43,7 +49,7 @@ struct AdaptOptions {
   bool per_place = PropagationParams{}.per_place;  ///< with per track: one answer per place for n answers
   bool propagate_model = PropagationParams{}.from_model;  ///< with per track: the model's answers along tracks too
   bool retrain = false;        ///< train from nothing instead of continuing the model
-  int rounds = 0;              ///< 0: 10 continuing (30 made the lab room worse), 100 retraining
+  int rounds = 0;              ///< 0: kContinuedRounds continuing, 100 retraining
   /// The room's sample sets (its answers and its negatives) are given to rdsf-train this many times: each of
   /// their samples starts boosting with this many times its weight against the base's (1: as many as a base
   /// sample).

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
         ("eval", po::value(&o.eval), "held-out frames of the room for the before / after report (needs --truth)")
         ("per-candidate", po::bool_switch(&o.per_candidate), "ask every candidate, no propagation along tracks")
         ("retrain", po::bool_switch(&o.retrain), "train from nothing instead of continuing --model")
-        ("rounds", po::value(&o.rounds)->default_value(o.rounds), "boosting rounds (0: 10 continuing, 100 retraining)")
+        ("rounds", po::value(&o.rounds)->default_value(o.rounds), ("boosting rounds (0: " + std::to_string(rdsf::kContinuedRounds) + " continuing, 100 retraining)").c_str())
         ("room-weight", po::value(&o.room_weight)->default_value(o.room_weight),
          "the room's samples (answers, negatives) weigh this many times a base sample in training")
         ("base-pos", po::value(&o.base_pos)->multitoken(), "the synthetic base's positive sample set(s)")

@@ -3,10 +3,12 @@
 # the truth as the person (every answer it gives is counted). For every room, its frames are split in time:
 # the earlier part is adapted on, the later part evaluated (TAR at FPPF <= 0.1, rdsf-detect's exact curve):
 #   none            the base model (--people-version: people/v2 by default, the model of the tables in
-#                   docs/adapting-to-your-room.md; 3 for today's default people/v3)
-#   negatives       continued (--init) on the room's negatives and the synthetic base
+#                   docs/adapting-to-your-room.md; 4 for today's default people/v4)
+#   negatives       continued (--init) 10 rounds on the room's negatives and the synthetic base (rdsf-adapt's
+#                   default until 2026-12-07, kept so that the tables of this row compare)
 #   per candidate   rdsf-adapt --per-candidate --budget B (every candidate the model is unsure of is asked)
-#   per track       rdsf-adapt --budget B (one answer per track), continuing the base model for 10 rounds
+#   per track       rdsf-adapt --budget B (one answer per track), continuing the base model (rdsf-adapt's
+#                   default rounds: 5, 10 until 2026-12-07)
 #   retrain         per track at the largest budget, trained from nothing (100 rounds) instead
 # A synthetic room whose later half has no counted person (all out of view or less than half visible) has no
 # TAR: it is left out and the next room taken, so --synthetic N rooms are evaluated.
@@ -41,7 +43,7 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
   --camera '...'   rdsf-synth options of the camera the synthetic held-out rooms are seen by, e.g.
                    '--size 512x424 --fov 70.6x60' (a Kinect v2); the base stays Kinect v1 (default none: Kinect v1)
   --people-version N  the shipped people/vN every room starts from and is judged against (default 2: the
-                   tables' model; 3: today's default); one version per work folder
+                   tables' model; 4: today's default); one version per work folder
   --seed N         rdsf-synth's seed of the 16 synthetic held-out rooms (default 31: the quality report's;
                    another renders other rooms, e.g. to check a choice made on these)
 USAGE
