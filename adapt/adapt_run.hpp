@@ -27,11 +27,13 @@
 
 namespace rdsf {
 
-/// Rounds a room's model continues the given one by default (--rounds 0). 5 since 2026-12-07: against 10, on four
-/// renderings of 16 rooms (rule R16, judged on a fresh one) it found 2-7 more people in three and the same in the
-/// fourth, and lost 8 instead of 16 of the people the shipped model found; 30 made the lab room worse
-/// (docs/adapting-to-your-room.md, "Five rounds").
-inline constexpr int kContinuedRounds = 5;
+/// Rounds a room's model continues the given one by default (--rounds 0): 3 since 2026-12-07 (10 before). More
+/// rounds fit the room's few dozen samples more closely and lose people the shipped model found: two rules written
+/// first, each judged on a rendering made for it, took 5 over 10 and then 3 over 5. Over five renderings of 16
+/// rooms 3 rounds found 1,586 people, 5 rounds 1,583 (on four of them 10 rounds 1,395, 3 rounds 1,404), and lost
+/// 5 of the people the shipped model found against 13 (seed 141 alone found 9 fewer with 3 than with 5); 30 made
+/// the lab room worse (docs/adapting-to-your-room.md, "Fewer rounds").
+inline constexpr int kContinuedRounds = 3;
 
 struct AdaptOptions {
   std::string source;   ///< the room recording (frames with people)
