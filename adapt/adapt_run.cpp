@@ -119,10 +119,9 @@ struct StepOptions {
   RecordedParameters stated;
 };
 
-// Whether `model` states the analyser option of `key` (parameter_key: "hole_gap").
-bool states(const BoostedModel& model, const std::string& key) {
-  return std::any_of(model.detection_options().begin(), model.detection_options().end(),
-                     [&](const auto& stated) { return stated.first == key; });
+// Whether `options` hold the analyser option of `key` (parameter_key: "hole_gap").
+bool holds(const RecordedParameters& options, const std::string& key) {
+  return std::any_of(options.begin(), options.end(), [&](const auto& option) { return option.first == key; });
 }
 
 StepOptions step_options(const AdaptOptions& o, const BoostedModel& model) {
@@ -131,7 +130,8 @@ StepOptions step_options(const AdaptOptions& o, const BoostedModel& model) {
   const RecordedParameters all = stated_options(s.analyser), departures = departures_from_defaults(all);
   RecordedParameters passed;
   for (const auto& option : all) {
-    if (states(model, option.first) || std::find(departures.begin(), departures.end(), option) != departures.end()) {
+    if (holds(model.detection_options(), option.first) ||
+        std::find(departures.begin(), departures.end(), option) != departures.end()) {
       passed.push_back(option);
     }
   }
@@ -304,8 +304,7 @@ std::vector<CandidateSwitch> switches_to_try(const AdaptOptions& o, const Booste
   for (const CandidateSwitch& sw : candidate_switches()) {
     const std::string key = parameter_key(sw.option);
     const bool given = std::find(o.given.keys.begin(), o.given.keys.end(), key) != o.given.keys.end();
-    const bool stated_on = std::any_of(turned.begin(), turned.end(), [&](const auto& t) { return t.first == key; });
-    if (!given && !stated_on) out.push_back(sw);
+    if (!given && !holds(turned, key)) out.push_back(sw);
   }
   return out;
 }
@@ -532,8 +531,9 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
     const BeforeAfter b = compare_on_eval(o, step, state.get("model"), (fs::path(o.out) / "report").string(), paths);
     state.set("tar_after", b.after);
     state.set("tar_difference", b.difference);
-    std::string taken;  // the switches the trials took, as options
-    for (const CandidateSwitch& sw : switches_taken(state)) taken += (taken.empty() ? "--" : " --") + sw.option + " " + sw.on;
+    RecordedParameters switched;  // the switches the trials took
+    for (const CandidateSwitch& sw : switches_taken(state)) switched.emplace_back(parameter_key(sw.option), sw.on);
+    const std::string taken = option_words(switched);
     if (taken.empty()) {
       state.set("tar_before", b.before);
       text += "TAR at FPPF <= 0.1 on " + o.eval + ": before " + b.before + " (" + o.model + "), after " + b.after +

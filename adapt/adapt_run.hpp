@@ -1,13 +1,13 @@
 #pragma once
 // rdsf-adapt's work: a room's own detector from the fewest answers, in steps that each run one of the
 // workbench's programs (docs/adapting-to-your-room.md), resumable after a kill (adapt_state.hpp):
-//   0. base       without --base-pos/--base-neg: a small synthetic base rendered and labelled here (rdsf-synth,
+//   0. switches   the candidate switches (pipeline/candidate_switches.hpp) not given nor turned on by the model
+//                 (people/v4 turns on local-front), each tried in the room: the person is asked, likeliest first,
+//                 about the candidates only it adds (rdsf-label --ask likely --only-added-by, one answer per
+//                 track, --trial-budget answers each, at most half the --budget in all); a switch with a person
+//                 confirmed among them is on for every later step and the adapted model
+//      base       without --base-pos/--base-neg: a small synthetic base rendered and labelled here (rdsf-synth,
 //                 rdsf-label from its truth, rdsf-mine), so that the room's few samples never train alone
-//   -. switches   the candidate switches (pipeline/candidate_switches.hpp) not given nor stated, each tried in
-//                 the room: the person is asked, likeliest first, about the candidates only it adds (rdsf-label
-//                 --ask likely --only-added-by, one answer per track, --trial-budget answers each, at most half
-//                 the --budget in all);
-//                 a switch with a person confirmed among them is on for every later step and the adapted model
 //   1. negatives  the room's people-free frames mined (rdsf-mine): the --empty recording, the shipped
 //                 model's false positives (hard negatives) first; without one, the stretches of the room
 //                 recording where the model and the tracker see nobody (pipeline/room_presence.hpp)
