@@ -542,7 +542,7 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
     } else {
       const std::string before = tar_as_given(o, tried, (fs::path(o.out) / "report-as-given").string(), paths);
       state.set("tar_before", before);
-      state.set("tar_before_switches", b.before);
+      state.set("tar_with_switches", b.before);
       text += "TAR at FPPF <= 0.1 on " + o.eval + ": before " + before + " (" + o.model + "), with the switches taken (" +
               taken + ") " + b.before + ", after " + b.after + "; after - with the switches " + b.difference +
               ", paired over the frames' clips of " + std::to_string(kEvalClipFrames) + "\n";

@@ -32,7 +32,9 @@ namespace rdsf {
 /// first, each judged on a rendering made for it, took 5 over 10 and then 3 over 5. Over five renderings of 16
 /// rooms 3 rounds found 1,586 people, 5 rounds 1,583 (on four of them 10 rounds 1,395, 3 rounds 1,404), and lost
 /// 5 of the people the shipped model found against 13 (seed 141 alone found 9 fewer with 3 than with 5); 30 made
-/// the lab room worse (docs/adapting-to-your-room.md, "Fewer rounds").
+/// the lab room worse; 1 and 2 rounds found fewer people than 3 and lost more, and the switches alone (no round)
+/// 34 fewer over the five (docs/adapting-to-your-room.md, "Fewer rounds" and "Fewer still, none, and two fresh
+/// renderings").
 inline constexpr int kContinuedRounds = 3;
 
 struct AdaptOptions {
