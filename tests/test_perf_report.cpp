@@ -11,10 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "rdsf/classifier/model_registry.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 #include "support/test_support.hpp"
 
 namespace {
 
+using namespace rdsf;
 using rdsf::test::quote;
 using rdsf::test::run;
 using rdsf::test::TempDir;
@@ -112,6 +115,27 @@ TEST_F(PerfReportQuick, WritesEveryRowWithNumbersAndPrintsTheRatios) {
   EXPECT_NE(result_->out.find("training per round"), std::string::npos) << result_->out;
   EXPECT_NE(result_->out.find("report: "), std::string::npos) << result_->out;
   EXPECT_NE(result_->err.find("rdsf-perf-report:"), std::string::npos);
+}
+
+// What a lab's rdsf-detect without --model costs: the shipped default model with the options it states, beside
+// this run's own model (the detector's defaults), on the same frames.
+TEST_F(PerfReportQuick, TimesTheShippedDefaultModelWithItsStatedOptions) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const std::string md = rdsf::test::file_text(*dir_ / "report.md");
+  const std::size_t section = md.find("## The shipped default model, as a detector runs it");
+  ASSERT_NE(section, std::string::npos) << md;
+  const std::string header = row(md.substr(section), "Measure");
+  const BoostedModel shipped = BoostedModel::load(resolve_model(kDefaultModelName));
+  EXPECT_NE(header.find(model_label(shipped)), std::string::npos) << header;
+  const std::string stated = option_words(departures_from_defaults(shipped.detection_options()));
+  EXPECT_NE(header.find(stated.empty() ? "no detection option" : stated), std::string::npos) << header;
+  const std::regex figure("\\| [0-9]+\\.[0-9]+ (ms|fps)[^|]*\\| [0-9]+\\.[0-9]+ (ms|fps)");
+  for (const char* label : {"Segmentation and candidates per frame", "RDSF and classifier per candidate"}) {
+    const std::string line = row(md.substr(section), label);
+    ASSERT_FALSE(line.empty()) << label;
+    EXPECT_TRUE(std::regex_search(line, figure)) << line;  // both models measured
+  }
+  EXPECT_NE(result_->out.find("the shipped default model " + model_label(shipped)), std::string::npos) << result_->out;
 }
 
 // Issue 17: the machine's limits beside the figures, and the trainers side by side (XGBoost measured, or

@@ -16,6 +16,8 @@ constexpr double kTargetSegmentationRatio = 30, kTargetFps = 30, kTargetTraining
 constexpr double kEqualAucTolerance = 0.005;
 constexpr double kTargetLiveP99Ms = 10;  // live mode at 30 and 90 fps: no drop, p99 latency under 10 ms (issue 15)
 constexpr double kTargetMiningFps = 300;  // mining with colour on 2 cores (issue 17)
+// Issue 34's budget on one core: segmentation and candidates per frame, RDSF and classifier per candidate.
+constexpr double kBudgetFrontMs = 0.8, kBudgetPerCandidateMs = 0.010;
 
 bool live_met(const PerfResults& r) {
   if (r.live.empty()) return false;
@@ -144,6 +146,38 @@ void write_whole_system(const PerfResults& r, const Derived& d, std::ostringstre
     << (r.parallel_identical ? "identical to" : "**different from**") << " the 1-thread run's. "
     << "Showing (drawing) is not included. Both multi-thread lines run the library's parallel pipeline "
     << "(`run_in_frame_order`, include/rdsf/pipeline/parallel_pipeline.hpp), the code `rdsf-detect --threads` runs.\n\n";
+}
+
+// The shipped default model as a detector runs it, beside this run's own model (the rows above).
+void write_shipped_model(const PerfResults& r, const Derived& d, std::ostringstream& m) {
+  const PerfResults::ShippedRun& s = r.shipped;
+  if (s.model.empty()) return;
+  const double cands = s.candidates > 0 ? static_cast<double>(s.candidates) : 1.0;
+  const double front_ms = (s.stage_ms.segmentation_ms + s.stage_ms.candidates_ms) / d.frames;
+  const double own_front_ms = (r.stage_ms.segmentation_ms + r.stage_ms.candidates_ms) / d.frames;
+  const double per_candidate_ms = (s.stage_ms.features_ms + s.stage_ms.classifier_ms) / cands;
+  const double one_fps = s.wall_s > 0 ? d.frames / s.wall_s : 0, par_fps = s.parallel_wall_s > 0 ? d.frames / s.parallel_wall_s : 0;
+  const std::string options = s.options.empty() ? "no detection option" : s.options;
+  m << "## The shipped default model, as a detector runs it\n\n"
+    << "| Measure | " << s.model << " (" << options << ", " << s.rounds << " weak classifiers) | This run's model ("
+    << "the detector's defaults, " << r.model_rounds << " rounds) | Budget |\n|---|---|---|---|\n"
+    << "| Segmentation and candidates per frame | " << ms(front_ms) << " | " << ms(own_front_ms)
+    << " | " << ms(kBudgetFrontMs) << " |\n"
+    << "| Candidates per frame | " << num(static_cast<double>(s.candidates) / d.frames, 1) << " | "
+    << num(d.candidates_per_frame, 1) << " | - |\n"
+    << "| RDSF and classifier per candidate | " << ms(per_candidate_ms) << " | " << ms(d.feat_cls_per_candidate_ms)
+    << " | " << ms(kBudgetPerCandidateMs) << " |\n"
+    << "| Whole system, 1 thread | " << num(one_fps, 1) << " fps" << pass_range(r, s.wall_min_s, s.wall_max_s) << " | "
+    << num(d.one_thread_fps, 1) << " fps | - |\n"
+    << "| Whole system, " << r.threads << " threads (frames in memory) | " << num(par_fps, 1) << " fps"
+    << pass_range(r, s.parallel_wall_min_s, s.parallel_wall_max_s) << " | " << num(d.parallel_fps, 1) << " fps | "
+    << num(kTargetFps, 0) << " fps |\n\n"
+    << "`rdsf-detect` without `--model` runs the shipped default model: the newest `people` of models/, with the "
+    << "detection options it states taken (include/rdsf/pipeline/stated_options.hpp) and read at its operating point; "
+    << "the same frames, passes and threads as the rows above, which run a model trained in this run that states "
+    << "nothing. Its " << s.detections << " detections; its person ids on " << r.threads << " threads are "
+    << (s.parallel_identical ? "identical to" : "**different from**") << " its 1-thread run's. The budgets are "
+    << "issue 34's (segmentation and candidates, and RDSF and classifier per candidate, on one core).\n\n";
 }
 
 // Live mode: drops and latency at each camera rate.
@@ -279,6 +313,7 @@ std::string perf_markdown(const PerfResults& r) {
   std::ostringstream m;
   write_header(r, d, m);
   write_whole_system(r, d, m);
+  write_shipped_model(r, d, m);
   write_live_mode(r, m);
   write_training(r, d, m);
   write_mining_and_labelling(r, d, m);
@@ -299,6 +334,11 @@ std::string perf_summary(const PerfResults& r) {
     << "whole system " << num(d.one_thread_fps, 1) << " fps on 1 thread, " << num(d.parallel_fps, 1) << " fps on "
     << r.threads << " threads (" << times(d.parallel_fps / kThesisFps) << " the thesis's 2.2; target 30), "
     << num(d.files_fps, 1) << " fps from PNG files\n";
+  if (!r.shipped.model.empty() && r.shipped.wall_s > 0 && r.shipped.parallel_wall_s > 0) {
+    s << "the shipped default model " << r.shipped.model << (r.shipped.options.empty() ? "" : " (" + r.shipped.options + ")")
+      << ": " << num(d.frames / r.shipped.wall_s, 1) << " fps on 1 thread, " << num(d.frames / r.shipped.parallel_wall_s, 1)
+      << " fps on " << r.threads << " threads\n";
+  }
   for (const PerfResults::LiveRun& l : r.live) {
     s << "live mode at " << num(l.fps, 0) << " fps: " << l.stats.dropped << " of " << l.stats.arrived
       << " frames dropped, latency p50 " << ms(l.stats.p50_ms) << ", p95 " << ms(l.stats.p95_ms) << ", p99 "

@@ -16,6 +16,7 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/classifier/binned_matrix.hpp"
 #include "rdsf/classifier/boost_training.hpp"
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/classifier/opencv_boost.hpp"
 #include "rdsf/classifier/real_adaboost.hpp"
 #include "rdsf/classifier/roc_metrics.hpp"
@@ -30,6 +31,7 @@
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/labeling/labeling_session.hpp"
 #include "rdsf/pipeline/parallel_pipeline.hpp"
+#include "rdsf/pipeline/stated_options.hpp"
 #include "memory_peak.hpp"
 #include "report_clock.hpp"
 #include "speed_limits.hpp"
@@ -85,8 +87,9 @@ synth::SynthParams sequence_params(const PerfOptions& o, int frames, std::uint64
 /// The whole system through the library's parallel pipeline (run_in_frame_order: frames analysed on
 /// `threads` threads, tracking in frame order): each frame's per-candidate person ids, and the wall time.
 template <typename Run>
-double run_whole_system(const BoostedModel& model, Run&& run, std::vector<std::vector<int>>& person) {
-  PeoplePipeline pipeline(PipelineParams{}, &model);
+double run_whole_system(const PipelineParams& params, const BoostedModel& model, Run&& run,
+                        std::vector<std::vector<int>>& person) {
+  PeoplePipeline pipeline(params, &model);
   person.clear();
   const Clock::time_point start = Clock::now();
   run(pipeline, [&](const DepthFrame&, PipelineFrame& out) {
@@ -240,41 +243,76 @@ std::size_t median_pass(const std::vector<double>& walls, double& median, double
   return middle;
 }
 
+/// `passes` runs of the whole system on one thread over `frames` (a fresh pipeline each): the wall time of
+/// each pass's process() calls and its stage times; pass 0's person ids and counts.
+struct OneThreadPasses {
+  std::vector<double> walls;
+  std::vector<StageTimes> stages;
+  std::vector<std::vector<int>> person;  ///< pass 0's, per frame
+  long long candidates = 0, detections = 0;
+  int people_tracked = 0;
+};
+
+OneThreadPasses one_thread_passes(const PipelineParams& params, const BoostedModel& model,
+                                  const std::vector<DepthFrame>& frames, int passes) {
+  OneThreadPasses out;
+  cli::Progress progress(std::cerr, "frames", static_cast<std::int64_t>(frames.size()) * passes);
+  std::int64_t done = 0;
+  for (int pass = 0; pass < passes; ++pass) {
+    PeoplePipeline pipeline(params, &model);
+    double wall = 0;
+    StageTimes stage;
+    for (const DepthFrame& frame : frames) {
+      const Clock::time_point t = Clock::now();
+      const PipelineFrame result = pipeline.process(frame);
+      wall += seconds_since(t);
+      stage += result.times;
+      if (pass == 0) {
+        out.candidates += static_cast<long long>(result.analysis.candidates.size());
+        out.detections += std::count_if(result.person.begin(), result.person.end(), [](int id) { return id != 0; });
+        out.person.push_back(result.person);
+      }
+      progress.update(++done);
+    }
+    out.walls.push_back(wall);
+    out.stages.push_back(stage);
+    out.people_tracked = static_cast<int>(pipeline.tracker().people().size());
+  }
+  progress.finish(static_cast<std::int64_t>(frames.size()) * passes);
+  return out;
+}
+
+/// `passes` runs of the whole system on `threads` threads (frames analysed in parallel, tracking in order):
+/// each pass's wall time; `identical` says whether every pass gave `reference`'s person ids.
+std::vector<double> parallel_passes(const PipelineParams& params, const BoostedModel& model,
+                                    const std::vector<DepthFrame>& frames, int threads, int passes,
+                                    const std::vector<std::vector<int>>& reference, bool& identical) {
+  std::vector<double> walls;
+  identical = true;
+  for (int pass = 0; pass < passes; ++pass) {
+    std::vector<std::vector<int>> person;
+    walls.push_back(run_whole_system(params, model, [&](PeoplePipeline& pipeline, const PipelineCallback& on_frame) {
+      run_in_frame_order(pipeline, static_cast<std::int64_t>(frames.size()),
+                         [&](std::int64_t i) { return frames[static_cast<std::size_t>(i)]; }, {threads, 0}, on_frame);
+    }, person));
+    identical = identical && person == reference;
+  }
+  return walls;
+}
+
 std::vector<std::vector<int>> whole_system_one_thread(PerfResults& r, const PerfOptions& o,
                                                       const std::vector<DepthFrame>& frames, const BoostedModel& model) {
   MemoryPhase memory(r, "whole system, 1 thread (frames in memory)");
   r.whole_passes = o.quick ? 1 : 5;
   say("whole system on 1 thread (PeoplePipeline: segmentation, candidates, RDSF, classifier, tracking), " +
       std::to_string(r.whole_passes) + " passes");
-  std::vector<std::vector<int>> person;
-  std::vector<double> walls;
-  std::vector<StageTimes> stages;
-  cli::Progress progress(std::cerr, "frames", static_cast<std::int64_t>(frames.size()) * r.whole_passes);
-  std::int64_t done = 0;
-  for (int pass = 0; pass < r.whole_passes; ++pass) {
-    PeoplePipeline pipeline(PipelineParams{}, &model);
-    double wall = 0;
-    StageTimes stage;
-    for (const DepthFrame& frame : frames) {
-      const Clock::time_point t = Clock::now();
-      const PipelineFrame out = pipeline.process(frame);
-      wall += seconds_since(t);
-      stage += out.times;
-      if (pass == 0) {
-        r.candidates += static_cast<long long>(out.analysis.candidates.size());
-        r.detections += std::count_if(out.person.begin(), out.person.end(), [](int id) { return id != 0; });
-        person.push_back(out.person);
-      }
-      progress.update(++done);
-    }
-    walls.push_back(wall);
-    stages.push_back(stage);
-    r.people_tracked = static_cast<int>(pipeline.tracker().people().size());
-  }
-  progress.finish(static_cast<std::int64_t>(frames.size()) * r.whole_passes);
-  r.stage_ms = stages[median_pass(walls, r.pipeline_wall_s, r.pipeline_wall_min_s, r.pipeline_wall_max_s)];
+  OneThreadPasses run = one_thread_passes(PipelineParams{}, model, frames, r.whole_passes);
+  r.candidates = run.candidates;
+  r.detections = run.detections;
+  r.people_tracked = run.people_tracked;
+  r.stage_ms = run.stages[median_pass(run.walls, r.pipeline_wall_s, r.pipeline_wall_min_s, r.pipeline_wall_max_s)];
   memory.done();
-  return person;
+  return std::move(run.person);
 }
 
 void whole_system_parallel(PerfResults& r, const PerfOptions& o, const std::vector<DepthFrame>& frames,
@@ -282,17 +320,31 @@ void whole_system_parallel(PerfResults& r, const PerfOptions& o, const std::vect
   MemoryPhase memory(r, "whole system, " + std::to_string(o.threads) + " threads (frames in memory)");
   say("whole system on " + std::to_string(o.threads) + " threads (frames analysed in parallel, tracking in order), " +
       std::to_string(r.whole_passes) + " passes");
-  std::vector<double> walls;
-  r.parallel_identical = true;
-  for (int pass = 0; pass < r.whole_passes; ++pass) {
-    std::vector<std::vector<int>> person;
-    walls.push_back(run_whole_system(model, [&](PeoplePipeline& pipeline, const PipelineCallback& on_frame) {
-      run_in_frame_order(pipeline, static_cast<std::int64_t>(frames.size()),
-                         [&](std::int64_t i) { return frames[static_cast<std::size_t>(i)]; }, {o.threads, 0}, on_frame);
-    }, person));
-    r.parallel_identical = r.parallel_identical && person == reference;
-  }
+  const std::vector<double> walls =
+      parallel_passes(PipelineParams{}, model, frames, o.threads, r.whole_passes, reference, r.parallel_identical);
   median_pass(walls, r.parallel_wall_s, r.parallel_wall_min_s, r.parallel_wall_max_s);
+  memory.done();
+}
+
+// The shipped default model as a detector runs it (its stated options taken, read at its operating point),
+// on the same frames: what a lab's `rdsf-detect` without --model costs, beside the rows of this run's own
+// model, which states nothing.
+void shipped_default_model(PerfResults& r, const PerfOptions& o, const std::vector<DepthFrame>& frames) {
+  MemoryPhase memory(r, "the shipped default model, 1 and " + std::to_string(o.threads) + " threads");
+  const BoostedModel model = BoostedModel::load(resolve_model(kDefaultModelName));
+  PerfResults::ShippedRun& s = r.shipped;
+  s.model = model_label(model);
+  s.options = option_words(departures_from_defaults(model.detection_options()));
+  s.rounds = static_cast<int>(model.weak_classifiers().size());
+  say("the shipped default model " + s.model + (s.options.empty() ? "" : " with " + s.options) + " on 1 and " +
+      std::to_string(o.threads) + " threads, " + std::to_string(r.whole_passes) + " passes each");
+  const OneThreadPasses run = one_thread_passes(PipelineParams{}, model, frames, r.whole_passes);
+  s.candidates = run.candidates;
+  s.detections = run.detections;
+  s.stage_ms = run.stages[median_pass(run.walls, s.wall_s, s.wall_min_s, s.wall_max_s)];
+  const std::vector<double> walls =
+      parallel_passes(PipelineParams{}, model, frames, o.threads, r.whole_passes, run.person, s.parallel_identical);
+  median_pass(walls, s.parallel_wall_s, s.parallel_wall_min_s, s.parallel_wall_max_s);
   memory.done();
 }
 
@@ -331,7 +383,7 @@ void png_reading(PerfResults& r, const PerfOptions& o, const fs::path& folder, c
 
   say("whole system from the PNG files on " + std::to_string(o.threads) + " threads");
   std::vector<std::vector<int>> person;
-  r.files_parallel_wall_s = run_whole_system(model, [&](PeoplePipeline& pipeline, const PipelineCallback& on_frame) {
+  r.files_parallel_wall_s = run_whole_system(PipelineParams{}, model, [&](PeoplePipeline& pipeline, const PipelineCallback& on_frame) {
     auto files = open_frame_source(folder.string(), camera);  // decoded on the workers
     run_in_frame_order(pipeline, *files, camera, {o.threads, 0}, on_frame);
   }, person);
@@ -531,6 +583,7 @@ PerfResults run_perf_report(const PerfOptions& options) {
   const BoostedModel model = train_pipeline_model(r, o);
   const std::vector<std::vector<int>> reference = whole_system_one_thread(r, o, frames, model);
   whole_system_parallel(r, o, frames, model, reference);
+  shipped_default_model(r, o, frames);
   live_mode(r, o, frames, model);
   std::vector<DepthFrame>().swap(frames);  // the frames in memory are not part of the later phases
   png_reading(r, o, work.root / "people", model, reference);

@@ -63,6 +63,18 @@ struct PerfResults {
   int threads = 2;
   double parallel_wall_s = 0, parallel_wall_min_s = 0, parallel_wall_max_s = 0;  ///< median, fastest, slowest pass
   bool parallel_identical = false;  ///< same person ids as the one-thread run
+  // The shipped default model (models/people, the newest version) as a detector runs it: its stated detection
+  // options taken, read at its operating point; the same frames, passes and threads as the lines above.
+  struct ShippedRun {
+    std::string model;    ///< "people v4"
+    std::string options;  ///< the options it states that differ from the detector's defaults ("--local-front 70")
+    int rounds = 0;       ///< its weak classifiers
+    long long candidates = 0, detections = 0;
+    StageTimes stage_ms;  ///< sums over all frames (the median 1-thread pass)
+    double wall_s = 0, wall_min_s = 0, wall_max_s = 0;                    ///< 1 thread: median, fastest, slowest
+    double parallel_wall_s = 0, parallel_wall_min_s = 0, parallel_wall_max_s = 0;  ///< `threads` threads
+    bool parallel_identical = false;  ///< the same person ids as its 1-thread run
+  } shipped;
   // Live mode (LivePipeline, `threads` workers): frames in memory pushed at a camera's rate
   struct LiveRun {
     double fps = 0;

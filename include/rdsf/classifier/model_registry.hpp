@@ -21,8 +21,8 @@ int latest_model_version(const std::string& models_dir, const std::string& name)
 /// The model file that `path_or_name` means (see above); throws Error naming what was looked for.
 /// A NAME with no versions under models_dir, and a NAME/vN whose NAME has no folder there, are looked up in
 /// the models shipped with the workbench too (shipped_models_dir(): the installed share/rdsf/models, or the
-/// source tree's models/ for a build-tree program; it holds the default model people/v2.yml and the earlier
-/// v1). A NAME that has a folder under models_dir is never mixed with the shipped one of that name.
+/// source tree's models/ for a build-tree program; it holds the default model people/v4.yml and the earlier
+/// v1-v3). A NAME that has a folder under models_dir is never mixed with the shipped one of that name.
 std::string resolve_model(const std::string& path_or_name, const std::string& models_dir = "models");
 
 /// The name of the default model shipped in models/ (trained by scripts/train-default-model.sh).
