@@ -243,6 +243,31 @@ TEST(FeatureSpecOption, UnknownNamesAndParametersAreUsageErrorsInEveryProgram) {
   }
 }
 
+// Separate validation sets of the same recording are taken when their frames are others: frames named by rank
+// (no numbers, e.g. a real recording's lab_* names) are ranked over both sides together, so frames b_* are not
+// "the same block" as frames a_* because both rank from 0 on their own side (rdsf-train refused them before).
+TEST_F(TrainerProgram, ValidationFramesOfTheSameRecordingNamedByRankAreTakenWhenTheyAreOthers) {
+  const std::string early_people = dir / "early-people", early_others = dir / "early-others";
+  const std::string late_people = dir / "late-people", late_others = dir / "late-others";
+  make_set(early_people, 1, 40, 11, {}, "room", "a_");
+  make_set(early_others, 0, 60, 12, {}, "room", "a_");
+  make_set(late_people, 1, 10, 13, {}, "room", "b_");
+  make_set(late_others, 0, 15, 14, {}, "room", "b_");
+  const std::string sets = "--pos " + test::quote(early_people) + " --neg " + test::quote(early_others) +
+                           " --rounds 2 --folds 0 --group-frames 1 --validation-pos " + test::quote(late_people) +
+                           " --validation-neg " + test::quote(late_others);
+  const test::RunResult taken = train(sets + " --name later");
+  EXPECT_EQ(taken.exit_code, 0) << taken.err;
+  EXPECT_NE(taken.err.find("rdsf-train: wrote "), std::string::npos) << taken.err;
+  // The same frames on both sides are still refused.
+  const test::RunResult shared = train("--pos " + test::quote(early_people) + " --neg " + test::quote(early_others) +
+                                       " --rounds 2 --folds 0 --group-frames 1 --validation-pos " +
+                                       test::quote(early_people) + " --validation-neg " + test::quote(late_others) +
+                                       " --name same");
+  EXPECT_EQ(shared.exit_code, 1) << shared.err;
+  EXPECT_NE(shared.err.find("validation sets share 40 groups"), std::string::npos) << shared.err;
+}
+
 // The levers of issue "honest figures": refused before any work when they make no sense.
 TEST_F(TrainerProgram, BadLeversAreRefusedBeforeAnyWork) {
   const std::string sets = "--pos " + test::quote(people) + " --neg " + test::quote(negatives) + " --name x ";

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <set>
 
 #include "rdsf/candidates/crop_provenance.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
@@ -82,11 +83,21 @@ std::string duration_text(double seconds) {
   return text;
 }
 
-// A separate validation set must not share a group (recording and frame block) with the training rows.
-void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& validation) {
-  std::vector<std::string> shared;
-  std::set_intersection(train.group_names.begin(), train.group_names.end(), validation.group_names.begin(),
-                        validation.group_names.end(), std::back_inserter(shared));
+// A separate validation set must not share a group (recording and frame block) with the training rows. The
+// groups are those of both sides' rows together: a block of frames named by rank (names that are no numbers)
+// is only the same block when ranked among the same frames.
+void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& validation, const SampleChoice& choice) {
+  if (choice.group_frames <= 0 || train.origins.empty() || validation.origins.empty()) return;
+  std::vector<SampleOrigin> both = train.origins;
+  both.insert(both.end(), validation.origins.begin(), validation.origins.end());
+  const SampleGroups groups = sample_groups(both, choice.group_frames, choice.group_by);
+  std::vector<char> in_train(groups.names.size(), 0);
+  for (std::size_t i = 0; i < train.origins.size(); ++i) in_train[groups.group[i]] = 1;
+  std::set<std::string> shared_names;
+  for (std::size_t i = train.origins.size(); i < both.size(); ++i) {
+    if (in_train[groups.group[i]]) shared_names.insert(groups.names[groups.group[i]]);
+  }
+  const std::vector<std::string> shared(shared_names.begin(), shared_names.end());
   if (!shared.empty()) {
     throw Error("the validation sets share " + std::to_string(shared.size()) + " groups with the training sets (e.g. '" +
                 shared.front() + "': the same recording and frames): validate on other recordings");
@@ -232,7 +243,7 @@ ChosenSamples read_validation(const TrainOptions& o, const Recipe& recipe, const
   ChosenSamples validation;
   on_every_rank(shards, "reading its share of the validation sets",
                 [&] { validation = choose_samples(v, std::cerr, o.threads); });
-  check_disjoint_groups(train, validation);
+  check_disjoint_groups(train, validation, v);
   return validation;
 }
 

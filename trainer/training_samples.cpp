@@ -278,6 +278,7 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
     SampleGroups groups = sample_groups(origins, choice.group_frames, choice.group_by);
     out.groups = std::move(groups.group);
     out.group_names = std::move(groups.names);
+    out.origins = std::move(origins);
   }
   out.sets = pos.uses;
   out.sets.insert(out.sets.end(), neg.uses.begin(), neg.uses.end());

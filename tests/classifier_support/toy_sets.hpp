@@ -30,9 +30,9 @@ inline cv::Mat1w crop(bool person, std::mt19937_64& rng) {
   return out;
 }
 
-/// `count` samples of one label from recording `source`, frames 0 .. count - 1.
+/// `count` samples of one label from recording `source`, frames 0 .. count - 1 (named `frame_prefix` + number).
 inline void make_set(const std::string& dir, int label, int count, std::uint64_t seed, const FeatureSpec& spec = {},
-                     const std::string& source = "test") {
+                     const std::string& source = "test", const std::string& frame_prefix = "") {
   SampleSetWriter writer = SampleSetWriter::open_or_create(dir, spec, CameraModel{}, "test");
   std::mt19937_64 rng(seed);
   for (int i = 0; i < count; ++i) {
@@ -40,7 +40,7 @@ inline void make_set(const std::string& dir, int label, int count, std::uint64_t
     r.label = label;
     r.origin = "labeler";
     r.source = source;
-    r.frame = std::to_string(i);
+    r.frame = frame_prefix + std::to_string(i);
     r.strict_box = cv::Rect(i, 0, 10, 20);
     r.window = r.strict_box;
     writer.append(r, crop(label == 1, rng));
