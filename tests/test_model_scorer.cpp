@@ -219,3 +219,49 @@ TEST(ModelScorer, PipelineScoresAreTheMeanOfTheCropAndItsMirrorByDefault) {
     EXPECT_EQ(c.scores[i], scorer.score(c.analysis.candidates[i].depth_crop));
   }
 }
+
+// A model adapted to a room that records the rounds it continued (rdsf-train --init writes
+// init_weak_classifiers) scores those mirror-averaged and its own on the crop alone by default
+// (PipelineParams::mirror_average_inherited): H = (H_inh(crop) + H_inh(mirror)) / 2 + H_own(crop); with the
+// option off, or without the record, the crop alone. Both scoring paths.
+TEST(ModelScorer, AnAdaptedModelsInheritedRoundsAreMirrorAveragedItsOwnAreNot) {
+  BoostedModel adapted = BoostedModel::load(std::string(RDSF_SOURCE_DIR) + "/models/people/v2.yml");
+  constexpr std::size_t kInherited = 60;  // of its 100: the last 40 stand for the room's own rounds
+  adapted.training().parameters.emplace_back("init_weak_classifiers", std::to_string(kInherited));
+  adapted.training().parameters.emplace_back("adapted_room", "/data/our-lab");
+  const std::vector<WeakClassifier> inherited_weak(adapted.weak_classifiers().begin(),
+                                                   adapted.weak_classifiers().begin() + kInherited);
+  const ModelScorer whole(adapted), inherited(BoostedModel(adapted.feature_spec(), adapted.bins(), inherited_weak));
+  DepthFrame frame = test::wall_frame(4500);
+  test::paint(frame, {300, 100, 40, 360}, 2000);  // a body
+  test::paint(frame, {340, 180, 25, 12}, 2000);   // an arm held out to its left (the image's right)
+  test::paint(frame, {120, 150, 30, 300}, 3000);  // a narrow post
+  ASSERT_TRUE(PipelineParams{}.mirror_average_inherited);
+  EXPECT_EQ(PipelineParams{}.inherited_mirror_rounds_for(adapted), kInherited);
+  for (bool full : {false, true}) {
+    PipelineParams on, off;
+    on.full_feature_vector = off.full_feature_vector = full;
+    off.mirror_average_inherited = false;
+    const PipelineFrame a = PeoplePipeline(on, &adapted).analyse(frame);
+    const PipelineFrame b = PeoplePipeline(off, &adapted).analyse(frame);
+    ASSERT_GE(a.analysis.candidates.size(), 2u);
+    int differ = 0;
+    for (std::size_t i = 0; i < a.scores.size(); ++i) {
+      const cv::Mat1w& crop = a.analysis.candidates[i].depth_crop;
+      EXPECT_EQ(b.scores[i], whole.score(crop));
+      EXPECT_DOUBLE_EQ(a.scores[i], whole.score(crop) + 0.5 * (inherited.mirrored_score(crop) - inherited.score(crop)));
+      EXPECT_EQ(a.probabilities[i], adapted.probability(a.scores[i]));
+      differ += a.scores[i] != b.scores[i] ? 1 : 0;
+    }
+    EXPECT_GT(differ, 0) << "full " << full;
+  }
+  // Without the record nothing is known to be inherited: the crop alone, as before.
+  BoostedModel unrecorded = adapted;
+  unrecorded.training().parameters.clear();
+  unrecorded.training().parameters.emplace_back("adapted_room", "/data/our-lab");
+  EXPECT_EQ(PipelineParams{}.inherited_mirror_rounds_for(unrecorded), 0u);
+  // A model that is not adapted is mirror-averaged whole (the rule above), nothing more.
+  BoostedModel broad = adapted;
+  broad.training().parameters.clear();
+  EXPECT_EQ(PipelineParams{}.inherited_mirror_rounds_for(broad), 0u);
+}

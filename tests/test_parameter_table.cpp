@@ -45,6 +45,8 @@ TEST(ParameterTable, EveryTableIsSound) {
   expect_sound(decision_parameters());
   // --thesis scores the crop alone (the one decision row that departs from the thesis).
   EXPECT_FALSE(with_thesis_values(decision_parameters(), PipelineParams{}).mirror_average);
+  EXPECT_FALSE(with_thesis_values(decision_parameters(), PipelineParams{}).mirror_average_inherited);
+  EXPECT_TRUE(PipelineParams{}.mirror_average_inherited);
   EXPECT_TRUE(PipelineParams{}.mirror_average);
   PipelineParams p;
   EXPECT_THROW(decision_parameters().front().set(p, 1.0), Error);  // threshold: inside (0, 1)

@@ -11,7 +11,12 @@ const ParameterTable<PipelineParams>& decision_parameters() {
                 "operating point, 0.5 for a model that states none)", Range::from_below(0.0, 1.0)),
       parameter("mirror-average", &P::mirror_average,
                 "a candidate's score is the mean of H(x) of its depth crop and of the crop mirrored left to right, "
-                "except with a model adapted to a room by rdsf-adapt (0: the crop alone, the thesis's way)",
+                "except with a model adapted to a room by rdsf-adapt (see --mirror-average-inherited; 0: the crop "
+                "alone, the thesis's way)",
+                {}, std::optional<bool>(false)),
+      parameter("mirror-average-inherited", &P::mirror_average_inherited,
+                "with --mirror-average, a model adapted to a room scores the rounds it continued mirror-averaged and "
+                "its own rounds on the crop alone (0: the adapted model on the crop alone, as before 2026-12-07)",
                 {}, std::optional<bool>(false)),
       parameter("max-height", &P::max_person_height_cm,
                 "no person is taller than this (cm) at their own depth (the median of the candidate's crop's "

@@ -47,6 +47,13 @@ double ModelScorer::mirrored_score(const cv::Mat1w& crop) const {
   return score(mirrored);
 }
 
+void ModelScorer::average_part_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const {
+  for (std::size_t i = 0; i < candidates.size() && i < scores.size(); ++i) {
+    const cv::Mat1w& crop = candidates[i].depth_crop;
+    scores[i] += 0.5 * (mirrored_score(crop) - score(crop));
+  }
+}
+
 void ModelScorer::average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const {
   for (std::size_t i = 0; i < candidates.size() && i < scores.size(); ++i) {
     scores[i] = 0.5 * (scores[i] + mirrored_score(candidates[i].depth_crop));

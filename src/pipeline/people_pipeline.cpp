@@ -1,5 +1,7 @@
 #include "rdsf/pipeline/people_pipeline.hpp"
 
+#include <algorithm>
+
 #include <chrono>
 #include <cstdio>
 
@@ -30,6 +32,11 @@ bool PipelineParams::mirror_average_for(const BoostedModel& model) const {
   return mirror_average && !model.training().adapted_to_a_room();
 }
 
+std::size_t PipelineParams::inherited_mirror_rounds_for(const BoostedModel& model) const {
+  if (!mirror_average || !mirror_average_inherited || mirror_average_for(model)) return 0;
+  return std::min(model.training().inherited_weak_classifiers(), model.weak_classifiers().size());
+}
+
 namespace {
 
 // The analyser's parameters with the detector's height limit (PipelineParams::max_person_height_cm).
@@ -53,6 +60,12 @@ PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
   check_model_fits(*model_, params_.analyser);
   scorer_.emplace(*model_);
   mirror_ = params_.mirror_average_for(*model_);
+  const std::size_t inherited = params_.inherited_mirror_rounds_for(*model_);
+  if (inherited > 0) {
+    std::vector<WeakClassifier> weak(model_->weak_classifiers().begin(),
+                                     model_->weak_classifiers().begin() + static_cast<std::ptrdiff_t>(inherited));
+    inherited_scorer_.emplace(BoostedModel(model_->feature_spec(), model_->bins(), std::move(weak)));
+  }
 }
 
 PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
@@ -80,6 +93,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   if (full) {
     out.scores = model_->score(out.analysis.features);
     if (mirror_) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
+    if (inherited_scorer_) inherited_scorer_->average_part_with_mirror(out.analysis.candidates, out.scores);
   } else {
     out.model_features.create(static_cast<int>(n), scorer_->features().size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -90,6 +104,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
     if (mirror_) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
+    if (inherited_scorer_) inherited_scorer_->average_part_with_mirror(out.analysis.candidates, out.scores);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   std::vector<CandidateKin> kin;

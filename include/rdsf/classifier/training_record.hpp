@@ -3,6 +3,7 @@
 // validation figures. Plain data; written and read by model_file. No timings: two trainings with the same
 // inputs and seed give byte-identical model files apart from the creation time.
 #include <cstddef>
+#include <cstdlib>
 #include <string>
 #include <utility>
 #include <vector>
@@ -63,6 +64,14 @@ struct TrainingRecord {
       if (key == kAdaptedRoomParameter) return true;
     }
     return false;
+  }
+  /// The weak classifiers of the model it continued (parameter init_weak_classifiers, written by rdsf-train
+  /// --init), 0 when it continued none or does not say.
+  std::size_t inherited_weak_classifiers() const {
+    for (const auto& [key, value] : parameters) {
+      if (key == "init_weak_classifiers") return static_cast<std::size_t>(std::strtoull(value.c_str(), nullptr, 10));
+    }
+    return 0;
   }
   std::vector<SampleSetUse> sample_sets;
   /// How the training crops were cut (format 3; unknown in older files and for sets that do not record it).

@@ -39,6 +39,10 @@ class ModelScorer {
   /// Mirror averaging (PipelineParams::mirror_average): (score(crop) + mirrored_score(crop)) / 2 per
   /// candidate, from `scores`, each candidate's score(crop) as computed before.
   void average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const;
+  /// This scorer's model as a part of the model that gave `scores` (its first weak classifiers, the same
+  /// feature spec): each candidate's part scored mirror-averaged instead of on the crop alone,
+  /// scores[i] += (mirrored_score(crop) - score(crop)) / 2 (PipelineParams::mirror_average_inherited).
+  void average_part_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const;
 
  private:
   FeatureSubset subset_;
