@@ -195,7 +195,10 @@ class FrameHandler {
                const PeoplePipeline& pipeline, DetectionCsv* csv, std::optional<std::int64_t> frame_count)
       : evaluated(models.size()), o_(o), models_(models), truth_(truth), pipeline_(pipeline), csv_(csv),
         box_(pipeline.params().analyser.reported_box), progress_(std::cerr, "frames", frame_count) {
-    for (const BoostedModel& m : models) scorers_.emplace_back(m);
+    for (const BoostedModel& m : models) {
+      scorers_.emplace_back(m);
+      mirrors_.emplace_back(m, o_.pipeline);
+    }
   }
 
   /// false: the viewer asked to stop.
@@ -241,7 +244,7 @@ class FrameHandler {
     }
     for (std::size_t m = 0; m < models_.size(); ++m) {
       std::vector<double> scores = m == 0 ? processed.scores : scorers_[m].score(found);
-      if (m != 0 && o_.pipeline.mirror_average_for(models_[m])) scorers_[m].average_with_mirror(found, scores);
+      if (m != 0) mirrors_[m].apply(scorers_[m], found, scores);
       EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
       for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
       evaluated[m].push_back(std::move(e));
@@ -270,6 +273,7 @@ class FrameHandler {
   DetectionCsv* csv_;
   BoxKind box_;
   std::vector<ModelScorer> scorers_;
+  std::vector<MirrorScoring> mirrors_;  ///< per model, as the pipeline turns its crop scores into scores
   cli::Progress progress_;
 };
 

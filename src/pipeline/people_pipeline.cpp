@@ -59,13 +59,7 @@ PeoplePipeline::PeoplePipeline(PipelineParams params, const BoostedModel* model)
   if (model_ == nullptr) return;
   check_model_fits(*model_, params_.analyser);
   scorer_.emplace(*model_);
-  mirror_ = params_.mirror_average_for(*model_);
-  const std::size_t inherited = params_.inherited_mirror_rounds_for(*model_);
-  if (inherited > 0) {
-    std::vector<WeakClassifier> weak(model_->weak_classifiers().begin(),
-                                     model_->weak_classifiers().begin() + static_cast<std::ptrdiff_t>(inherited));
-    inherited_scorer_.emplace(BoostedModel(model_->feature_spec(), model_->bins(), std::move(weak)));
-  }
+  mirror_.emplace(*model_, params_);
 }
 
 PipelineFrame PeoplePipeline::process(const DepthFrame& frame) {
@@ -92,8 +86,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   auto start = std::chrono::steady_clock::now();
   if (full) {
     out.scores = model_->score(out.analysis.features);
-    if (mirror_) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
-    if (inherited_scorer_) inherited_scorer_->average_part_with_mirror(out.analysis.candidates, out.scores);
+    mirror_->apply(*scorer_, out.analysis.candidates, out.scores);
   } else {
     out.model_features.create(static_cast<int>(n), scorer_->features().size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -103,8 +96,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     start = std::chrono::steady_clock::now();
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
-    if (mirror_) scorer_->average_with_mirror(out.analysis.candidates, out.scores);
-    if (inherited_scorer_) inherited_scorer_->average_part_with_mirror(out.analysis.candidates, out.scores);
+    mirror_->apply(*scorer_, out.analysis.candidates, out.scores);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   std::vector<CandidateKin> kin;

@@ -14,6 +14,7 @@
 #include "rdsf/core/parameter_table.hpp"
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/depth_frame.hpp"
+#include "rdsf/pipeline/mirror_scoring.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/pipeline/stated_options.hpp"
 #include "rdsf/tracking/tracker.hpp"
@@ -136,10 +137,7 @@ class PeoplePipeline {
   PipelineParams params_;
   const BoostedModel* model_;
   std::optional<ModelScorer> scorer_;
-  bool mirror_ = false;  ///< params_.mirror_average_for(*model_)
-  /// The model's inherited rounds alone (params_.inherited_mirror_rounds_for(*model_) > 0): their mirror
-  /// average replaces their crop score.
-  std::optional<ModelScorer> inherited_scorer_;
+  std::optional<MirrorScoring> mirror_;  ///< how the crop scores become the candidates' (mirror_scoring.hpp)
   FrameAnalyser analyser_;
   Tracker tracker_;
 };
