@@ -19,7 +19,9 @@
 
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/classifier/boosted_model.hpp"
+#include "rdsf/pipeline/mirror_scoring.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
+#include "rdsf/pipeline/people_pipeline.hpp"
 #include "rdsf/analysis/frame_analyser.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/segmentation/background_model.hpp"
@@ -233,6 +235,30 @@ void BM_ScoreWithMirror(benchmark::State& state) {
   per_candidate(state);
 }
 BENCHMARK(BM_ScoreWithMirror)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// A model adapted to a room (100 inherited rounds and 3 of its own): argument 0 scores its crop alone (as
+// before 2026-12-07), 1 as the pipeline does by default, its inherited rounds mirror-averaged
+// (PipelineParams::mirror_average_inherited, pipeline/mirror_scoring.hpp): the price per candidate.
+void BM_ScoreAdaptedModel(benchmark::State& state) {
+  rdsf::BoostedModel adapted = random_model(rdsf::FeatureSpec{}, 103);
+  adapted.training().parameters.emplace_back("init_weak_classifiers", "100");
+  adapted.training().parameters.emplace_back("adapted_room", "bench");
+  rdsf::PipelineParams params;
+  params.mirror_average_inherited = state.range(0) == 1;
+  const rdsf::ModelScorer scorer(adapted);
+  const rdsf::MirrorScoring mirror(adapted, params);
+  std::vector<rdsf::Candidate> one(1);
+  std::vector<double> score(1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    one[0].depth_crop = crops()[i++ % crops().size()];
+    score[0] = scorer.score(one[0].depth_crop);
+    mirror.apply(scorer, one, score);
+    benchmark::DoNotOptimize(score[0]);
+  }
+  per_candidate(state);
+}
+BENCHMARK(BM_ScoreAdaptedModel)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_WholeCoreFrame(benchmark::State& state) {
   const rdsf::FrameAnalyser analyser;
