@@ -60,7 +60,8 @@ struct PipelineParams {
   /// the same (24 of 27, 19 of 22). It applies to models trained on a broad base, not to a model adapted
   /// to one room by rdsf-adapt (mirror_average_for): that model learned the room's negatives as the camera
   /// sees them (training mirrors positives only), and the mirror shows it views of the room it never
-  /// learned; the adaptation benchmark's per-track models lost with it (docs/quality.md).
+  /// learned; the adaptation benchmark's per-track models lost with it (docs/quality.md). The rounds such a
+  /// model inherited from its base are averaged all the same (mirror_average_inherited).
   bool mirror_average = true;
   /// Whether `model`'s scores are mirror-averaged: mirror_average, unless the model was adapted to a room
   /// (TrainingRecord::adapted_to_a_room).
