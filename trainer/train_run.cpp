@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <iterator>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -93,14 +92,13 @@ void check_disjoint_groups(const ChosenSamples& train, const ChosenSamples& vali
   const SampleGroups groups = sample_groups(both, choice.group_frames, choice.group_by);
   std::vector<char> in_train(groups.names.size(), 0);
   for (std::size_t i = 0; i < train.origins.size(); ++i) in_train[groups.group[i]] = 1;
-  std::set<std::string> shared_names;
+  std::set<std::string> shared;
   for (std::size_t i = train.origins.size(); i < both.size(); ++i) {
-    if (in_train[groups.group[i]]) shared_names.insert(groups.names[groups.group[i]]);
+    if (in_train[groups.group[i]]) shared.insert(groups.names[groups.group[i]]);
   }
-  const std::vector<std::string> shared(shared_names.begin(), shared_names.end());
   if (!shared.empty()) {
     throw Error("the validation sets share " + std::to_string(shared.size()) + " groups with the training sets (e.g. '" +
-                shared.front() + "': the same recording and frames): validate on other recordings");
+                *shared.begin() + "': the same recording and frames): validate on other recordings");
   }
 }
 

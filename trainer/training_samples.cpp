@@ -275,9 +275,7 @@ ChosenSamples choose_samples(const SampleChoice& choice, std::ostream& log, int 
                      origins, out, log);
   }
   if (choice.group_frames > 0) {
-    SampleGroups groups = sample_groups(origins, choice.group_frames, choice.group_by);
-    out.groups = std::move(groups.group);
-    out.group_names = std::move(groups.names);
+    out.groups = sample_groups(origins, choice.group_frames, choice.group_by).group;
     out.origins = std::move(origins);
   }
   out.sets = pos.uses;

@@ -59,7 +59,6 @@ struct ChosenSamples {
   std::vector<int> labels;  ///< 1 / 0
   std::vector<SampleSetUse> sets;  ///< per set and role: path, manifest hash, available, used
   std::vector<std::size_t> groups;    ///< per row: group id (dataset/sample_groups.hpp)
-  std::vector<std::string> group_names;  ///< group id -> "recording#block"
   std::vector<SampleOrigin> origins;  ///< per row: its recording and frame, when grouped (group_frames > 0)
   std::vector<bool> augmented;        ///< per row: an augmented copy (after the originals)
   std::vector<int> owner;             ///< per row: the rank holding it (SampleChoice::shards); empty: one process

@@ -46,7 +46,7 @@ struct ValidationView {
 // then how many weak classifiers a continued model started from.
 RecordedParameters parameter_record(const BoostTrainingParams& p) {
   RecordedParameters out = parameter_values(boost_training_parameters(), p);
-  if (!p.init.empty()) out.emplace_back("init_weak_classifiers", std::to_string(p.init.size()));
+  if (!p.init.empty()) out.emplace_back(kInitWeakClassifiersParameter, std::to_string(p.init.size()));
   return out;
 }
 

@@ -52,6 +52,9 @@ struct ValidationFigures {
 
 /// The parameter rdsf-adapt records in a model it trains for one room (the room's recording).
 inline constexpr const char kAdaptedRoomParameter[] = "adapted_room";
+/// The parameter of a model trained by continuing another (rdsf-train --init): that model's weak classifiers,
+/// the first of this one's.
+inline constexpr const char kInitWeakClassifiersParameter[] = "init_weak_classifiers";
 
 struct TrainingRecord {
   std::string recipe;   ///< recipe name, or "ad hoc"
@@ -69,7 +72,7 @@ struct TrainingRecord {
   /// --init), 0 when it continued none or does not say.
   std::size_t inherited_weak_classifiers() const {
     for (const auto& [key, value] : parameters) {
-      if (key == "init_weak_classifiers") return static_cast<std::size_t>(std::strtoull(value.c_str(), nullptr, 10));
+      if (key == kInitWeakClassifiersParameter) return static_cast<std::size_t>(std::strtoull(value.c_str(), nullptr, 10));
     }
     return 0;
   }
