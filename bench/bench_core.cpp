@@ -113,7 +113,8 @@ BENCHMARK(BM_SegmentationSynthetic)->Unit(benchmark::kMillisecond);
 // Segmentation and candidates per frame with a background model of the room (issue 34: rdsf-detect
 // --background) against without, on one static synthetic room with people against its walls (48 frames,
 // seed 41's first clip of `rdsf-synth --moving-camera 0 --wall-clearance 0.25 --people 1..4`), the
-// background learned from the same room rendered empty. 0: without, 1: with.
+// background learned from the same room rendered empty. 0: without, 1: with, 2: without it but with the
+// frame's own local background (--local-front 70, the shipped people/v4's option).
 void BM_AnalyseWithBackground(benchmark::State& state) {
   static const auto scene = [] {
     rdsf::synth::SynthParams p = rdsf::synth::people_scene(48, 1, 4, 41);
@@ -131,6 +132,7 @@ void BM_AnalyseWithBackground(benchmark::State& state) {
   }();
   rdsf::AnalyserParams params;
   if (state.range(0) == 1) params.background = scene.second;
+  if (state.range(0) == 2) params.local_front_reach_cm = 70.0;
   const rdsf::FrameAnalyser analyser(params);
   std::size_t i = 0;
   std::int64_t candidates = 0;
@@ -141,7 +143,7 @@ void BM_AnalyseWithBackground(benchmark::State& state) {
   }
   state.counters["candidates_per_frame"] = static_cast<double>(candidates) / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_AnalyseWithBackground)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AnalyseWithBackground)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 const std::vector<cv::Mat1w>& crops() {
   static const std::vector<cv::Mat1w> all = [] {
@@ -248,12 +250,12 @@ void BM_ScoreAdaptedModel(benchmark::State& state) {
   const rdsf::ModelScorer scorer(adapted);
   const rdsf::MirrorScoring mirror(adapted, params);
   std::vector<rdsf::Candidate> one(1);
-  std::vector<double> score(1);
+  cv::Mat1f crop_features;
   std::size_t i = 0;
   for (auto _ : state) {
     one[0].depth_crop = crops()[i++ % crops().size()];
-    score[0] = scorer.score(one[0].depth_crop);
-    mirror.apply(scorer, one, score);
+    std::vector<double> score = scorer.score(one, crop_features);
+    mirror.apply(scorer, one, crop_features, score);
     benchmark::DoNotOptimize(score[0]);
   }
   per_candidate(state);

@@ -243,8 +243,12 @@ class FrameHandler {
                       o_.pipeline.suppress_duplicates ? kin_of(found[i]) : CandidateKin{}});
     }
     for (std::size_t m = 0; m < models_.size(); ++m) {
-      std::vector<double> scores = m == 0 ? processed.scores : scorers_[m].score(found);
-      if (m != 0) mirrors_[m].apply(scorers_[m], found, scores);
+      std::vector<double> scores = processed.scores;
+      if (m != 0) {
+        cv::Mat1f crop_features;
+        scores = scorers_[m].score(found, crop_features);
+        mirrors_[m].apply(scorers_[m], found, crop_features, scores);
+      }
       EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
       for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];
       evaluated[m].push_back(std::move(e));

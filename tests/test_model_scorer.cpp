@@ -13,6 +13,7 @@
 #include "support/test_support.hpp"
 #include "rdsf/dataset/sample_set_manifest.hpp"
 #include "rdsf/features/rdsf_extractor.hpp"
+#include "rdsf/pipeline/mirror_scoring.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
 #include "rdsf/pipeline/people_pipeline.hpp"
 
@@ -96,6 +97,42 @@ TEST(ModelScorer, ScoresEqualTheFullVectorsBitForBit) {
         const std::vector<float> full = extractor.compute(crop);
         EXPECT_EQ(scorer.score(crop), model.score(full.data())) << spec.name() << " rounds " << rounds;
         EXPECT_EQ(scorer.probability(crop), model.probability(model.score(full.data())));
+      }
+    }
+  }
+}
+
+// The first k weak classifiers' sum from a crop's features (what an adapted model's inherited part needs,
+// mirror_scoring.hpp) is bit for bit the score of a model of those k alone, with stumps (the model's own sum)
+// and without (the binned forest's).
+TEST(ModelScorer, TheFirstRoundsSumIsTheScoreOfAModelOfThoseRoundsAlone) {
+  for (int rounds : {12, 100}) {
+    BoostedModel model = random_model(FeatureSpec{}, rounds, 7u + static_cast<unsigned>(rounds));
+    std::vector<WeakClassifier> lut_only;
+    for (const WeakClassifier& w : model.weak_classifiers()) {
+      if (w.kind != WeakClassifier::Kind::Stump) lut_only.push_back(w);
+    }
+    for (const BoostedModel& m : {model, BoostedModel(model.feature_spec(), model.bins(), lut_only)}) {
+      const ModelScorer scorer(m);
+      const bool binned = BinnedForest::supports(m);
+      const RdsfExtractor extractor(m.feature_spec());
+      for (std::size_t k : {std::size_t{0}, std::size_t{1}, m.weak_classifiers().size() / 2, m.weak_classifiers().size(),
+                            m.weak_classifiers().size() + 5}) {
+        const std::size_t kept = std::min(k, m.weak_classifiers().size());
+        const std::vector<WeakClassifier> first(m.weak_classifiers().begin(),
+                                                m.weak_classifiers().begin() + static_cast<std::ptrdiff_t>(kept));
+        const ModelScorer alone(BoostedModel(m.feature_spec(), m.bins(), first));
+        for (unsigned seed = 0; seed < 4; ++seed) {
+          const cv::Mat1w crop = person_crop(seed);
+          std::vector<float> values(static_cast<std::size_t>(scorer.features().size()));
+          scorer.features().compute(crop, values.data());
+          const std::vector<float> full = extractor.compute(crop);
+          EXPECT_EQ(scorer.score_features(values.data(), k), alone.score(crop)) << "binned " << binned << " k " << k;
+          EXPECT_EQ(m.score(full.data(), k), alone.score(crop)) << "k " << k;
+        }
+        if (k == 0) {
+          EXPECT_EQ(alone.score(person_crop(0)), 0.0);
+        }
       }
     }
   }
@@ -249,11 +286,22 @@ TEST(ModelScorer, AnAdaptedModelsInheritedRoundsAreMirrorAveragedItsOwnAreNot) {
     for (std::size_t i = 0; i < a.scores.size(); ++i) {
       const cv::Mat1w& crop = a.analysis.candidates[i].depth_crop;
       EXPECT_EQ(b.scores[i], whole.score(crop));
-      EXPECT_DOUBLE_EQ(a.scores[i], whole.score(crop) + 0.5 * (inherited.mirrored_score(crop) - inherited.score(crop)));
+      EXPECT_EQ(a.scores[i], whole.score(crop) + 0.5 * (inherited.mirrored_score(crop) - inherited.score(crop)));
       EXPECT_EQ(a.probabilities[i], adapted.probability(a.scores[i]));
       differ += a.scores[i] != b.scores[i] ? 1 : 0;
     }
     EXPECT_GT(differ, 0) << "full " << full;
+    // The further models of rdsf-detect: the crops' features kept from their scoring, or computed anew.
+    const MirrorScoring mirror(adapted, on);
+    cv::Mat1f kept;
+    std::vector<double> given = whole.score(a.analysis.candidates, kept), anew = whole.score(a.analysis.candidates);
+    mirror.apply(whole, a.analysis.candidates, kept, given);
+    mirror.apply(whole, a.analysis.candidates, cv::Mat1f(), anew);
+    EXPECT_EQ(given, a.scores);
+    EXPECT_EQ(anew, a.scores);
+    EXPECT_NE(error_of([&] { mirror.apply(whole, a.analysis.candidates, kept.rowRange(0, 1), given); })
+                  .find("mirror scoring: 1 rows of"),
+              std::string::npos);
   }
   // Without the record nothing is known to be inherited: the crop alone, as before.
   BoostedModel unrecorded = adapted;

@@ -1,5 +1,7 @@
 #include "rdsf/classifier/binned_forest.hpp"
 
+#include <algorithm>
+
 #include "rdsf/classifier/bin_row.hpp"
 #include "rdsf/core/error.hpp"
 
@@ -41,12 +43,14 @@ BinnedForest::BinnedForest(const BoostedModel& model, int row_size) : bins_(mode
   }
 }
 
-double BinnedForest::score_bins(const std::uint8_t* bins) const {
+double BinnedForest::score_bins(const std::uint8_t* bins, std::size_t rounds) const {
   const Node* nodes = nodes_.data();
   const std::uint8_t* right = right_.data();
   const double* response = response_.data();
   double sum = 0.0;
-  for (const Weak& w : weak_) {
+  const std::size_t n = std::min(rounds, weak_.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Weak& w = weak_[i];
     const Node* tree = nodes + w.first_node;
     std::uint32_t k = 0;
     for (std::uint32_t level = 0; level < w.inner_levels; ++level) {
@@ -57,7 +61,7 @@ double BinnedForest::score_bins(const std::uint8_t* bins) const {
   return sum;
 }
 
-double BinnedForest::score(const float* row) const {
+double BinnedForest::score(const float* row, std::size_t rounds) const {
   constexpr int kOnStack = 1024;
   std::uint8_t on_stack[kOnStack];
   std::vector<std::uint8_t> on_heap;
@@ -67,7 +71,7 @@ double BinnedForest::score(const float* row) const {
     bins = on_heap.data();
   }
   bin_row(bins_, row, row_size_, bins);
-  return score_bins(bins);
+  return score_bins(bins, rounds);
 }
 
 }  // namespace rdsf

@@ -43,9 +43,10 @@ BoostedModel BoostedModel::load(const std::string& path_or_name, const std::stri
   return read_model_file(resolve_model(path_or_name, models_dir));
 }
 
-double BoostedModel::score(const float* features) const {
+double BoostedModel::score(const float* features, std::size_t rounds) const {
   double sum = 0.0;
-  for (const WeakClassifier& w : weak_) sum += w.respond_row(features, bins_);
+  const std::size_t n = std::min(rounds, weak_.size());
+  for (std::size_t i = 0; i < n; ++i) sum += weak_[i].respond_row(features, bins_);
   return sum;
 }
 

@@ -41,16 +41,28 @@ std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates)
   return out;
 }
 
+std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features) const {
+  crop_features.create(static_cast<int>(candidates.size()), subset_.size());
+  std::vector<double> out;
+  out.reserve(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    float* row = crop_features[static_cast<int>(i)];
+    subset_.compute(candidates[i].depth_crop, row);
+    out.push_back(score_features(row));
+  }
+  return out;
+}
+
 double ModelScorer::mirrored_score(const cv::Mat1w& crop) const {
   thread_local cv::Mat1w mirrored;
   cv::flip(crop, mirrored, 1);
   return score(mirrored);
 }
 
-void ModelScorer::average_part_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const {
-  for (std::size_t i = 0; i < candidates.size() && i < scores.size(); ++i) {
-    const cv::Mat1w& crop = candidates[i].depth_crop;
-    scores[i] += 0.5 * (mirrored_score(crop) - score(crop));
+void ModelScorer::average_part_with_mirror(const std::vector<Candidate>& candidates,
+                                           const std::vector<double>& part_of_crop, std::vector<double>& scores) const {
+  for (std::size_t i = 0; i < candidates.size() && i < scores.size() && i < part_of_crop.size(); ++i) {
+    scores[i] += 0.5 * (mirrored_score(candidates[i].depth_crop) - part_of_crop[i]);
   }
 }
 

@@ -86,7 +86,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
   auto start = std::chrono::steady_clock::now();
   if (full) {
     out.scores = model_->score(out.analysis.features);
-    mirror_->apply(*scorer_, out.analysis.candidates, out.scores);
+    mirror_->apply(*scorer_, out.analysis.candidates, cv::Mat1f(), out.scores);
   } else {
     out.model_features.create(static_cast<int>(n), scorer_->features().size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -96,7 +96,7 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     start = std::chrono::steady_clock::now();
     out.scores.resize(n);
     for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
-    mirror_->apply(*scorer_, out.analysis.candidates, out.scores);
+    mirror_->apply(*scorer_, out.analysis.candidates, out.model_features, out.scores);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));
   std::vector<CandidateKin> kin;

@@ -26,10 +26,11 @@ class BinnedForest {
   static bool supports(const BoostedModel& model);
   int row_size() const { return row_size_; }
 
-  /// H(x) of a row of row_size() values; thread-safe.
-  double score(const float* row) const;
+  /// H(x) of a row of row_size() values; thread-safe. With `rounds`: the first `rounds` weak classifiers'
+  /// sum alone (BoostedModel::score(features, rounds)).
+  double score(const float* row, std::size_t rounds = SIZE_MAX) const;
   /// H(x) of a row already binned (row_size() bins from bin_row with the model's scheme).
-  double score_bins(const std::uint8_t* bins) const;
+  double score_bins(const std::uint8_t* bins, std::size_t rounds = SIZE_MAX) const;
 
  private:
   struct Node {

@@ -29,7 +29,10 @@ class BoostedModel {
   static BoostedModel load(const std::string& path_or_name, const std::string& models_dir = "models");
 
   /// H(x) = sum of weak responses, one feature_spec().dimension()-value row.
-  double score(const float* features) const;
+  double score(const float* features) const { return score(features, weak_.size()); }
+  /// The sum of the first `rounds` weak responses (all of them when rounds >= their count), added in the
+  /// model's order from 0.0: bit for bit score() of a model of those weak classifiers alone.
+  double score(const float* features, std::size_t rounds) const;
   /// One score per row (rows x dimension CV_32F); throws Error on a wrong column count.
   std::vector<double> score(const cv::Mat1f& rows) const;
   /// P(person) of a score H(x).

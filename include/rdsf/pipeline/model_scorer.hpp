@@ -32,8 +32,15 @@ class ModelScorer {
   double score_features(const float* values) const {
     return binned_ ? forest_.score(values) : compact_.score(values);
   }
+  /// The first `rounds` weak classifiers' sum alone from the same values: bit for bit the score of a model
+  /// of those weak classifiers (BoostedModel::score(features, rounds)).
+  double score_features(const float* values, std::size_t rounds) const {
+    return binned_ ? forest_.score(values, rounds) : compact_.score(values, rounds);
+  }
   /// H(x) of every candidate's depth crop.
   std::vector<double> score(const std::vector<Candidate>& candidates) const;
+  /// The same, keeping each crop's features() values as a row of `crop_features` (what MirrorScoring reads).
+  std::vector<double> score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features) const;
   /// H(x) of the crop mirrored left to right: score(m) with m(x, y) = crop(W - 1 - x, y).
   double mirrored_score(const cv::Mat1w& crop_depth_mm) const;
   /// Mirror averaging (PipelineParams::mirror_average): (score(crop) + mirrored_score(crop)) / 2 per
@@ -41,8 +48,10 @@ class ModelScorer {
   void average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const;
   /// This scorer's model as a part of the model that gave `scores` (its first weak classifiers, the same
   /// feature spec): each candidate's part scored mirror-averaged instead of on the crop alone,
-  /// scores[i] += (mirrored_score(crop) - score(crop)) / 2 (PipelineParams::mirror_average_inherited).
-  void average_part_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const;
+  /// scores[i] += (mirrored_score(crop) - part_of_crop[i]) / 2 (PipelineParams::mirror_average_inherited),
+  /// part_of_crop[i] the part's score(crop), which the whole model's scoring of the crop gave already.
+  void average_part_with_mirror(const std::vector<Candidate>& candidates, const std::vector<double>& part_of_crop,
+                                std::vector<double>& scores) const;
 
  private:
   FeatureSubset subset_;
