@@ -7,6 +7,7 @@
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/candidates/foreground_candidates.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/frame_buffers.hpp"
 #include "rdsf/segmentation/local_background.hpp"
 
 namespace rdsf {
@@ -71,8 +72,11 @@ FrameAnalysis FrameAnalyser::analyse(const DepthFrame& frame, bool with_features
   const cv::Size crop(params_.features.window_width_px, params_.features.window_height_px);
   analysis.candidates = find_candidates(frame, analysis.segmentation, p.candidates, crop, colour);
   if (params_.background || p.local_front_reach_cm > 0) {
-    thread_local cv::Mat1w local_far_mm;  // this thread's buffer, filled anew for every frame
-    if (!params_.background) local_background(frame.depth_mm, frame.camera, p.local_front_reach_cm * 10.0, local_far_mm);
+    cv::Mat1w local_far_mm;
+    if (!params_.background) {
+      local_far_mm = frame_buffer(FrameBuffer::local_far, frame.depth_mm.size(), CV_16UC1);
+      local_background(frame.depth_mm, frame.camera, p.local_front_reach_cm * 10.0, local_far_mm);
+    }
     const cv::Mat1w& far_mm = params_.background ? params_.background->far_mm : local_far_mm;
     analysis.in_front = in_front_of(analysis.segmentation, frame.depth_mm, far_mm, params_.background_margins);
     add_foreground_candidates(frame, analysis.in_front, p.candidates, crop, colour, analysis.candidates);

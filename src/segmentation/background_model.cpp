@@ -10,6 +10,7 @@
 
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/core/frame_buffers.hpp"
 #include "rdsf/frame/camera_file.hpp"
 #include "rdsf/frame/depth_png.hpp"
 
@@ -154,7 +155,7 @@ Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& dept
   out.layers = segmentation.layers;
   out.seeds_mm = segmentation.seeds_mm;
   out.iterations = segmentation.iterations;
-  out.labels.create(segmentation.labels.size());
+  out.labels = frame_buffer(FrameBuffer::in_front_labels, segmentation.labels.size(), CV_8UC1);  // every pixel written
   const std::size_t count = out.layers.size() + 1;
   LayerSums sums(count);
   for (int r = 0; r < depth_mm.rows; ++r) {

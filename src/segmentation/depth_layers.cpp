@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "rdsf/core/frame_buffers.hpp"
 #include "rdsf/segmentation/depth_candidates.hpp"
 #include "rdsf/segmentation/layer_labels.hpp"
 
@@ -167,6 +168,7 @@ Segmentation kmeans_layers(const cv::Mat1w& depth_mm, const DepthHistogram& hist
     }
     start = end;
   }
+  result.labels = frame_buffer(FrameBuffer::segmentation_labels, depth_mm.size(), CV_8UC1);  // every pixel written
   label_by_layer_starts(depth_mm, starts, result.labels);
   return result;
 }
