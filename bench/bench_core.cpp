@@ -224,19 +224,32 @@ void BM_ScoreModelFeaturesOnly(benchmark::State& state) {
 BENCHMARK(BM_ScoreModelFeaturesOnly)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 // Mirror averaging (PipelineParams::mirror_average, the default): argument 0 scores a crop, 1 scores the
-// crop and its mirror (ModelScorer::mirrored_score) as the pipeline does: the price per candidate.
+// crop and its mirror as the pipeline does (ModelScorer::compute_with_mirror: the mirror's features from
+// the crop's regions, one pass), 2 the same by flipping the crop and computing its features again (the way
+// before 2026-12-07; the same bits): the price per candidate.
 void BM_ScoreWithMirror(benchmark::State& state) {
   const rdsf::ModelScorer scorer(random_model(rdsf::FeatureSpec{}, 100));
+  std::vector<float> crop_values(static_cast<std::size_t>(scorer.features().size())), mirror_values(crop_values.size());
+  cv::Mat1w flipped;
   std::size_t i = 0;
   for (auto _ : state) {
     const cv::Mat1w& crop = crops()[i++ % crops().size()];
-    double h = scorer.score(crop);
-    if (state.range(0) == 1) h = 0.5 * (h + scorer.mirrored_score(crop));
+    double h = 0.0;
+    if (state.range(0) == 0) {
+      h = scorer.score(crop);
+    } else if (state.range(0) == 1) {
+      scorer.compute_with_mirror(crop, crop_values.data(), mirror_values.data());
+      h = 0.5 * (scorer.score_features(crop_values.data()) + scorer.score_features(mirror_values.data()));
+    } else {
+      cv::flip(crop, flipped, 1);
+      h = 0.5 * (scorer.score(crop) + scorer.score(flipped));
+    }
     benchmark::DoNotOptimize(h);
   }
   per_candidate(state);
+  state.counters["mirrors_by_regions"] = scorer.mirrors_by_regions() ? 1 : 0;
 }
-BENCHMARK(BM_ScoreWithMirror)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScoreWithMirror)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 // A model adapted to a room (100 inherited rounds and 3 of its own): argument 0 scores its crop alone (as
 // before 2026-12-07), 1 as the pipeline does by default, its inherited rounds mirror-averaged
@@ -250,12 +263,13 @@ void BM_ScoreAdaptedModel(benchmark::State& state) {
   const rdsf::ModelScorer scorer(adapted);
   const rdsf::MirrorScoring mirror(adapted, params);
   std::vector<rdsf::Candidate> one(1);
-  cv::Mat1f crop_features;
+  cv::Mat1f crop_features, mirror_features;
   std::size_t i = 0;
   for (auto _ : state) {
     one[0].depth_crop = crops()[i++ % crops().size()];
-    std::vector<double> score = scorer.score(one, crop_features);
-    mirror.apply(scorer, one, crop_features, score);
+    std::vector<double> score =
+        mirror.reads_mirror() ? scorer.score(one, crop_features, mirror_features) : scorer.score(one);
+    mirror.apply(scorer, one, crop_features, mirror_features, score);
     benchmark::DoNotOptimize(score[0]);
   }
   per_candidate(state);

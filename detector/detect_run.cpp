@@ -245,9 +245,10 @@ class FrameHandler {
     for (std::size_t m = 0; m < models_.size(); ++m) {
       std::vector<double> scores = processed.scores;
       if (m != 0) {
-        cv::Mat1f crop_features;
-        scores = scorers_[m].score(found, crop_features);
-        mirrors_[m].apply(scorers_[m], found, crop_features, scores);
+        cv::Mat1f crop_features, mirror_features;
+        scores = mirrors_[m].reads_mirror() ? scorers_[m].score(found, crop_features, mirror_features)
+                                            : scorers_[m].score(found);
+        mirrors_[m].apply(scorers_[m], found, crop_features, mirror_features, scores);
       }
       EvaluatedFrame e{frame.name, frame.index, frame.camera, base};
       for (std::size_t i = 0; i < scores.size(); ++i) e.candidates[i].score = scores[i];

@@ -2,6 +2,7 @@
 // for bit, in both feature specs; models and sample sets say which spec they use, and mismatches are refused.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -185,7 +186,7 @@ TEST(SampleSetManifest, OldManifestsStillReadAndRectOnesRoundTrip) {
 }
 
 // Mirror averaging: mirrored_score is the score of the crop mirrored left to right, a crop that is its own
-// mirror scores the same both ways, and average_with_mirror gives the mean of the two.
+// mirror scores the same both ways, and MirrorScoring gives the mean of the two.
 TEST(ModelScorer, MirroredScoreIsTheScoreOfTheMirroredCropAndAveragingTakesTheMean) {
   const BoostedModel model = random_model(FeatureSpec{}, 100, 7);
   const ModelScorer scorer(model);
@@ -208,9 +209,39 @@ TEST(ModelScorer, MirroredScoreIsTheScoreOfTheMirroredCropAndAveragingTakesTheMe
   }
   EXPECT_GT(differ, 0);  // the mirror is another view: the averaging below is not the identity
   std::vector<double> averaged = scores;
-  scorer.average_with_mirror(candidates, averaged);
+  MirrorScoring(model, PipelineParams{}).apply(scorer, candidates, cv::Mat1f(), cv::Mat1f(), averaged);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     EXPECT_EQ(averaged[i], 0.5 * (scores[i] + scorer.mirrored_score(candidates[i].depth_crop)));
+  }
+}
+
+// The mirror's features read from the crop's own regions (both layouts at their defaults) are bit for bit
+// those of the flipped crop; a spec whose regions are not each other's mirror images flips instead.
+TEST(ModelScorer, TheMirrorsFeaturesFromTheCropsRegionsAreTheFlippedCropsBitForBit) {
+  const FeatureSpec odd = FeatureSpec::parse("rdsf-rect:stride=24,max=16");  // 8 px squares at x 0, 24, 48
+  for (const FeatureSpec& spec : {FeatureSpec{}, FeatureSpec::rect(), odd}) {
+    for (int rounds : {3, 100, 300}) {
+      const ModelScorer scorer(random_model(spec, rounds, 11u + static_cast<unsigned>(rounds)));
+      EXPECT_EQ(scorer.mirrors_by_regions(), spec.layout == FeatureSpec::Layout::Cells || spec == FeatureSpec::rect())
+          << spec.option_text();
+      std::vector<float> crop_values(static_cast<std::size_t>(scorer.features().size())),
+          mirror_values(crop_values.size()), flipped_values(crop_values.size()), plain(crop_values.size());
+      for (unsigned seed = 0; seed < 8; ++seed) {
+        cv::Mat1w crop = person_crop(seed);
+        crop(cv::Rect(40, 30, 12, 40)).setTo(2500 + 100 * static_cast<int>(seed));  // not its own mirror
+        if (seed % 3 == 0) crop(cv::Rect(0, 100, 20, 28)).setTo(9000);             // beyond the last bin
+        cv::Mat1w flipped;
+        cv::flip(crop, flipped, 1);
+        scorer.compute_with_mirror(crop, crop_values.data(), mirror_values.data());
+        scorer.features().compute(crop, plain.data());
+        scorer.features().compute(flipped, flipped_values.data());
+        for (std::size_t k = 0; k < plain.size(); ++k) {
+          ASSERT_EQ(std::memcmp(&crop_values[k], &plain[k], sizeof(float)), 0) << spec.option_text() << " k " << k;
+          ASSERT_EQ(std::memcmp(&mirror_values[k], &flipped_values[k], sizeof(float)), 0) << spec.option_text() << " k " << k;
+        }
+        EXPECT_EQ(scorer.mirrored_score(crop), scorer.score(flipped));
+      }
+    }
   }
 }
 
@@ -293,13 +324,15 @@ TEST(ModelScorer, AnAdaptedModelsInheritedRoundsAreMirrorAveragedItsOwnAreNot) {
     EXPECT_GT(differ, 0) << "full " << full;
     // The further models of rdsf-detect: the crops' features kept from their scoring, or computed anew.
     const MirrorScoring mirror(adapted, on);
-    cv::Mat1f kept;
-    std::vector<double> given = whole.score(a.analysis.candidates, kept), anew = whole.score(a.analysis.candidates);
-    mirror.apply(whole, a.analysis.candidates, kept, given);
-    mirror.apply(whole, a.analysis.candidates, cv::Mat1f(), anew);
+    ASSERT_TRUE(mirror.reads_mirror());
+    cv::Mat1f kept, kept_mirror;
+    std::vector<double> given = whole.score(a.analysis.candidates, kept, kept_mirror),
+                        anew = whole.score(a.analysis.candidates);
+    mirror.apply(whole, a.analysis.candidates, kept, kept_mirror, given);
+    mirror.apply(whole, a.analysis.candidates, cv::Mat1f(), cv::Mat1f(), anew);
     EXPECT_EQ(given, a.scores);
     EXPECT_EQ(anew, a.scores);
-    EXPECT_NE(error_of([&] { mirror.apply(whole, a.analysis.candidates, kept.rowRange(0, 1), given); })
+    EXPECT_NE(error_of([&] { mirror.apply(whole, a.analysis.candidates, kept, kept_mirror.rowRange(0, 1), given); })
                   .find("mirror scoring: 1 rows of"),
               std::string::npos);
   }

@@ -1,42 +1,49 @@
 #include "rdsf/pipeline/mirror_scoring.hpp"
 
+#include <string>
+
 #include "rdsf/core/error.hpp"
 #include "rdsf/pipeline/people_pipeline.hpp"
 
 namespace rdsf {
+namespace {
 
-MirrorScoring::MirrorScoring(const BoostedModel& model, const PipelineParams& params)
-    : whole_(params.mirror_average_for(model)) {
-  const std::size_t inherited = params.inherited_mirror_rounds_for(model);
-  if (inherited == 0) return;
-  inherited_rounds_ = inherited;
-  std::vector<WeakClassifier> weak(model.weak_classifiers().begin(),
-                                   model.weak_classifiers().begin() + static_cast<std::ptrdiff_t>(inherited));
-  inherited_.emplace(BoostedModel(model.feature_spec(), model.bins(), std::move(weak)));
+void check_rows(const cv::Mat1f& rows, const char* what, std::size_t candidates, int values) {
+  if (rows.empty() || (static_cast<std::size_t>(rows.rows) == candidates && rows.cols == values)) return;
+  throw Error(std::string("mirror scoring: ") + std::to_string(rows.rows) + " rows of " + std::to_string(rows.cols) +
+              " " + what + " features for " + std::to_string(candidates) + " candidates of a model reading " +
+              std::to_string(values));
 }
 
+}  // namespace
+
+MirrorScoring::MirrorScoring(const BoostedModel& model, const PipelineParams& params)
+    : whole_(params.mirror_average_for(model)), inherited_rounds_(params.inherited_mirror_rounds_for(model)) {}
+
 void MirrorScoring::apply(const ModelScorer& scorer, const std::vector<Candidate>& candidates,
-                          const cv::Mat1f& crop_features, std::vector<double>& scores) const {
-  if (whole_) scorer.average_with_mirror(candidates, scores);
-  if (!inherited_) return;
-  if (!crop_features.empty() && (static_cast<std::size_t>(crop_features.rows) != candidates.size() ||
-                                 crop_features.cols != scorer.features().size())) {
-    throw Error("mirror scoring: " + std::to_string(crop_features.rows) + " rows of " +
-                std::to_string(crop_features.cols) + " features for " + std::to_string(candidates.size()) +
-                " candidates of a model reading " + std::to_string(scorer.features().size()));
-  }
-  std::vector<double> part_of_crop(candidates.size());
-  std::vector<float> values(crop_features.empty() ? static_cast<std::size_t>(scorer.features().size()) : 0);
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const float* row = values.data();
-    if (crop_features.empty()) {
-      scorer.features().compute(candidates[i].depth_crop, values.data());
+                          const cv::Mat1f& crop_features, const cv::Mat1f& mirror_features,
+                          std::vector<double>& scores) const {
+  if (!reads_mirror()) return;
+  const int values = scorer.features().size();
+  check_rows(crop_features, "crop", candidates.size(), values);
+  check_rows(mirror_features, "mirror", candidates.size(), values);
+  const bool given = !crop_features.empty() && !mirror_features.empty();
+  std::vector<float> crop_row(given ? 0 : static_cast<std::size_t>(values)), mirror_row(crop_row.size());
+  for (std::size_t i = 0; i < candidates.size() && i < scores.size(); ++i) {
+    const float* crop = crop_row.data();
+    const float* mirror = mirror_row.data();
+    if (given) {
+      crop = crop_features[static_cast<int>(i)];
+      mirror = mirror_features[static_cast<int>(i)];
     } else {
-      row = crop_features[static_cast<int>(i)];
+      scorer.compute_with_mirror(candidates[i].depth_crop, crop_row.data(), mirror_row.data());
     }
-    part_of_crop[i] = scorer.score_features(row, inherited_rounds_);
+    if (whole_) {
+      scores[i] = 0.5 * (scores[i] + scorer.score_features(mirror));
+    } else {
+      scores[i] += 0.5 * (scorer.score_features(mirror, inherited_rounds_) - scorer.score_features(crop, inherited_rounds_));
+    }
   }
-  inherited_->average_part_with_mirror(candidates, part_of_crop, scores);
 }
 
 }  // namespace rdsf

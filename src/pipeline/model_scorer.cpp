@@ -1,5 +1,9 @@
 #include "rdsf/pipeline/model_scorer.hpp"
 
+#include <algorithm>
+#include <map>
+#include <tuple>
+
 #include "rdsf/classifier/features_read.hpp"
 
 namespace rdsf {
@@ -13,12 +17,44 @@ BoostedModel renumbered(const BoostedModel& model, const FeatureSubset& subset) 
   return compact;
 }
 
+// Per region of `spec`, the index of its mirror image (x -> W - x - width), or -1 when the spec has none.
+std::vector<int> mirror_regions(const FeatureSpec& spec) {
+  const std::vector<FeatureRegion> regions = spec.regions();
+  std::map<std::tuple<int, int, int, int>, int> index;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    index[{regions[r].x, regions[r].y, regions[r].width, regions[r].height}] = static_cast<int>(r);
+  }
+  std::vector<int> mirror;
+  for (const FeatureRegion& g : regions) {
+    const auto it = index.find({spec.window_width_px - g.x - g.width, g.y, g.width, g.height});
+    mirror.push_back(it == index.end() ? -1 : it->second);
+  }
+  return mirror;
+}
+
 }  // namespace
 
 ModelScorer::ModelScorer(const BoostedModel& model)
     : subset_(model.feature_spec(), features_read(model)), compact_(renumbered(model, subset_)) {
   binned_ = BinnedForest::supports(compact_);
   if (binned_) forest_ = BinnedForest(compact_, subset_.size());
+  const FeatureSpec& spec = subset_.spec();
+  const std::vector<int> mirror = mirror_regions(spec);
+  if (std::find(mirror.begin(), mirror.end(), -1) != mirror.end()) return;  // flipped instead
+  std::vector<int> mirrored, both = subset_.features();
+  for (const int f : subset_.features()) {
+    int i = 0, j = 0;
+    spec.pair_at(f, i, j);
+    const int mi = mirror[static_cast<std::size_t>(i)], mj = mirror[static_cast<std::size_t>(j)];
+    mirrored.push_back(spec.pair_index(std::min(mi, mj), std::max(mi, mj)));
+    both.push_back(mirrored.back());
+  }
+  auto with_mirror = std::make_shared<const FeatureSubset>(spec, both);
+  for (std::size_t k = 0; k < mirrored.size(); ++k) {
+    crop_at_.push_back(with_mirror->position(subset_.features()[k]));
+    mirror_at_.push_back(with_mirror->position(mirrored[k]));
+  }
+  with_mirror_ = std::move(with_mirror);
 }
 
 double ModelScorer::score(const cv::Mat1w& crop) const {
@@ -41,34 +77,42 @@ std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates)
   return out;
 }
 
-std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features) const {
+std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features,
+                                       cv::Mat1f& mirror_features) const {
   crop_features.create(static_cast<int>(candidates.size()), subset_.size());
+  mirror_features.create(crop_features.size());
   std::vector<double> out;
   out.reserve(candidates.size());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     float* row = crop_features[static_cast<int>(i)];
-    subset_.compute(candidates[i].depth_crop, row);
+    compute_with_mirror(candidates[i].depth_crop, row, mirror_features[static_cast<int>(i)]);
     out.push_back(score_features(row));
   }
   return out;
 }
 
 double ModelScorer::mirrored_score(const cv::Mat1w& crop) const {
-  thread_local cv::Mat1w mirrored;
-  cv::flip(crop, mirrored, 1);
-  return score(mirrored);
+  thread_local std::vector<float> crop_values, mirror_values;
+  crop_values.resize(static_cast<std::size_t>(subset_.size()));
+  mirror_values.resize(crop_values.size());
+  compute_with_mirror(crop, crop_values.data(), mirror_values.data());
+  return score_features(mirror_values.data());
 }
 
-void ModelScorer::average_part_with_mirror(const std::vector<Candidate>& candidates,
-                                           const std::vector<double>& part_of_crop, std::vector<double>& scores) const {
-  for (std::size_t i = 0; i < candidates.size() && i < scores.size() && i < part_of_crop.size(); ++i) {
-    scores[i] += 0.5 * (mirrored_score(candidates[i].depth_crop) - part_of_crop[i]);
+void ModelScorer::compute_with_mirror(const cv::Mat1w& crop, float* crop_values, float* mirror_values) const {
+  if (with_mirror_ == nullptr) {
+    thread_local cv::Mat1w mirrored;
+    subset_.compute(crop, crop_values);
+    cv::flip(crop, mirrored, 1);
+    subset_.compute(mirrored, mirror_values);
+    return;
   }
-}
-
-void ModelScorer::average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const {
-  for (std::size_t i = 0; i < candidates.size() && i < scores.size(); ++i) {
-    scores[i] = 0.5 * (scores[i] + mirrored_score(candidates[i].depth_crop));
+  thread_local std::vector<float> both;
+  both.resize(static_cast<std::size_t>(with_mirror_->size()));
+  with_mirror_->compute(crop, both.data());
+  for (std::size_t k = 0; k < crop_at_.size(); ++k) {
+    crop_values[k] = both[static_cast<std::size_t>(crop_at_[k])];
+    mirror_values[k] = both[static_cast<std::size_t>(mirror_at_[k])];
   }
 }
 

@@ -4,6 +4,14 @@
 // model's score of the full feature vector: same values, same weak classifiers in the same order (the
 // model is kept with its weak classifiers renumbered to positions in the subset). A model without stumps
 // is evaluated as a BinnedForest of that compact model (the same bits, classifier/binned_forest.hpp).
+//
+// The crop's mirror m(x, y) = crop(W - 1 - x, y) is read without flipping the crop when the spec's regions
+// are each other's mirror images (both known layouts at their defaults): a region's histogram does not depend
+// on where in the region a pixel lies, so the mirror's region r holds the crop's region mirror(r), and a
+// pair's coefficient is symmetric (bins where either root is 0 add exactly +0, products commute), so the
+// mirror's feature (i, j) is the crop's feature (mirror(i), mirror(j)). One pass over the crop for the
+// union of both features' regions gives both, bit for bit what the features of the flipped crop are.
+#include <memory>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -39,22 +47,24 @@ class ModelScorer {
   }
   /// H(x) of every candidate's depth crop.
   std::vector<double> score(const std::vector<Candidate>& candidates) const;
-  /// The same, keeping each crop's features() values as a row of `crop_features` (what MirrorScoring reads).
-  std::vector<double> score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features) const;
+  /// The same, keeping each crop's features() values and its mirror's as rows of `crop_features` and
+  /// `mirror_features` (compute_with_mirror; what MirrorScoring reads).
+  std::vector<double> score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features,
+                            cv::Mat1f& mirror_features) const;
   /// H(x) of the crop mirrored left to right: score(m) with m(x, y) = crop(W - 1 - x, y).
   double mirrored_score(const cv::Mat1w& crop_depth_mm) const;
-  /// Mirror averaging (PipelineParams::mirror_average): (score(crop) + mirrored_score(crop)) / 2 per
-  /// candidate, from `scores`, each candidate's score(crop) as computed before.
-  void average_with_mirror(const std::vector<Candidate>& candidates, std::vector<double>& scores) const;
-  /// This scorer's model as a part of the model that gave `scores` (its first weak classifiers, the same
-  /// feature spec): each candidate's part scored mirror-averaged instead of on the crop alone,
-  /// scores[i] += (mirrored_score(crop) - part_of_crop[i]) / 2 (PipelineParams::mirror_average_inherited),
-  /// part_of_crop[i] the part's score(crop), which the whole model's scoring of the crop gave already.
-  void average_part_with_mirror(const std::vector<Candidate>& candidates, const std::vector<double>& part_of_crop,
-                                std::vector<double>& scores) const;
+  /// The features() values of a crop and of its mirror (each features().size() values): from one pass over
+  /// the crop when the spec allows (the header comment), else the mirror flipped and computed; the same bits.
+  void compute_with_mirror(const cv::Mat1w& crop_depth_mm, float* crop_values, float* mirror_values) const;
+  /// True when compute_with_mirror() reads the mirror from the crop itself (false: it flips).
+  bool mirrors_by_regions() const { return with_mirror_ != nullptr; }
 
  private:
   FeatureSubset subset_;
+  /// The features() and their mirror images' counterparts (null when some region has no mirror image in the
+  /// spec), and per features() position the places of a crop's value and of its mirror's value in it.
+  std::shared_ptr<const FeatureSubset> with_mirror_;
+  std::vector<int> crop_at_, mirror_at_;
   BoostedModel compact_;  ///< the model reading positions in subset_ instead of feature indices
   bool binned_ = false;   ///< compact_ has no stumps: forest_ scores it
   BinnedForest forest_;   ///< compact_ on rows of subset_.size() bins
