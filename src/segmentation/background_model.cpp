@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -90,44 +89,18 @@ struct FrontRule {
   }
 };
 
-// The end of the run of label[c]'s value that starts at c: the first column after c of another value, or n.
-int run_end(const std::uint8_t* label, int c, int n) {
-  const std::uint8_t k = label[c];
-  int end = c + 1;
-#ifdef __SSE2__
-  const __m128i same = _mm_set1_epi8(static_cast<char>(k));
-  for (; end + 16 <= n; end += 16) {
-    const auto equal = static_cast<unsigned>(
-        _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(label + end)), same)));
-    if (equal != 0xffffu) return end + __builtin_ctz(~equal);
-  }
-#endif
-  while (end < n && label[end] == k) ++end;
-  return end;
-}
-
-// Adds pixels c..end-1 of one row, all of layer k, to k's count, sum, nearest and farthest (a loop the compiler
-// vectorises).
+// Each front layer's pixel count, depth sum, nearest and farthest depth, a front pixel at a time (about a tenth
+// of a frame's pixels are in front; the integer sums do not depend on the order).
 struct LayerSums {
   std::vector<std::uint64_t> sum;
   std::vector<std::int64_t> pixels;
   std::vector<std::uint16_t> nearest, farthest;
   explicit LayerSums(std::size_t count) : sum(count, 0), pixels(count, 0), nearest(count, 65535), farthest(count, 0) {}
-  void add(std::size_t k, const std::uint16_t* d, int c, int end) {
-    pixels[k] += end - c;
-    for (; c < end; c += 65536) {  // a 32-bit sum holds 65536 readings
-      const int stop = std::min(end, c + 65536);
-      std::uint32_t s = 0;
-      std::uint16_t lo = 65535, hi = 0;
-      for (int i = c; i < stop; ++i) {
-        s += d[i];
-        lo = std::min(lo, d[i]);
-        hi = std::max(hi, d[i]);
-      }
-      sum[k] += s;
-      nearest[k] = std::min(nearest[k], lo);
-      farthest[k] = std::max(farthest[k], hi);
-    }
+  void add(std::size_t k, std::uint16_t d) {
+    ++pixels[k];
+    sum[k] += d;
+    nearest[k] = std::min(nearest[k], d);
+    farthest[k] = std::max(farthest[k], d);
   }
 };
 
@@ -165,15 +138,32 @@ Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& dept
     std::uint8_t* label = out.labels.ptr<std::uint8_t>(r);
     rule.row(d, b, front.data(), cols);
     for (int c = 0; c < cols; ++c) label[c] = in[c] & front[c];
-    for (int c = 0; c < cols;) {  // by runs of one label: a person's or a piece of furniture's pixels in a row
-      const std::uint8_t k = label[c];  // 0: no reading or not in front (most of a row)
-      const int end = run_end(label, c, cols);
-      if (k >= count) {
-        std::memset(label + c, 0, static_cast<std::size_t>(end - c));
-      } else if (k != 0) {
-        sums.add(k, d, c, end);
+    int c = 0;
+#ifdef __SSE2__
+    const __m128i zero = _mm_setzero_si128();
+    for (; c + 16 <= cols; c += 16) {  // sixteen labels at a time: most are 0 (no reading or not in front)
+      auto set = ~static_cast<unsigned>(
+                     _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(label + c)), zero))) &
+                 0xffffu;
+      while (set != 0) {
+        const int x = c + __builtin_ctz(set);
+        set &= set - 1;
+        const std::uint8_t k = label[x];
+        if (k >= count) {
+          label[x] = 0;
+        } else {
+          sums.add(k, d[x]);
+        }
       }
-      c = end;
+    }
+#endif
+    for (; c < cols; ++c) {
+      const std::uint8_t k = label[c];
+      if (k >= count) {
+        label[c] = 0;
+      } else if (k != 0) {
+        sums.add(k, d[c]);
+      }
     }
   }
   for (DepthLayer& layer : out.layers) {
