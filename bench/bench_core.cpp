@@ -267,8 +267,8 @@ void BM_ScoreAdaptedModel(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     one[0].depth_crop = crops()[i++ % crops().size()];
-    std::vector<double> score =
-        mirror.reads_mirror() ? scorer.score(one, crop_features, mirror_features) : scorer.score(one);
+    scorer.compute(one, crop_features, mirror.reads_mirror() ? &mirror_features : nullptr);
+    std::vector<double> score = scorer.score_rows(crop_features);
     mirror.apply(scorer, one, crop_features, mirror_features, score);
     benchmark::DoNotOptimize(score[0]);
   }

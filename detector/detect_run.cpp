@@ -243,11 +243,13 @@ class FrameHandler {
                       o_.pipeline.suppress_duplicates ? kin_of(found[i]) : CandidateKin{}});
     }
     for (std::size_t m = 0; m < models_.size(); ++m) {
-      std::vector<double> scores = processed.scores;
-      if (m != 0) {
+      std::vector<double> scores;
+      if (m == 0) {
+        scores = processed.scores;
+      } else {  // as the pipeline scores its model
         cv::Mat1f crop_features, mirror_features;
-        scores = mirrors_[m].reads_mirror() ? scorers_[m].score(found, crop_features, mirror_features)
-                                            : scorers_[m].score(found);
+        scorers_[m].compute(found, crop_features, mirrors_[m].reads_mirror() ? &mirror_features : nullptr);
+        scores = scorers_[m].score_rows(crop_features);
         mirrors_[m].apply(scorers_[m], found, crop_features, mirror_features, scores);
       }
       EvaluatedFrame e{frame.name, frame.index, frame.camera, base};

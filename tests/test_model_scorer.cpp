@@ -326,8 +326,9 @@ TEST(ModelScorer, AnAdaptedModelsInheritedRoundsAreMirrorAveragedItsOwnAreNot) {
     const MirrorScoring mirror(adapted, on);
     ASSERT_TRUE(mirror.reads_mirror());
     cv::Mat1f kept, kept_mirror;
-    std::vector<double> given = whole.score(a.analysis.candidates, kept, kept_mirror),
-                        anew = whole.score(a.analysis.candidates);
+    whole.compute(a.analysis.candidates, kept, &kept_mirror);
+    std::vector<double> given = whole.score_rows(kept), anew = whole.score(a.analysis.candidates);
+    EXPECT_EQ(given, anew);  // the rows' scores are the crops'
     mirror.apply(whole, a.analysis.candidates, kept, kept_mirror, given);
     mirror.apply(whole, a.analysis.candidates, cv::Mat1f(), cv::Mat1f(), anew);
     EXPECT_EQ(given, a.scores);

@@ -6,7 +6,7 @@
 namespace rdsf {
 
 cv::Mat frame_buffer(FrameBuffer use, cv::Size size, int type) {
-  thread_local std::array<std::vector<cv::Mat>, 3> pools;
+  thread_local std::array<std::vector<cv::Mat>, static_cast<std::size_t>(FrameBuffer::last) + 1> pools;
   std::vector<cv::Mat>& pool = pools[static_cast<std::size_t>(use)];
   for (cv::Mat& kept : pool) {
     // 1: the pool's own reference alone. OpenCV changes the count atomically; read it so too.

@@ -49,12 +49,11 @@ ModelScorer::ModelScorer(const BoostedModel& model)
     mirrored.push_back(spec.pair_index(std::min(mi, mj), std::max(mi, mj)));
     both.push_back(mirrored.back());
   }
-  auto with_mirror = std::make_shared<const FeatureSubset>(spec, both);
+  with_mirror_.emplace(spec, both);
   for (std::size_t k = 0; k < mirrored.size(); ++k) {
-    crop_at_.push_back(with_mirror->position(subset_.features()[k]));
-    mirror_at_.push_back(with_mirror->position(mirrored[k]));
+    crop_at_.push_back(with_mirror_->position(subset_.features()[k]));
+    mirror_at_.push_back(with_mirror_->position(mirrored[k]));
   }
-  with_mirror_ = std::move(with_mirror);
 }
 
 double ModelScorer::score(const cv::Mat1w& crop) const {
@@ -77,17 +76,24 @@ std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates)
   return out;
 }
 
-std::vector<double> ModelScorer::score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features,
-                                       cv::Mat1f& mirror_features) const {
+void ModelScorer::compute(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features,
+                          cv::Mat1f* mirror_features) const {
   crop_features.create(static_cast<int>(candidates.size()), subset_.size());
-  mirror_features.create(crop_features.size());
-  std::vector<double> out;
-  out.reserve(candidates.size());
+  if (mirror_features != nullptr) mirror_features->create(crop_features.size());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    float* row = crop_features[static_cast<int>(i)];
-    compute_with_mirror(candidates[i].depth_crop, row, mirror_features[static_cast<int>(i)]);
-    out.push_back(score_features(row));
+    const int r = static_cast<int>(i);
+    if (mirror_features == nullptr) {
+      subset_.compute(candidates[i].depth_crop, crop_features[r]);
+    } else {
+      compute_with_mirror(candidates[i].depth_crop, crop_features[r], (*mirror_features)[r]);
+    }
   }
+}
+
+std::vector<double> ModelScorer::score_rows(const cv::Mat1f& rows) const {
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(rows.rows));
+  for (int r = 0; r < rows.rows; ++r) out.push_back(score_features(rows[r]));
   return out;
 }
 
@@ -100,7 +106,7 @@ double ModelScorer::mirrored_score(const cv::Mat1w& crop) const {
 }
 
 void ModelScorer::compute_with_mirror(const cv::Mat1w& crop, float* crop_values, float* mirror_values) const {
-  if (with_mirror_ == nullptr) {
+  if (!with_mirror_) {
     thread_local cv::Mat1w mirrored;
     subset_.compute(crop, crop_values);
     cv::flip(crop, mirrored, 1);

@@ -1,7 +1,6 @@
 #include "rdsf/pipeline/people_pipeline.hpp"
 
 #include <algorithm>
-
 #include <chrono>
 #include <cstdio>
 
@@ -89,23 +88,11 @@ PipelineFrame PeoplePipeline::analyse(const DepthFrame& frame) const {
     mirror_->apply(*scorer_, out.analysis.candidates, cv::Mat1f(), cv::Mat1f(), out.scores);
   } else {
     // The features the model reads, of each crop and (when the scores read it) of its mirror, in one pass.
-    const int values = scorer_->features().size();
-    out.model_features.create(static_cast<int>(n), values);
     cv::Mat1f mirror_features;
-    if (mirror_->reads_mirror()) mirror_features.create(static_cast<int>(n), values);
-    for (std::size_t i = 0; i < n; ++i) {
-      const cv::Mat1w& crop = out.analysis.candidates[i].depth_crop;
-      float* row = out.model_features[static_cast<int>(i)];
-      if (mirror_features.empty()) {
-        scorer_->features().compute(crop, row);
-      } else {
-        scorer_->compute_with_mirror(crop, row, mirror_features[static_cast<int>(i)]);
-      }
-    }
+    scorer_->compute(out.analysis.candidates, out.model_features, mirror_->reads_mirror() ? &mirror_features : nullptr);
     out.times.features_ms = milliseconds_since(start);
     start = std::chrono::steady_clock::now();
-    out.scores.resize(n);
-    for (std::size_t i = 0; i < n; ++i) out.scores[i] = scorer_->score_features(out.model_features[static_cast<int>(i)]);
+    out.scores = scorer_->score_rows(out.model_features);
     mirror_->apply(*scorer_, out.analysis.candidates, out.model_features, mirror_features, out.scores);
   }
   for (double h : out.scores) out.probabilities.push_back(model_->probability(h));

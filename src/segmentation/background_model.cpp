@@ -138,6 +138,14 @@ Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& dept
     std::uint8_t* label = out.labels.ptr<std::uint8_t>(r);
     rule.row(d, b, front.data(), cols);
     for (int c = 0; c < cols; ++c) label[c] = in[c] & front[c];
+    const auto take = [&](int x) {  // a front pixel's label: a layer's (summed) or beyond the layers (dropped)
+      const std::uint8_t k = label[x];
+      if (k >= count) {
+        label[x] = 0;
+      } else if (k != 0) {
+        sums.add(k, d[x]);
+      }
+    };
     int c = 0;
 #ifdef __SSE2__
     const __m128i zero = _mm_setzero_si128();
@@ -145,26 +153,10 @@ Segmentation in_front_of(const Segmentation& segmentation, const cv::Mat1w& dept
       auto set = ~static_cast<unsigned>(
                      _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(label + c)), zero))) &
                  0xffffu;
-      while (set != 0) {
-        const int x = c + __builtin_ctz(set);
-        set &= set - 1;
-        const std::uint8_t k = label[x];
-        if (k >= count) {
-          label[x] = 0;
-        } else {
-          sums.add(k, d[x]);
-        }
-      }
+      for (; set != 0; set &= set - 1) take(c + __builtin_ctz(set));
     }
 #endif
-    for (; c < cols; ++c) {
-      const std::uint8_t k = label[c];
-      if (k >= count) {
-        label[c] = 0;
-      } else if (k != 0) {
-        sums.add(k, d[c]);
-      }
-    }
+    for (; c < cols; ++c) take(c);
   }
   for (DepthLayer& layer : out.layers) {
     const auto k = static_cast<std::size_t>(layer.label);

@@ -13,7 +13,7 @@
 
 namespace rdsf {
 
-enum class FrameBuffer { segmentation_labels, in_front_labels, local_far };
+enum class FrameBuffer { segmentation_labels, in_front_labels, local_far, last = local_far };
 
 /// Buffers kept per use and thread; beyond them a busy pool hands out unpooled images.
 constexpr int kFrameBuffersPerUse = 4;

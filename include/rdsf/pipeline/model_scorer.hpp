@@ -11,7 +11,7 @@
 // pair's coefficient is symmetric (bins where either root is 0 add exactly +0, products commute), so the
 // mirror's feature (i, j) is the crop's feature (mirror(i), mirror(j)). One pass over the crop for the
 // union of both features' regions gives both, bit for bit what the features of the flipped crop are.
-#include <memory>
+#include <optional>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -47,23 +47,24 @@ class ModelScorer {
   }
   /// H(x) of every candidate's depth crop.
   std::vector<double> score(const std::vector<Candidate>& candidates) const;
-  /// The same, keeping each crop's features() values and its mirror's as rows of `crop_features` and
-  /// `mirror_features` (compute_with_mirror; what MirrorScoring reads).
-  std::vector<double> score(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features,
-                            cv::Mat1f& mirror_features) const;
+  /// Each candidate's features() values as a row of `crop_features` and, when `mirror_features` is given, its
+  /// mirror's as a row of that (compute_with_mirror: one pass); what score_rows and MirrorScoring read.
+  void compute(const std::vector<Candidate>& candidates, cv::Mat1f& crop_features, cv::Mat1f* mirror_features) const;
+  /// H(x) of each row of features() values.
+  std::vector<double> score_rows(const cv::Mat1f& rows) const;
   /// H(x) of the crop mirrored left to right: score(m) with m(x, y) = crop(W - 1 - x, y).
   double mirrored_score(const cv::Mat1w& crop_depth_mm) const;
   /// The features() values of a crop and of its mirror (each features().size() values): from one pass over
   /// the crop when the spec allows (the header comment), else the mirror flipped and computed; the same bits.
   void compute_with_mirror(const cv::Mat1w& crop_depth_mm, float* crop_values, float* mirror_values) const;
   /// True when compute_with_mirror() reads the mirror from the crop itself (false: it flips).
-  bool mirrors_by_regions() const { return with_mirror_ != nullptr; }
+  bool mirrors_by_regions() const { return with_mirror_.has_value(); }
 
  private:
   FeatureSubset subset_;
-  /// The features() and their mirror images' counterparts (null when some region has no mirror image in the
+  /// The features() and their mirror images' counterparts (none when some region has no mirror image in the
   /// spec), and per features() position the places of a crop's value and of its mirror's value in it.
-  std::shared_ptr<const FeatureSubset> with_mirror_;
+  std::optional<FeatureSubset> with_mirror_;
   std::vector<int> crop_at_, mirror_at_;
   BoostedModel compact_;  ///< the model reading positions in subset_ instead of feature indices
   bool binned_ = false;   ///< compact_ has no stumps: forest_ scores it
