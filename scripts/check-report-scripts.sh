@@ -99,7 +99,8 @@ rm -f "$empty/f.depth.png" "$empty/c.csv" "$empty/crops.png"
 expect 0 "--pcl-data GITDIR" /usr/bin/python3 scripts/public-frames.py --help
 expect 2 "required" /usr/bin/python3 scripts/public-frames.py "$empty/p"
 expect 1 "^public-frames.py: $empty/none: cannot read " \
-  /usr/bin/python3 scripts/public-frames.py "$empty/p" --pcl "$empty/none" --pcl-data "$empty/none" --open3d "$empty/none"
+  /usr/bin/python3 scripts/public-frames.py "$empty/p" --pcl "$empty/none" --pcl-data "$empty/none" --open3d "$empty/none" \
+    --tue "$empty/none"
 expect 0 "^b'abcabcabc'$" /usr/bin/python3 -c 'import importlib.util as u
 s = u.spec_from_file_location("pf", "scripts/public-frames.py"); m = u.module_from_spec(s); s.loader.exec_module(m)
 print(m.lzf_decompress(bytes([2, 97, 98, 99, 4 << 5, 2]), 9))'

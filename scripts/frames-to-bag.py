@@ -2,13 +2,19 @@
 """Writes a ROS 1 bag from a folder of depth PNGs (NAME.depth.png, 16-bit millimetres, 0 = no reading) and
 their colour frames (NAME.rgb.png, when present), as a depth camera driver would publish them.
 
-    scripts/frames-to-bag.py FOLDER OUT.bag [--fps 30] [--depth-encoding 16UC1|32FC1] [--layout ros|realsense]
+    scripts/frames-to-bag.py FOLDER OUT.bag [--fps 30] [--depth-encoding 16UC1|32FC1] [--layout ros|registered|realsense]
 
 Layout "ros" (the default; the topics of openni_launch / realsense2_camera):
   /camera/depth/image_raw    sensor_msgs/Image, 16UC1 millimetres (or 32FC1 metres, NaN = no reading)
   /camera/depth/camera_info  sensor_msgs/CameraInfo (K, P, size), one per depth frame, same stamp
   /camera/rgb/image_raw      sensor_msgs/Image rgb8 (or --colour-encoding bgr8), only for frames with colour
   /camera/rgb/camera_info    sensor_msgs/CameraInfo of the colour image (registered: the depth's model)
+Layout "registered" (depth registered to the colour camera, as a robot's recorder may keep it: a Toyota
+HSR's head camera in datasets/public/tue_hero):
+  /camera/depth_registered/image_raw  sensor_msgs/Image, as above, in the colour camera's optical frame
+  /camera/rgb/camera_info    sensor_msgs/CameraInfo, one per depth frame: the only one (none beside the depth)
+  /camera/rgb/image_raw      sensor_msgs/Image rgb8, only for frames with colour
+  (every header's frame_id is camera_rgb_optical_frame)
 Layout "realsense" (RealSense Viewer's .bag recordings, the part of their layout rdsf reads):
   /file_version                              std_msgs/UInt32 3
   /device_0/sensor_0/Depth_0/image/data      sensor_msgs/Image mono16 (librealsense's name for Z16) in depth units
@@ -50,6 +56,13 @@ LAYOUTS = {
         "colour": "/camera/rgb/image_raw",
         "colour_info": "/camera/rgb/camera_info",
         "frame_id": "camera_depth_optical_frame",
+    },
+    "registered": {
+        "depth": "/camera/depth_registered/image_raw",
+        "depth_info": "/camera/rgb/camera_info",
+        "colour": "/camera/rgb/image_raw",
+        "colour_info": None,
+        "frame_id": "camera_rgb_optical_frame",
     },
     "realsense": {
         "depth": "/device_0/sensor_0/Depth_0/image/data",
@@ -206,7 +219,7 @@ def main():
             encoding = "mono16" if args.layout == "realsense" else args.depth_encoding
             bag.write(layout["depth"], image_message(header, depth_array(depth_mm, args.depth_encoding, unit_mm),
                                                      encoding), stamp)
-            if not args.no_camera_info and (args.layout == "ros" or index == 0):
+            if not args.no_camera_info and (args.layout != "realsense" or index == 0):
                 bag.write(layout["depth_info"], camera_info(header, width, height, model), stamp)
             colour_path = os.path.join(args.folder, name + COLOUR_SUFFIX)
             if args.no_colour or not os.path.exists(colour_path):
@@ -221,7 +234,7 @@ def main():
             colour_header = rospy.Header(seq=index, stamp=colour_stamp, frame_id=layout["frame_id"])
             colour = rgb if args.colour_encoding == "rgb8" else rgb[:, :, ::-1]
             bag.write(layout["colour"], image_message(colour_header, colour, args.colour_encoding), colour_stamp)
-            if not args.no_camera_info and (args.layout == "ros" or colour_frames == 0):
+            if layout["colour_info"] and not args.no_camera_info and (args.layout == "ros" or colour_frames == 0):
                 bag.write(layout["colour_info"], camera_info(colour_header, width, height, model), colour_stamp)
             colour_frames += 1
     except BaseException:

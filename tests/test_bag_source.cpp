@@ -177,6 +177,60 @@ TEST(BagSource, WithoutCameraInfoTheGivenModelIsUsedAndSaidSo) {
   EXPECT_EQ(frame.camera.fx_px, 600);
 }
 
+// Depth registered to the colour camera with only the colour camera's CameraInfo recorded (none beside the
+// depth topic): the CameraInfo in the depth images' optical frame is theirs. Two CameraInfo topics in that
+// frame and none beside the depth: neither is guessed, and the description says why.
+TEST(BagSource, TheCameraInfoOfTheDepthImagesOpticalFrameIsTheirsWhenNoneIsBesideThem) {
+  REQUIRE_BAG_WRITER();
+  test::TempDir dir("rdsf-bag");
+  const std::string bag = write_bag(dir, "registered.bag", "--layout registered --count 2 --fx 537 --fy 538 --cx 321 --cy 228");
+  auto source = open_frame_source(bag);
+  const std::string text = source->description();
+  EXPECT_NE(text.find("depth /camera/depth_registered/image_raw"), std::string::npos) << text;
+  EXPECT_NE(text.find("camera model from /camera/rgb/camera_info (the depth images' optical frame "
+                      "camera_rgb_optical_frame)"), std::string::npos) << text;
+  DepthFrame frame;
+  ASSERT_TRUE(source->next(frame));
+  EXPECT_EQ(frame.camera.fx_px, 537);
+  EXPECT_EQ(frame.camera.fy_px, 538);
+  EXPECT_EQ(frame.camera.cx_px, 321);
+  EXPECT_EQ(frame.camera.cy_px, 228);
+
+  // Both the depth's and the colour's CameraInfo in one frame, the depth images moved to a topic of their own.
+  const std::string moved = write_bag(dir, "moved.bag", "--count 2 --fx 600 --depth-topic /other/depth/image_raw");
+  auto ambiguous = open_frame_source(moved);
+  EXPECT_NE(ambiguous->description().find("2 CameraInfo topics in the depth images' frame camera_depth_optical_frame, "
+                                          "none beside them: the given camera model is used"),
+            std::string::npos) << ambiguous->description();
+  ASSERT_TRUE(ambiguous->next(frame));
+  EXPECT_EQ(frame.camera.fx_px, 525);
+}
+
+// A bag nobody here wrote: a Toyota HSR robot's head camera (datasets/public/tue_hero/hall_1.bag, from
+// tue-robotics/people_recognition's test data): 32FC1 depth registered to colour on
+// /hero/head_rgbd_sensor/depth_registered/image, the colour camera's CameraInfo only (same optical frame), the
+// colour image stamped 209 ms after the depth. Read as its PNG conversion (scripts/public-frames.py, which
+// converts as the bag source does): the same millimetres, the CameraInfo's model (camera.yml), and the colour
+// left unpaired (more than 100 ms away) and said so.
+TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
+  const fs::path folder = fs::path(RDSF_SOURCE_DIR) / "datasets" / "public" / "tue_hero";
+  auto source = open_frame_source((folder / "hall_1.bag").string());
+  const std::string text = source->description();
+  EXPECT_NE(text.find("depth /hero/head_rgbd_sensor/depth_registered/image (32FC1, 1 frames)"), std::string::npos) << text;
+  EXPECT_NE(text.find("camera model from /hero/head_rgbd_sensor/rgb/camera_info (the depth images' optical frame "
+                      "head_rgbd_sensor_rgb_frame)"), std::string::npos) << text;
+  const std::vector<DepthFrame> bag = all_frames(*source);
+  auto png_source = open_frame_source((folder / "hall_1.depth.png").string());
+  const std::vector<DepthFrame> png = all_frames(*png_source);
+  ASSERT_EQ(bag.size(), 1u);
+  ASSERT_EQ(png.size(), 1u);
+  EXPECT_TRUE(same_pixels(bag[0].depth_mm, png[0].depth_mm));
+  EXPECT_EQ(bag[0].camera, png[0].camera) << bag[0].camera.describe() << " / " << png[0].camera.describe();
+  EXPECT_DOUBLE_EQ(bag[0].camera.fx_px, 537.0318294935739);
+  EXPECT_TRUE(bag[0].bgr.empty());
+  EXPECT_NE(source->summary().find("paired with 0 of 1 depth frames"), std::string::npos) << source->summary();
+}
+
 // Bad input: one line naming the file, the topic and the problem.
 TEST(BagSource, BadBagsAreOneLineErrorsNamingFileTopicAndProblem) {
   REQUIRE_BAG_WRITER();

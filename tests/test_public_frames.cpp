@@ -59,8 +59,9 @@ TEST(PublicFrames, EveryFolderRecordsItsSourceCommitAndLicence) {
   }
 }
 
-// Every frame reads as millimetres: mostly valid pixels, a median reading between 0.3 and 10 m (a frame
-// left in TUM's 5000-per-metre units would have a median beyond 10 m for a room 2 m deep).
+// Every frame reads as millimetres: at least a quarter of the pixels with a reading (tue_hero's high hall,
+// whose far end and shiny floor give none, has a third; the rooms 0.5 or more), a median reading between 0.3
+// and 10 m (a frame left in TUM's 5000-per-metre units would have a median beyond 10 m for a room 2 m deep).
 TEST(PublicFrames, FramesReadAsMillimetreDepth) {
   int frames = 0;
   for (const auto& folder : source_folders()) {
@@ -77,7 +78,7 @@ TEST(PublicFrames, FramesReadAsMillimetreDepth) {
       for (int y = 0; y < frame.depth_mm.rows; ++y)
         for (int x = 0; x < frame.depth_mm.cols; ++x)
           if (frame.depth_mm(y, x) > 0) valid.push_back(frame.depth_mm(y, x));
-      ASSERT_GE(valid.size(), frame.depth_mm.total() / 2) << "fewer than half the pixels have a reading";
+      ASSERT_GE(valid.size(), frame.depth_mm.total() / 4) << "fewer than a quarter of the pixels have a reading";
       std::nth_element(valid.begin(), valid.begin() + valid.size() / 2, valid.end());
       const std::uint16_t median_mm = valid[valid.size() / 2];
       EXPECT_GE(median_mm, 300);
@@ -128,6 +129,30 @@ TEST(PublicFrames, DefaultModelFindsTheFivePeopleInTheCorridor) {
       truth, all);
   std::cout << "  " << found.n_det << " of " << found.n_people << " people found, " << found.n_fp
             << " other detections\n";
+  EXPECT_EQ(found.n_det, 5);
+  EXPECT_EQ(found.n_fp, 0);
+}
+
+// tue_hero: a Toyota HSR robot's head camera in a RoboCup venue hall (five frames of ROS 1 bags, an Xtion-class
+// sensor, camera.yml from its CameraInfo): one man standing 1.7-2.0 m away in every frame, counted, and three
+// people seated in a row by the left border, mostly hidden, "don't care" (visible < 0.5: rdsf-detect's
+// default). Measured: people/v4 at its operating point finds the man in all 5 frames and nothing else that
+// counts (its other detections, in three frames, are on the seated people at 4.9 m behind a chair); so did
+// people/v3, v2 and v1; PCL's peer found none of the 5 (docs/quality.md, "Public real frames"). No model or
+// option was chosen on these frames: the fourth real source, unseen.
+TEST(PublicFrames, DefaultModelFindsTheStandingManInTheHall) {
+  const std::filesystem::path folder = kPublicFrames / "tue_hero";
+  GroundTruth truth = read_ground_truth((folder / "boxes.csv").string());
+  EXPECT_EQ(ignore_hardly_visible(truth, 0.5), 15u);
+  ASSERT_EQ(truth.people(), 20u);
+  const double all = -std::numeric_limits<double>::infinity();  // every detection counts
+  const std::vector<FrameCandidates> detections =
+      test::detections_of(resolve_model("people", (kPublicFrames / "no-models-here").string()), folder.string());
+  ASSERT_EQ(detections.size(), 5u);
+  const DetectionFigures found = detection_figures(detections, truth, all);
+  std::cout << "  " << found.n_det << " of " << found.n_people << " counted people found, " << found.n_fp
+            << " other detections\n";
+  EXPECT_EQ(found.n_people, 5);
   EXPECT_EQ(found.n_det, 5);
   EXPECT_EQ(found.n_fp, 0);
 }

@@ -1,5 +1,5 @@
 """What the Python helpers of scripts/ share about frames and boxes: one reader of depth PNGs (files or
-bytes), one synced writer of PNGs (and of text), one IoU.
+bytes), one synced writer of PNGs (and of text and bytes), one IoU.
 
 Uses Debian's python3-numpy and python3-png (scripts/setup.sh installs them).
 """
@@ -48,6 +48,11 @@ def write_png(path, image):
 def write_text(path, text):
     """`text` to `path` through a temporary name, synced and renamed."""
     _write_synced(path, lambda out: out.write(text.encode()))
+
+
+def write_bytes(path, data):
+    """`data` to `path` through a temporary name, synced and renamed."""
+    _write_synced(path, lambda out: out.write(data))
 
 
 def _write_synced(path, write):

@@ -52,7 +52,8 @@ std::int64_t stamp_us(const ros::Time& stamp) {
 
 struct TopicInfo {
   std::string name, datatype, encoding;  // encoding of the first image (Image topics)
-  int width = 0, height = 0;
+  std::string frame_id;                  // the first message's header.frame_id (Image and CameraInfo topics)
+  int width = 0, height = 0;  // the first image's, or the first CameraInfo's
 };
 
 }  // namespace
@@ -85,16 +86,22 @@ struct BagSource::Impl {
     for (const rosbag::ConnectionInfo* c : all.getConnections()) {
       if (std::find(seen.begin(), seen.end(), c->topic) != seen.end()) continue;
       seen.push_back(c->topic);
-      TopicInfo t{c->topic, c->datatype, "", 0, 0};
-      if (c->datatype == "sensor_msgs/Image") {
-        rosbag::View one(bag, rosbag::TopicQuery(c->topic));
-        if (one.begin() != one.end()) {
-          ImagePtr image = one.begin()->instantiate<sensor_msgs::Image>();
-          if (image) {
-            t.encoding = image->encoding;
-            t.width = static_cast<int>(image->width);
-            t.height = static_cast<int>(image->height);
-          }
+      TopicInfo t{c->topic, c->datatype, "", "", 0, 0};
+      rosbag::View one(bag, rosbag::TopicQuery(c->topic));
+      if (c->datatype == "sensor_msgs/Image" && one.begin() != one.end()) {
+        ImagePtr image = one.begin()->instantiate<sensor_msgs::Image>();
+        if (image) {
+          t.encoding = image->encoding;
+          t.frame_id = image->header.frame_id;
+          t.width = static_cast<int>(image->width);
+          t.height = static_cast<int>(image->height);
+        }
+      } else if (c->datatype == "sensor_msgs/CameraInfo" && one.begin() != one.end()) {
+        auto info = one.begin()->instantiate<sensor_msgs::CameraInfo>();
+        if (info) {
+          t.frame_id = info->header.frame_id;
+          t.width = static_cast<int>(info->width);
+          t.height = static_cast<int>(info->height);
         }
       }
       topics.push_back(t);
@@ -196,12 +203,35 @@ struct BagSource::Impl {
     unit_note = note.str();
   }
 
+  /// The CameraInfo topics to read the depth images' camera from, in order: beside them (TOPIC's folder +
+  /// "/camera_info", or the RealSense layout's ".../info/camera_info"); else the bag's one CameraInfo topic
+  /// in the depth images' optical frame (the same non-empty header.frame_id): a depth image registered to a
+  /// colour camera ("depth_registered") has that camera's intrinsics, and a recorder may have kept only the
+  /// colour camera's CameraInfo (a Toyota HSR's head camera: datasets/public/tue_hero). Its size must be
+  /// the images' (or unstated).
+  std::vector<std::string> camera_info_topics(int width, int height) {
+    std::vector<std::string> out = {parent_of(depth_topic) + "/camera_info",
+                                    parent_of(parent_of(depth_topic)) + "/info/camera_info"};
+    const std::string& frame = find(depth_topic)->frame_id;
+    if (frame.empty() || find(out[0]) != nullptr || find(out[1]) != nullptr) return out;
+    std::vector<std::string> same_frame;
+    for (const TopicInfo& t : topics) {
+      const bool same_size = (t.width == width && t.height == height) || (t.width == 0 && t.height == 0);
+      if (t.datatype == "sensor_msgs/CameraInfo" && t.frame_id == frame && same_size) same_frame.push_back(t.name);
+    }
+    if (same_frame.size() == 1) out.push_back(same_frame.front());
+    if (same_frame.size() > 1) {
+      camera_note = std::to_string(same_frame.size()) + " CameraInfo topics in the depth images' frame " + frame +
+                    ", none beside them";
+    }
+    return out;
+  }
+
   void read_camera_info(int width, int height) {
     const CameraModel fallback = options.camera.width_px == width && options.camera.height_px == height
                                      ? options.camera
                                      : options.camera.scaled_to(width, height);
-    const std::string candidates[] = {parent_of(depth_topic) + "/camera_info",
-                                      parent_of(parent_of(depth_topic)) + "/info/camera_info"};
+    const std::vector<std::string> candidates = camera_info_topics(width, height);
     for (const std::string& topic : candidates) {
       const TopicInfo* t = find(topic);
       if (t == nullptr || t->datatype != "sensor_msgs/CameraInfo") continue;
@@ -230,6 +260,9 @@ struct BagSource::Impl {
         camera_note = "camera model given (" + topic + " not used)";
       } else {
         camera_note = "camera model from " + topic;
+        if (topic == candidates.back() && candidates.size() > 2) {
+          camera_note += " (the depth images' optical frame " + find(depth_topic)->frame_id + ")";
+        }
       }
       return;
     }

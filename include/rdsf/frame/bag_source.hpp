@@ -19,8 +19,10 @@
 // (else no colour); DepthFrame::colour_gap_us = |colour stamp - depth stamp|, summary() their mean and
 // maximum. A colour image must be of the depth's size (registered pixel for pixel).
 // Camera model: the first sensor_msgs/CameraInfo of the depth topic's camera (TOPIC's folder +
-// "/camera_info", as ROS drivers publish it, or the RealSense layout's ".../Depth_0/info/camera_info"):
-// fx = K[0], cx = K[2], fy = K[4], cy = K[5], its width and height. A given model
+// "/camera_info", as ROS drivers publish it, or the RealSense layout's ".../Depth_0/info/camera_info"; when
+// neither is in the bag, the one CameraInfo topic in the depth images' optical frame, i.e. with their
+// header.frame_id and size: depth registered to a colour camera has that camera's intrinsics, and a robot's
+// recorder may keep only its CameraInfo): fx = K[0], cx = K[2], fy = K[4], cy = K[5]. A given model
 // (FrameSourceOptions::camera_given) wins; without a CameraInfo (or with K all zero) frames carry the
 // fallback model, and description() says so once.
 // Bad input (not a bag, truncated or unindexed, no such topic, wrong encoding, a message shorter than its
