@@ -30,11 +30,13 @@ void expect_error(F body, const std::vector<std::string>& parts) {
   }
 }
 
-void drain(const std::string& spec) {
+/// Reads every frame of `spec`; returns how many.
+int drain(const std::string& spec) {
   auto source = open_frame_source(spec);
   DepthFrame frame;
-  while (source->next(frame)) {
-  }
+  int frames = 0;
+  while (source->next(frame)) ++frames;
+  return frames;
 }
 
 }  // namespace
@@ -89,6 +91,18 @@ TEST(FrameSourceErrors, MissingPath) {
 TEST(FrameSourceErrors, EmptyFolder) {
   test::TempDir dir;
   expect_error([&] { open_frame_source(dir.path().string()); }, {dir.path().string(), "no *.depth.png"});
+}
+
+// Another dataset's layout (depth/000001.png, ...): the error says how to read it, and a list file does.
+TEST(FrameSourceErrors, FolderOfOtherPngsSaysHowToReadThem) {
+  test::TempDir dir;
+  cv::imwrite(dir / "000001.png", cv::Mat1w(48, 64, std::uint16_t{1500}));
+  cv::imwrite(dir / "000002.png", cv::Mat1w(48, 64, std::uint16_t{1500}));
+  expect_error([&] { open_frame_source(dir.path().string()); },
+               {dir.path().string(), "no *.depth.png frames (its 2 other PNG files are not taken for depth",
+                "ls " + dir.path().string() + "/*.png > frames.txt"});
+  std::ofstream(dir / "frames.txt") << "000001.png\n000002.png\n";
+  EXPECT_EQ(drain(dir / "frames.txt"), 2);
 }
 
 TEST(FrameSourceErrors, EightBitImageAsDepth) {

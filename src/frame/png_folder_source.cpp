@@ -29,13 +29,23 @@ std::string trim(const std::string& text) {
 
 std::vector<std::string> list_folder(const std::string& folder) {
   std::vector<std::string> paths;
+  std::size_t other_pngs = 0;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (ends_with(name, kDepthSuffix)) paths.push_back(entry.path().string());
+    if (ends_with(name, kDepthSuffix)) {
+      paths.push_back(entry.path().string());
+    } else if (ends_with(name, ".png")) {
+      ++other_pngs;
+    }
   }
   if (ec) fail(folder, "cannot list folder: " + ec.message());
   std::sort(paths.begin(), paths.end());
+  if (paths.empty() && other_pngs > 0) {  // another dataset's layout (depth/000001.png ...): say how to read it
+    fail(folder, "folder holds no *" + kDepthSuffix + " frames (its " + std::to_string(other_pngs) +
+                     " other PNG files are not taken for depth: give a list file of the depth images, one path a "
+                     "line, e.g. ls " + folder + "/*.png > frames.txt)");
+  }
   if (paths.empty()) fail(folder, "folder holds no *" + kDepthSuffix + " frames");
   return paths;
 }
