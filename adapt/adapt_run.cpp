@@ -20,6 +20,7 @@
 #include "rdsf/core/error.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/camera_file.hpp"
+#include "rdsf/frame/depth_units.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
@@ -82,13 +83,8 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
     bool first = true;
     while (frames->next(frame)) {
       if (first) {
-        std::vector<std::uint16_t> valid;
-        for (auto it = frame.depth_mm.begin(); it != frame.depth_mm.end(); ++it) {
-          if (*it > 0) valid.push_back(*it);
-        }
-        std::nth_element(valid.begin(), valid.begin() + static_cast<long>(valid.size() / 2), valid.end());
-        const int median = valid.empty() ? 0 : valid[valid.size() / 2];
-        if (median < 300 || median > 12000) {
+        const int median = median_reading_mm(frame.depth_mm);
+        if (median < kMinMedianReadingMm || median > kMaxMedianReadingMm) {
           fail(spec, "depth values (median " + std::to_string(median) + ") are not millimetres of a Kinect-class camera "
                      "like the crops of " + model_reference(model));
         }

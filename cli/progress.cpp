@@ -29,6 +29,12 @@ void Progress::update(std::int64_t done, const std::string& extra) {
 
 void Progress::finish(std::int64_t done, const std::string& extra) { draw(done, extra, true); }
 
+void Progress::note(const std::string& line) {
+  out_ << (terminal_ && drawn_ ? "\r\033[K" : "") << line << "\n";
+  out_.flush();
+  drawn_ = false;  // the next update draws the progress line again at once
+}
+
 void Progress::draw(std::int64_t done, const std::string& extra, bool final) {
   drawn_ = true;
   const double elapsed = elapsed_s();

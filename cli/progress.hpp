@@ -17,6 +17,8 @@ class Progress {
   void update(std::int64_t done, const std::string& extra = {});
   /// Prints the final line (always) and ends it with a newline.
   void finish(std::int64_t done, const std::string& extra = {});
+  /// Prints `line` on a line of its own (above the progress line on a terminal, redrawn at the next update).
+  void note(const std::string& line);
   double elapsed_s() const;
 
  private:

@@ -25,6 +25,7 @@
 #include "rdsf/evaluation/threshold_sweep.hpp"
 #include "rdsf/candidates/candidate_finder.hpp"
 #include "rdsf/frame/depth_png.hpp"
+#include "rdsf/frame/depth_units.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "gui/display.hpp"
 #include "rdsf/pipeline/live_pipeline.hpp"
@@ -211,6 +212,11 @@ class FrameHandler {
       outcomes.push_back({processed.scores[i], processed.person[i], person != nullptr ? person->distance_cm : 0.0});
       detections += processed.person[i] != 0 ? 1 : 0;
     }
+    if (!units_checked_ && cv::countNonZero(frame.depth_mm) > 0) {  // once, on the first frame with readings
+      units_checked_ = true;
+      const std::string note = depth_units_note(frame.depth_mm);
+      if (!note.empty()) progress_.note("rdsf-detect: warning: frame " + frame.name + ": " + note);
+    }
     if (csv_) csv_->write_frame(frame.name, found, outcomes);
     if (!o_.truth_csv.empty()) keep_for_evaluation(frame, processed);
     const bool go_on = picture(frame, processed);
@@ -282,6 +288,7 @@ class FrameHandler {
   std::vector<ModelScorer> scorers_;
   std::vector<MirrorScoring> mirrors_;  ///< per model, as the pipeline turns its crop scores into scores
   cli::Progress progress_;
+  bool units_checked_ = false;  ///< depth_units_note() was asked (of the first frame with readings)
 };
 
 /// Runs every frame through the pipeline (live or in frame order) into the handler; the wall time in s.

@@ -65,6 +65,41 @@ TEST(DetectProgram, WritesCsvAndPictures) {
   EXPECT_EQ(count_lines(test::file_text(dir / "all.csv")), 1 + 3);
 }
 
+// Depth that does not look like millimetres (TUM RGB-D's 5000 units a metre: the scene five times too far)
+// gets one warning naming the frame, the median and camera.yml's depth_unit_mm; the run goes on. The scene
+// in millimetres, and the same five-times values with a camera.yml stating depth_unit_mm 0.2, get none.
+TEST(DetectProgram, DepthThatIsNotMillimetresIsWarnedAboutOnce) {
+  test::TempDir dir;
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  const cv::Mat1w tum = frame.depth_mm * 5;
+  write_png_atomically(dir / "a.depth.png", tum);
+  write_png_atomically(dir / "b.depth.png", tum);
+  const std::string warning = "rdsf-detect: warning: frame a: the median reading is 20000 mm, beyond a "
+                              "Kinect-class camera's range: if the depth is not in millimetres, state its unit "
+                              "in a camera.yml beside the frames (depth_unit_mm: 0.2";
+  const test::RunResult r = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
+                                      test::quote(dir / "out.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find(warning), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("warning: frame b"), std::string::npos) << "warned twice: " << r.err;
+
+  std::ofstream(dir / "camera.yml") << "%YAML:1.0\n---\nformat: rdsf-camera\nformat_version: 1\nwidth_px: 640\n"
+                                       "height_px: 480\nfx_px: 525\nfy_px: 525\ncx_px: 319.5\ncy_px: 239.5\n"
+                                       "depth_unit_mm: 0.2\n";
+  const test::RunResult stated = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --out " +
+                                           test::quote(dir / "stated.csv"));
+  ASSERT_EQ(stated.exit_code, 0) << stated.err;
+  EXPECT_EQ(stated.err.find("warning"), std::string::npos) << stated.err;
+
+  test::TempDir mm;
+  write_scene(mm);
+  const test::RunResult plain = test::run(detect() + " --source " + test::quote(mm.path().string()) + " --out " +
+                                          test::quote(mm / "out.csv"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("warning"), std::string::npos) << plain.err;
+}
+
 // The camera options (cli::CameraOptions) reach the frame analyser: a calibration that makes the Kinect v1's
 // model (a 640 x 480 cm surface filling the image at 5.25 m: fx = fy = 525) changes nothing, one that doubles
 // the focal length (320 x 240 cm) makes the same candidates as --fx 1050 --fy 1050 and not the default's (the

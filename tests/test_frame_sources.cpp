@@ -6,6 +6,7 @@
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/depth_png.hpp"
+#include "rdsf/frame/depth_units.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_folder_source.hpp"
 #include "rdsf/version.hpp"
@@ -168,3 +169,24 @@ TEST(OpenNISource, NoDeviceAttached) {
   expect_error([] { open_frame_source("openni"); }, {"OpenNI2 device", "no device attached"});
 }
 #endif
+
+// The median of the nonzero readings, and the note for medians outside a Kinect-class camera's range.
+TEST(DepthUnits, MedianOfTheReadingsAndANoteOutsideTheRange) {
+  cv::Mat1w depth(4, 4, std::uint16_t{0});
+  EXPECT_EQ(median_reading_mm(depth), 0);
+  EXPECT_EQ(depth_units_note(depth), "");  // no reading: nothing to say
+  depth(0, 0) = 1000;
+  depth(0, 1) = 2000;
+  depth(0, 2) = 3000;
+  EXPECT_EQ(median_reading_mm(depth), 2000);  // the zeros do not count
+  EXPECT_EQ(depth_units_note(depth), "");
+  depth.setTo(kMaxMedianReadingMm);
+  EXPECT_EQ(depth_units_note(depth), "");  // the range's ends are inside
+  depth.setTo(kMinMedianReadingMm);
+  EXPECT_EQ(depth_units_note(depth), "");
+  depth.setTo(kMaxMedianReadingMm + 1);
+  EXPECT_NE(depth_units_note(depth).find("median reading is 12001 mm, beyond"), std::string::npos);
+  depth.setTo(150);
+  EXPECT_NE(depth_units_note(depth).find("median reading is 150 mm, below"), std::string::npos);
+  EXPECT_NE(depth_units_note(depth).find("depth_unit_mm: 10 for centimetres"), std::string::npos);
+}
