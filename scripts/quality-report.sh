@@ -17,7 +17,8 @@
 #      installed here, CI does not need it) on the real frames with colour, beside the shipped models on the
 #      same frames (whole runs and --only shipped; --no-peer skips it)
 # Real frames are reported per source (the frames' name prefixes: lab_ = UC3M lab, lab_height included, and
-# home_ = UC3M home; docs/quality.md, "Per source") and pooled.
+# home_ = UC3M home; docs/quality.md, "Per source") and pooled, and so are the labelled public sources of
+# datasets/public (a corridor, a hall), which are in the repository and need no ../shared.
 # Each evaluation prints one row per model: TAR at FPPF <= 0.1 and <= 0.5 (exact curve), best MOTA,
 # candidate recall, the classifier's AUC on the candidates, and the gap between the TAR the model file's
 # validation predicts at its operating point (P >= 0.5 unless the model states one) and the TAR measured on
@@ -115,11 +116,15 @@ fi
 
 # The real frames per source (boxes.csv's frame name prefixes), each a list file and its boxes; *-colour: the
 # frames with a colour image (the PCL peer needs colour; the shipped models are evaluated on them too).
+# The labelled public sources of datasets/public follow, reported the same way (whether or not ../shared is
+# there).
+source scripts/real-sources.sh
 real_sets=()
 if ((have_real)); then
-  source scripts/real-sources.sh
   mapfile -t real_sets < <(real_source_sets "$real" "$out")
 fi
+mapfile -t public_sets < <(public_source_sets "$out")
+real_sets+=("${public_sets[@]}")
 
 if [ "$only" != shipped ]; then
   step "mine negatives and label positives"
@@ -185,15 +190,15 @@ table_of() {  # report folder, title
     echo "Real frames ($real), all sources pooled:"
     echo
     cat "$1/real/summary.md"
-    local set
-    for set in "${real_sets[@]}"; do
-      [ -f "$1/$set/summary.md" ] || continue
-      echo
-      echo "Real frames, $(source_title "$set") ($(wc -l < "$out/real-sources/$set/frames.txt") frames):"
-      echo
-      cat "$1/$set/summary.md"
-    done
   fi
+  local set
+  for set in "${real_sets[@]}"; do
+    [ -f "$1/$set/summary.md" ] || continue
+    echo
+    echo "Real frames, $(source_title "$set") ($(wc -l < "$out/real-sources/$set/frames.txt") frames):"
+    echo
+    cat "$1/$set/summary.md"
+  done
   echo
 }
 source_title() {
@@ -202,6 +207,8 @@ source_title() {
     real-home) echo "source UC3M home (home_*)" ;;
     real-lab-colour) echo "source UC3M lab, the frames with colour" ;;
     real-home-colour) echo "source UC3M home, the frames with colour" ;;
+    public-corridor) echo "public source PCL corridor (datasets/public/pcl_people: five people, one frame)" ;;
+    public-hall) echo "public source TU/e hall (datasets/public/tue_hero: a robot's head camera, one man counted, seated people don't care)" ;;
     *) echo "$1" ;;
   esac
 }
@@ -306,7 +313,7 @@ if [ -z "$only" ] || [ "$only" = shipped ]; then
   done
 fi
 
-if { [ -z "$only" ] || [ "$only" = shipped ]; } && ((peer)) && ((have_real)); then
+if { [ -z "$only" ] || [ "$only" = shipped ]; } && ((peer)); then
   step "the PCL peer row"
   # PCL is large and only this report needs it: installed here, not by scripts/setup.sh.
   if ! dpkg-query -W -f='${Status}' libpcl-dev 2>/dev/null | grep -q "ok installed"; then
@@ -322,9 +329,10 @@ if { [ -z "$only" ] || [ "$only" = shipped ]; } && ((peer)) && ((have_real)); th
     echo "pcl::people::GroundBasedPeopleDetectionApp with PCL's HOG+SVM file (peers/pcl_people), PCL's defaults"
     echo "(person 1.3-2.3 m, voxel 6 cm, a person at confidence >= -1.5), the floor fitted per recording by RANSAC;"
     echo "its confidence is the score (P = 1 / (1 + exp(-2 c)) for the thresholds). On the real frames with colour,"
-    echo "beside the shipped models on the same frames (the tables above, '... the frames with colour'):"
+    echo "beside the shipped models on the same frames (the tables above, '... the frames with colour', and the"
+    echo "public sources, every frame of which has colour):"
     for set in "${real_sets[@]}"; do
-      case "$set" in *-colour) ;; *) continue ;; esac
+      case "$set" in *-colour | public-*) ;; *) continue ;; esac
       mkdir -p "$run/peer"
       "$bin/peers/pcl_people/rdsf-pcl-people" --source "$out/real-sources/$set/frames.txt" \
         --truth "$out/real-sources/$set/boxes.csv" --report-dir "$run/peer/$set" \

@@ -24,3 +24,24 @@ real_source_sets() {
     done
   done
 }
+
+# public_source_sets OUT writes the same for the labelled public sources of datasets/public (in this
+# repository, so present wherever the source tree is, with or without ../shared): public-corridor
+# (pcl_people: five people in a corridor, one frame) and public-hall (tue_hero: a robot's head camera in a
+# hall, five frames, seated people "don't care"), with the folder's camera.yml beside the list (a list's
+# frames take the camera.yml of the list's folder). Every frame has colour, so the PCL peer reads them too.
+# No model or option here was chosen on them: unseen sources (docs/quality.md, "Public real frames").
+public_source_sets() {
+  local out=$1 pair name folder dir abs
+  for pair in public-corridor:pcl_people public-hall:tue_hero; do
+    name=${pair%%:*} folder=datasets/public/${pair#*:}
+    [ -f "$folder/boxes.csv" ] || continue
+    dir=$out/real-sources/$name
+    mkdir -p "$dir"
+    abs=$(cd "$folder" && pwd)
+    (cd "$abs" && for f in *.depth.png; do echo "$abs/$f"; done) > "$dir/frames.txt"
+    cp "$folder/boxes.csv" "$dir/boxes.csv"
+    if [ -f "$folder/camera.yml" ]; then cp "$folder/camera.yml" "$dir/camera.yml"; else rm -f "$dir/camera.yml"; fi
+    echo "$name"
+  done
+}
