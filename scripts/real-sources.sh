@@ -29,7 +29,8 @@ real_source_sets() {
 # repository, so present wherever the source tree is, with or without ../shared): public-corridor
 # (pcl_people: five people in a corridor, one frame) and public-hall (tue_hero: a robot's head camera in a
 # hall, five frames, seated people "don't care"), with the folder's camera.yml beside the list (a list's
-# frames take the camera.yml of the list's folder). Every frame has colour, so the PCL peer reads them too.
+# frames take the camera.yml of the list's folder). Every frame has colour; the PCL peer reads the hall (the
+# corridor is PCL's own test cloud for its detector).
 # No model or option here was chosen on them: unseen sources (docs/quality.md, "Public real frames").
 public_source_sets() {
   local out=$1 pair name folder dir abs
