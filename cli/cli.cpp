@@ -285,7 +285,9 @@ po::options_description frame_source_options(FrameSourceOptions& options) {
       ("depth-topic", po::value(&options.depth_topic),
        "the depth image topic (16UC1, mono16 or 32FC1); default: the bag's only depth image topic")
       ("colour-topic", po::value(&options.colour_topic),
-       "the colour image topic (rgb8, bgr8) or 'none'; default: the bag's only colour topic of the depth's size");
+       "the colour image topic (rgb8, bgr8) or 'none'; default: the bag's only colour topic of the depth's size")
+      ("colour-gap-ms", po::value(&options.colour_gap_ms)->default_value(options.colour_gap_ms),
+       "the largest stamp gap of a depth frame and the colour frame paired with it (ms)");
   return o;
 }
 
@@ -317,7 +319,9 @@ CameraOptions::CameraOptions(po::options_description& options, CameraModel& came
 
 void CameraOptions::apply(const po::variables_map& values) {
   apply_calibration(camera_, calibration_);
-  if (frames_ != nullptr) apply_camera(values, camera_, *frames_);
+  if (frames_ == nullptr) return;
+  apply_camera(values, camera_, *frames_);
+  if (!(frames_->colour_gap_ms >= 0)) throw UsageError("--colour-gap-ms must be 0 or more");
 }
 
 int run(const std::string& program_name, const std::function<int()>& body) {

@@ -211,7 +211,8 @@ TEST(BagSource, TheCameraInfoOfTheDepthImagesOpticalFrameIsTheirsWhenNoneIsBesid
 // /hero/head_rgbd_sensor/depth_registered/image, the colour camera's CameraInfo only (same optical frame), the
 // colour image stamped 209 ms after the depth. Read as its PNG conversion (scripts/public-frames.py, which
 // converts as the bag source does): the same millimetres, the CameraInfo's model (camera.yml), and the colour
-// left unpaired (more than 100 ms away) and said so.
+// left unpaired (more than 100 ms away, FrameSourceOptions::colour_gap_ms's default) and said so, or paired
+// when a wider gap is allowed.
 TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
   const fs::path folder = fs::path(RDSF_SOURCE_DIR) / "datasets" / "public" / "tue_hero";
   auto source = open_frame_source((folder / "hall_1.bag").string());
@@ -229,6 +230,18 @@ TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
   EXPECT_DOUBLE_EQ(bag[0].camera.fx_px, 537.0318294935739);
   EXPECT_TRUE(bag[0].bgr.empty());
   EXPECT_NE(source->summary().find("paired with 0 of 1 depth frames"), std::string::npos) << source->summary();
+
+  // With a gap of 250 ms allowed (--colour-gap-ms 250) the colour is paired: the conversion's hall_1.rgb.png.
+  FrameSourceOptions wider;
+  wider.colour_gap_ms = 250;
+  auto paired_source = open_frame_source((folder / "hall_1.bag").string(), wider);
+  const std::vector<DepthFrame> paired = all_frames(*paired_source);
+  ASSERT_EQ(paired.size(), 1u);
+  ASSERT_TRUE(paired[0].has_colour());
+  EXPECT_TRUE(same_pixels(paired[0].bgr, png[0].bgr));
+  EXPECT_NEAR(static_cast<double>(paired[0].colour_gap_us), 209203.0, 1.0);
+  EXPECT_NE(paired_source->summary().find("paired with 1 of 1 depth frames"), std::string::npos)
+      << paired_source->summary();
 }
 
 // Bad input: one line naming the file, the topic and the problem.

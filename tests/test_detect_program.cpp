@@ -125,6 +125,12 @@ TEST(DetectProgram, CameraOptionsReachTheAnalyser) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("usage error: empirical calibration"), std::string::npos) << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  // The frame source options are checked with them: a negative colour pairing gap is a usage error.
+  const test::RunResult gap = test::run(detect() + " --source " + test::quote(dir.path().string()) +
+                                        " --colour-gap-ms -1");
+  EXPECT_EQ(gap.exit_code, 2);
+  EXPECT_NE(gap.err.find("usage error: --colour-gap-ms must be 0 or more"), std::string::npos) << gap.err;
+  EXPECT_EQ(count_lines(gap.err), 1) << gap.err;
 }
 
 // No model named: the shipped default model scores the candidates and people are tracked.

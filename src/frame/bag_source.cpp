@@ -379,7 +379,7 @@ struct BagSource::Impl {
 
   /// The colour image for the depth frame stamped `depth_us` (previous depth frame at `previous`, next
   /// at `next_us`, each optional): of the colour frames nearer to it than to its neighbours (stamps in
-  /// ((previous + depth) / 2, (depth + next) / 2]), the nearest, when within kMaxColourGapUs; or null.
+  /// ((previous + depth) / 2, (depth + next) / 2]), the nearest, when within options.colour_gap_ms; or null.
   ImagePtr colour_for(std::int64_t depth_us, const std::optional<std::int64_t>& previous,
                       const std::optional<std::int64_t>& next_us, std::int64_t& gap_us) {
     ImagePtr best;
@@ -393,7 +393,7 @@ struct BagSource::Impl {
       if (!nearer_to_previous && gap < best_gap) best = after, best_gap = gap;
       after = next_colour();
     }
-    if (!best || best_gap > kMaxColourGapUs) return {};
+    if (!best || static_cast<double>(best_gap) > options.colour_gap_ms * 1000.0) return {};
     gap_us = best_gap;
     return best;
   }

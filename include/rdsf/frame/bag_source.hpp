@@ -15,7 +15,8 @@
 //                  float32 metres reads back exactly); NaN, inf, <= 0 and >= 65.5355 m -> 0 (no reading).
 // Colour: sensor_msgs/Image rgb8 or bgr8 of FrameSourceOptions::colour_topic ("none": no colour; empty:
 // the bag's only rgb8/bgr8 topic of the depth's size, when there is exactly one). Each depth frame gets
-// the colour frame whose header stamp is nearest to its own, when that is at most kMaxColourGapUs away
+// the colour frame whose header stamp is nearest to its own, when that is at most
+// FrameSourceOptions::colour_gap_ms away
 // (else no colour); DepthFrame::colour_gap_us = |colour stamp - depth stamp|, summary() their mean and
 // maximum. A colour image must be of the depth's size (registered pixel for pixel).
 // Camera model: the first sensor_msgs/CameraInfo of the depth topic's camera (TOPIC's folder +
@@ -39,9 +40,6 @@ namespace rdsf {
 
 class BagSource : public FrameSource {
  public:
-  /// Colour further than this from its depth frame is not paired with it (0.1 s: three frames at 30 fps).
-  static constexpr std::int64_t kMaxColourGapUs = 100000;
-
   /// Opens `path` and chooses its topics; throws Error (file, topic, problem) when it cannot.
   BagSource(const std::string& path, const FrameSourceOptions& options);
   ~BagSource() override;

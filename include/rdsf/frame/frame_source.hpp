@@ -43,6 +43,9 @@ struct FrameSourceOptions {
   bool camera_given = false;
   std::string depth_topic;   ///< bags: the depth image topic; empty = the bag's one depth image topic
   std::string colour_topic;  ///< bags: the colour topic; empty = the one of the depth's size, "none" = no colour
+  /// bags: the largest stamp gap (ms) of a depth frame and the colour frame paired with it (100: three frames at
+  /// 30 fps; a robot's snapshot recorder may keep colour a few hundred ms after its depth).
+  double colour_gap_ms = 100;
 };
 
 /// Opens the source named by `spec`. `camera` is the model frames carry unless the source knows better;
