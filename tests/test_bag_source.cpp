@@ -229,7 +229,9 @@ TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
   EXPECT_EQ(bag[0].camera, png[0].camera) << bag[0].camera.describe() << " / " << png[0].camera.describe();
   EXPECT_DOUBLE_EQ(bag[0].camera.fx_px, 537.0318294935739);
   EXPECT_TRUE(bag[0].bgr.empty());
-  EXPECT_NE(source->summary().find("paired with 0 of 1 depth frames"), std::string::npos) << source->summary();
+  EXPECT_NE(source->summary().find("paired with 0 of 1 depth frames; 1 depth frame(s) had colour only beyond "
+                                   "--colour-gap-ms 100 (the nearest 209.203 ms away)"),
+            std::string::npos) << source->summary();
 
   // With a gap of 250 ms allowed (--colour-gap-ms 250) the colour is paired: the conversion's hall_1.rgb.png.
   FrameSourceOptions wider;
@@ -242,6 +244,7 @@ TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
   EXPECT_NEAR(static_cast<double>(paired[0].colour_gap_us), 209203.0, 1.0);
   EXPECT_NE(paired_source->summary().find("paired with 1 of 1 depth frames"), std::string::npos)
       << paired_source->summary();
+  EXPECT_EQ(paired_source->summary().find("beyond"), std::string::npos) << paired_source->summary();
 }
 
 // Bad input: one line naming the file, the topic and the problem.

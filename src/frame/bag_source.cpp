@@ -75,6 +75,7 @@ struct BagSource::Impl {
   std::int64_t lookahead_us = 0;
   std::optional<std::int64_t> previous_us;  // the stamp of the depth frame delivered last
   std::int64_t paired = 0, gap_sum_us = 0, gap_max_us = 0;
+  std::int64_t beyond = 0, beyond_nearest_us = INT64_MAX;  // depth frames whose nearest colour was too far
 
   [[noreturn]] void fail_topic(const std::string& topic, const std::string& what) const {
     fail(path, "topic " + topic + ": " + what);
@@ -393,7 +394,12 @@ struct BagSource::Impl {
       if (!nearer_to_previous && gap < best_gap) best = after, best_gap = gap;
       after = next_colour();
     }
-    if (!best || static_cast<double>(best_gap) > options.colour_gap_ms * 1000.0) return {};
+    if (!best) return {};
+    if (static_cast<double>(best_gap) > options.colour_gap_ms * 1000.0) {
+      ++beyond;
+      beyond_nearest_us = std::min(beyond_nearest_us, best_gap);
+      return {};
+    }
     gap_us = best_gap;
     return best;
   }
@@ -483,6 +489,10 @@ std::string BagSource::summary() const {
   if (s.paired > 0) {
     out << ", stamp gap mean " << static_cast<double>(s.gap_sum_us) / s.paired / 1000.0 << " ms, max "
         << s.gap_max_us / 1000.0 << " ms";
+  }
+  if (s.beyond > 0) {  // what --colour-gap-ms would have to be to pair them
+    out << "; " << s.beyond << " depth frame(s) had colour only beyond --colour-gap-ms " << s.options.colour_gap_ms
+        << " (the nearest " << static_cast<double>(s.beyond_nearest_us) / 1000.0 << " ms away)";
   }
   return out.str();
 }
