@@ -46,8 +46,11 @@ string(REGEX REPLACE "/$" "" RDSF_PC_TO_PREFIX "${RDSF_PC_TO_PREFIX}")
 configure_file(${PROJECT_SOURCE_DIR}/cmake/rdsf.pc.in ${PROJECT_BINARY_DIR}/rdsf.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/rdsf.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
-# Programs (the bench/ ones and the doc-picture helper rdsf-side-by-side stay in the build tree).
-foreach(program rdsf-detect rdsf-background rdsf-synth rdsf-mine rdsf-samples rdsf-label rdsf-train rdsf-record)
+# Programs (the bench/ ones, the doc-picture helper rdsf-side-by-side, the quality report's peer rdsf-pcl-people
+# and the ROS node rdsf_people, whose package would then depend on ROS, stay in the build tree). rdsf-adapt runs
+# its siblings from its own folder (adapt/run_program.hpp), so every program it runs is here too.
+foreach(program rdsf-detect rdsf-background rdsf-synth rdsf-mine rdsf-samples rdsf-label rdsf-review rdsf-train
+                rdsf-adapt rdsf-record)
   if(TARGET ${program})
     install(TARGETS ${program} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   endif()

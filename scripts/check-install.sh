@@ -44,7 +44,14 @@ else
   echo "check-install: installed into a temporary prefix ($(find "$prefix" -type f | wc -l) files)"
 fi
 
-# 2. The shipped model and recipes, from a working folder without models/.
+# 2. Every program of a lab's workflow is installed and runs (rdsf-adapt runs the others from its own folder),
+# then the shipped model and recipes, from a working folder without models/.
+for program in rdsf-detect rdsf-background rdsf-synth rdsf-mine rdsf-samples rdsf-label rdsf-review rdsf-train rdsf-adapt; do
+  [ -x "$prefix/bin/$program" ] || fail "$program is not installed in $prefix/bin"
+  "$prefix/bin/$program" --version 2>&1 | grep -qF "$program $version" || fail "installed $program --version does not say $version"
+done
+echo "check-install: the workflow's programs are installed (rdsf-detect ... rdsf-adapt)"
+
 models="$prefix/share/rdsf/models"
 [ -f "$models/people/v4.yml" ] && [ -f "$models/recipes/tree.yml" ] || fail "no default model or recipes under $models"
 inspect=$(cd "$work" && "$prefix/bin/rdsf-train" --inspect people --top 1) || fail "installed rdsf-train --inspect people failed"
