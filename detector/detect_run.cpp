@@ -218,7 +218,11 @@ class FrameHandler {
       if (!note.empty()) progress_.note("rdsf-detect: warning: frame " + frame.name + ": " + note);
     }
     if (csv_) csv_->write_frame(frame.name, found, outcomes);
-    if (!o_.truth_csv.empty()) keep_for_evaluation(frame, processed);
+    if (!o_.truth_csv.empty()) {
+      keep_for_evaluation(frame, processed);
+      truth_frames_read += truth_.frames.count(frame.name);
+      if (first_frame_name.empty()) first_frame_name = frame.name;
+    }
     const bool go_on = picture(frame, processed);
     ++frames;
     candidates += static_cast<std::int64_t>(found.size());
@@ -229,6 +233,8 @@ class FrameHandler {
   void finish() { progress_.finish(frames, counts()); }
 
   std::int64_t frames = 0, candidates = 0, detections = 0;
+  std::size_t truth_frames_read = 0;  ///< frames read whose name the truth has (with or without people)
+  std::string first_frame_name;       ///< of the frames read with --truth, for the message when none matched
   StageTimes total;
   CandidateCoverage coverage;
   std::vector<std::vector<EvaluatedFrame>> evaluated;  ///< per model, every frame's scored candidates
@@ -315,6 +321,22 @@ void finish_run(const DetectOptions& o, const FrameSource& source, const PeopleP
   if (!o.save_dir.empty()) std::cerr << "rdsf-detect: pictures in " << o.save_dir << "\n";
 }
 
+/// The truth must name the frames read: a truth of none of them (a folder's file stems against a bag's indices)
+/// would be scored as frames without people. Refused with one line; a truth naming frames not read is said.
+void check_truth_names(const DetectOptions& o, const GroundTruth& truth, const FrameHandler& handler) {
+  if (truth.frames.empty() || handler.frames == 0) return;
+  if (handler.truth_frames_read == 0) {
+    fail(o.truth_csv, "names none of the " + std::to_string(handler.frames) + " frames read from " + o.source +
+                          " (it names e.g. '" + truth.frames.begin()->first + "', the source's first frame is '" +
+                          handler.first_frame_name + "'; a bag's or a recording's frames are named by their index 0, 1, ...)");
+  }
+  const std::size_t not_read = truth.frames.size() - std::min(truth.frames.size(), handler.truth_frames_read);
+  if (not_read > 0) {
+    std::cerr << "rdsf-detect: " << o.truth_csv << ": " << not_read << " of its " << truth.frames.size()
+              << " frames were not read (not counted)\n";
+  }
+}
+
 /// Sweeps every model's thresholds over the kept frames and writes the evaluation report.
 void evaluate_models(const DetectOptions& o, const std::vector<BoostedModel>& models, const GroundTruth& truth,
                      const FrameHandler& handler, double wall_s) {
@@ -379,6 +401,7 @@ int run_detect(const DetectOptions& o) {
   const double wall_s = process_frames(o, pipeline, *source, handler);
   finish_run(o, *source, pipeline, csv.get(), handler, wall_s, !models.empty());
 
+  if (evaluate) check_truth_names(o, truth, handler);
   if (evaluate) std::cerr << handler.coverage.summary(box);
   if (evaluate && !models.empty()) evaluate_models(o, models, truth, handler, wall_s);
   return 0;
