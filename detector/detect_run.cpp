@@ -171,6 +171,18 @@ GroundTruth read_truth(const DetectOptions& o) {
   return truth;
 }
 
+/// The truth must name the source's frames (before anything is read or written): refused when it names none of
+/// them, and the frames it names that the source does not have are counted aloud (truth_frames_not_in).
+void check_truth_frames(const DetectOptions& o, const GroundTruth& truth, const FrameSource& source) {
+  const auto names = source.frame_names();
+  if (!names) return;  // a live device: its frames are named as they come
+  const std::size_t absent = truth_frames_not_in(truth, o.truth_csv, *names, o.source);
+  if (absent > 0) {
+    std::cerr << "rdsf-detect: " << o.truth_csv << ": " << absent << " of its " << truth.frames.size()
+              << " frames are not in " << o.source << " (not counted)\n";
+  }
+}
+
 void create_save_dir(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -218,11 +230,7 @@ class FrameHandler {
       if (!note.empty()) progress_.note("rdsf-detect: warning: frame " + frame.name + ": " + note);
     }
     if (csv_) csv_->write_frame(frame.name, found, outcomes);
-    if (!o_.truth_csv.empty()) {
-      keep_for_evaluation(frame, processed);
-      truth_frames_read += truth_.frames.count(frame.name);
-      if (first_frame_name.empty()) first_frame_name = frame.name;
-    }
+    if (!o_.truth_csv.empty()) keep_for_evaluation(frame, processed);
     const bool go_on = picture(frame, processed);
     ++frames;
     candidates += static_cast<std::int64_t>(found.size());
@@ -233,8 +241,6 @@ class FrameHandler {
   void finish() { progress_.finish(frames, counts()); }
 
   std::int64_t frames = 0, candidates = 0, detections = 0;
-  std::size_t truth_frames_read = 0;  ///< frames read whose name the truth has (with or without people)
-  std::string first_frame_name;       ///< of the frames read with --truth, for the message when none matched
   StageTimes total;
   CandidateCoverage coverage;
   std::vector<std::vector<EvaluatedFrame>> evaluated;  ///< per model, every frame's scored candidates
@@ -321,22 +327,6 @@ void finish_run(const DetectOptions& o, const FrameSource& source, const PeopleP
   if (!o.save_dir.empty()) std::cerr << "rdsf-detect: pictures in " << o.save_dir << "\n";
 }
 
-/// The truth must name the frames read: a truth of none of them (a folder's file stems against a bag's indices)
-/// would be scored as frames without people. Refused with one line; a truth naming frames not read is said.
-void check_truth_names(const DetectOptions& o, const GroundTruth& truth, const FrameHandler& handler) {
-  if (truth.frames.empty() || handler.frames == 0) return;
-  if (handler.truth_frames_read == 0) {
-    fail(o.truth_csv, "names none of the " + std::to_string(handler.frames) + " frames read from " + o.source +
-                          " (it names e.g. '" + truth.frames.begin()->first + "', the source's first frame is '" +
-                          handler.first_frame_name + "'; a bag's or a recording's frames are named by their index 0, 1, ...)");
-  }
-  const std::size_t not_read = truth.frames.size() - std::min(truth.frames.size(), handler.truth_frames_read);
-  if (not_read > 0) {
-    std::cerr << "rdsf-detect: " << o.truth_csv << ": " << not_read << " of its " << truth.frames.size()
-              << " frames were not read (not counted)\n";
-  }
-}
-
 /// Sweeps every model's thresholds over the kept frames and writes the evaluation report.
 void evaluate_models(const DetectOptions& o, const std::vector<BoostedModel>& models, const GroundTruth& truth,
                      const FrameHandler& handler, double wall_s) {
@@ -391,6 +381,7 @@ int run_detect(const DetectOptions& o) {
 
   PeoplePipeline pipeline(pipeline_params_for(o, models), models.empty() ? nullptr : &models.front());
   auto source = open_frame_source(o.source, o.frames);
+  if (evaluate) check_truth_frames(o, truth, *source);
   std::unique_ptr<DetectionCsv> csv;
   const BoxKind box = pipeline.params().analyser.reported_box;
   if (!o.out_csv.empty()) csv = std::make_unique<DetectionCsv>(o.out_csv, o.force, !models.empty(), box);
@@ -401,7 +392,6 @@ int run_detect(const DetectOptions& o) {
   const double wall_s = process_frames(o, pipeline, *source, handler);
   finish_run(o, *source, pipeline, csv.get(), handler, wall_s, !models.empty());
 
-  if (evaluate) check_truth_names(o, truth, handler);
   if (evaluate) std::cerr << handler.coverage.summary(box);
   if (evaluate && !models.empty()) evaluate_models(o, models, truth, handler, wall_s);
   return 0;

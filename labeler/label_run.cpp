@@ -18,6 +18,7 @@
 #include "rdsf/core/error.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/dataset/sample_set.hpp"
+#include "rdsf/frame/frame_source.hpp"
 #include "rdsf/pipeline/model_fit.hpp"
 #include "rdsf/labeling/active_learning.hpp"
 #include "gui/display.hpp"
@@ -138,10 +139,22 @@ AnalyserParams without_option(const AnalyserParams& analyser, const std::string&
   return without;
 }
 
-/// --truth with the hardly visible people marked (their candidates are asked). Null without --truth.
+/// --truth with the hardly visible people marked (their candidates are asked). Null without --truth. Refused
+/// when it names none of the sources' frames (every candidate would be answered "not a person").
 std::unique_ptr<GroundTruth> read_truth(const LabelOptions& o) {
   if (o.truth_csv.empty()) return nullptr;
   auto truth = std::make_unique<GroundTruth>(read_ground_truth(o.truth_csv));
+  std::vector<std::string> names;
+  bool known = true;
+  for (const std::string& spec : o.session.sources) {
+    const auto frames = open_frame_source(spec, o.session.camera)->frame_names();
+    if (!frames) known = false;
+    if (frames) names.insert(names.end(), frames->begin(), frames->end());
+  }
+  const std::size_t others = o.session.sources.size() - 1;
+  const std::string sources = o.session.sources.front() +
+                              (others > 0 ? " and " + std::to_string(others) + " other source(s)" : std::string());
+  if (known) truth_frames_not_in(*truth, o.truth_csv, names, sources);
   const std::size_t ignored = ignore_hardly_visible(*truth, o.min_visible);
   if (ignored > 0) {
     std::cerr << "rdsf-label: " << o.truth_csv << ": " << ignored << " of " << truth->people() << " people less than "

@@ -220,6 +220,7 @@ TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
   EXPECT_NE(text.find("depth /hero/head_rgbd_sensor/depth_registered/image (32FC1, 1 frames)"), std::string::npos) << text;
   EXPECT_NE(text.find("camera model from /hero/head_rgbd_sensor/rgb/camera_info (the depth images' optical frame "
                       "head_rgbd_sensor_rgb_frame)"), std::string::npos) << text;
+  EXPECT_EQ(source->frame_names(), std::vector<std::string>{"0"});  // named by index, known before reading
   const std::vector<DepthFrame> bag = all_frames(*source);
   auto png_source = open_frame_source((folder / "hall_1.depth.png").string());
   const std::vector<DepthFrame> png = all_frames(*png_source);

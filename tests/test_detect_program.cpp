@@ -220,9 +220,9 @@ TEST(DetectProgram, TruthWithoutAModelCountsThePeopleWithACandidate) {
       << r.err;
 }
 
-// A truth that names none of the frames read (a folder's file stems against a bag's indices) would score every
-// frame as one without people: refused with one line naming both namings. One naming some frames that were not
-// read is said, and the run goes on.
+// A truth that names none of the source's frames (a folder's file stems against a bag's indices) would score
+// every frame as one without people: refused before the run with one line naming both namings. One naming
+// some frames the source does not have is said, and the run goes on.
 TEST(DetectProgram, TruthNamingNoFrameReadIsRefusedAndFramesNotReadAreSaid) {
   test::TempDir dir;
   write_scene(dir);
@@ -230,15 +230,17 @@ TEST(DetectProgram, TruthNamingNoFrameReadIsRefusedAndFramesNotReadAreSaid) {
   const test::RunResult none = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --truth " +
                                          test::quote(dir / "other.csv"));
   EXPECT_EQ(none.exit_code, 1);
-  EXPECT_NE(none.err.find("rdsf-detect: error: " + (dir / "other.csv") + ": names none of the 1 frames read from " +
+  EXPECT_NE(none.err.find("rdsf-detect: error: " + (dir / "other.csv") + ": names none of the 1 frames of " +
                           dir.path().string() + " (it names e.g. '0', the source's first frame is 'scene'"),
             std::string::npos) << none.err;
+  EXPECT_EQ(count_lines(none.err), 2) << "read before refusing: " << none.err;  // the truth's line and the error
 
   std::ofstream(dir / "more.csv") << "frame,person,x,y,w,h\nscene,1,300,100,40,360\nabsent,1,300,100,40,360\n";
   const test::RunResult some = test::run(detect() + " --source " + test::quote(dir.path().string()) + " --truth " +
                                          test::quote(dir / "more.csv"));
   ASSERT_EQ(some.exit_code, 0) << some.err;
-  EXPECT_NE(some.err.find(dir / "more.csv" + ": 1 of its 2 frames were not read (not counted)"), std::string::npos)
+  EXPECT_NE(some.err.find(dir / "more.csv" + ": 1 of its 2 frames are not in " + dir.path().string() + " (not counted)"),
+            std::string::npos)
       << some.err;
 }
 

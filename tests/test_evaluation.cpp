@@ -11,6 +11,7 @@
 #include "rdsf/evaluation/curve_plot.hpp"
 #include "rdsf/evaluation/detection_metrics.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
+#include "rdsf/frame/frame_source.hpp"
 
 using namespace rdsf;
 
@@ -42,6 +43,24 @@ TEST(GroundTruth, BadLinesAreNamed) {
   EXPECT_EQ(message("frame,person,x,y,w,h\na,1,2,3,0,5\n"), "boxes.csv: line 2: box has no area");
   EXPECT_EQ(message("frame,person,x,y,w,h,visible_fraction\na,1,2,3,4,5,1.5\n"),
             "boxes.csv: line 2: visible_fraction is not a number in [0, 1]: '1.5'");
+}
+
+// The truth's frame names against a source's: none in common is an Error naming the file and both namings;
+// some not in the source are counted; an empty truth or an unknown source says nothing.
+TEST(GroundTruth, FramesNamedAgainstTheSourcesNames) {
+  const GroundTruth truth = parse_ground_truth("frame,person,x,y,w,h\na,1,10,20,30,40\nb,1,5,5,5,5\n", "t");
+  EXPECT_EQ(truth_frames_not_in(truth, "boxes.csv", {"a", "b", "c"}, "room"), 0u);
+  EXPECT_EQ(truth_frames_not_in(truth, "boxes.csv", {"b", "c"}, "room"), 1u);
+  EXPECT_EQ(truth_frames_not_in(truth, "boxes.csv", {}, "room"), 0u);
+  EXPECT_EQ(truth_frames_not_in(GroundTruth{}, "boxes.csv", {"0"}, "room"), 0u);
+  try {
+    truth_frames_not_in(truth, "boxes.csv", index_frame_names(3), "take.bag");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "boxes.csv: names none of the 3 frames of take.bag (it names e.g. 'a', the "
+                                     "source's first frame is '0'; a bag's or a recording's frames are named by "
+                                     "their index 0, 1, ...)");
+  }
 }
 
 TEST(GroundTruth, OverlapWithCountedAndIgnoredPeopleApart) {

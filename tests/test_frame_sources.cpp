@@ -94,6 +94,17 @@ TEST(FrameSourceErrors, EmptyFolder) {
   expect_error([&] { open_frame_source(dir.path().string()); }, {dir.path().string(), "no *.depth.png"});
 }
 
+// The names a source gives its frames, known before reading them: a folder's and a list's file stems, in order.
+TEST(PngFolderSource, FrameNamesAreTheFileStemsBeforeReading) {
+  test::TempDir dir;
+  cv::imwrite(dir / "b.depth.png", cv::Mat1w(48, 64, std::uint16_t{1500}));
+  cv::imwrite(dir / "a.depth.png", cv::Mat1w(48, 64, std::uint16_t{1500}));
+  EXPECT_EQ(open_frame_source(dir.path().string())->frame_names(), (std::vector<std::string>{"a", "b"}));
+  std::ofstream(dir / "list.txt") << "b.depth.png\n";
+  EXPECT_EQ(open_frame_source(dir / "list.txt")->frame_names(), (std::vector<std::string>{"b"}));
+  EXPECT_EQ(index_frame_names(3), (std::vector<std::string>{"0", "1", "2"}));
+}
+
 // Another dataset's layout (depth/000001.png, ...): the error says how to read it, and a list file does.
 TEST(FrameSourceErrors, FolderOfOtherPngsSaysHowToReadThem) {
   test::TempDir dir;

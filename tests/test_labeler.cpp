@@ -189,6 +189,22 @@ TEST(Labeler, TruthLabelsByTheExtentNotTheWidenedFittedBox) {
   }
 }
 
+// A truth that names none of the source's frames would answer every candidate "not a person" (with
+// --keep-rejected, the people stored as negatives): refused before anything is written.
+TEST(Labeler, TruthNamingNoneOfTheFramesIsRefusedBeforeAnythingIsWritten) {
+  test::TempDir dir;
+  write_two_frames(dir);
+  std::ofstream(dir / "boxes.csv") << "frame,person,x,y,w,h\n0,1,300,100,40,360\n1,1,200,80,40,380\n";
+  const test::RunResult r = test::run(label() + " --source " + test::quote(dir / "frames") + " --out " +
+                                      test::quote(dir / "set") + " --truth " + test::quote(dir / "boxes.csv") +
+                                      " --answers /dev/null --keep-rejected");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("rdsf-label: error: " + (dir / "boxes.csv") + ": names none of the 2 frames of " +
+                       (dir / "frames") + " (it names e.g. '0', the source's first frame is 'a'"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "set"));
+}
+
 TEST(Labeler, AnswersRunningOutLeaveUncertainCandidatesAndComplete) {
   test::TempDir dir;
   write_two_frames(dir);

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "rdsf/candidates/candidate_finder.hpp"
@@ -62,6 +63,20 @@ TruthOverlap truth_overlap(const cv::Rect& box, const std::vector<TruthBox>& peo
     best = std::max(best, iou(box, person.box));
   }
   return overlap;
+}
+
+std::size_t truth_frames_not_in(const GroundTruth& truth, const std::string& truth_path,
+                                const std::vector<std::string>& names, const std::string& source) {
+  if (truth.frames.empty() || names.empty()) return 0;
+  const std::set<std::string> named(names.begin(), names.end());
+  std::size_t absent = 0;
+  for (const auto& [frame, people] : truth.frames) absent += named.count(frame) == 0 ? 1 : 0;
+  if (absent == truth.frames.size()) {
+    fail(truth_path, "names none of the " + std::to_string(names.size()) + " frames of " + source + " (it names e.g. '" +
+                         truth.frames.begin()->first + "', the source's first frame is '" + names.front() +
+                         "'; a bag's or a recording's frames are named by their index 0, 1, ...)");
+  }
+  return absent;
 }
 
 std::size_t ignore_hardly_visible(GroundTruth& truth, double min_visible_fraction) {

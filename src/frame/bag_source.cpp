@@ -480,6 +480,7 @@ std::string BagSource::description() const {
 }
 
 std::optional<std::int64_t> BagSource::frame_count() const { return impl_->count; }
+std::optional<std::vector<std::string>> BagSource::frame_names() const { return index_frame_names(impl_->count); }
 
 std::string BagSource::summary() const {
   const Impl& s = *impl_;

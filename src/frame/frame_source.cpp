@@ -17,6 +17,12 @@ bool is_openni_spec(const std::string& spec) {
   return oni_file || spec == "openni" || spec.find("://") != std::string::npos;
 }
 
+std::vector<std::string> index_frame_names(std::int64_t count) {
+  std::vector<std::string> names;
+  for (std::int64_t i = 0; i < count; ++i) names.push_back(std::to_string(i));
+  return names;
+}
+
 bool is_bag_spec(const std::string& spec) {
   return spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".bag") == 0;
 }

@@ -486,4 +486,9 @@ std::optional<std::int64_t> OpenNISource::frame_count() const {
   return std::nullopt;
 }
 
+std::optional<std::vector<std::string>> OpenNISource::frame_names() const {
+  if (const auto count = frame_count()) return index_frame_names(*count);
+  return std::nullopt;
+}
+
 }  // namespace rdsf

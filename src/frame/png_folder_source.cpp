@@ -107,6 +107,13 @@ std::string PngFolderSource::frame_name(const std::string& depth_path) {
   return name;
 }
 
+std::optional<std::vector<std::string>> PngFolderSource::frame_names() const {
+  std::vector<std::string> names;
+  names.reserve(depth_paths_.size());
+  for (const std::string& path : depth_paths_) names.push_back(frame_name(path));
+  return names;
+}
+
 std::string PngFolderSource::colour_path(const std::string& depth_path) {
   if (!ends_with(depth_path, kDepthSuffix)) return {};
   return depth_path.substr(0, depth_path.size() - kDepthSuffix.size()) + kColourSuffix;

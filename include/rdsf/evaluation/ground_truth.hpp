@@ -39,6 +39,13 @@ TruthOverlap truth_overlap(const cv::Rect& box, const std::vector<TruthBox>& peo
 /// Marks people whose visible_fraction is below `min_visible_fraction` as ignored; returns how many.
 std::size_t ignore_hardly_visible(GroundTruth& truth, double min_visible_fraction);
 
+/// How a truth's frame names meet the names of a source's frames (FrameSource::frame_names): throws Error
+/// naming `truth_path`, with an example of each naming, when the truth names frames and none of them is among
+/// `names` (a folder's file stems against a bag's indices: every frame would count as one without people);
+/// else returns how many of the truth's frames are not among them.
+std::size_t truth_frames_not_in(const GroundTruth& truth, const std::string& truth_path,
+                                const std::vector<std::string>& names, const std::string& source);
+
 /// Reads and checks a boxes.csv; throws Error naming the file and the first bad line.
 GroundTruth read_ground_truth(const std::string& path);
 /// The same from text (for tests and fuzzing); `name` is used in messages.

@@ -51,6 +51,7 @@ class BagSource : public FrameSource {
   /// camera model from /camera/depth/camera_info (640x480 fx=525 ...)".
   std::string description() const override;
   std::optional<std::int64_t> frame_count() const override;
+  std::optional<std::vector<std::string>> frame_names() const override;  ///< index_frame_names(frame_count())
   /// "colour paired with 14 of 46 depth frames, gap mean 0 ms, max 0 ms" (empty without a colour topic), and
   /// "; N depth frame(s) had colour only beyond --colour-gap-ms G (the nearest X ms away)" when some had.
   std::string summary() const override;

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "rdsf/frame/camera_model.hpp"
 #include "rdsf/frame/depth_frame.hpp"
@@ -30,6 +31,10 @@ class FrameSource {
   virtual std::string description() const = 0;
   /// Number of frames when known in advance (files), nothing for live devices.
   virtual std::optional<std::int64_t> frame_count() const = 0;
+  /// The names next() gives the frames, in order, when known before reading them (files): a PNG source's file
+  /// stems, a recording's indices "0", "1", ... (index_frame_names); nothing for live devices and, by default,
+  /// for a source a program derives itself.
+  virtual std::optional<std::vector<std::string>> frame_names() const { return std::nullopt; }
   /// What the source has to say after reading (a bag: the colour pairing gaps), empty when nothing.
   virtual std::string summary() const { return {}; }
 };
@@ -55,6 +60,9 @@ std::unique_ptr<FrameSource> open_frame_source(const std::string& spec,
 
 /// The same with every option (camera model, bag topics).
 std::unique_ptr<FrameSource> open_frame_source(const std::string& spec, const FrameSourceOptions& options);
+
+/// "0", "1", ..., "count - 1": the names of a recording's frames (bags, .oni files).
+std::vector<std::string> index_frame_names(std::int64_t count);
 
 /// True when `spec` names a ROS 1 bag (ends in ".bag").
 bool is_bag_spec(const std::string& spec);

@@ -38,6 +38,8 @@ class OpenNISource : public FrameSource {
   bool next(DepthFrame& frame) override;
   std::string description() const override;
   std::optional<std::int64_t> frame_count() const override;
+  /// A recording's index_frame_names(frame_count()); nothing for a live device.
+  std::optional<std::vector<std::string>> frame_names() const override;
 
  private:
   struct Impl;

@@ -26,6 +26,8 @@ class PngFolderSource : public FrameSource {
   std::optional<std::int64_t> frame_count() const override {
     return static_cast<std::int64_t>(depth_paths_.size());
   }
+  /// frame_name() of every depth path.
+  std::optional<std::vector<std::string>> frame_names() const override;
 
   /// Frame `i` (0-based, < frame_count()) as next() delivers it; safe to call from several threads at once.
   DepthFrame read_frame(std::size_t i) const;
