@@ -32,9 +32,9 @@ std::vector<DepthFrame> read_frames(const PclPeopleOptions& o) {
     if (!frame.has_colour()) {
       fail(o.source, "frame " + frame.name + " has no colour image (PCL's detector needs NAME.rgb.png)");
     }
-    if (frame.width_px() != o.camera.width_px || frame.height_px() != o.camera.height_px) {
-      fail(o.source, "frame " + frame.name + " is " + std::to_string(frame.width_px()) + "x" +
-                         std::to_string(frame.height_px()) + ", the camera model " + o.camera.describe());
+    if (!frames.empty() && !(frame.camera == frames.front().camera)) {  // one camera model for PCL's intrinsics
+      fail(o.source, "frame " + frame.name + " has the camera model " + frame.camera.describe() + ", the first " +
+                         frames.front().camera.describe());
     }
     frames.push_back(std::move(frame));
     frame = DepthFrame();
@@ -144,6 +144,9 @@ void evaluate(const PclPeopleOptions& o, const std::vector<DepthFrame>& frames,
               const std::vector<std::vector<PclPerson>>& people, double fps) {
   GroundTruth truth = read_ground_truth(o.truth_csv);
   ignore_hardly_visible(truth, o.min_visible);
+  std::vector<std::string> names;
+  for (const DepthFrame& frame : frames) names.push_back(frame.name);
+  truth_frames_not_in(truth, o.truth_csv, names, o.source);  // refuses a truth of none of them (as rdsf-detect)
   const TrackingParams tracking;
   std::vector<EvaluatedFrame> evaluated;
   for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -192,9 +195,12 @@ int run_pcl_people(const PclPeopleOptions& o) {
   }
 
   pcl::people::GroundBasedPeopleDetectionApp<PointT> app;
+  // The frames' own camera model (camera.yml, a bag's CameraInfo, else --fx ... scaled to their size), as
+  // their clouds are made with.
+  const CameraModel camera = frames.empty() ? o.camera : frames.front().camera;
   Eigen::Matrix3f intrinsics;
-  intrinsics << static_cast<float>(o.camera.fx_px), 0, static_cast<float>(o.camera.cx_px), 0,
-      static_cast<float>(o.camera.fy_px), static_cast<float>(o.camera.cy_px), 0, 0, 1;
+  intrinsics << static_cast<float>(camera.fx_px), 0, static_cast<float>(camera.cx_px), 0,
+      static_cast<float>(camera.fy_px), static_cast<float>(camera.cy_px), 0, 0, 1;
   app.setVoxelSize(static_cast<float>(o.voxel_size_m));
   app.setIntrinsics(intrinsics);
   app.setClassifier(classifier);
