@@ -80,20 +80,19 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
     auto frames = open_frame_source(spec);
     if (spec == o.source && o.empty.empty()) room_pngs(*frames, spec);
     DepthFrame frame;
-    bool first = true;
-    while (frames->next(frame)) {
-      if (first) {
-        const int median = median_reading_mm(frame.depth_mm);
-        if (median < kMinMedianReadingMm || median > kMaxMedianReadingMm) {
-          fail(spec, "depth values (median " + std::to_string(median) + ") are not millimetres of a Kinect-class camera "
-                     "like the crops of " + model_reference(model));
-        }
-        first = false;
-      }
-      if (o.truth.empty() || !named_by_truth) break;  // the truth names frames of the source or eval
-      names.insert(frame.name);
+    if (!frames->next(frame)) fail(spec, "no frames");
+    const int median = median_reading_mm(frame.depth_mm);  // the first frame's
+    if (median < kMinMedianReadingMm || median > kMaxMedianReadingMm) {
+      fail(spec, "depth values (median " + std::to_string(median) + ") are not millimetres of a Kinect-class camera "
+                 "like the crops of " + model_reference(model));
     }
-    if (first) fail(spec, "no frames");
+    if (o.truth.empty() || !named_by_truth) continue;  // the truth names frames of the source or eval
+    if (const auto known = frames->frame_names()) {    // files: their names without decoding every frame
+      names.insert(known->begin(), known->end());
+      continue;
+    }
+    names.insert(frame.name);
+    while (frames->next(frame)) names.insert(frame.name);
   }
   if (o.truth.empty()) return;
   const GroundTruth truth = read_ground_truth(o.truth);
