@@ -82,7 +82,7 @@ void check_room(const AdaptOptions& o, const BoostedModel& model) {
     DepthFrame frame;
     if (!frames->next(frame)) fail(spec, "no frames");
     const int median = median_reading_mm(frame.depth_mm);  // the first frame's
-    if (median < kMinMedianReadingMm || median > kMaxMedianReadingMm) {
+    if (!plausible_median_reading_mm(median)) {
       fail(spec, "depth values (median " + std::to_string(median) + ") are not millimetres of a Kinect-class camera "
                  "like the crops of " + model_reference(model));
     }

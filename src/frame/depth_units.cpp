@@ -22,7 +22,7 @@ int median_reading_mm(const cv::Mat1w& depth_mm) {
 
 std::string depth_units_note(const cv::Mat1w& depth_mm) {
   const int median_mm = median_reading_mm(depth_mm);
-  if (median_mm == 0 || (median_mm >= kMinMedianReadingMm && median_mm <= kMaxMedianReadingMm)) return {};
+  if (median_mm == 0 || plausible_median_reading_mm(median_mm)) return {};
   const bool far = median_mm > kMaxMedianReadingMm;
   return "the median reading is " + std::to_string(median_mm) + " mm, " + (far ? "beyond" : "below") +
          " a Kinect-class camera's range: if the depth is not in millimetres, state its unit in a camera.yml "

@@ -19,6 +19,11 @@ constexpr int kMaxMedianReadingMm = 12000;
 /// The median of the frame's nonzero readings (the upper one of an even count); 0 when it has none.
 int median_reading_mm(const cv::Mat1w& depth_mm);
 
+/// The range above: kMinMedianReadingMm <= median_mm <= kMaxMedianReadingMm.
+inline bool plausible_median_reading_mm(int median_mm) {
+  return median_mm >= kMinMedianReadingMm && median_mm <= kMaxMedianReadingMm;
+}
+
 /// Empty when the frame has no reading or its median is plausible (above); else one sentence naming the
 /// median and how to state another unit.
 std::string depth_units_note(const cv::Mat1w& depth_mm);
