@@ -4,6 +4,7 @@
 #include <map>
 #include <mutex>
 
+#include <image_transport/camera_common.h>
 #include <image_transport/image_transport.h>
 #include <ros/ros.h>
 
@@ -21,7 +22,9 @@ namespace rdsf {
 namespace {
 
 // The node's subscriptions, publishers and live pipeline. Callbacks run on ros::spin's thread; frames are
-// analysed and published on the live pipeline's workers, one frame at a time in arrival order.
+// analysed and published on the live pipeline's workers, one frame at a time in arrival order. A depth image
+// meets its camera_info by exact stamp (CameraSubscriber) or, with ~camera_info latest, takes the newest
+// camera_info received (its own subscription; before the first one the newest image waits for it).
 class PeopleNode {
  public:
   PeopleNode(ros::NodeHandle& nh, PeopleDetector& detector, const PeopleNodeOptions& o)
@@ -29,6 +32,7 @@ class PeopleNode {
         pairing_(static_cast<std::int64_t>(o.colour_gap_ms * 1000.0), 1000000, 8,
                  o.colour_wait ? ColourWait::until_paired : ColourWait::never),
         transport_(nh),
+        camera_info_(o.camera_info),
         people_(nh.advertise<rdsf_people::People>("people", 10)),
         markers_(nh.advertise<visualization_msgs::MarkerArray>("people/markers", 10)),
         diagnostics_topic_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10)),
@@ -36,7 +40,20 @@ class PeopleNode {
               [this](const DepthFrame& f, PipelineFrame& r, std::int64_t) { publish(f, r); }) {
     // Small messages (camera_info) are sent at once, not held back by Nagle's algorithm.
     const image_transport::TransportHints hints("raw", ros::TransportHints().tcpNoDelay());
-    depth_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth, this, hints);
+    if (camera_info_ == CameraInfoPairing::exact) {
+      depth_with_info_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth, this, hints);
+      depth_topic_ = depth_with_info_.getTopic();
+      info_topic_ = depth_with_info_.getInfoTopic();
+    } else {
+      depth_ = transport_.subscribe("depth/image", 2, &PeopleNode::on_depth_alone, this, hints);
+      depth_topic_ = depth_.getTopic();
+      // depth/camera_info follows its image (as CameraSubscriber's does) unless it is remapped itself.
+      const std::string remapped = nh.resolveName("depth/camera_info", true);
+      info_topic_ = remapped != nh.resolveName("depth/camera_info", false)
+                        ? remapped
+                        : image_transport::getCameraInfoTopic(depth_topic_);
+      info_ = nh.subscribe(info_topic_, 2, &PeopleNode::on_info, this, ros::TransportHints().tcpNoDelay());
+    }
     if (o.colour) colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour, this, hints);
     timer_ = nh.createWallTimer(ros::WallDuration(o.diagnostics_period_s), [this, o](const ros::WallTimerEvent&) {
       diagnostics_topic_.publish(diagnostics_.report(live_.stats(), hardware_id_, o.diagnostics_period_s));
@@ -44,13 +61,17 @@ class PeopleNode {
   }
 
   std::string topics() const {
-    return depth_.getTopic() + " with " + depth_.getInfoTopic() + (colour_ ? " and " + colour_.getTopic() : "") +
+    return depth_topic_ + " with " + info_topic_ +
+           (camera_info_ == CameraInfoPairing::latest ? " (the latest)" : " (by stamp)") +
+           (colour_ ? " and " + colour_.getTopic() : "") +
            " -> " + people_.getTopic() + ", " + markers_.getTopic() + ", " + diagnostics_topic_.getTopic();
   }
 
   /// Stops the subscriptions, processes the frames still waiting and returns the summary line.
   std::string finish() {
+    depth_with_info_.shutdown();
     depth_.shutdown();
+    info_.shutdown();
     colour_.shutdown();
     timer_.stop();
     live_.finish();
@@ -64,14 +85,43 @@ class PeopleNode {
     std::int64_t complete_us = 0;  ///< the frame handed to the pipeline (its colour in, or none to wait for)
   };
 
+  // ~camera_info latest: the newest camera_info is the camera model of the images after it (and of the one
+  // waiting for the first).
+  void on_info(const sensor_msgs::CameraInfoConstPtr& info) {
+    latest_info_ = info;
+    if (waiting_image_) on_depth(std::move(waiting_image_), info);
+    waiting_image_.reset();
+  }
+
+  void on_depth_alone(const sensor_msgs::ImageConstPtr& image) {
+    if (latest_info_) {
+      on_depth(image, latest_info_);
+      return;
+    }
+    if (waiting_image_) {  // the newest image waits for the first camera_info
+      diagnostics_.received();
+      refuse(depth_topic_ + ": no camera_info received yet on " + info_topic_ + "; a newer depth image waits for it");
+    } else {
+      ROS_INFO("%s: waiting for the first camera_info on %s", depth_topic_.c_str(), info_topic_.c_str());
+    }
+    waiting_image_ = image;
+  }
+
   void on_depth(const sensor_msgs::ImageConstPtr& image, const sensor_msgs::CameraInfoConstPtr& info) {
     const std::int64_t received_us = clock_.now_us();
     diagnostics_.received();
     hardware_id_ = image->header.frame_id;
     DepthFrame frame;
     try {
-      frame.depth_mm = depth_mm_of(*image, depth_.getTopic());
-      frame.camera = camera_model_of(*info, frame.depth_mm.cols, frame.depth_mm.rows, depth_.getInfoTopic());
+      frame.depth_mm = depth_mm_of(*image, depth_topic_);
+      // Stamped apart, a camera_info must at least be of the image's optical frame (not the IR camera's for a
+      // depth image registered to colour).
+      if (camera_info_ == CameraInfoPairing::latest && !info->header.frame_id.empty() &&
+          !image->header.frame_id.empty() && info->header.frame_id != image->header.frame_id) {
+        fail(info_topic_, "camera_info of frame '" + info->header.frame_id + "' for a depth image of frame '" +
+                              image->header.frame_id + "' (remap depth/camera_info to the camera_info of the depth image's frame)");
+      }
+      frame.camera = camera_model_of(*info, frame.depth_mm.cols, frame.depth_mm.rows, info_topic_);
       // A background model of the room (~background) of another size or camera: the frame is refused here.
       const auto& background = detector_.params().analyser.background;
       if (background) background->check_fits(frame);
@@ -151,7 +201,13 @@ class PeopleNode {
   ColourPairing pairing_;
   NodeDiagnostics diagnostics_;
   image_transport::ImageTransport transport_;
-  image_transport::CameraSubscriber depth_;
+  const CameraInfoPairing camera_info_;
+  image_transport::CameraSubscriber depth_with_info_;  ///< exact
+  image_transport::Subscriber depth_;                  ///< latest
+  ros::Subscriber info_;                               ///< latest
+  std::string depth_topic_, info_topic_;
+  sensor_msgs::CameraInfoConstPtr latest_info_;  ///< latest: the newest camera_info
+  sensor_msgs::ImageConstPtr waiting_image_;     ///< latest: the newest image before the first camera_info
   image_transport::Subscriber colour_;
   ros::Publisher people_, markers_, diagnostics_topic_;
   ros::WallTimer timer_;

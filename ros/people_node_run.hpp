@@ -14,6 +14,13 @@ constexpr double kColourGapWithoutWaitMs = 100;
 /// --colour-gap-ms's default with --colour-wait true: a frame waits for the colour image of its own stamp.
 constexpr double kColourGapWaitingMs = 15;
 
+/// How a depth image finds its camera model on depth/camera_info.
+enum class CameraInfoPairing {
+  exact,  ///< the camera_info of the image's own stamp (image_transport's CameraSubscriber): a live driver's
+  latest  ///< the newest camera_info received, of the image's optical frame (a bag or robot whose camera_info
+          ///< is stamped apart from the depth, e.g. a registered depth image with the colour camera's info)
+};
+
 struct PeopleNodeOptions {
   std::string model = kDefaultModelName;  ///< a file, NAME or NAME/vN (rdsf-detect's --model)
   std::string models_dir = "models";
@@ -29,6 +36,7 @@ struct PeopleNodeOptions {
   /// sequences with colour one frame old (identity switches over all thresholds 280 / 160 / 398 waiting,
   /// 229 / 161 / 400 not); candidates, scores and people never depend on colour.
   bool colour_wait = false;
+  CameraInfoPairing camera_info = CameraInfoPairing::exact;
   double diagnostics_period_s = 1;  ///< /diagnostics every this many seconds
 };
 

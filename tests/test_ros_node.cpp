@@ -10,8 +10,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -81,6 +83,108 @@ bool have_python_rosbag() {
   return test::run("/usr/bin/python3 -c 'import rosbag, sensor_msgs.msg, numpy, png'").exit_code == 0;
 }
 
+bool have_ros_tools() {
+  return test::run("command -v roscore >/dev/null && command -v rosbag").exit_code == 0 && have_python_rosbag();
+}
+
+// A roscore of the test's own on a free port (ROS_MASTER_URI, so parallel tests do not meet), this process a
+// ROS node of it; stopped at the end. roscpp initialises once per process: ctest runs each test in its own
+// (gtest_discover_tests); a second master in one process (the binary run whole) is not started.
+class TestMaster {
+ public:
+  static bool taken() { return started_; }
+
+  explicit TestMaster(const std::filesystem::path& dir) : port_(test::free_tcp_port()) {
+    setenv("ROS_MASTER_URI", ("http://127.0.0.1:" + std::to_string(port_)).c_str(), 1);
+    setenv("ROS_HOSTNAME", "127.0.0.1", 1);
+    setenv("ROS_HOME", (dir / "ros_home").c_str(), 1);
+    setenv("ROS_LOG_DIR", (dir / "ros_log").c_str(), 1);
+    started_ = true;
+    core_ = std::make_unique<BackgroundProcess>("roscore -p " + std::to_string(port_), dir / "roscore.log");
+  }
+  ~TestMaster() {
+    if (ros::isInitialized()) ros::shutdown();
+    core_->stop();
+  }
+  /// ros::init and wait for the master; false (with the log) when it did not come up.
+  bool connect(std::string& why) {
+    int argc = 1;
+    char name[] = "test_ros_node";
+    char* argv[] = {name, nullptr};
+    ros::init(argc, argv, "rdsf_people_test", ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
+    for (int i = 0; i < 300 && !ros::master::check(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (ros::master::check()) return true;
+    why = "roscore did not come up on port " + std::to_string(port_) + ":\n" + core_->log();
+    return false;
+  }
+
+ private:
+  static inline bool started_ = false;
+  int port_;
+  std::unique_ptr<BackgroundProcess> core_;
+};
+
+// What rdsf_people publishes on /people, collected while a bag is played to it.
+class PeopleListener {
+ public:
+  PeopleListener() : spinner_(1) {
+    people_ = nh_.subscribe<rdsf_people::People>("/people", 100, [this](const rdsf_people::PeopleConstPtr& m) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      received_.push_back(*m);
+    });
+    diagnostics_ = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
+        "/diagnostics", 10, [this](const diagnostic_msgs::DiagnosticArrayConstPtr&) {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          node_up_ = true;
+        });
+    spinner_.start();
+  }
+  ~PeopleListener() { spinner_.stop(); }
+
+  /// Starts the node with `node_arguments` (as rosrun gives them), waits until it is up (its first
+  /// /diagnostics), plays the bag (`play_arguments`: rosbag play's options and the file), waits for up to
+  /// `expected` messages, stops the node; returns what it published in stamp order, and its log in `log`.
+  std::vector<rdsf_people::People> play(const std::string& node_arguments, const std::string& play_arguments,
+                                        std::size_t expected, const std::string& log_path, std::string& log) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      received_.clear();
+      node_up_ = false;
+    }
+    BackgroundProcess node(std::string(RDSF_BINARY_DIR) + "/ros/rdsf_people " + node_arguments +
+                               " --diagnostics-period 0.5",
+                           log_path);
+    auto up = [&] {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      return node_up_;
+    };
+    for (int i = 0; i < 300 && !up() && node.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_TRUE(up()) << "rdsf_people did not come up:\n" << node.log();
+    const test::RunResult played = test::run("timeout 60 rosbag play -q -d 1 " + play_arguments);
+    EXPECT_EQ(played.exit_code, 0) << played.err;
+    auto count = [&] {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      return received_.size();
+    };
+    for (int i = 0; i < 100 && count() < expected; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(node.stop(), 0) << node.log();
+    log = node.log();
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<rdsf_people::People> out = received_;
+    std::sort(out.begin(), out.end(),
+              [](const rdsf_people::People& a, const rdsf_people::People& b) { return a.header.stamp < b.header.stamp; });
+    return out;
+  }
+
+ private:
+  ros::NodeHandle nh_;
+  std::mutex mutex_;
+  std::vector<rdsf_people::People> received_;
+  bool node_up_ = false;
+  ros::Subscriber people_, diagnostics_;
+  ros::AsyncSpinner spinner_;
+};
+
 #endif
 
 TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
@@ -89,22 +193,17 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
                   "... not found; scripts/setup.sh installs them): rdsf_people test skipped";
 #else
   RDSF_REQUIRE_REALDATA();
-  if (test::run("command -v roscore >/dev/null && command -v rosbag").exit_code != 0 || !have_python_rosbag()) {
+  if (!have_ros_tools()) {
     GTEST_SKIP() << "roscore, rosbag or python3-rosbag/sensor-msgs/numpy/png not installed: rdsf_people test skipped";
   }
+  if (TestMaster::taken()) GTEST_SKIP() << "roscpp was initialised by a test before in this process: run it alone (ctest does)";
   test::TempDir dir("rdsf-ros");
   const std::string frames = (test::realdata_dir() / "people").string();
   const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
 
   // A master of our own, and meanwhile rdsf-detect's answer and the bag (46 depth frames with camera_info,
   // 14 with colour; 30 frames/s stamps).
-  const int port = test::free_tcp_port();
-  ASSERT_GT(port, 0);
-  setenv("ROS_MASTER_URI", ("http://127.0.0.1:" + std::to_string(port)).c_str(), 1);
-  setenv("ROS_HOSTNAME", "127.0.0.1", 1);
-  setenv("ROS_HOME", (dir / "ros_home").c_str(), 1);
-  setenv("ROS_LOG_DIR", (dir / "ros_log").c_str(), 1);
-  BackgroundProcess core("roscore -p " + std::to_string(port), dir / "roscore.log");
+  TestMaster master(dir.path());
   BackgroundProcess detect(test::program("rdsf-detect") + " --source " + test::quote(frames) +
                                " --model people --models-dir " + test::quote(models) + " --out " +
                                test::quote(dir / "detect.csv"),
@@ -116,61 +215,14 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
   ASSERT_EQ(expected.size(), 46U);
 
-  int argc = 1;
-  char name[] = "test_ros_node";
-  char* argv[] = {name, nullptr};
-  ros::init(argc, argv, "rdsf_people_test", ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
-  for (int i = 0; i < 300 && !ros::master::check(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  ASSERT_TRUE(ros::master::check()) << "roscore did not come up on port " << port << ":\n" << core.log();
-
-  ros::NodeHandle nh;
-  std::mutex mutex;
-  std::vector<rdsf_people::People> received;
-  bool node_up = false;
-  ros::Subscriber people = nh.subscribe<rdsf_people::People>("/people", 100, [&](const rdsf_people::PeopleConstPtr& m) {
-    const std::lock_guard<std::mutex> lock(mutex);
-    received.push_back(*m);
-  });
-  ros::Subscriber diagnostics = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
-      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArrayConstPtr&) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        node_up = true;
-      });
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
-
-  // The node, parameters as rosrun gives them; up when its first /diagnostics arrives. Plays the bag to it
-  // and returns what it published, in stamp order, and its log.
+  std::string why;
+  ASSERT_TRUE(master.connect(why)) << why;
+  PeopleListener listener;
+  // The node with the real frames' topics and `parameters`, the bag played at 0.2 x its rate.
   auto play_to_node = [&](const std::string& parameters, const std::string& log_name, std::string& log) {
-    {
-      const std::lock_guard<std::mutex> lock(mutex);
-      received.clear();
-      node_up = false;
-    }
-    BackgroundProcess node(std::string(RDSF_BINARY_DIR) + "/ros/rdsf_people depth/image:=/camera/depth/image_raw "
-                               "rgb/image:=/camera/rgb/image_raw _colour:=true _model:=people _models_dir:=" +
-                               test::quote(models) + " --diagnostics-period 0.5" + parameters,
-                           dir / log_name);
-    auto up = [&] {
-      const std::lock_guard<std::mutex> lock(mutex);
-      return node_up;
-    };
-    for (int i = 0; i < 300 && !up() && node.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    EXPECT_TRUE(up()) << "rdsf_people did not come up:\n" << node.log();
-    const test::RunResult play = test::run("timeout 60 rosbag play -q -d 1 -r 0.2 " + test::quote(dir / "people.bag"));
-    EXPECT_EQ(play.exit_code, 0) << play.err;
-    auto count = [&] {
-      const std::lock_guard<std::mutex> lock(mutex);
-      return received.size();
-    };
-    for (int i = 0; i < 100 && count() < expected.size(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    EXPECT_EQ(node.stop(), 0) << node.log();
-    log = node.log();
-    const std::lock_guard<std::mutex> lock(mutex);
-    std::vector<rdsf_people::People> out = received;
-    std::sort(out.begin(), out.end(),
-              [](const rdsf_people::People& a, const rdsf_people::People& b) { return a.header.stamp < b.header.stamp; });
-    return out;
+    return listener.play("depth/image:=/camera/depth/image_raw rgb/image:=/camera/rgb/image_raw _colour:=true "
+                         "_model:=people _models_dir:=" + test::quote(models) + parameters,
+                         "-r 0.2 " + test::quote(dir / "people.bag"), expected.size(), dir / log_name, log);
   };
   // Frame for frame the people rdsf-detect wrote; returns how many.
   const BoostedModel model = BoostedModel::load("people", models);
@@ -269,9 +321,105 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   const std::vector<rdsf_people::People> relaxed = play_to_node(" _relaxed:=true", "node-relaxed.log", log);
   EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped"), std::string::npos) << log;
   compare(relaxed, expected_relaxed);
-  spinner.stop();
-  ros::shutdown();
-  core.stop();
+#endif
+}
+
+// A robot's bag whose only camera_info is the colour camera's, stamped 100 ms apart from the registered depth
+// image (datasets/public/tue_hero/hall_1.bag, a Toyota HSR's head camera): by exact stamp the node gets no
+// frame; with ~camera_info latest (depth/camera_info remapped to the colour camera's) it publishes
+// rdsf-detect's people of the same bag, also when the depth image comes first and waits for the camera_info;
+// a camera_info of another optical frame is refused.
+TEST(RosNode, ARobotsBagWithTheColourCamerasCameraInfoIsReadWithTheLatestCameraInfo) {
+#if !RDSF_TEST_WITH_ROS
+  GTEST_SKIP() << "built without ROS 1 (RDSF_WITH_ROS=OFF): rdsf_people test skipped";
+#else
+  if (!have_ros_tools()) {
+    GTEST_SKIP() << "roscore, rosbag or python3-rosbag/sensor-msgs/numpy/png not installed: rdsf_people test skipped";
+  }
+  if (TestMaster::taken()) GTEST_SKIP() << "roscpp was initialised by a test before in this process: run it alone (ctest does)";
+  test::TempDir dir("rdsf-ros-hall");
+  const std::string bag = std::string(RDSF_SOURCE_DIR) + "/datasets/public/tue_hero/hall_1.bag";
+  const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
+  TestMaster master(dir.path());
+
+  // rdsf-detect's answer (the bag source takes the CameraInfo of the depth images' optical frame).
+  const test::RunResult detect = test::run(test::program("rdsf-detect") + " --source " + test::quote(bag) +
+                                           " --model people --models-dir " + test::quote(models) + " --out " +
+                                           test::quote(dir / "detect.csv"));
+  ASSERT_EQ(detect.exit_code, 0) << detect.err;
+  const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
+  ASSERT_EQ(expected.size(), 1U);
+  ASSERT_GE(expected[0].people.size(), 1U);  // the man standing in front of the robot (and the seated person)
+
+  // Two copies: the depth image before the camera_info, and a camera_info of another optical frame.
+  std::ofstream(dir / "variants.py") << R"(import sys, rosbag, rospy
+source, later, other = sys.argv[1:4]
+messages = list(rosbag.Bag(source).read_messages())
+with rosbag.Bag(later, 'w') as out:
+    last = max(t for _, _, t in messages)
+    for topic, msg, t in messages:
+        out.write(topic, msg, last + rospy.Duration(0.5) if topic.endswith('camera_info') else t)
+with rosbag.Bag(other, 'w') as out:
+    for topic, msg, t in messages:
+        if topic.endswith('camera_info'):
+            msg.header.frame_id = 'head_rgbd_sensor_ir_frame'
+        out.write(topic, msg, t)
+)";
+  const test::RunResult variants = test::run("/usr/bin/python3 " + test::quote(dir / "variants.py") + " " +
+                                             test::quote(bag) + " " + test::quote(dir / "later.bag") + " " +
+                                             test::quote(dir / "other.bag"));
+  ASSERT_EQ(variants.exit_code, 0) << variants.err;
+
+  std::string why;
+  ASSERT_TRUE(master.connect(why)) << why;
+  PeopleListener listener;
+  const std::string topics = "depth/image:=/hero/head_rgbd_sensor/depth_registered/image "
+                             "depth/camera_info:=/hero/head_rgbd_sensor/rgb/camera_info _models_dir:=" +
+                             test::quote(models);
+  auto same_as_detect = [&](const std::vector<rdsf_people::People>& got) {
+    ASSERT_EQ(got.size(), 1U);
+    EXPECT_EQ(got[0].header.frame_id, "head_rgbd_sensor_rgb_frame");
+    EXPECT_EQ(got[0].candidates, static_cast<std::uint32_t>(expected[0].candidates));
+    ASSERT_EQ(got[0].people.size(), expected[0].people.size());
+    int standing = 0;
+    for (std::size_t k = 0; k < got[0].people.size(); ++k) {
+      const rdsf_people::Person& p = got[0].people[k];
+      const CsvPerson& e = expected[0].people[k];
+      EXPECT_EQ(static_cast<int>(p.box.x_offset), e.x);
+      EXPECT_EQ(static_cast<int>(p.box.y_offset), e.y);
+      EXPECT_EQ(static_cast<int>(p.box.width), e.w);
+      EXPECT_EQ(static_cast<int>(p.box.height), e.h);
+      EXPECT_EQ(printed("%.4f", p.score), e.score);
+      standing += p.position_m.z > 1.5 && p.position_m.z < 2.2 ? 1 : 0;  // the man, 1.7-2.0 m in front
+    }
+    EXPECT_EQ(standing, 1);
+  };
+
+  std::string log;
+  // By exact stamp (the default): the depth image never meets a camera_info of its stamp.
+  const std::vector<rdsf_people::People> exact = listener.play(topics, test::quote(bag), 0, dir / "exact.log", log);
+  EXPECT_TRUE(exact.empty());
+  EXPECT_NE(log.find("0 depth images received"), std::string::npos) << log;
+
+  const std::vector<rdsf_people::People> latest =
+      listener.play(topics + " _camera_info:=latest", test::quote(bag), 1, dir / "latest.log", log);
+  same_as_detect(latest);
+  EXPECT_NE(log.find("1 depth images received, 0 refused, 1 processed, 0 dropped"), std::string::npos) << log;
+  EXPECT_NE(log.find("/hero/head_rgbd_sensor/rgb/camera_info (the latest)"), std::string::npos) << log;
+
+  const std::vector<rdsf_people::People> waited = listener.play(topics + " --camera-info latest",
+                                                                test::quote(dir / "later.bag"), 1, dir / "later.log", log);
+  same_as_detect(waited);
+  EXPECT_NE(log.find("waiting for the first camera_info"), std::string::npos) << log;
+
+  const std::vector<rdsf_people::People> other = listener.play(topics + " _camera_info:=latest",
+                                                               test::quote(dir / "other.bag"), 0, dir / "other.log", log);
+  EXPECT_TRUE(other.empty());
+  EXPECT_NE(log.find("1 depth images received, 1 refused, 0 processed"), std::string::npos) << log;
+  EXPECT_NE(log.find("camera_info of frame 'head_rgbd_sensor_ir_frame' for a depth image of frame "
+                     "'head_rgbd_sensor_rgb_frame'"),
+            std::string::npos)
+      << log;
 #endif
 }
 
