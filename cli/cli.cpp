@@ -283,9 +283,11 @@ po::options_description frame_source_options(FrameSourceOptions& options) {
   po::options_description o("Frame source: ROS 1 bags (--source FILE.bag)");
   o.add_options()
       ("depth-topic", po::value(&options.depth_topic),
-       "the depth image topic (16UC1, mono16 or 32FC1); default: the bag's only depth image topic")
+       "the depth image topic (16UC1, mono16 or 32FC1, or a compressedDepth topic); default: the bag's only depth "
+       "image topic")
       ("colour-topic", po::value(&options.colour_topic),
-       "the colour image topic (rgb8, bgr8) or 'none'; default: the bag's only colour topic of the depth's size")
+       "the colour image topic (rgb8, bgr8, or a jpeg/png compressed topic) or 'none'; default: the bag's only "
+       "colour topic of the depth's size")
       ("colour-gap-ms", po::value(&options.colour_gap_ms)->default_value(options.colour_gap_ms),
        "the largest stamp gap of a depth frame and the colour frame paired with it (ms)");
   return o;

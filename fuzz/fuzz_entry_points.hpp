@@ -31,6 +31,7 @@
 #include "rdsf/evaluation/adaptation_results.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/camera_file.hpp"
+#include "rdsf/frame/compressed_image.hpp"
 #include "rdsf/labeling/adapt_state_file.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
 #include "rdsf/version.hpp"
@@ -44,7 +45,8 @@ namespace rdsf::fuzz {
 inline const std::vector<std::string>& parser_names() {
   static const std::vector<std::string> names = {"ground_truth", "sample_tsv",  "manifest",   "thesis_text",
                                                  "model_file",   "answer_journal", "depth_crop", "model_writer",
-                                                 "recipe", "camera_yml", "adapt_state", "adaptation_results"
+                                                 "recipe", "camera_yml", "adapt_state", "adaptation_results",
+                                                 "compressed_image"
 #if RDSF_WITH_ROSBAG
                                                  , "bag"
 #endif
@@ -229,6 +231,20 @@ inline void parse_camera_yml_bytes(const std::string& bytes) {
   }
 }
 
+/// A sensor_msgs/CompressedImage payload of a bag (frame/compressed_image.hpp): the bytes up to the first
+/// newline are the message's format, the rest its data; compressedDepth decoded to depth, any other format to
+/// colour. A decoded image must be of a sane size.
+inline void parse_compressed_image_bytes(const std::string& bytes) {
+  const auto newline = bytes.find('\n');
+  const std::string format = bytes.substr(0, newline);
+  const std::string data = newline == std::string::npos ? std::string() : bytes.substr(newline + 1);
+  const auto* begin = reinterpret_cast<const std::uint8_t*>(data.data());
+  const cv::Mat image = is_compressed_depth_format(format)
+                            ? cv::Mat(decode_compressed_depth("fuzz/compressed_image", format, begin, data.size()))
+                            : cv::Mat(decode_compressed_colour("fuzz/compressed_image", format, begin, data.size()));
+  require(!image.empty() && image.total() <= (std::size_t{1} << 30), "compressed image: an empty or huge image returned");
+}
+
 /// rdsf-adapt's state file, adapt-state.tsv (labeling/adapt_state_file.hpp); file-based reader: what it reads
 /// is written back and reads the same.
 inline void parse_adapt_state_bytes(const std::string& bytes) {
@@ -288,6 +304,7 @@ inline void parse_bytes(const std::string& parser, const std::string& bytes) {
     if (parser == "camera_yml") return parse_camera_yml_bytes(bytes);
     if (parser == "adapt_state") return parse_adapt_state_bytes(bytes);
     if (parser == "adaptation_results") return parse_adaptation_results_bytes(bytes);
+    if (parser == "compressed_image") return parse_compressed_image_bytes(bytes);
 #if RDSF_WITH_ROSBAG
     if (parser == "bag") return parse_bag_bytes(bytes);
 #endif

@@ -6,6 +6,7 @@
 #include <sensor_msgs/image_encodings.h>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/frame/depth_units.hpp"
 
 namespace rdsf {
 namespace {
@@ -58,10 +59,7 @@ cv::Mat1w depth_mm_of(const sensor_msgs::Image& image, const std::string& topic)
     for (int y = 0; y < metres.rows; ++y) {
       const float* in = metres[y];
       std::uint16_t* out = depth[y];
-      for (int x = 0; x < metres.cols; ++x) {
-        const double mm = std::round(static_cast<double>(in[x]) * 1000.0);
-        out[x] = std::isfinite(mm) && mm > 0 && mm <= 65535 ? static_cast<std::uint16_t>(mm) : 0;
-      }
+      for (int x = 0; x < metres.cols; ++x) out[x] = depth_mm_of_metres(in[x]);
     }
     return depth;
   }

@@ -3,6 +3,7 @@
 their colour frames (NAME.rgb.png, when present), as a depth camera driver would publish them.
 
     scripts/frames-to-bag.py FOLDER OUT.bag [--fps 30] [--depth-encoding 16UC1|32FC1] [--layout ros|registered|realsense]
+                             [--compressed-depth png|rvl] [--compressed-colour png|jpeg]
 
 Layout "ros" (the default; the topics of openni_launch / realsense2_camera):
   /camera/depth/image_raw    sensor_msgs/Image, 16UC1 millimetres (or 32FC1 metres, NaN = no reading)
@@ -23,6 +24,14 @@ Layout "realsense" (RealSense Viewer's .bag recordings, the part of their layout
   /device_0/sensor_1/Color_0/image/data      sensor_msgs/Image rgb8
   /device_0/sensor_1/Color_0/info/camera_info  sensor_msgs/CameraInfo (once)
 
+Compressed (as `rosbag record` keeps a robot's image_transport topics; rdsf/frame/compressed_image.hpp):
+--compressed-depth writes the depth as sensor_msgs/CompressedImage on DEPTH_TOPIC/compressedDepth, format
+"ENC; compressedDepth png|rvl": a 12-byte header (int32 0, float32 A, float32 B), then the 16-bit samples as
+a PNG or RVL; 16UC1 samples are the millimetres, 32FC1 ones the transport's inverse depth
+q = trunc(A / d + B), A = 100 x 101, B = 1 - A / 10 m (its defaults; 0 beyond 10 m and where no reading).
+--compressed-colour writes colour as CompressedImage on COLOUR_TOPIC/compressed, format
+"rgb8; png compressed bgr8" (lossless) or "rgb8; jpeg compressed bgr8" (needs python3-opencv).
+
 Frames are sorted by name (as rdsf reads the folder); frame i is stamped start + i / fps seconds, its
 colour frame at the same instant plus --colour-offset-ms. The camera model is camera.yml beside the frames
 when present (width, height, fx, fy, cx, cy, depth_unit_mm), else the Kinect v1 (fx = fy = 525, cx = 319.5,
@@ -32,8 +41,10 @@ The bag is written to OUT.bag.tmp and renamed when complete; an existing OUT.bag
 Needs python3-rosbag, python3-sensor-msgs, python3-numpy and python3-png (Debian 12; scripts/setup.sh).
 """
 import argparse
+import io
 import os
 import re
+import struct
 import sys
 
 try:
@@ -41,7 +52,7 @@ try:
     import png
     import rosbag
     import rospy
-    from sensor_msgs.msg import CameraInfo, Image
+    from sensor_msgs.msg import CameraInfo, CompressedImage, Image
     from std_msgs.msg import Float32, UInt32
 except ImportError as error:
     sys.exit("frames-to-bag: %s (install python3-rosbag python3-sensor-msgs python3-numpy python3-png)" % error)
@@ -157,6 +168,107 @@ def depth_array(depth_mm, encoding, depth_unit_mm):
     return units.astype("<u2")
 
 
+QUANTISATION_Z0 = 100.0   # compressed_depth_image_transport's depth_quantization default
+QUANTISATION_MAX_M = 10.0  # its depth_max default (m)
+
+
+def png_bytes(array):
+    """A PNG of a (h, w) uint16 grey or (h, w, 3) uint8 RGB array."""
+    height, width = array.shape[:2]
+    colour = array.ndim == 3
+    writer = png.Writer(width, height, greyscale=not colour, bitdepth=8 if colour else 16)
+    stream = io.BytesIO()
+    writer.write(stream, array.reshape(height, -1).tolist())
+    return stream.getvalue()
+
+
+def rvl_bytes(samples):
+    """RVL (Wilson 2017) of 16-bit samples in row order: uint32 columns, uint32 rows, then the stream of
+    32-bit little-endian words, each eight 4-bit groups from its most significant end (3 value bits, least
+    significant first, and a high bit saying another group follows); the values: a count of zeros, a count
+    of non-zeros, each non-zero's zigzag-coded difference from the previous non-zero (0 before the first)."""
+    words, state = [], [0, 0]  # the word being filled, its groups
+
+    def put(value):
+        while True:
+            group, value = value & 7, value >> 3
+            state[0] = ((state[0] << 4) | group | (8 if value else 0)) & 0xFFFFFFFF
+            state[1] += 1
+            if state[1] == 8:
+                words.append(state[0])
+                state[0], state[1] = 0, 0
+            if not value:
+                return
+
+    flat = samples.ravel().astype(np.int64)
+    nonzero = flat != 0
+    # Where runs of zeros and non-zeros start and end.
+    edges = np.flatnonzero(np.diff(nonzero.astype(np.int8))) + 1
+    bounds = np.concatenate(([0], edges, [flat.size]))
+    differences = np.diff(np.concatenate(([0], flat[nonzero])))
+    zigzag = np.where(differences >= 0, 2 * differences, -2 * differences - 1).tolist()
+    taken = 0
+    run = 0
+    while run + 1 < len(bounds):
+        start, end = bounds[run], bounds[run + 1]
+        if nonzero[start]:  # a run of non-zeros with no zeros before it
+            put(0)
+        else:
+            put(int(end - start))
+            run += 1
+            if run + 1 >= len(bounds):
+                put(0)
+                break
+            start, end = bounds[run], bounds[run + 1]
+        put(int(end - start))
+        for value in zigzag[taken:taken + (end - start)]:
+            put(value)
+        taken += end - start
+        run += 1
+    if state[1]:
+        words.append((state[0] << (4 * (8 - state[1]))) & 0xFFFFFFFF)
+    height, width = samples.shape
+    return struct.pack("<II", width, height) + struct.pack("<%dI" % len(words), *words)
+
+
+def compressed_depth_message(header, depth_mm, encoding, compression):
+    message = CompressedImage()
+    message.header = header
+    message.format = encoding + "; compressedDepth " + compression
+    a = b = np.float32(0.0)
+    if encoding == "32FC1":
+        a = np.float32(QUANTISATION_Z0 * (QUANTISATION_Z0 + 1.0))
+        b = np.float32(1.0 - a / np.float32(QUANTISATION_MAX_M))
+        metres = depth_mm.astype(np.float32) / np.float32(1000.0)
+        keep = (depth_mm > 0) & (metres < QUANTISATION_MAX_M)
+        inverse = np.zeros(depth_mm.shape, np.float32)
+        inverse[keep] = a / metres[keep] + b
+        samples = np.minimum(inverse, 65535).astype(np.uint16)
+    else:
+        samples = depth_mm.astype(np.uint16)
+    body = rvl_bytes(samples) if compression == "rvl" else png_bytes(samples)
+    message.data = struct.pack("<iff", 0, float(a), float(b)) + body
+    return message
+
+
+def compressed_colour_message(header, rgb, compression):
+    message = CompressedImage()
+    message.header = header
+    message.format = "rgb8; %s compressed bgr8" % compression
+    if compression == "png":
+        message.data = png_bytes(np.ascontiguousarray(rgb))
+    else:
+        try:
+            import cv2
+        except ImportError:
+            fail("--compressed-colour jpeg needs python3-opencv")
+        ok, encoded = cv2.imencode(".jpg", np.ascontiguousarray(rgb[:, :, ::-1]))
+        if not ok:
+            fail("cannot encode a JPEG")
+        message.data = encoded.tobytes()
+    return message
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("folder", help="folder of NAME.depth.png (and NAME.rgb.png) frames")
@@ -179,6 +291,10 @@ def main():
     parser.add_argument("--count", type=int, default=0, help="write at most this many frames (0: all)")
     for key in ("fx", "fy", "cx", "cy"):
         parser.add_argument("--" + key, type=float, help="override the camera model's " + key + " (px)")
+    parser.add_argument("--compressed-depth", choices=["png", "rvl"],
+                        help="depth as compressedDepth on DEPTH_TOPIC/compressedDepth (layouts ros, registered)")
+    parser.add_argument("--compressed-colour", choices=["png", "jpeg"],
+                        help="colour as CompressedImage on COLOUR_TOPIC/compressed")
     parser.add_argument("--force", action="store_true", help="replace an existing bag")
     args = parser.parse_args()
 
@@ -186,6 +302,8 @@ def main():
         fail("--fps must be positive")
     if args.layout == "realsense" and args.depth_encoding != "16UC1":
         fail("the realsense layout stores 16UC1 depth units only")
+    if args.layout == "realsense" and (args.compressed_depth or args.compressed_colour):
+        fail("the realsense layout stores raw images only")
     names = sorted(n[: -len(DEPTH_SUFFIX)] for n in os.listdir(args.folder) if n.endswith(DEPTH_SUFFIX))
     names = names[args.first:]
     if args.count > 0:
@@ -198,6 +316,10 @@ def main():
     layout = dict(LAYOUTS[args.layout])
     layout["depth"] = args.depth_topic or layout["depth"]
     layout["colour"] = args.colour_topic or layout["colour"]
+    if args.compressed_depth:
+        layout["depth"] += "/compressedDepth"  # its camera_info stays beside the image topic
+    if args.compressed_colour:
+        layout["colour"] += "/compressed"
     temporary = args.bag + ".tmp"
     model = None
     colour_frames = 0
@@ -217,8 +339,11 @@ def main():
                 bag.write(layout["depth_units"], Float32(data=args.depth_unit_m), stamp)
             unit_mm = args.depth_unit_m * 1000.0 if args.layout == "realsense" else 1.0
             encoding = "mono16" if args.layout == "realsense" else args.depth_encoding
-            bag.write(layout["depth"], image_message(header, depth_array(depth_mm, args.depth_encoding, unit_mm),
-                                                     encoding), stamp)
+            if args.compressed_depth:
+                depth_message = compressed_depth_message(header, depth_mm, args.depth_encoding, args.compressed_depth)
+            else:
+                depth_message = image_message(header, depth_array(depth_mm, args.depth_encoding, unit_mm), encoding)
+            bag.write(layout["depth"], depth_message, stamp)
             if not args.no_camera_info and (args.layout != "realsense" or index == 0):
                 bag.write(layout["depth_info"], camera_info(header, width, height, model), stamp)
             colour_path = os.path.join(args.folder, name + COLOUR_SUFFIX)
@@ -232,8 +357,12 @@ def main():
             rgb = rgb[:, :, :3]
             colour_stamp = rospy.Time.from_sec(args.start + index / args.fps + args.colour_offset_ms / 1000.0)
             colour_header = rospy.Header(seq=index, stamp=colour_stamp, frame_id=layout["frame_id"])
-            colour = rgb if args.colour_encoding == "rgb8" else rgb[:, :, ::-1]
-            bag.write(layout["colour"], image_message(colour_header, colour, args.colour_encoding), colour_stamp)
+            if args.compressed_colour:
+                colour_message = compressed_colour_message(colour_header, rgb, args.compressed_colour)
+            else:
+                colour = rgb if args.colour_encoding == "rgb8" else rgb[:, :, ::-1]
+                colour_message = image_message(colour_header, colour, args.colour_encoding)
+            bag.write(layout["colour"], colour_message, colour_stamp)
             if layout["colour_info"] and not args.no_camera_info and (args.layout == "ros" or colour_frames == 0):
                 bag.write(layout["colour_info"], camera_info(colour_header, width, height, model), colour_stamp)
             colour_frames += 1

@@ -18,7 +18,7 @@
 set -euo pipefail
 
 source_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-all_targets=(ground_truth sample_tsv manifest thesis_text model_file answer_journal depth_crop model_writer recipe bag camera_yml adapt_state adaptation_results)
+all_targets=(ground_truth sample_tsv manifest thesis_text model_file answer_journal depth_crop model_writer recipe bag camera_yml adapt_state adaptation_results compressed_image)
 if [ "${1:-}" = --help ] || [ "${1:-}" = -h ]; then
   cat <<USAGE
 Usage: scripts/fuzz.sh [TARGET ...]   (default: every target; see docs/fuzzing.md)

@@ -19,14 +19,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Skips the test when the bag writer cannot run here.
-#define REQUIRE_BAG_WRITER()                                                    \
-  do {                                                                          \
-    RDSF_REQUIRE_REALDATA();                                                    \
-    if (!test::bag_writer_available()) GTEST_SKIP() << test::kBagWriterMissing; \
-  } while (0)
-
-std::string people_dir() { return (test::realdata_dir() / "people").string(); }
+using test::all_frames;
+using test::same_pixels;
+std::string people_dir() { return test::people_frames_dir(); }
 
 /// A bag DIR/NAME of `folder`'s frames (test::write_bag).
 std::string write_bag(const test::TempDir& dir, const std::string& name, const std::string& arguments,
@@ -34,24 +29,12 @@ std::string write_bag(const test::TempDir& dir, const std::string& name, const s
   return test::write_bag(folder, dir / name, arguments);
 }
 
-std::vector<DepthFrame> all_frames(FrameSource& source) {
-  std::vector<DepthFrame> frames;
-  DepthFrame frame;
-  while (source.next(frame)) frames.push_back(frame);
-  return frames;
-}
-
-bool same_pixels(const cv::Mat& a, const cv::Mat& b) {
-  if (a.size() != b.size() || a.type() != b.type()) return false;
-  return a.empty() || cv::norm(a, b, cv::NORM_INF) == 0;
-}
-
 }  // namespace
 
 // The target of issue 36: a bag written from the real frames gives, frame for frame, the same depth, colour,
 // camera model, candidates, scores and people (boxes, P(person), track ids) as the PNG folder.
 TEST(BagSource, RealFramesGiveTheSameCandidatesScoresAndPeopleAsThePngFolder) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "people.bag", "");
   auto from_bag = open_frame_source(bag);
@@ -95,7 +78,7 @@ TEST(BagSource, RealFramesGiveTheSameCandidatesScoresAndPeopleAsThePngFolder) {
 // 32FC1 metres (NaN = no reading) read back to the same millimetres: round(1000 * float(mm / 1000)) = mm for
 // every mm up to 65535.
 TEST(BagSource, Float32MetresReadBackToTheSameMillimetres) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "people32.bag", "--depth-encoding 32FC1 --no-colour");
   auto source = open_frame_source(bag);
@@ -113,7 +96,7 @@ TEST(BagSource, Float32MetresReadBackToTheSameMillimetres) {
 // Colour stamped 12 ms after its depth frame (21.3 ms before the next one) is paired with it, and the gap is
 // reported per frame and summed up.
 TEST(BagSource, ColourIsPairedWithTheNearestDepthFrameAndTheGapReported) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "late.bag", "--colour-offset-ms 12 --count 4");
   auto source = open_frame_source(bag);
@@ -130,7 +113,7 @@ TEST(BagSource, ColourIsPairedWithTheNearestDepthFrameAndTheGapReported) {
 // RealSense Viewer's layout (written by the script in that layout: no real RealSense recording was at hand):
 // mono16 depth in units of 0.5 mm (the "Depth Units" option topic) and the stream's own CameraInfo.
 TEST(BagSource, RealSenseLayoutWithItsDepthUnitsAndIntrinsics) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "realsense.bag",
                                     "--layout realsense --depth-unit-m 0.0005 --count 3 --fx 600 --fy 610 --cx 321 --cy 238");
@@ -154,7 +137,7 @@ TEST(BagSource, RealSenseLayoutWithItsDepthUnitsAndIntrinsics) {
 // Without CameraInfo the given model is used, and the description says so once; a given model wins over
 // CameraInfo.
 TEST(BagSource, WithoutCameraInfoTheGivenModelIsUsedAndSaidSo) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "noinfo.bag", "--no-camera-info --count 2");
   FrameSourceOptions options;
@@ -181,7 +164,7 @@ TEST(BagSource, WithoutCameraInfoTheGivenModelIsUsedAndSaidSo) {
 // depth topic): the CameraInfo in the depth images' optical frame is theirs. Two CameraInfo topics in that
 // frame and none beside the depth: neither is guessed, and the description says why.
 TEST(BagSource, TheCameraInfoOfTheDepthImagesOpticalFrameIsTheirsWhenNoneIsBesideThem) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "registered.bag", "--layout registered --count 2 --fx 537 --fy 538 --cx 321 --cy 228");
   auto source = open_frame_source(bag);
@@ -250,7 +233,7 @@ TEST(BagSource, ARobotsOwnBagReadsAsItsPngConversion) {
 
 // Bad input: one line naming the file, the topic and the problem.
 TEST(BagSource, BadBagsAreOneLineErrorsNamingFileTopicAndProblem) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "good.bag", "--count 4");
   const auto one_line = [](const std::string& message) { return message.find('\n') == std::string::npos; };
@@ -319,7 +302,7 @@ TEST(BagSource, BadBagsAreOneLineErrorsNamingFileTopicAndProblem) {
 // rdsf-detect on the bag and on the folder: the same CSV rows (candidates, boxes, scores, people) but the frame
 // column (file stems for the folder, indices for the bag); the bag's topics and pairing are reported.
 TEST(BagSource, DetectProgramWritesTheSameRowsForTheBagAsForTheFolder) {
-  REQUIRE_BAG_WRITER();
+  RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag");
   const std::string bag = write_bag(dir, "people.bag", "");
   const test::RunResult on_bag = test::run(test::program("rdsf-detect") + " --source " + test::quote(bag) +

@@ -13,19 +13,35 @@
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/CompressedImage.h>
 #include <sensor_msgs/Image.h>
 #include <std_msgs/Float32.h>
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/bag_layout.hpp"
+#include "rdsf/frame/compressed_image.hpp"
+#include "rdsf/frame/depth_units.hpp"
 
 namespace rdsf {
 namespace {
 
 using ImagePtr = boost::shared_ptr<sensor_msgs::Image>;
+using CompressedPtr = boost::shared_ptr<sensor_msgs::CompressedImage>;
+
+constexpr const char* kImageType = "sensor_msgs/Image";
+constexpr const char* kCompressedType = "sensor_msgs/CompressedImage";
 
 bool is_depth_encoding(const std::string& e) { return e == "16UC1" || e == "mono16" || e == "32FC1"; }
 bool is_colour_encoding(const std::string& e) { return e == "rgb8" || e == "bgr8"; }
+bool is_image_type(const std::string& datatype) { return datatype == kImageType || datatype == kCompressedType; }
+
+// A message of an image topic: a sensor_msgs/Image, or a CompressedImage (frame/compressed_image.hpp).
+struct ImageMessage {
+  ImagePtr raw;
+  CompressedPtr compressed;
+  explicit operator bool() const { return raw || compressed; }
+  const std_msgs::Header& header() const { return raw ? raw->header : compressed->header; }
+};
 
 std::string parent_of(const std::string& topic) {
   const auto slash = topic.find_last_of('/');
@@ -51,9 +67,24 @@ std::int64_t stamp_us(const ros::Time& stamp) {
 }
 
 struct TopicInfo {
-  std::string name, datatype, encoding;  // encoding of the first image (Image topics)
+  std::string name, datatype, encoding;  // encoding of the first image (Image), format (CompressedImage)
   std::string frame_id;                  // the first message's header.frame_id (Image and CameraInfo topics)
   int width = 0, height = 0;  // the first image's, or the first CameraInfo's
+  std::string problem;        // why the first compressed image could not be decoded, or empty
+
+  /// The encoding of its images: an Image's, or what a CompressedImage's format names.
+  std::string image_encoding() const {
+    return datatype == kCompressedType ? compressed_image_encoding(encoding) : encoding;
+  }
+  bool is_depth() const {
+    if (datatype == kImageType) return is_depth_encoding(encoding);
+    return datatype == kCompressedType && is_compressed_depth_format(encoding) && is_depth_encoding(image_encoding());
+  }
+  bool is_colour() const {
+    if (datatype == kImageType) return is_colour_encoding(encoding);
+    return datatype == kCompressedType && !is_compressed_depth_format(encoding) &&
+           (encoding.find("jpeg") != std::string::npos || encoding.find("png") != std::string::npos);
+  }
 };
 
 }  // namespace
@@ -70,8 +101,8 @@ struct BagSource::Impl {
   std::unique_ptr<rosbag::View> depth_view, colour_view;
   rosbag::View::iterator depth_it, colour_it;
   std::int64_t count = 0, delivered = 0;
-  ImagePtr after;          // the next colour frame not yet paired
-  ImagePtr lookahead;      // the next depth image (read ahead for its stamp), null at the end
+  ImageMessage after;      // the next colour frame not yet paired
+  ImageMessage lookahead;  // the next depth image (read ahead for its stamp), null at the end
   std::int64_t lookahead_us = 0;
   std::optional<std::int64_t> previous_us;  // the stamp of the depth frame delivered last
   std::int64_t paired = 0, gap_sum_us = 0, gap_max_us = 0;
@@ -89,7 +120,26 @@ struct BagSource::Impl {
       seen.push_back(c->topic);
       TopicInfo t{c->topic, c->datatype, "", "", 0, 0};
       rosbag::View one(bag, rosbag::TopicQuery(c->topic));
-      if (c->datatype == "sensor_msgs/Image" && one.begin() != one.end()) {
+      if (c->datatype == kCompressedType && one.begin() != one.end()) {
+        CompressedPtr image = one.begin()->instantiate<sensor_msgs::CompressedImage>();
+        if (image) {
+          t.encoding = image->format;
+          t.frame_id = image->header.frame_id;
+          // Its size is the first image's, decoded (one frame); a fault is said when the topic is chosen.
+          const std::string where = path + ": topic " + c->topic + ": image 0";
+          try {
+            const cv::Mat decoded = t.is_depth() ? cv::Mat(decode_compressed_depth(where, image->format, image->data.data(),
+                                                                                   image->data.size()))
+                                  : t.is_colour() ? cv::Mat(decode_compressed_colour(where, image->format,
+                                                                                     image->data.data(), image->data.size()))
+                                                  : cv::Mat();
+            t.width = decoded.cols;
+            t.height = decoded.rows;
+          } catch (const Error& e) {
+            t.problem = e.what();
+          }
+        }
+      } else if (c->datatype == kImageType && one.begin() != one.end()) {
         ImagePtr image = one.begin()->instantiate<sensor_msgs::Image>();
         if (image) {
           t.encoding = image->encoding;
@@ -119,7 +169,7 @@ struct BagSource::Impl {
   std::string image_topics() const {
     std::string out;
     for (const TopicInfo& t : topics) {
-      if (t.datatype != "sensor_msgs/Image") continue;
+      if (!is_image_type(t.datatype)) continue;
       out += (out.empty() ? "" : ", ") + t.name + " (" + (t.encoding.empty() ? "no messages" : t.encoding) + ")";
     }
     return out.empty() ? "none" : out;
@@ -129,27 +179,32 @@ struct BagSource::Impl {
     if (!options.depth_topic.empty()) {
       const TopicInfo* t = find(options.depth_topic);
       if (t == nullptr) fail_topic(options.depth_topic, "not in the bag (image topics: " + image_topics() + ")");
-      if (t->datatype != "sensor_msgs/Image") fail_topic(t->name, t->datatype + " is not sensor_msgs/Image");
+      if (!is_image_type(t->datatype)) fail_topic(t->name, t->datatype + " is not sensor_msgs/Image or CompressedImage");
       if (t->encoding.empty()) fail_topic(t->name, "holds no images");
-      if (!is_depth_encoding(t->encoding)) {
-        fail_topic(t->name, "encoding " + t->encoding + " is not a depth encoding (16UC1, mono16, 32FC1)");
+      if (!t->is_depth()) {
+        fail_topic(t->name, "encoding " + t->encoding +
+                                " is not a depth encoding (16UC1, mono16, 32FC1; compressed: compressedDepth)");
       }
+      if (!t->problem.empty()) throw Error(t->problem);
       depth_topic = t->name;
       return;
     }
     std::vector<const TopicInfo*> depth, realsense;
     for (const TopicInfo& t : topics) {
-      if (t.datatype != "sensor_msgs/Image" || !is_depth_encoding(t.encoding)) continue;
+      if (!t.is_depth()) continue;
       depth.push_back(&t);
       if (is_realsense_depth_topic(t.name)) realsense.push_back(&t);
     }
     if (depth.size() != 1 && realsense.size() == 1) depth = realsense;
-    if (depth.empty()) fail(path, "no depth image topic (16UC1, mono16, 32FC1); image topics: " + image_topics());
+    if (depth.empty()) {
+      fail(path, "no depth image topic (16UC1, mono16, 32FC1; compressedDepth); image topics: " + image_topics());
+    }
     if (depth.size() > 1) {
       std::string names;
       for (const TopicInfo* t : depth) names += (names.empty() ? "" : ", ") + t->name;
       fail(path, "several depth image topics, choose one: " + names);
     }
+    if (!depth.front()->problem.empty()) throw Error(depth.front()->problem);
     depth_topic = depth.front()->name;
   }
 
@@ -158,10 +213,11 @@ struct BagSource::Impl {
     if (!options.colour_topic.empty()) {
       const TopicInfo* t = find(options.colour_topic);
       if (t == nullptr) fail_topic(options.colour_topic, "not in the bag (image topics: " + image_topics() + ")");
-      if (t->datatype != "sensor_msgs/Image") fail_topic(t->name, t->datatype + " is not sensor_msgs/Image");
-      if (!t->encoding.empty() && !is_colour_encoding(t->encoding)) {
-        fail_topic(t->name, "encoding " + t->encoding + " is not a colour encoding (rgb8, bgr8)");
+      if (!is_image_type(t->datatype)) fail_topic(t->name, t->datatype + " is not sensor_msgs/Image or CompressedImage");
+      if (!t->encoding.empty() && !t->is_colour()) {
+        fail_topic(t->name, "encoding " + t->encoding + " is not a colour encoding (rgb8, bgr8; compressed: jpeg, png)");
       }
+      if (!t->problem.empty()) throw Error(t->problem);
       if (!t->encoding.empty() && (t->width != width || t->height != height)) {
         fail_topic(t->name, "colour is " + std::to_string(t->width) + "x" + std::to_string(t->height) +
                                 ", the depth " + std::to_string(width) + "x" + std::to_string(height) +
@@ -172,7 +228,7 @@ struct BagSource::Impl {
     }
     std::vector<const TopicInfo*> fitting;
     for (const TopicInfo& t : topics) {
-      if (t.datatype != "sensor_msgs/Image" || !is_colour_encoding(t.encoding)) continue;
+      if (!t.is_colour()) continue;
       if (t.width == width && t.height == height) {
         fitting.push_back(&t);
       } else {
@@ -186,7 +242,7 @@ struct BagSource::Impl {
 
   void read_depth_scale() {
     const std::string sensor = realsense_sensor_prefix(depth_topic);
-    if (sensor.empty() || depth_encoding == "32FC1") return;
+    if (sensor.empty() || find(depth_topic)->image_encoding() == "32FC1") return;
     const std::string units = sensor + "/option/Depth Units/value";
     rosbag::View view(bag, rosbag::TopicQuery(units));
     if (view.begin() == view.end()) {
@@ -205,14 +261,17 @@ struct BagSource::Impl {
   }
 
   /// The CameraInfo topics to read the depth images' camera from, in order: beside them (TOPIC's folder +
-  /// "/camera_info", or the RealSense layout's ".../info/camera_info"); else the bag's one CameraInfo topic
+  /// "/camera_info", TOPIC without its transport for a compressed one, or the RealSense layout's ".../info/camera_info"); else the bag's one CameraInfo topic
   /// in the depth images' optical frame (the same non-empty header.frame_id): a depth image registered to a
   /// colour camera ("depth_registered") has that camera's intrinsics, and a recorder may have kept only the
   /// colour camera's CameraInfo (a Toyota HSR's head camera: datasets/public/tue_hero). Its size must be
   /// the images' (or unstated).
   std::vector<std::string> camera_info_topics(int width, int height) {
-    std::vector<std::string> out = {parent_of(depth_topic) + "/camera_info",
-                                    parent_of(parent_of(depth_topic)) + "/info/camera_info"};
+    // A compressed topic is its image topic's transport (".../image_raw/compressedDepth"): its camera_info is
+    // beside the image topic.
+    const std::string image_topic = find(depth_topic)->datatype == kCompressedType ? parent_of(depth_topic) : depth_topic;
+    std::vector<std::string> out = {parent_of(image_topic) + "/camera_info",
+                                    parent_of(parent_of(image_topic)) + "/info/camera_info"};
     const std::string& frame = find(depth_topic)->frame_id;
     if (frame.empty() || find(out[0]) != nullptr || find(out[1]) != nullptr) return out;
     std::vector<std::string> same_frame;
@@ -296,8 +355,8 @@ struct BagSource::Impl {
     count = depth_view->size();
     depth_it = depth_view->begin();
     if (depth_it != depth_view->end()) {
-      lookahead = instantiate_depth(*depth_it);
-      lookahead_us = depth_stamp_us(*lookahead, *depth_it);
+      lookahead = instantiate_image(*depth_it, depth_topic);
+      lookahead_us = depth_stamp_us(lookahead, *depth_it);
     }
     if (!colour_topic.empty()) {
       colour_view = std::make_unique<rosbag::View>(bag, rosbag::TopicQuery(colour_topic));
@@ -306,12 +365,23 @@ struct BagSource::Impl {
     }
   }
 
-  ImagePtr next_colour() {
+  ImageMessage next_colour() {
     if (colour_it == colour_view->end()) return {};
-    ImagePtr image = colour_it->instantiate<sensor_msgs::Image>();
-    if (!image) fail_topic(colour_topic, "message is not sensor_msgs/Image");
+    ImageMessage image = instantiate_image(*colour_it, colour_topic);
     ++colour_it;
     return image;
+  }
+
+  /// A compressed image decoded (`decode`), checked to be of the camera model's size.
+  template <typename Decode>
+  auto decoded(const std::string& topic, const sensor_msgs::CompressedImage& image, Decode decode) const {
+    const auto out = decode(path + ": topic " + topic + ": image " + std::to_string(delivered), image.format,
+                            image.data.data(), image.data.size());
+    if (out.cols != camera.width_px || out.rows != camera.height_px) {
+      fail_topic(topic, "image " + std::to_string(delivered) + " is " + std::to_string(out.cols) + "x" +
+                            std::to_string(out.rows) + ", the camera model " + camera.describe());
+    }
+    return out;
   }
 
   /// Checks an image's byte order, size (the camera model's) and data length (step x height).
@@ -329,7 +399,14 @@ struct BagSource::Impl {
     }
   }
 
-  cv::Mat1w to_depth_mm(const sensor_msgs::Image& image) const {
+  cv::Mat1w to_depth_mm(const ImageMessage& message) const {
+    if (message.compressed) {
+      return decoded(depth_topic, *message.compressed,
+                     [this](const std::string& where, const std::string& format, const std::uint8_t* data, std::size_t size) {
+                       return decode_compressed_depth(where, format, data, size, unit_mm);
+                     });
+    }
+    const sensor_msgs::Image& image = *message.raw;
     const int rows = camera.height_px, cols = camera.width_px;
     cv::Mat1w depth(rows, cols);
     if (image.encoding == "32FC1") {
@@ -339,8 +416,7 @@ struct BagSource::Impl {
         for (int x = 0; x < cols; ++x) {
           float m;
           std::memcpy(&m, row + 4 * x, 4);
-          const double mm = std::isfinite(m) ? std::nearbyint(1000.0 * m) : 0.0;
-          depth(y, x) = mm > 0 && mm <= 65535 ? static_cast<std::uint16_t>(mm) : 0;
+          depth(y, x) = depth_mm_of_metres(m);
         }
       }
       return depth;
@@ -354,15 +430,14 @@ struct BagSource::Impl {
       const std::uint8_t* row = image.data.data() + static_cast<std::size_t>(y) * image.step;
       std::memcpy(depth.ptr(y), row, 2 * static_cast<std::size_t>(cols));
       if (unit_mm == 1.0) continue;
-      for (int x = 0; x < cols; ++x) {
-        const double mm = std::nearbyint(depth(y, x) * unit_mm);
-        depth(y, x) = mm <= 65535 ? static_cast<std::uint16_t>(mm) : 0;
-      }
+      for (int x = 0; x < cols; ++x) depth(y, x) = depth_mm_of_units(depth(y, x), unit_mm);
     }
     return depth;
   }
 
-  cv::Mat3b to_bgr(const sensor_msgs::Image& image) const {
+  cv::Mat3b to_bgr(const ImageMessage& message) const {
+    if (message.compressed) return decoded(colour_topic, *message.compressed, decode_compressed_colour);
+    const sensor_msgs::Image& image = *message.raw;
     if (!is_colour_encoding(image.encoding)) {
       fail_topic(colour_topic, "image has encoding " + image.encoding + ", not a colour encoding (rgb8, bgr8)");
     }
@@ -381,13 +456,13 @@ struct BagSource::Impl {
   /// The colour image for the depth frame stamped `depth_us` (previous depth frame at `previous`, next
   /// at `next_us`, each optional): of the colour frames nearer to it than to its neighbours (stamps in
   /// ((previous + depth) / 2, (depth + next) / 2]), the nearest, when within options.colour_gap_ms; or null.
-  ImagePtr colour_for(std::int64_t depth_us, const std::optional<std::int64_t>& previous,
-                      const std::optional<std::int64_t>& next_us, std::int64_t& gap_us) {
-    ImagePtr best;
+  ImageMessage colour_for(std::int64_t depth_us, const std::optional<std::int64_t>& previous,
+                          const std::optional<std::int64_t>& next_us, std::int64_t& gap_us) {
+    ImageMessage best;
     gap_us = 0;
     std::int64_t best_gap = INT64_MAX;
     while (after) {
-      const std::int64_t t = stamp_us(after->header.stamp);
+      const std::int64_t t = stamp_us(after.header().stamp);
       if (next_us && 2 * t > depth_us + *next_us) break;  // nearer to the next depth frame
       const bool nearer_to_previous = previous && 2 * t <= *previous + depth_us;
       const std::int64_t gap = t > depth_us ? t - depth_us : depth_us - t;
@@ -405,13 +480,16 @@ struct BagSource::Impl {
   }
 
   /// The stamp of a depth image: its header's, or the bag time when the header has none.
-  static std::int64_t depth_stamp_us(const sensor_msgs::Image& image, const rosbag::MessageInstance& m) {
-    return image.header.stamp.isZero() ? stamp_us(m.getTime()) : stamp_us(image.header.stamp);
+  static std::int64_t depth_stamp_us(const ImageMessage& image, const rosbag::MessageInstance& m) {
+    const ros::Time& stamp = image.header().stamp;
+    return stamp.isZero() ? stamp_us(m.getTime()) : stamp_us(stamp);
   }
 
-  ImagePtr instantiate_depth(const rosbag::MessageInstance& m) const {
-    ImagePtr image = m.instantiate<sensor_msgs::Image>();
-    if (!image) fail_topic(depth_topic, "message is not sensor_msgs/Image");
+  ImageMessage instantiate_image(const rosbag::MessageInstance& m, const std::string& topic) const {
+    ImageMessage image;
+    image.raw = m.instantiate<sensor_msgs::Image>();
+    if (!image.raw) image.compressed = m.instantiate<sensor_msgs::CompressedImage>();
+    if (!image) fail_topic(topic, "message is not sensor_msgs/Image or CompressedImage");
     return image;
   }
 };
@@ -433,23 +511,23 @@ BagSource::~BagSource() = default;
 bool BagSource::next(DepthFrame& frame) {
   Impl& s = *impl_;
   if (!s.lookahead) return false;
-  const ImagePtr image = s.lookahead;
+  const ImageMessage image = s.lookahead;
   const std::int64_t t_us = s.lookahead_us;
   try {
     // Read the next depth image ahead: its stamp bounds the colour frames that are nearer to this one.
-    s.lookahead.reset();
+    s.lookahead = {};
     if (++s.depth_it != s.depth_view->end()) {
-      s.lookahead = s.instantiate_depth(*s.depth_it);
-      s.lookahead_us = Impl::depth_stamp_us(*s.lookahead, *s.depth_it);
+      s.lookahead = s.instantiate_image(*s.depth_it, s.depth_topic);
+      s.lookahead_us = Impl::depth_stamp_us(s.lookahead, *s.depth_it);
     }
-    frame.depth_mm = s.to_depth_mm(*image);
+    frame.depth_mm = s.to_depth_mm(image);
     frame.bgr.release();
     frame.colour_gap_us = 0;
     if (s.colour_view) {
       std::int64_t gap_us = 0;
       const std::optional<std::int64_t> next_us = s.lookahead ? std::optional<std::int64_t>(s.lookahead_us) : std::nullopt;
-      if (ImagePtr colour = s.colour_for(t_us, s.previous_us, next_us, gap_us)) {
-        frame.bgr = s.to_bgr(*colour);
+      if (ImageMessage colour = s.colour_for(t_us, s.previous_us, next_us, gap_us)) {
+        frame.bgr = s.to_bgr(colour);
         frame.colour_gap_us = gap_us;
         ++s.paired;
         s.gap_sum_us += gap_us;

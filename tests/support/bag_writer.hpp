@@ -1,9 +1,12 @@
 #pragma once
 // Bags for the tests that read ROS 1 bags: scripts/frames-to-bag.py run with Debian's python3-rosbag.
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "rdsf/frame/frame_source.hpp"
 #include "support/test_support.hpp"
 
 namespace rdsf::test {
@@ -24,4 +27,27 @@ inline std::string write_bag(const std::string& folder, const std::string& bag, 
   return bag;
 }
 
+/// The real people frames the bag tests write into bags.
+inline std::string people_frames_dir() { return (realdata_dir() / "people").string(); }
+
+/// Every frame of `source`, in order.
+inline std::vector<DepthFrame> all_frames(FrameSource& source) {
+  std::vector<DepthFrame> frames;
+  DepthFrame frame;
+  while (source.next(frame)) frames.push_back(frame);
+  return frames;
+}
+
+/// The same size, type and pixels (two empty images are the same).
+inline bool same_pixels(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() && a.type() == b.type() && (a.empty() || cv::norm(a, b, cv::NORM_INF) == 0);
+}
+
 }  // namespace rdsf::test
+
+/// Skips the test when the real frames or the bag writer's Python packages are absent.
+#define RDSF_REQUIRE_BAG_WRITER()                                                                    \
+  do {                                                                                               \
+    RDSF_REQUIRE_REALDATA();                                                                         \
+    if (!::rdsf::test::bag_writer_available()) GTEST_SKIP() << ::rdsf::test::kBagWriterMissing;      \
+  } while (0)

@@ -13,6 +13,10 @@
 //                  std_msgs/Float32 in metres per unit: unit_mm = 1000 * value); > 65535 mm -> 0.
 //   32FC1:         metres; depth_mm = round(1000 * m) (nearest millimetre, so a 16UC1 frame written as
 //                  float32 metres reads back exactly); NaN, inf, <= 0 and >= 65.5355 m -> 0 (no reading).
+// Compressed: a sensor_msgs/CompressedImage topic (image_transport's "compressedDepth" and "compressed",
+// as robots record them) is an image topic of the encoding its format names (frame/compressed_image.hpp:
+// "16UC1; compressedDepth png" is 16UC1 depth, "rgb8; jpeg compressed bgr8" colour), decoded message by
+// message; its camera_info is its image topic's (TOPIC without its last part).
 // Colour: sensor_msgs/Image rgb8 or bgr8 of FrameSourceOptions::colour_topic ("none": no colour; empty:
 // the bag's only rgb8/bgr8 topic of the depth's size, when there is exactly one). Each depth frame gets
 // the colour frame whose header stamp is nearest to its own, when that is at most

@@ -7,6 +7,8 @@
 // (a room's median is 1-5 m; a close-up or a hall stays inside). rdsf-detect prints depth_units_note() once,
 // for the first frame with readings, and goes on; rdsf-adapt refuses a room outside the range before it
 // trains on it (adapt_run.cpp).
+#include <cmath>
+#include <cstdint>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -15,6 +17,21 @@ namespace rdsf {
 
 constexpr int kMinMedianReadingMm = 300;
 constexpr int kMaxMedianReadingMm = 12000;
+
+/// A reading in metres (a 32FC1 depth image's, REP 118) in millimetres: round(1000 m) to the nearest, ties to
+/// even (so a millimetre depth written as float32 metres reads back exactly); NaN, inf, <= 0 and > 65535 mm
+/// are no reading (0). The one conversion of the bag source, its compressed depth and the ROS node.
+inline std::uint16_t depth_mm_of_metres(float metres) {
+  const double mm = std::isfinite(metres) ? std::nearbyint(1000.0 * static_cast<double>(metres)) : 0.0;
+  return mm > 0 && mm <= 65535 ? static_cast<std::uint16_t>(mm) : 0;
+}
+
+/// A reading of `unit_mm` millimetres a unit in millimetres: round(units x unit_mm), ties to even; over
+/// 65535 mm is no reading (0).
+inline std::uint16_t depth_mm_of_units(std::uint16_t units, double unit_mm) {
+  const double mm = std::nearbyint(units * unit_mm);
+  return mm <= 65535 ? static_cast<std::uint16_t>(mm) : 0;
+}
 
 /// The median of the frame's nonzero readings (the upper one of an even count); 0 when it has none.
 int median_reading_mm(const cv::Mat1w& depth_mm);
