@@ -1,6 +1,6 @@
 # ROS 1 from Debian's packages, without a catkin workspace (the ROS node rdsf_people in ros/). Sets
 # rdsf_ros_found ON when everything below is there, and then defines:
-#   rdsf_ros1            an INTERFACE target: roscpp, sensor_msgs, cv_bridge, image_transport,
+#   rdsf_ros1            an INTERFACE target: roscpp, message_filters, sensor_msgs, cv_bridge, image_transport,
 #                        visualization_msgs, diagnostic_msgs, std_msgs, geometry_msgs (headers as system headers)
 #   RDSF_ROS_PYTHON      a Python 3 that imports genmsg and gencpp (Debian's /usr/bin/python3 first: a pyenv or
 #                        virtualenv python3 earlier on PATH does not see Debian's modules)
@@ -15,10 +15,10 @@ set(rdsf_ros_missing "")
 find_package(PkgConfig QUIET)
 if(PKG_CONFIG_FOUND)
   pkg_check_modules(RDSF_ROS QUIET IMPORTED_TARGET
-    roscpp sensor_msgs cv_bridge visualization_msgs diagnostic_msgs std_msgs geometry_msgs)
+    roscpp message_filters sensor_msgs cv_bridge visualization_msgs diagnostic_msgs std_msgs geometry_msgs)
 endif()
 if(NOT RDSF_ROS_FOUND)
-  list(APPEND rdsf_ros_missing "roscpp/sensor_msgs/cv_bridge/visualization_msgs/diagnostic_msgs (pkg-config)")
+  list(APPEND rdsf_ros_missing "roscpp/message_filters/sensor_msgs/cv_bridge/visualization_msgs/diagnostic_msgs (pkg-config)")
 endif()
 # image_transport's .pc file and CMake config require pluginlib, and Debian 12's pluginlib-dev is the ROS 2
 # one (ament): found here by its header and library instead.

@@ -6,11 +6,15 @@
 
 #include <image_transport/camera_common.h>
 #include <image_transport/image_transport.h>
+#include <message_filters/subscriber.h>
+#include <message_filters/time_synchronizer.h>
 #include <ros/ros.h>
+#include <sensor_msgs/CompressedImage.h>
 
 #include "rdsf/core/clock.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/thread_count.hpp"
+#include "rdsf/frame/compressed_image.hpp"
 #include "rdsf/pipeline/live_pipeline.hpp"
 #include "rdsf/pipeline/people_detector.hpp"
 #include "ros/colour_pairing.hpp"
@@ -24,7 +28,9 @@ namespace {
 // The node's subscriptions, publishers and live pipeline. Callbacks run on ros::spin's thread; frames are
 // analysed and published on the live pipeline's workers, one frame at a time in arrival order. A depth image
 // meets its camera_info by exact stamp (CameraSubscriber) or, with ~camera_info latest, takes the newest
-// camera_info received (its own subscription; before the first one the newest image waits for it).
+// camera_info received (its own subscription; before the first one the newest image waits for it). Depth
+// and colour come raw (image_transport) or compressed (sensor_msgs/CompressedImage on the image topic's
+// compressedDepth / compressed subtopic, decoded here); the frame's work is the same either way.
 class PeopleNode {
  public:
   PeopleNode(ros::NodeHandle& nh, PeopleDetector& detector, const PeopleNodeOptions& o)
@@ -39,22 +45,42 @@ class PeopleNode {
         live_(detector.pipeline(), {resolve_thread_count(o.threads)}, clock_,
               [this](const DepthFrame& f, PipelineFrame& r, std::int64_t) { publish(f, r); }) {
     // Small messages (camera_info) are sent at once, not held back by Nagle's algorithm.
-    const image_transport::TransportHints hints("raw", ros::TransportHints().tcpNoDelay());
-    if (camera_info_ == CameraInfoPairing::exact) {
-      depth_with_info_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth, this, hints);
+    const ros::TransportHints no_delay = ros::TransportHints().tcpNoDelay();
+    const image_transport::TransportHints hints("raw", no_delay);
+    const std::string image_topic = nh.resolveName("depth/image");
+    if (camera_info_ == CameraInfoPairing::exact && !o.compressed_depth) {
+      depth_with_info_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth<sensor_msgs::Image>, this, hints);
       depth_topic_ = depth_with_info_.getTopic();
       info_topic_ = depth_with_info_.getInfoTopic();
+    } else if (camera_info_ == CameraInfoPairing::exact) {  // compressed, with the camera_info of its stamp
+      depth_topic_ = image_topic + "/compressedDepth";
+      info_topic_ = image_transport::getCameraInfoTopic(image_topic);
+      compressed_depth_.subscribe(nh, depth_topic_, 2, no_delay);
+      compressed_info_.subscribe(nh, info_topic_, 2, no_delay);
+      compressed_with_info_ = std::make_unique<CompressedWithInfo>(compressed_depth_, compressed_info_, 4);
+      compressed_with_info_->registerCallback(&PeopleNode::on_depth<sensor_msgs::CompressedImage>, this);
     } else {
-      depth_ = transport_.subscribe("depth/image", 2, &PeopleNode::on_depth_alone, this, hints);
-      depth_topic_ = depth_.getTopic();
+      if (o.compressed_depth) {
+        depth_topic_ = image_topic + "/compressedDepth";
+        depth_alone_ = nh.subscribe(depth_topic_, 2, &PeopleNode::on_depth_alone<sensor_msgs::CompressedImage>, this, no_delay);
+      } else {
+        depth_ = transport_.subscribe("depth/image", 2, &PeopleNode::on_depth_alone<sensor_msgs::Image>, this, hints);
+        depth_topic_ = depth_.getTopic();
+      }
       // depth/camera_info follows its image (as CameraSubscriber's does) unless it is remapped itself.
       const std::string remapped = nh.resolveName("depth/camera_info", true);
       info_topic_ = remapped != nh.resolveName("depth/camera_info", false)
                         ? remapped
-                        : image_transport::getCameraInfoTopic(depth_topic_);
-      info_ = nh.subscribe(info_topic_, 2, &PeopleNode::on_info, this, ros::TransportHints().tcpNoDelay());
+                        : image_transport::getCameraInfoTopic(image_topic);
+      info_ = nh.subscribe(info_topic_, 2, &PeopleNode::on_info, this, no_delay);
     }
-    if (o.colour) colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour, this, hints);
+    if (o.colour && o.compressed_colour) {
+      colour_topic_ = nh.resolveName("rgb/image") + "/compressed";
+      compressed_colour_ = nh.subscribe(colour_topic_, 2, &PeopleNode::on_colour<sensor_msgs::CompressedImage>, this, no_delay);
+    } else if (o.colour) {
+      colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour<sensor_msgs::Image>, this, hints);
+      colour_topic_ = colour_.getTopic();
+    }
     timer_ = nh.createWallTimer(ros::WallDuration(o.diagnostics_period_s), [this, o](const ros::WallTimerEvent&) {
       diagnostics_topic_.publish(diagnostics_.report(live_.stats(), hardware_id_, o.diagnostics_period_s));
     });
@@ -63,7 +89,7 @@ class PeopleNode {
   std::string topics() const {
     return depth_topic_ + " with " + info_topic_ +
            (camera_info_ == CameraInfoPairing::latest ? " (the latest)" : " (by stamp)") +
-           (colour_ ? " and " + colour_.getTopic() : "") +
+           (colour_topic_.empty() ? "" : " and " + colour_topic_) +
            " -> " + people_.getTopic() + ", " + markers_.getTopic() + ", " + diagnostics_topic_.getTopic();
   }
 
@@ -71,8 +97,12 @@ class PeopleNode {
   std::string finish() {
     depth_with_info_.shutdown();
     depth_.shutdown();
+    compressed_depth_.unsubscribe();
+    compressed_info_.unsubscribe();
+    depth_alone_.shutdown();
     info_.shutdown();
     colour_.shutdown();
+    compressed_colour_.shutdown();
     timer_.stop();
     live_.finish();
     return diagnostics_.summary(live_.stats());
@@ -89,11 +119,12 @@ class PeopleNode {
   // waiting for the first).
   void on_info(const sensor_msgs::CameraInfoConstPtr& info) {
     latest_info_ = info;
-    if (waiting_image_) on_depth(std::move(waiting_image_), info);
-    waiting_image_.reset();
+    if (waiting_image_) waiting_image_(info);
+    waiting_image_ = nullptr;
   }
 
-  void on_depth_alone(const sensor_msgs::ImageConstPtr& image) {
+  template <typename Message>
+  void on_depth_alone(const boost::shared_ptr<const Message>& image) {
     if (latest_info_) {
       on_depth(image, latest_info_);
       return;
@@ -104,16 +135,26 @@ class PeopleNode {
     } else {
       ROS_INFO("%s: waiting for the first camera_info on %s", depth_topic_.c_str(), info_topic_.c_str());
     }
-    waiting_image_ = image;
+    waiting_image_ = [this, image](const sensor_msgs::CameraInfoConstPtr& info) { on_depth(image, info); };
   }
 
-  void on_depth(const sensor_msgs::ImageConstPtr& image, const sensor_msgs::CameraInfoConstPtr& info) {
+  cv::Mat1w depth_of(const sensor_msgs::Image& image) const { return depth_mm_of(image, depth_topic_); }
+  cv::Mat1w depth_of(const sensor_msgs::CompressedImage& image) const {
+    return decode_compressed_depth(depth_topic_, image.format, image.data.data(), image.data.size());
+  }
+  cv::Mat3b colour_of(const sensor_msgs::Image& image) const { return bgr_of(image, colour_topic_); }
+  cv::Mat3b colour_of(const sensor_msgs::CompressedImage& image) const {
+    return decode_compressed_colour(colour_topic_, image.format, image.data.data(), image.data.size());
+  }
+
+  template <typename Message>
+  void on_depth(const boost::shared_ptr<const Message>& image, const sensor_msgs::CameraInfoConstPtr& info) {
     const std::int64_t received_us = clock_.now_us();
     diagnostics_.received();
     hardware_id_ = image->header.frame_id;
     DepthFrame frame;
     try {
-      frame.depth_mm = depth_mm_of(*image, depth_topic_);
+      frame.depth_mm = depth_of(*image);
       // Stamped apart, a camera_info must at least be of the image's optical frame (not the IR camera's for a
       // depth image registered to colour).
       if (camera_info_ == CameraInfoPairing::latest && !info->header.frame_id.empty() &&
@@ -136,17 +177,18 @@ class PeopleNode {
       const std::lock_guard<std::mutex> lock(mutex_);
       arrivals_[frame.index] = {image->header, received_us};
     }
-    if (colour_) {
+    if (!colour_topic_.empty()) {
       go_on(pairing_.add_depth(std::move(frame)));
     } else {
       go_on({{std::move(frame), -1}});
     }
   }
 
-  void on_colour(const sensor_msgs::ImageConstPtr& image) {
+  template <typename Message>
+  void on_colour(const boost::shared_ptr<const Message>& image) {
     cv::Mat3b bgr;
     try {
-      bgr = bgr_of(*image, colour_.getTopic());
+      bgr = colour_of(*image);
     } catch (const Error& e) {
       refuse(e.what());
       return;
@@ -158,7 +200,7 @@ class PeopleNode {
     const std::int64_t now_us = clock_.now_us();
     for (PairedFrame& p : frames) {
       if (!p.frame.bgr.empty() && p.frame.bgr.size() != p.frame.depth_mm.size()) {
-        refuse(colour_.getTopic() + ": colour image of " + std::to_string(p.frame.bgr.cols) + "x" +
+        refuse(colour_topic_ + ": colour image of " + std::to_string(p.frame.bgr.cols) + "x" +
                std::to_string(p.frame.bgr.rows) + " is not registered to the depth image of " +
                std::to_string(p.frame.depth_mm.cols) + "x" + std::to_string(p.frame.depth_mm.rows) +
                " (use a depth image aligned to colour); frame used without colour");
@@ -202,13 +244,20 @@ class PeopleNode {
   NodeDiagnostics diagnostics_;
   image_transport::ImageTransport transport_;
   const CameraInfoPairing camera_info_;
-  image_transport::CameraSubscriber depth_with_info_;  ///< exact
-  image_transport::Subscriber depth_;                  ///< latest
+  using CompressedWithInfo = message_filters::TimeSynchronizer<sensor_msgs::CompressedImage, sensor_msgs::CameraInfo>;
+  image_transport::CameraSubscriber depth_with_info_;  ///< exact, raw
+  message_filters::Subscriber<sensor_msgs::CompressedImage> compressed_depth_;  ///< exact, compressed
+  message_filters::Subscriber<sensor_msgs::CameraInfo> compressed_info_;       ///< exact, compressed
+  std::unique_ptr<CompressedWithInfo> compressed_with_info_;                    ///< exact, compressed
+  image_transport::Subscriber depth_;                  ///< latest, raw
+  ros::Subscriber depth_alone_;                        ///< latest, compressed
   ros::Subscriber info_;                               ///< latest
-  std::string depth_topic_, info_topic_;
+  std::string depth_topic_, info_topic_, colour_topic_;  ///< colour_topic_ empty: no colour
   sensor_msgs::CameraInfoConstPtr latest_info_;  ///< latest: the newest camera_info
-  sensor_msgs::ImageConstPtr waiting_image_;     ///< latest: the newest image before the first camera_info
-  image_transport::Subscriber colour_;
+  /// latest: the newest image before the first camera_info, waiting for it
+  std::function<void(const sensor_msgs::CameraInfoConstPtr&)> waiting_image_;
+  image_transport::Subscriber colour_;  ///< raw
+  ros::Subscriber compressed_colour_;   ///< compressed
   ros::Publisher people_, markers_, diagnostics_topic_;
   ros::WallTimer timer_;
   std::string hardware_id_;

@@ -37,6 +37,11 @@ struct PeopleNodeOptions {
   /// 229 / 161 / 400 not); candidates, scores and people never depend on colour.
   bool colour_wait = false;
   CameraInfoPairing camera_info = CameraInfoPairing::exact;
+  /// How depth and colour arrive: raw sensor_msgs/Image, or sensor_msgs/CompressedImage on the image topic's
+  /// "compressedDepth" and "compressed" subtopics (image_transport's names; decoded by the node itself,
+  /// frame/compressed_image.hpp, as Debian ships no image_transport plugins).
+  bool compressed_depth = false;
+  bool compressed_colour = false;
   double diagnostics_period_s = 1;  ///< /diagnostics every this many seconds
 };
 

@@ -83,9 +83,74 @@ bool have_python_rosbag() {
   return test::run("/usr/bin/python3 -c 'import rosbag, sensor_msgs.msg, numpy, png'").exit_code == 0;
 }
 
+// Frame for frame the people rdsf-detect wrote (`want`, the frames of a bag by scripts/frames-to-bag.py) in
+// what the node published (`got`, in stamp order): candidate counts, boxes, scores, P(person) by `model`,
+// track ids, distances walked. Returns how many people were compared.
+int expect_same_people(const std::vector<rdsf_people::People>& got, const std::vector<CsvFrame>& want,
+                       const BoostedModel& model) {
+  EXPECT_EQ(got.size(), want.size());
+  int people_seen = 0;
+  for (std::size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
+    const rdsf_people::People& m = got[i];
+    const CsvFrame& e = want[i];
+    SCOPED_TRACE("frame " + std::to_string(i) + " " + e.name);
+    EXPECT_EQ(m.header.seq, i);  // frames-to-bag numbers the frames in the folder's order
+    EXPECT_EQ(m.header.frame_id, "camera_depth_optical_frame");
+    EXPECT_EQ(m.candidates, static_cast<std::uint32_t>(e.candidates));
+    EXPECT_EQ(m.people.size(), e.people.size());
+    if (m.people.size() != e.people.size()) continue;
+    for (std::size_t k = 0; k < e.people.size(); ++k) {
+      const rdsf_people::Person& p = m.people[k];
+      EXPECT_EQ(static_cast<int>(p.box.x_offset), e.people[k].x);
+      EXPECT_EQ(static_cast<int>(p.box.y_offset), e.people[k].y);
+      EXPECT_EQ(static_cast<int>(p.box.width), e.people[k].w);
+      EXPECT_EQ(static_cast<int>(p.box.height), e.people[k].h);
+      EXPECT_EQ(printed("%.4f", p.score), e.people[k].score);
+      EXPECT_EQ(p.probability, model.probability(p.score));
+      EXPECT_GE(p.probability, model.operating_probability());  // no ~threshold: the model's own
+      EXPECT_EQ(p.track_id, e.people[k].person);
+      EXPECT_NEAR(p.distance_walked_m * 100.0, std::stod(e.people[k].distance_cm), 0.05 + 1e-9);
+      EXPECT_GT(p.position_m.z, 0.5);
+      ++people_seen;
+    }
+  }
+  return people_seen;
+}
+
+// rdsf-detect --model people on ../shared/realdata/people (its CSV read back), and meanwhile the bag of the same
+// frames written by scripts/frames-to-bag.py with `bag_arguments`.
+std::vector<CsvFrame> detect_and_write_bag(const test::TempDir& dir, const std::string& bag_arguments,
+                                           const std::string& bag) {
+  const std::string frames = (test::realdata_dir() / "people").string();
+  const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
+  BackgroundProcess detect(test::program("rdsf-detect") + " --source " + test::quote(frames) +
+                               " --model people --models-dir " + test::quote(models) + " --out " +
+                               test::quote(dir / "detect.csv"),
+                           dir / "detect.log");
+  const test::RunResult written = test::run("/usr/bin/python3 " +
+                                            test::quote(std::string(RDSF_SOURCE_DIR) + "/scripts/frames-to-bag.py") +
+                                            " " + test::quote(frames) + " " + test::quote(bag) + " " + bag_arguments);
+  EXPECT_EQ(written.exit_code, 0) << written.err;
+  EXPECT_EQ(detect.wait(std::chrono::seconds(60)), 0) << detect.log();
+  return read_detect_csv(dir / "detect.csv");
+}
+
 bool have_ros_tools() {
   return test::run("command -v roscore >/dev/null && command -v rosbag").exit_code == 0 && have_python_rosbag();
 }
+
+/// Skips the test without roscore, rosbag and the bag writer's modules, and when roscpp was initialised in
+/// this process already (class TestMaster).
+#define REQUIRE_ROS_TOOLS()                                                                                     \
+  do {                                                                                                        \
+    if (!have_ros_tools()) {                                                                                  \
+      GTEST_SKIP() << "roscore, rosbag or python3-rosbag/sensor-msgs/numpy/png not installed: rdsf_people test " \
+                      "skipped";                                                                              \
+    }                                                                                                         \
+    if (TestMaster::taken()) {                                                                                \
+      GTEST_SKIP() << "roscpp was initialised by a test before in this process: run it alone (ctest does)";     \
+    }                                                                                                         \
+  } while (0)
 
 // A roscore of the test's own on a free port (ROS_MASTER_URI, so parallel tests do not meet), this process a
 // ROS node of it; stopped at the end. roscpp initialises once per process: ctest runs each test in its own
@@ -187,16 +252,16 @@ class PeopleListener {
 
 #endif
 
+[[maybe_unused]] constexpr const char* kWithoutRos =
+    "built without ROS 1 (RDSF_WITH_ROS=OFF: Debian's roscpp, cv_bridge, image_transport, gencpp ... not found; "
+    "scripts/setup.sh installs them): rdsf_people test skipped";
+
 TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
 #if !RDSF_TEST_WITH_ROS
-  GTEST_SKIP() << "built without ROS 1 (RDSF_WITH_ROS=OFF: Debian's roscpp, cv_bridge, image_transport, gencpp "
-                  "... not found; scripts/setup.sh installs them): rdsf_people test skipped";
+  GTEST_SKIP() << kWithoutRos;
 #else
   RDSF_REQUIRE_REALDATA();
-  if (!have_ros_tools()) {
-    GTEST_SKIP() << "roscore, rosbag or python3-rosbag/sensor-msgs/numpy/png not installed: rdsf_people test skipped";
-  }
-  if (TestMaster::taken()) GTEST_SKIP() << "roscpp was initialised by a test before in this process: run it alone (ctest does)";
+  REQUIRE_ROS_TOOLS();
   test::TempDir dir("rdsf-ros");
   const std::string frames = (test::realdata_dir() / "people").string();
   const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
@@ -204,15 +269,7 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
   // A master of our own, and meanwhile rdsf-detect's answer and the bag (46 depth frames with camera_info,
   // 14 with colour; 30 frames/s stamps).
   TestMaster master(dir.path());
-  BackgroundProcess detect(test::program("rdsf-detect") + " --source " + test::quote(frames) +
-                               " --model people --models-dir " + test::quote(models) + " --out " +
-                               test::quote(dir / "detect.csv"),
-                           dir / "detect.log");
-  const test::RunResult bag = test::run("/usr/bin/python3 " + test::quote(std::string(RDSF_SOURCE_DIR) + "/scripts/frames-to-bag.py") +
-                                        " " + test::quote(frames) + " " + test::quote(dir / "people.bag"));
-  ASSERT_EQ(bag.exit_code, 0) << bag.err;
-  ASSERT_EQ(detect.wait(std::chrono::seconds(60)), 0) << detect.log();
-  const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
+  const std::vector<CsvFrame> expected = detect_and_write_bag(dir, "", dir / "people.bag");
   ASSERT_EQ(expected.size(), 46U);
 
   std::string why;
@@ -224,36 +281,9 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
                          "_model:=people _models_dir:=" + test::quote(models) + parameters,
                          "-r 0.2 " + test::quote(dir / "people.bag"), expected.size(), dir / log_name, log);
   };
-  // Frame for frame the people rdsf-detect wrote; returns how many.
   const BoostedModel model = BoostedModel::load("people", models);
-  auto compare = [&](const std::vector<rdsf_people::People>& got, const std::vector<CsvFrame>& want) {
-    EXPECT_EQ(got.size(), want.size());
-    int people_seen = 0;
-    for (std::size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
-      const rdsf_people::People& m = got[i];
-      const CsvFrame& e = want[i];
-      SCOPED_TRACE("frame " + std::to_string(i) + " " + e.name);
-      EXPECT_EQ(m.header.seq, i);  // frames-to-bag numbers the frames in the folder's order
-      EXPECT_EQ(m.header.frame_id, "camera_depth_optical_frame");
-      EXPECT_EQ(m.candidates, static_cast<std::uint32_t>(e.candidates));
-      EXPECT_EQ(m.people.size(), e.people.size());
-      if (m.people.size() != e.people.size()) continue;
-      for (std::size_t k = 0; k < e.people.size(); ++k) {
-        const rdsf_people::Person& p = m.people[k];
-        EXPECT_EQ(static_cast<int>(p.box.x_offset), e.people[k].x);
-        EXPECT_EQ(static_cast<int>(p.box.y_offset), e.people[k].y);
-        EXPECT_EQ(static_cast<int>(p.box.width), e.people[k].w);
-        EXPECT_EQ(static_cast<int>(p.box.height), e.people[k].h);
-        EXPECT_EQ(printed("%.4f", p.score), e.people[k].score);
-        EXPECT_EQ(p.probability, model.probability(p.score));
-        EXPECT_GE(p.probability, model.operating_probability());  // no ~threshold: the model's own
-        EXPECT_EQ(p.track_id, e.people[k].person);
-        EXPECT_NEAR(p.distance_walked_m * 100.0, std::stod(e.people[k].distance_cm), 0.05 + 1e-9);
-        EXPECT_GT(p.position_m.z, 0.5);
-        ++people_seen;
-      }
-    }
-    return people_seen;
+  const auto compare = [&](const std::vector<rdsf_people::People>& got, const std::vector<CsvFrame>& want) {
+    return expect_same_people(got, want, model);
   };
 
   std::string log;
@@ -324,6 +354,48 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
 #endif
 }
 
+// A robot's compressed topics played to the node (~depth_transport compressedDepth, ~colour_transport
+// compressed; Debian has no image_transport plugins, so the node decodes them itself): frame for frame
+// rdsf-detect's people on the PNG folder (the colour PNG is lossless, so the track ids too), with the
+// camera_info of each image's stamp (message_filters) and with the latest one.
+TEST(RosNode, CompressedTopicsGiveTheSamePeopleAsTheFolder) {
+#if !RDSF_TEST_WITH_ROS
+  GTEST_SKIP() << kWithoutRos;
+#else
+  RDSF_REQUIRE_REALDATA();
+  REQUIRE_ROS_TOOLS();
+  test::TempDir dir("rdsf-ros-compressed");
+  const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
+  TestMaster master(dir.path());
+  const std::vector<CsvFrame> expected =
+      detect_and_write_bag(dir, "--compressed-depth png --compressed-colour png", dir / "compressed.bag");
+  ASSERT_EQ(expected.size(), 46U);
+  std::string why;
+  ASSERT_TRUE(master.connect(why)) << why;
+  PeopleListener listener;
+  const BoostedModel model = BoostedModel::load("people", models);
+  const std::string arguments = "depth/image:=/camera/depth/image_raw rgb/image:=/camera/rgb/image_raw _colour:=true "
+                                "_colour_wait:=true _depth_transport:=compressedDepth _colour_transport:=compressed "
+                                "_model:=people _models_dir:=" + test::quote(models);
+  const std::string bag = "-r 0.2 " + test::quote(dir / "compressed.bag");
+  std::string log;
+  const std::vector<rdsf_people::People> by_stamp = listener.play(arguments, bag, 46, dir / "exact.log", log);
+  EXPECT_NE(log.find("/camera/depth/image_raw/compressedDepth with /camera/depth/camera_info (by stamp) and "
+                     "/camera/rgb/image_raw/compressed"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped; 14 with colour"), std::string::npos)
+      << log;
+  EXPECT_GT(expect_same_people(by_stamp, expected, model), 20);
+
+  const std::vector<rdsf_people::People> latest = listener.play(arguments + " _camera_info:=latest", bag, 46,
+                                                                dir / "latest.log", log);
+  EXPECT_NE(log.find("46 depth images received, 0 refused, 46 processed, 0 dropped; 14 with colour"), std::string::npos)
+      << log;
+  EXPECT_GT(expect_same_people(latest, expected, model), 20);
+#endif
+}
+
 // A robot's bag whose only camera_info is the colour camera's, stamped 100 ms apart from the registered depth
 // image (datasets/public/tue_hero/hall_1.bag, a Toyota HSR's head camera): by exact stamp the node gets no
 // frame; with ~camera_info latest (depth/camera_info remapped to the colour camera's) it publishes
@@ -331,12 +403,9 @@ TEST(RosNode, PublishesTheSamePeopleAsRdsfDetectFromABagOfRealFrames) {
 // a camera_info of another optical frame is refused.
 TEST(RosNode, ARobotsBagWithTheColourCamerasCameraInfoIsReadWithTheLatestCameraInfo) {
 #if !RDSF_TEST_WITH_ROS
-  GTEST_SKIP() << "built without ROS 1 (RDSF_WITH_ROS=OFF): rdsf_people test skipped";
+  GTEST_SKIP() << kWithoutRos;
 #else
-  if (!have_ros_tools()) {
-    GTEST_SKIP() << "roscore, rosbag or python3-rosbag/sensor-msgs/numpy/png not installed: rdsf_people test skipped";
-  }
-  if (TestMaster::taken()) GTEST_SKIP() << "roscpp was initialised by a test before in this process: run it alone (ctest does)";
+  REQUIRE_ROS_TOOLS();
   test::TempDir dir("rdsf-ros-hall");
   const std::string bag = std::string(RDSF_SOURCE_DIR) + "/datasets/public/tue_hero/hall_1.bag";
   const std::string models = std::string(RDSF_SOURCE_DIR) + "/models";
