@@ -4,7 +4,9 @@
 # 30 frames/s by `rosbag play -l`, and scripts/ros-latency-probe.py subscribed to the depth camera_info
 # topic and to /people. Three runs: depth only (the 46 frames of ../shared/realdata/people), depth with colour
 # (the frames of that folder that have a colour image, --colour on: a frame takes the colour image already
-# there, the default), and the same with --colour-wait true (a frame waits for its own colour image). Prints per run the node's own line (depth
+# there, the default), the same with --colour-wait true (a frame waits for its own colour image), and depth only
+# as a robot streams it compressed (compressedDepth png, --depth-transport compressedDepth: the node decodes each
+# message). Prints per run the node's own line (depth
 # message in the node to people published: p50/p95/p99/max, frames dropped) and the probe's (camera_info
 # message to people, both seen from another node). A measurement, not a test: no figure is asserted.
 #   scripts/ros-latency.sh [--seconds 60] [--threads 2] [--frames DIR] [--build-dir DIR]
@@ -34,6 +36,7 @@ trap cleanup EXIT
 
 # The bags: every frame, and the frames with colour.
 /usr/bin/python3 scripts/frames-to-bag.py "$frames" "$work/depth.bag" --no-colour >&2
+/usr/bin/python3 scripts/frames-to-bag.py "$frames" "$work/compressed.bag" --no-colour --compressed-depth png >&2
 mkdir "$work/colour"
 for rgb in "$frames"/*.rgb.png; do
   [ -e "$rgb" ] || continue
@@ -82,4 +85,5 @@ if [ "$have_colour" = 1 ]; then
   run_case colour "$work/colour.bag" true
   run_case colour-wait "$work/colour.bag" true --colour-wait true
 fi
+run_case compressed "$work/compressed.bag" false --depth-transport compressedDepth
 echo "ros-latency.sh: load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"
