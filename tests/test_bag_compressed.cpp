@@ -124,3 +124,38 @@ TEST(BagCompressed, DamagedCompressedImagesAreOneLineErrors) {
   e = test::error_message([&] { source->next(frame); });
   EXPECT_EQ(e.rfind(third + ": topic /camera/depth/image_raw/compressedDepth: image 2: truncated PNG", 0), 0u) << e;
 }
+
+// A recorder that kept both a camera's raw topics and their compressed twins: the raw ones are read (the same
+// images, lossless); --depth-topic still chooses the compressed one.
+TEST(BagCompressed, RawTopicsAreChosenOverTheirCompressedTwins) {
+  RDSF_REQUIRE_BAG_WRITER();
+  test::TempDir dir("rdsf-bag-compressed");
+  const std::string raw = test::write_bag(people_dir(), dir / "raw.bag", "--count 3");
+  const std::string compressed =
+      test::write_bag(people_dir(), dir / "compressed.bag", "--count 3 --compressed-depth png --compressed-colour png");
+  const std::string both = dir / "both.bag";
+  const test::RunResult r = test::run(
+      "/usr/bin/python3 -c \"import rosbag; o=rosbag.Bag('" + both + "','w')\n"
+      "for f in ['" + raw + "', '" + compressed + "']:\n"
+      "    for t,m,s in rosbag.Bag(f).read_messages():\n"
+      "        if f.endswith('raw.bag') or 'compressed' in t: o.write(t, m, s)\n"
+      "o.close()\"");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto source = open_frame_source(both);
+  EXPECT_NE(source->description().find("depth /camera/depth/image_raw (16UC1, 3 frames), colour /camera/rgb/image_raw,"),
+            std::string::npos)
+      << source->description();
+  FrameSourceOptions options;
+  options.depth_topic = "/camera/depth/image_raw/compressedDepth";
+  options.colour_topic = "/camera/rgb/image_raw/compressed";
+  auto chosen = open_frame_source(both, options);
+  EXPECT_NE(chosen->description().find("depth /camera/depth/image_raw/compressedDepth"), std::string::npos)
+      << chosen->description();
+  const std::vector<DepthFrame> a = all_frames(*source), b = all_frames(*chosen);
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(b.size(), 3u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_TRUE(same_pixels(a[i].depth_mm, b[i].depth_mm)) << i;
+    EXPECT_TRUE(same_pixels(a[i].bgr, b[i].bgr)) << i;
+  }
+}

@@ -175,6 +175,16 @@ struct BagSource::Impl {
     return out.empty() ? "none" : out;
   }
 
+  /// Drops the compressed topics whose image topic is among `chosen` too (a recorder that kept both
+  /// ".../image_raw" and ".../image_raw/compressedDepth": the same images, raw ones lossless and cheaper).
+  static void without_compressed_twins(std::vector<const TopicInfo*>& chosen) {
+    const auto twin_in_chosen = [&](const TopicInfo* t) {
+      return t->datatype == kCompressedType &&
+             std::any_of(chosen.begin(), chosen.end(), [&](const TopicInfo* u) { return u->name == parent_of(t->name); });
+    };
+    chosen.erase(std::remove_if(chosen.begin(), chosen.end(), twin_in_chosen), chosen.end());
+  }
+
   void choose_depth_topic() {
     if (!options.depth_topic.empty()) {
       const TopicInfo* t = find(options.depth_topic);
@@ -196,6 +206,7 @@ struct BagSource::Impl {
       if (is_realsense_depth_topic(t.name)) realsense.push_back(&t);
     }
     if (depth.size() != 1 && realsense.size() == 1) depth = realsense;
+    without_compressed_twins(depth);
     if (depth.empty()) {
       fail(path, "no depth image topic (16UC1, mono16, 32FC1; compressedDepth); image topics: " + image_topics());
     }
@@ -236,6 +247,7 @@ struct BagSource::Impl {
                        std::to_string(t.height) + ", not the depth's size: not used";
       }
     }
+    without_compressed_twins(fitting);
     if (fitting.size() == 1) colour_topic = fitting.front()->name;
     if (fitting.size() > 1) colour_note = std::to_string(fitting.size()) + " colour topics: none used";
   }

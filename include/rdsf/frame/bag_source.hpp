@@ -16,7 +16,8 @@
 // Compressed: a sensor_msgs/CompressedImage topic (image_transport's "compressedDepth" and "compressed",
 // as robots record them) is an image topic of the encoding its format names (frame/compressed_image.hpp:
 // "16UC1; compressedDepth png" is 16UC1 depth, "rgb8; jpeg compressed bgr8" colour), decoded message by
-// message; its camera_info is its image topic's (TOPIC without its last part).
+// message; its camera_info is its image topic's (TOPIC without its last part). Where a bag holds both, the raw
+// image topic is chosen over its compressed twin (TOPIC/compressedDepth, TOPIC/compressed): the same images.
 // Colour: sensor_msgs/Image rgb8 or bgr8 of FrameSourceOptions::colour_topic ("none": no colour; empty:
 // the bag's only rgb8/bgr8 topic of the depth's size, when there is exactly one). Each depth frame gets
 // the colour frame whose header stamp is nearest to its own, when that is at most
