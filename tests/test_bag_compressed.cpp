@@ -99,11 +99,13 @@ TEST(BagCompressed, DamagedCompressedImagesAreOneLineErrors) {
   RDSF_REQUIRE_BAG_WRITER();
   test::TempDir dir("rdsf-bag-compressed");
   const std::string bag = test::write_bag(people_dir(), dir / "good.bag", "--compressed-depth png --count 4");
-  const auto damage = [&](const std::string& out, int image) {
+  const auto damage = [&](const std::string& out, int image, const std::string& topic_end = "compressedDepth",
+                          const std::string& from = "") {
     const test::RunResult r = test::run(
-        "/usr/bin/python3 -c \"import rosbag; i=rosbag.Bag('" + bag + "'); o=rosbag.Bag('" + out + "','w'); n=0\n"
+        "/usr/bin/python3 -c \"import rosbag; i=rosbag.Bag('" + (from.empty() ? bag : from) + "'); o=rosbag.Bag('" +
+        out + "','w'); n=0\n"
         "for t,m,s in i.read_messages():\n"
-        "    if t.endswith('compressedDepth'):\n"
+        "    if t.endswith('" + topic_end + "'):\n"
         "        if n == " + std::to_string(image) + ": m.data = m.data[:12] + m.data[12:40]\n"
         "        n += 1\n"
         "    o.write(t, m, s)\n"
@@ -123,6 +125,15 @@ TEST(BagCompressed, DamagedCompressedImagesAreOneLineErrors) {
   EXPECT_TRUE(source->next(frame));
   e = test::error_message([&] { source->next(frame); });
   EXPECT_EQ(e.rfind(third + ": topic /camera/depth/image_raw/compressedDepth: image 2: truncated PNG", 0), 0u) << e;
+
+  // A compressed colour topic whose first image cannot be decoded is not used, and said so; depth goes on.
+  const std::string colour = test::write_bag(people_dir(), dir / "colour.bag", "--compressed-colour png --count 2");
+  const std::string bad_colour = damage(dir / "bad-colour.bag", 0, "compressed", colour);
+  auto without_colour = open_frame_source(bad_colour);
+  EXPECT_NE(without_colour->description().find("no colour (/camera/rgb/image_raw/compressed cannot be decoded: not used)"),
+            std::string::npos)
+      << without_colour->description();
+  EXPECT_EQ(all_frames(*without_colour).size(), 2u);
 }
 
 // A recorder that kept both a camera's raw topics and their compressed twins: the raw ones are read (the same

@@ -240,7 +240,9 @@ struct BagSource::Impl {
     std::vector<const TopicInfo*> fitting;
     for (const TopicInfo& t : topics) {
       if (!t.is_colour()) continue;
-      if (t.width == width && t.height == height) {
+      if (!t.problem.empty()) {
+        colour_note += (colour_note.empty() ? "" : "; ") + t.name + " cannot be decoded: not used";
+      } else if (t.width == width && t.height == height) {
         fitting.push_back(&t);
       } else {
         colour_note += (colour_note.empty() ? "" : "; ") + t.name + " is " + std::to_string(t.width) + "x" +
