@@ -44,43 +44,8 @@ class PeopleNode {
         diagnostics_topic_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10)),
         live_(detector.pipeline(), {resolve_thread_count(o.threads)}, clock_,
               [this](const DepthFrame& f, PipelineFrame& r, std::int64_t) { publish(f, r); }) {
-    // Small messages (camera_info) are sent at once, not held back by Nagle's algorithm.
-    const ros::TransportHints no_delay = ros::TransportHints().tcpNoDelay();
-    const image_transport::TransportHints hints("raw", no_delay);
-    const std::string image_topic = nh.resolveName("depth/image");
-    if (camera_info_ == CameraInfoPairing::exact && !o.compressed_depth) {
-      depth_with_info_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth<sensor_msgs::Image>, this, hints);
-      depth_topic_ = depth_with_info_.getTopic();
-      info_topic_ = depth_with_info_.getInfoTopic();
-    } else if (camera_info_ == CameraInfoPairing::exact) {  // compressed, with the camera_info of its stamp
-      depth_topic_ = image_topic + "/compressedDepth";
-      info_topic_ = image_transport::getCameraInfoTopic(image_topic);
-      compressed_depth_.subscribe(nh, depth_topic_, 2, no_delay);
-      compressed_info_.subscribe(nh, info_topic_, 2, no_delay);
-      compressed_with_info_ = std::make_unique<CompressedWithInfo>(compressed_depth_, compressed_info_, 4);
-      compressed_with_info_->registerCallback(&PeopleNode::on_depth<sensor_msgs::CompressedImage>, this);
-    } else {
-      if (o.compressed_depth) {
-        depth_topic_ = image_topic + "/compressedDepth";
-        depth_alone_ = nh.subscribe(depth_topic_, 2, &PeopleNode::on_depth_alone<sensor_msgs::CompressedImage>, this, no_delay);
-      } else {
-        depth_ = transport_.subscribe("depth/image", 2, &PeopleNode::on_depth_alone<sensor_msgs::Image>, this, hints);
-        depth_topic_ = depth_.getTopic();
-      }
-      // depth/camera_info follows its image (as CameraSubscriber's does) unless it is remapped itself.
-      const std::string remapped = nh.resolveName("depth/camera_info", true);
-      info_topic_ = remapped != nh.resolveName("depth/camera_info", false)
-                        ? remapped
-                        : image_transport::getCameraInfoTopic(image_topic);
-      info_ = nh.subscribe(info_topic_, 2, &PeopleNode::on_info, this, no_delay);
-    }
-    if (o.colour && o.compressed_colour) {
-      colour_topic_ = nh.resolveName("rgb/image") + "/compressed";
-      compressed_colour_ = nh.subscribe(colour_topic_, 2, &PeopleNode::on_colour<sensor_msgs::CompressedImage>, this, no_delay);
-    } else if (o.colour) {
-      colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour<sensor_msgs::Image>, this, hints);
-      colour_topic_ = colour_.getTopic();
-    }
+    subscribe_depth(nh, o.compressed_depth);
+    if (o.colour) subscribe_colour(nh, o.compressed_colour);
     timer_ = nh.createWallTimer(ros::WallDuration(o.diagnostics_period_s), [this, o](const ros::WallTimerEvent&) {
       diagnostics_topic_.publish(diagnostics_.report(live_.stats(), hardware_id_, o.diagnostics_period_s));
     });
@@ -109,6 +74,52 @@ class PeopleNode {
   }
 
  private:
+  // Small messages (camera_info) are sent at once, not held back by Nagle's algorithm.
+  static ros::TransportHints no_delay() { return ros::TransportHints().tcpNoDelay(); }
+  static image_transport::TransportHints raw_no_delay() { return image_transport::TransportHints("raw", no_delay()); }
+
+  // depth/image (raw or its compressedDepth subtopic) and its camera_info, by ~camera_info.
+  void subscribe_depth(ros::NodeHandle& nh, bool compressed) {
+    const std::string image_topic = nh.resolveName("depth/image");
+    if (camera_info_ == CameraInfoPairing::exact && !compressed) {
+      depth_with_info_ = transport_.subscribeCamera("depth/image", 2, &PeopleNode::on_depth<sensor_msgs::Image>, this, raw_no_delay());
+      depth_topic_ = depth_with_info_.getTopic();
+      info_topic_ = depth_with_info_.getInfoTopic();
+    } else if (camera_info_ == CameraInfoPairing::exact) {  // compressed, with the camera_info of its stamp
+      depth_topic_ = image_topic + "/compressedDepth";
+      info_topic_ = image_transport::getCameraInfoTopic(image_topic);
+      compressed_depth_.subscribe(nh, depth_topic_, 2, no_delay());
+      compressed_info_.subscribe(nh, info_topic_, 2, no_delay());
+      compressed_with_info_ = std::make_unique<CompressedWithInfo>(compressed_depth_, compressed_info_, 4);
+      compressed_with_info_->registerCallback(&PeopleNode::on_depth<sensor_msgs::CompressedImage>, this);
+    } else {
+      if (compressed) {
+        depth_topic_ = image_topic + "/compressedDepth";
+        depth_alone_ = nh.subscribe(depth_topic_, 2, &PeopleNode::on_depth_alone<sensor_msgs::CompressedImage>, this, no_delay());
+      } else {
+        depth_ = transport_.subscribe("depth/image", 2, &PeopleNode::on_depth_alone<sensor_msgs::Image>, this, raw_no_delay());
+        depth_topic_ = depth_.getTopic();
+      }
+      // depth/camera_info follows its image (as CameraSubscriber's does) unless it is remapped itself.
+      const std::string remapped = nh.resolveName("depth/camera_info", true);
+      info_topic_ = remapped != nh.resolveName("depth/camera_info", false)
+                        ? remapped
+                        : image_transport::getCameraInfoTopic(image_topic);
+      info_ = nh.subscribe(info_topic_, 2, &PeopleNode::on_info, this, no_delay());
+    }
+  }
+
+  // rgb/image (raw or its compressed subtopic).
+  void subscribe_colour(ros::NodeHandle& nh, bool compressed) {
+    if (compressed) {
+      colour_topic_ = nh.resolveName("rgb/image") + "/compressed";
+      compressed_colour_ = nh.subscribe(colour_topic_, 2, &PeopleNode::on_colour<sensor_msgs::CompressedImage>, this, no_delay());
+    } else {
+      colour_ = transport_.subscribe("rgb/image", 2, &PeopleNode::on_colour<sensor_msgs::Image>, this, raw_no_delay());
+      colour_topic_ = colour_.getTopic();
+    }
+  }
+
   struct Arrival {
     std_msgs::Header header;
     std::int64_t received_us = 0;  ///< the depth message in the node
