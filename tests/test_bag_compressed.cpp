@@ -170,3 +170,29 @@ TEST(BagCompressed, RawTopicsAreChosenOverTheirCompressedTwins) {
     EXPECT_TRUE(same_pixels(a[i].bgr, b[i].bgr)) << i;
   }
 }
+
+// JPEG colour (the usual `.../image_raw/compressed`): read close to the PNG folder's colour, the depth exact.
+// The script needs python3-opencv for JPEG (not in scripts/setup.sh: skipped without it).
+TEST(BagCompressed, JpegColourReadsCloseToTheFolders) {
+  RDSF_REQUIRE_BAG_WRITER();
+  if (test::run("/usr/bin/python3 -c 'import cv2'").exit_code != 0) {
+    GTEST_SKIP() << "python3-opencv missing: the script cannot write JPEG colour";
+  }
+  test::TempDir dir("rdsf-bag-compressed");
+  const std::vector<DepthFrame> png_frames = all_frames(*open_frame_source(people_dir()));
+  const std::string bag = test::write_bag(people_dir(), dir / "jpeg.bag", "--compressed-colour jpeg");
+  const std::vector<DepthFrame> frames = all_frames(*open_frame_source(bag));
+  ASSERT_EQ(frames.size(), png_frames.size());
+  int with_colour = 0;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_TRUE(same_pixels(frames[i].depth_mm, png_frames[i].depth_mm)) << png_frames[i].name;
+    ASSERT_EQ(frames[i].has_colour(), png_frames[i].has_colour()) << png_frames[i].name;
+    if (!frames[i].has_colour()) continue;
+    ++with_colour;
+    const double mean_difference = cv::norm(frames[i].bgr, png_frames[i].bgr, cv::NORM_L1) /
+                                   static_cast<double>(frames[i].bgr.total() * 3);
+    EXPECT_LT(mean_difference, 4.0) << png_frames[i].name;  // JPEG's loss, channels in the right order
+    EXPECT_GT(mean_difference, 0.0) << png_frames[i].name;  // it is the JPEG that was read
+  }
+  EXPECT_EQ(with_colour, 14);
+}
