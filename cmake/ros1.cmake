@@ -7,7 +7,7 @@
 #   RDSF_GENCPP_SCRIPT   gencpp's generator (gen_cpp.py) and RDSF_GENCPP_TEMPLATE_DIR its msg.h.template
 #   RDSF_ROS_MSG_INCLUDE_FLAGS  "-I pkg:dir" for the message definitions ours use (std_msgs, geometry_msgs,
 #                        sensor_msgs: Debian's ros-*-msgs packages)
-# Debian packages (scripts/setup.sh): libroscpp-dev libsensor-msgs-dev libcv-bridge-dev libimage-transport-dev
+# Debian packages (scripts/setup.sh): libroscpp-dev libmessage-filters-dev libsensor-msgs-dev libcv-bridge-dev libimage-transport-dev
 # libvisualization-msgs-dev libdiagnostic-msgs-dev python3-genmsg python3-gencpp ros-std-msgs ros-geometry-msgs
 # ros-sensor-msgs.
 set(rdsf_ros_found OFF)

@@ -16,7 +16,7 @@ packages=(
 # The ROS 1 node rdsf_people (ros/, docs/ros.md) and its test: libraries, the message generator and the
 # definitions it reads, roscore, rosbag play, and what scripts/frames-to-bag.py needs to write the test's bag.
 packages+=(
-  libroscpp-dev libsensor-msgs-dev libcv-bridge-dev libimage-transport-dev libvisualization-msgs-dev
+  libroscpp-dev libmessage-filters-dev libsensor-msgs-dev libcv-bridge-dev libimage-transport-dev libvisualization-msgs-dev
   libdiagnostic-msgs-dev python3-genmsg python3-gencpp ros-std-msgs ros-geometry-msgs ros-sensor-msgs
   ros-core python3-rosbag python3-sensor-msgs python3-numpy python3-png
   libopenmpi-dev openmpi-bin parallel slurm-wlm  # issue 37: mpirun rdsf-train, shard-mine.sh, the Slurm array test
