@@ -4,6 +4,7 @@
 #include <map>
 #include <mutex>
 
+#include <cv_bridge/cv_bridge.h>
 #include <image_transport/camera_common.h>
 #include <image_transport/image_transport.h>
 #include <message_filters/subscriber.h>
@@ -17,6 +18,7 @@
 #include "rdsf/frame/compressed_image.hpp"
 #include "rdsf/pipeline/live_pipeline.hpp"
 #include "rdsf/pipeline/people_detector.hpp"
+#include "rdsf/pipeline/people_overlay.hpp"
 #include "ros/colour_pairing.hpp"
 #include "ros/image_frames.hpp"
 #include "ros/node_diagnostics.hpp"
@@ -41,6 +43,7 @@ class PeopleNode {
         camera_info_(o.camera_info),
         people_(nh.advertise<rdsf_people::People>("people", 10)),
         markers_(nh.advertise<visualization_msgs::MarkerArray>("people/markers", 10)),
+        picture_(nh.advertise<sensor_msgs::Image>("people/image", 2)),
         diagnostics_topic_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10)),
         live_(detector.pipeline(), {resolve_thread_count(o.threads)}, clock_,
               [this](const DepthFrame& f, PipelineFrame& r, std::int64_t) { publish(f, r); }) {
@@ -55,7 +58,8 @@ class PeopleNode {
     return depth_topic_ + " with " + info_topic_ +
            (camera_info_ == CameraInfoPairing::latest ? " (the latest)" : " (by stamp)") +
            (colour_topic_.empty() ? "" : " and " + colour_topic_) +
-           " -> " + people_.getTopic() + ", " + markers_.getTopic() + ", " + diagnostics_topic_.getTopic();
+           " -> " + people_.getTopic() + ", " + markers_.getTopic() + ", " + picture_.getTopic() + ", " +
+           diagnostics_topic_.getTopic();
   }
 
   /// Stops the subscriptions, processes the frames still waiting and returns the summary line.
@@ -247,6 +251,12 @@ class PeopleNode {
     diagnostics_.published(static_cast<double>(now_us - arrival.received_us) / 1000.0,
                            static_cast<double>(now_us - arrival.complete_us) / 1000.0);
     markers_.publish(people_markers(people, frame.camera));
+    // rdsf-detect --save-dir's picture of the frame, drawn only while someone watches (rqt_image_view): a few
+    // milliseconds on this worker, after the people are out.
+    if (picture_.getNumSubscribers() > 0) {
+      picture_.publish(
+          cv_bridge::CvImage(arrival.header, "bgr8", render_people(frame, result, detector_.pipeline().tracker())).toImageMsg());
+    }
   }
 
   PeopleDetector& detector_;
@@ -269,7 +279,7 @@ class PeopleNode {
   std::function<void(const sensor_msgs::CameraInfoConstPtr&)> waiting_image_;
   image_transport::Subscriber colour_;  ///< raw
   ros::Subscriber compressed_colour_;   ///< compressed
-  ros::Publisher people_, markers_, diagnostics_topic_;
+  ros::Publisher people_, markers_, picture_, diagnostics_topic_;
   ros::WallTimer timer_;
   std::string hardware_id_;
   std::int64_t next_index_ = 0;

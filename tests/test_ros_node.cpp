@@ -24,7 +24,9 @@
 #if RDSF_TEST_WITH_ROS
 #include <mutex>
 
+#include <cv_bridge/cv_bridge.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <opencv2/imgcodecs.hpp>
 #include <rdsf_people/People.h>
 #include <ros/ros.h>
 
@@ -189,13 +191,17 @@ class TestMaster {
   std::unique_ptr<BackgroundProcess> core_;
 };
 
-// What rdsf_people publishes on /people, collected while a bag is played to it.
+// What rdsf_people publishes on /people (and its pictures on /people/image), collected while a bag is played.
 class PeopleListener {
  public:
   PeopleListener() : spinner_(1) {
     people_ = nh_.subscribe<rdsf_people::People>("/people", 100, [this](const rdsf_people::PeopleConstPtr& m) {
       const std::lock_guard<std::mutex> lock(mutex_);
       received_.push_back(*m);
+    });
+    pictures_ = nh_.subscribe<sensor_msgs::Image>("/people/image", 10, [this](const sensor_msgs::ImageConstPtr& m) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      received_pictures_.push_back(cv_bridge::toCvCopy(m, "bgr8")->image);
     });
     diagnostics_ = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
         "/diagnostics", 10, [this](const diagnostic_msgs::DiagnosticArrayConstPtr&) {
@@ -206,6 +212,12 @@ class PeopleListener {
   }
   ~PeopleListener() { spinner_.stop(); }
 
+  /// The pictures of the last play(), in arrival order.
+  std::vector<cv::Mat> pictures() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return received_pictures_;
+  }
+
   /// Starts the node with `node_arguments` (as rosrun gives them), waits until it is up (its first
   /// /diagnostics), plays the bag (`play_arguments`: rosbag play's options and the file), waits for up to
   /// `expected` messages, stops the node; returns what it published in stamp order, and its log in `log`.
@@ -214,6 +226,7 @@ class PeopleListener {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       received_.clear();
+      received_pictures_.clear();
       node_up_ = false;
     }
     BackgroundProcess node(std::string(RDSF_BINARY_DIR) + "/ros/rdsf_people " + node_arguments +
@@ -245,8 +258,9 @@ class PeopleListener {
   ros::NodeHandle nh_;
   std::mutex mutex_;
   std::vector<rdsf_people::People> received_;
+  std::vector<cv::Mat> received_pictures_;
   bool node_up_ = false;
-  ros::Subscriber people_, diagnostics_;
+  ros::Subscriber people_, pictures_, diagnostics_;
   ros::AsyncSpinner spinner_;
 };
 
@@ -414,10 +428,12 @@ TEST(RosNode, ARobotsBagWithTheColourCamerasCameraInfoIsReadWithTheLatestCameraI
   // rdsf-detect's answer (the bag source takes the CameraInfo of the depth images' optical frame).
   const test::RunResult detect = test::run(test::program("rdsf-detect") + " --source " + test::quote(bag) +
                                            " --model people --models-dir " + test::quote(models) + " --out " +
-                                           test::quote(dir / "detect.csv"));
+                                           test::quote(dir / "detect.csv") + " --save-dir " + test::quote(dir.path()));
   ASSERT_EQ(detect.exit_code, 0) << detect.err;
   const std::vector<CsvFrame> expected = read_detect_csv(dir / "detect.csv");
   ASSERT_EQ(expected.size(), 1U);
+  const cv::Mat saved_picture = cv::imread(dir / "0.detections.png", cv::IMREAD_COLOR);
+  ASSERT_FALSE(saved_picture.empty());
   ASSERT_GE(expected[0].people.size(), 1U);  // the man standing in front of the robot (and the seated person)
 
   // Two copies: the depth image before the camera_info, and a camera_info of another optical frame.
@@ -474,6 +490,11 @@ with rosbag.Bag(other, 'w') as out:
       listener.play(topics + " _camera_info:=latest", test::quote(bag), 1, dir / "latest.log", log);
   same_as_detect(latest);
   EXPECT_NE(log.find("1 depth images received, 0 refused, 1 processed, 0 dropped"), std::string::npos) << log;
+  // Watched, the node publishes rdsf-detect --save-dir's picture of the frame, pixel for pixel.
+  const std::vector<cv::Mat> pictures = listener.pictures();
+  ASSERT_EQ(pictures.size(), 1U);
+  ASSERT_EQ(pictures[0].size(), saved_picture.size());
+  EXPECT_EQ(cv::norm(pictures[0], saved_picture, cv::NORM_INF), 0);
   EXPECT_NE(log.find("/hero/head_rgbd_sensor/rgb/camera_info (the latest)"), std::string::npos) << log;
 
   const std::vector<rdsf_people::People> waited = listener.play(topics + " --camera-info latest",
