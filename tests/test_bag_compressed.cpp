@@ -6,7 +6,10 @@
 
 #include <fstream>
 
+#include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/frame/frame_source.hpp"
+#include "rdsf/pipeline/parallel_pipeline.hpp"
+#include "rdsf/pipeline/people_detector.hpp"
 #include "support/bag_writer.hpp"
 #include "support/test_support.hpp"
 
@@ -195,4 +198,50 @@ TEST(BagCompressed, JpegColourReadsCloseToTheFolders) {
     EXPECT_GT(mean_difference, 0.0) << png_frames[i].name;  // it is the JPEG that was read
   }
   EXPECT_EQ(with_colour, 14);
+}
+
+// run_in_frame_order decodes a bag's frames on its workers (BagSource::next_deferred: messages read and paired
+// in order, images decoded apart): on 2 threads the same scores and people, frame for frame, as the frames
+// read one by one with next(); a damaged message stops the run with its one-line error from the worker.
+TEST(BagCompressed, FramesDecodedOnTheWorkersAreTheFramesReadInOrder) {
+  RDSF_REQUIRE_BAG_WRITER();
+  test::TempDir dir("rdsf-bag-compressed");
+  const std::string bag = test::write_bag(people_dir(), dir / "png.bag", "--compressed-depth png --compressed-colour png");
+  const std::string model = resolve_model("people", (test::realdata_dir() / "no-models-here").string());
+  PeopleDetector in_order(model), on_workers(model);
+  std::vector<PipelineFrame> expected;
+  for (const DepthFrame& f : all_frames(*open_frame_source(bag))) expected.push_back(in_order.pipeline().process(f));
+  ASSERT_EQ(expected.size(), 46u);
+  auto source = open_frame_source(bag);
+  std::size_t i = 0;
+  int people = 0;
+  const std::int64_t handed = run_in_frame_order(
+      on_workers.pipeline(), *source, CameraModel{}, {2, 0}, [&](const DepthFrame& f, PipelineFrame& r) {
+        EXPECT_EQ(f.name, std::to_string(i));
+        EXPECT_EQ(r.scores, expected[i].scores) << i;
+        EXPECT_EQ(r.person, expected[i].person) << i;
+        for (int p : r.person) people += p != 0 ? 1 : 0;
+        ++i;
+        return true;
+      });
+  EXPECT_EQ(handed, 46);
+  EXPECT_GT(people, 30);  // the comparison compared people
+  EXPECT_NE(source->summary().find("paired with 14 of 46 depth frames"), std::string::npos) << source->summary();
+
+  const std::string damaged = dir / "damaged.bag";
+  const test::RunResult r = test::run(
+      "/usr/bin/python3 -c \"import rosbag; o=rosbag.Bag('" + damaged + "','w'); n=0\n"
+      "for t,m,s in rosbag.Bag('" + bag + "').read_messages():\n"
+      "    if t.endswith('compressedDepth'):\n"
+      "        if n == 30: m.data = m.data[:40]\n"
+      "        n += 1\n"
+      "    o.write(t, m, s)\n"
+      "o.close()\"");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  PeopleDetector again(model);
+  auto broken = open_frame_source(damaged);
+  const std::string e = test::error_message(
+      [&] { run_in_frame_order(again.pipeline(), *broken, CameraModel{}, {2, 0}, {}); });
+  EXPECT_EQ(e.rfind(damaged + ": topic /camera/depth/image_raw/compressedDepth: image 30: truncated PNG", 0), 0u) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;
 }

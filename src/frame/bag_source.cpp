@@ -386,36 +386,41 @@ struct BagSource::Impl {
     return image;
   }
 
+  // The decoding below reads only what open() set, so frames decode on several threads at once (next_deferred);
+  // `index` is the frame's, for errors.
+
   /// A compressed image decoded (`decode`), checked to be of the camera model's size.
   template <typename Decode>
-  auto decoded(const std::string& topic, const sensor_msgs::CompressedImage& image, Decode decode) const {
-    const auto out = decode(path + ": topic " + topic + ": image " + std::to_string(delivered), image.format,
+  auto decoded(const std::string& topic, const sensor_msgs::CompressedImage& image, std::int64_t index,
+               Decode decode) const {
+    const auto out = decode(path + ": topic " + topic + ": image " + std::to_string(index), image.format,
                             image.data.data(), image.data.size());
     if (out.cols != camera.width_px || out.rows != camera.height_px) {
-      fail_topic(topic, "image " + std::to_string(delivered) + " is " + std::to_string(out.cols) + "x" +
+      fail_topic(topic, "image " + std::to_string(index) + " is " + std::to_string(out.cols) + "x" +
                             std::to_string(out.rows) + ", the camera model " + camera.describe());
     }
     return out;
   }
 
   /// Checks an image's byte order, size (the camera model's) and data length (step x height).
-  void check_image(const std::string& topic, const sensor_msgs::Image& image, std::size_t bytes_per_pixel) const {
+  void check_image(const std::string& topic, const sensor_msgs::Image& image, std::size_t bytes_per_pixel,
+                   std::int64_t index) const {
     if (image.is_bigendian) fail_topic(topic, "big-endian images are not read");
     if (static_cast<int>(image.width) != camera.width_px || static_cast<int>(image.height) != camera.height_px) {
-      fail_topic(topic, "image " + std::to_string(delivered) + " is " + std::to_string(image.width) + "x" +
+      fail_topic(topic, "image " + std::to_string(index) + " is " + std::to_string(image.width) + "x" +
                             std::to_string(image.height) + ", the camera model " + camera.describe());
     }
     if (image.step < image.width * bytes_per_pixel ||
         image.data.size() < static_cast<std::size_t>(image.step) * image.height) {
-      fail_topic(topic, "image " + std::to_string(delivered) + " holds " + std::to_string(image.data.size()) +
+      fail_topic(topic, "image " + std::to_string(index) + " holds " + std::to_string(image.data.size()) +
                             " bytes, step " + std::to_string(image.step) + " x " + std::to_string(image.height) +
                             " rows needed");
     }
   }
 
-  cv::Mat1w to_depth_mm(const ImageMessage& message) const {
+  cv::Mat1w to_depth_mm(const ImageMessage& message, std::int64_t index) const {
     if (message.compressed) {
-      return decoded(depth_topic, *message.compressed,
+      return decoded(depth_topic, *message.compressed, index,
                      [this](const std::string& where, const std::string& format, const std::uint8_t* data, std::size_t size) {
                        return decode_compressed_depth(where, format, data, size, unit_mm);
                      });
@@ -424,7 +429,7 @@ struct BagSource::Impl {
     const int rows = camera.height_px, cols = camera.width_px;
     cv::Mat1w depth(rows, cols);
     if (image.encoding == "32FC1") {
-      check_image(depth_topic, image, 4);
+      check_image(depth_topic, image, 4, index);
       for (int y = 0; y < rows; ++y) {
         const std::uint8_t* row = image.data.data() + static_cast<std::size_t>(y) * image.step;
         for (int x = 0; x < cols; ++x) {
@@ -436,10 +441,10 @@ struct BagSource::Impl {
       return depth;
     }
     if (image.encoding != "16UC1" && image.encoding != "mono16") {
-      fail_topic(depth_topic, "image " + std::to_string(delivered) + " has encoding " + image.encoding +
+      fail_topic(depth_topic, "image " + std::to_string(index) + " has encoding " + image.encoding +
                                   ", not a depth encoding (16UC1, mono16, 32FC1)");
     }
-    check_image(depth_topic, image, 2);
+    check_image(depth_topic, image, 2, index);
     for (int y = 0; y < rows; ++y) {
       const std::uint8_t* row = image.data.data() + static_cast<std::size_t>(y) * image.step;
       std::memcpy(depth.ptr(y), row, 2 * static_cast<std::size_t>(cols));
@@ -449,13 +454,13 @@ struct BagSource::Impl {
     return depth;
   }
 
-  cv::Mat3b to_bgr(const ImageMessage& message) const {
-    if (message.compressed) return decoded(colour_topic, *message.compressed, decode_compressed_colour);
+  cv::Mat3b to_bgr(const ImageMessage& message, std::int64_t index) const {
+    if (message.compressed) return decoded(colour_topic, *message.compressed, index, decode_compressed_colour);
     const sensor_msgs::Image& image = *message.raw;
     if (!is_colour_encoding(image.encoding)) {
       fail_topic(colour_topic, "image has encoding " + image.encoding + ", not a colour encoding (rgb8, bgr8)");
     }
-    check_image(colour_topic, image, 3);
+    check_image(colour_topic, image, 3, index);
     const cv::Mat3b view(camera.height_px, camera.width_px,
                          reinterpret_cast<cv::Vec3b*>(const_cast<std::uint8_t*>(image.data.data())), image.step);
     cv::Mat3b bgr;
@@ -523,10 +528,21 @@ BagSource::BagSource(const std::string& path, const FrameSourceOptions& options)
 BagSource::~BagSource() = default;
 
 bool BagSource::next(DepthFrame& frame) {
+  FrameDecode decode;
+  if (!next_deferred(decode)) return false;
+  frame = decode();
+  return true;
+}
+
+// In order: the next depth message (and the one after it, read ahead for its stamp), its colour message by
+// the pairing rule, the pairing's figures. Deferred: both images' decoding.
+bool BagSource::next_deferred(FrameDecode& decode) {
   Impl& s = *impl_;
   if (!s.lookahead) return false;
   const ImageMessage image = s.lookahead;
   const std::int64_t t_us = s.lookahead_us;
+  ImageMessage colour;
+  std::int64_t gap_us = 0;
   try {
     // Read the next depth image ahead: its stamp bounds the colour frames that are nearer to this one.
     s.lookahead = {};
@@ -534,15 +550,10 @@ bool BagSource::next(DepthFrame& frame) {
       s.lookahead = s.instantiate_image(*s.depth_it, s.depth_topic);
       s.lookahead_us = Impl::depth_stamp_us(s.lookahead, *s.depth_it);
     }
-    frame.depth_mm = s.to_depth_mm(image);
-    frame.bgr.release();
-    frame.colour_gap_us = 0;
     if (s.colour_view) {
-      std::int64_t gap_us = 0;
       const std::optional<std::int64_t> next_us = s.lookahead ? std::optional<std::int64_t>(s.lookahead_us) : std::nullopt;
-      if (ImageMessage colour = s.colour_for(t_us, s.previous_us, next_us, gap_us)) {
-        frame.bgr = s.to_bgr(colour);
-        frame.colour_gap_us = gap_us;
+      colour = s.colour_for(t_us, s.previous_us, next_us, gap_us);
+      if (colour) {
         ++s.paired;
         s.gap_sum_us += gap_us;
         s.gap_max_us = std::max(s.gap_max_us, gap_us);
@@ -554,11 +565,20 @@ bool BagSource::next(DepthFrame& frame) {
     s.fail_topic(s.depth_topic, "image " + std::to_string(s.delivered + 1) + " cannot be read (" + e.what() + ")");
   }
   s.previous_us = t_us;
-  frame.index = s.delivered;
-  frame.name = std::to_string(s.delivered);
-  frame.timestamp_us = t_us;
-  frame.camera = s.camera;
-  ++s.delivered;
+  const std::int64_t index = s.delivered++;
+  decode = [impl = impl_.get(), image, colour, gap_us, index, t_us] {
+    DepthFrame frame;
+    frame.depth_mm = impl->to_depth_mm(image, index);
+    if (colour) {
+      frame.bgr = impl->to_bgr(colour, index);
+      frame.colour_gap_us = gap_us;
+    }
+    frame.index = index;
+    frame.name = std::to_string(index);
+    frame.timestamp_us = t_us;
+    frame.camera = impl->camera;
+    return frame;
+  };
   return true;
 }
 

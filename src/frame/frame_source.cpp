@@ -17,6 +17,13 @@ bool is_openni_spec(const std::string& spec) {
   return oni_file || spec == "openni" || spec.find("://") != std::string::npos;
 }
 
+bool FrameSource::next_deferred(FrameDecode& decode) {
+  auto frame = std::make_shared<DepthFrame>();
+  if (!next(*frame)) return false;
+  decode = [frame] { return std::move(*frame); };
+  return true;
+}
+
 std::vector<std::string> index_frame_names(std::int64_t count) {
   std::vector<std::string> names;
   for (std::int64_t i = 0; i < count; ++i) names.push_back(std::to_string(i));

@@ -126,6 +126,13 @@ bool PngFolderSource::next(DepthFrame& frame) {
   return true;
 }
 
+bool PngFolderSource::next_deferred(FrameDecode& decode) {
+  if (next_ >= depth_paths_.size()) return false;
+  const std::size_t i = next_++;
+  decode = [this, i] { return read_frame(i); };
+  return true;
+}
+
 DepthFrame PngFolderSource::read_frame(std::size_t i) const {
   const std::string& depth_path = depth_paths_.at(i);
   DepthFrame frame;

@@ -4,40 +4,31 @@
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/ordered_pool.hpp"
-#include "rdsf/frame/png_folder_source.hpp"
 
 namespace rdsf {
 namespace {
-
-/// A claimed frame: its index (to load on a worker) or the frame itself (read by claim).
-struct FrameJob {
-  std::int64_t index = 0;
-  DepthFrame frame;
-  bool read = false;
-};
 
 struct Analysed {
   DepthFrame frame;
   PipelineFrame result;
 };
 
-/// The one loop behind the three entry points: `claim` fills a job in frame order, `load` makes a job's
-/// frame on a worker.
+/// The one loop behind both entry points: `claim` reads the next frame in frame order as far as it must be
+/// read in order, its decode() makes the frame on a worker.
 std::int64_t run_jobs(PeoplePipeline& pipeline, const ParallelParams& params,
-                      const std::function<bool(FrameJob&)>& claim, const std::function<DepthFrame(FrameJob&)>& load,
-                      const PipelineCallback& on_frame) {
+                      const std::function<bool(FrameDecode&)>& claim, const PipelineCallback& on_frame) {
   const PeoplePipeline& analyser = pipeline;  // analyse() is const: safe on every worker
   std::int64_t handed = 0, claimed = 0;
-  ordered_map<FrameJob>(
+  ordered_map<FrameDecode>(
       params.threads, params.frames_ahead > 0 ? params.frames_ahead : default_items_ahead(params.threads),
-      [&](FrameJob& job) {
+      [&](FrameDecode& decode) {
         if (params.max_frames > 0 && claimed >= params.max_frames) return false;
         ++claimed;
-        return claim(job);
+        return claim(decode);
       },
-      [&](FrameJob& job) {
+      [&](FrameDecode& decode) {
         Analysed a;
-        a.frame = job.read ? std::move(job.frame) : load(job);
+        a.frame = decode();
         a.result = analyser.analyse(a.frame);
         return a;
       },
@@ -57,32 +48,18 @@ std::int64_t run_in_frame_order(PeoplePipeline& pipeline, std::int64_t count,
   std::int64_t next = 0;
   return run_jobs(
       pipeline, params,
-      [&](FrameJob& job) {
+      [&](FrameDecode& decode) {
         if (next >= count) return false;
-        job.index = next++;
+        decode = [&load, i = next++] { return load(i); };
         return true;
       },
-      [&](FrameJob& job) { return load(job.index); }, on_frame);
+      on_frame);
 }
 
 std::int64_t run_in_frame_order(PeoplePipeline& pipeline, FrameSource& source, const CameraModel& camera,
                                 const ParallelParams& params, const PipelineCallback& on_frame) {
-  const auto* folder = dynamic_cast<const PngFolderSource*>(&source);
-  if (folder == nullptr) {
-    return run_jobs(
-        pipeline, params,
-        [&](FrameJob& job) {
-          if (!source.next(job.frame)) return false;
-          job.read = true;
-          return true;
-        },
-        {}, on_frame);
-  }
-  // Each frame's files read on a worker: the same frame PngFolderSource delivers as frame i.
-  (void)camera;  // the folder's own (its camera.yml or the model it was opened with)
-  auto load = [folder](std::int64_t i) { return folder->read_frame(static_cast<std::size_t>(i)); };
-  return run_in_frame_order(pipeline, static_cast<std::int64_t>(folder->depth_paths().size()), load, params,
-                            on_frame);
+  (void)camera;  // the source's own (a folder's camera.yml, a bag's CameraInfo, or the model it was opened with)
+  return run_jobs(pipeline, params, [&](FrameDecode& decode) { return source.next_deferred(decode); }, on_frame);
 }
 
 }  // namespace rdsf

@@ -52,6 +52,8 @@ class BagSource : public FrameSource {
   BagSource& operator=(const BagSource&) = delete;
 
   bool next(DepthFrame& frame) override;
+  /// The messages read and paired in order; their images decoded by `decode` (any thread).
+  bool next_deferred(FrameDecode& decode) override;
   /// "bag F.bag: depth /camera/depth/image_raw (16UC1, 46 frames), colour /camera/rgb/image_raw (rgb8),
   /// camera model from /camera/depth/camera_info (640x480 fx=525 ...)".
   std::string description() const override;

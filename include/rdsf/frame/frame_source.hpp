@@ -12,6 +12,7 @@
 //   - a single NAME.depth.png file: that one frame;
 //   - any other file: a list file, one depth PNG path a line (relative to the list's folder; # comments).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,11 +23,20 @@
 
 namespace rdsf {
 
+/// The rest of reading a frame (decoding its images), which may run on another thread: see next_deferred().
+using FrameDecode = std::function<DepthFrame()>;
+
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
   /// Fills `frame` with the next frame and returns true; returns false at the end of the source.
   virtual bool next(DepthFrame& frame) = 0;
+  /// Reads the next frame as far as it must be read in order (a bag's next messages and their pairing) and
+  /// returns true with the rest in `decode`, or false at the end. decode() gives the frame next() would have
+  /// given; it may be called later on another thread, concurrently with further reads and other decodes (the
+  /// source must outlive it). Default: next() at once. PNG folders and bags defer their images' decoding, so
+  /// run_in_frame_order decodes them on its workers.
+  virtual bool next_deferred(FrameDecode& decode);
   /// What this source reads, for messages ("folder ../shared/realdata/people (32 frames)").
   virtual std::string description() const = 0;
   /// Number of frames when known in advance (files), nothing for live devices.

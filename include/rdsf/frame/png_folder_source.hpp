@@ -22,6 +22,8 @@ class PngFolderSource : public FrameSource {
   PngFolderSource(const std::string& spec, const FrameSourceOptions& options);
 
   bool next(DepthFrame& frame) override;
+  /// read_frame(i) of the next frame i, deferred.
+  bool next_deferred(FrameDecode& decode) override;
   std::string description() const override;
   std::optional<std::int64_t> frame_count() const override {
     return static_cast<std::int64_t>(depth_paths_.size());

@@ -24,11 +24,11 @@ struct ParallelParams {
 /// Called on the calling thread for each frame, in frame order, after tracking; return false to stop.
 using PipelineCallback = std::function<bool(const DepthFrame& frame, PipelineFrame& result)>;
 
-/// Runs over every frame of `source` (no frame read from it yet). Image folders and list files
-/// (PngFolderSource) are decoded on the workers, each frame from its own files with the source's camera model
-/// (PngFolderSource::read_frame; `camera` is not used since the folders' camera.yml, issue 36): the same frames
-/// the source delivers. Other sources (recordings, devices) are
-/// read in order, one read at a time. Returns the number of frames handed to on_frame.
+/// Runs over every frame of `source` (no frame read from it yet): read in order, one read at a time, as far as
+/// FrameSource::next_deferred reads, and decoded on the workers (image folders and list files each frame from
+/// its own files, bags each frame's messages; devices and .oni files are read whole in order): the same frames
+/// the source delivers. `camera` is not used (the sources carry their own since issue 36). Returns the number
+/// of frames handed to on_frame.
 std::int64_t run_in_frame_order(PeoplePipeline& pipeline, FrameSource& source, const CameraModel& camera,
                                 const ParallelParams& params, const PipelineCallback& on_frame);
 
