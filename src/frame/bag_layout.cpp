@@ -6,6 +6,7 @@
 #include <set>
 #include <vector>
 
+#include "rdsf/core/byte_order.hpp"
 namespace rdsf {
 namespace {
 
@@ -25,12 +26,6 @@ std::uint64_t version_2_0_line_bytes(std::ifstream& in) {
   return line.size() + 1;
 }
 
-std::uint64_t little_endian(const char* bytes, int count) {
-  std::uint64_t value = 0;
-  for (int i = count - 1; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(bytes[i]);
-  return value;
-}
-
 /// The fields of one record header that the guard needs.
 struct RecordFields {
   std::optional<int> op;
@@ -45,7 +40,7 @@ std::string read_fields(const std::string& header, std::uint64_t at, RecordField
   std::size_t i = 0;
   while (i < header.size()) {
     if (header.size() - i < 4) return "the record at byte " + std::to_string(at) + " has a " + part + " field cut short";
-    const std::uint64_t length = little_endian(header.data() + i, 4);
+    const std::uint64_t length = load_little_endian(header.data() + i, 4);
     i += 4;
     if (length > header.size() - i) {
       return "the record at byte " + std::to_string(at) + " has a " + part + " field of " + std::to_string(length) +
@@ -58,8 +53,8 @@ std::string read_fields(const std::string& header, std::uint64_t at, RecordField
     const std::string name = field.substr(0, equals);
     const std::string value = field.substr(equals + 1);
     if (name == "op" && value.size() == 1) fields.op = static_cast<unsigned char>(value[0]);
-    if (name == "index_pos" && value.size() == 8) fields.index_pos = little_endian(value.data(), 8);
-    if (name == "size" && value.size() == 4) fields.chunk_size = little_endian(value.data(), 4);
+    if (name == "index_pos" && value.size() == 8) fields.index_pos = load_little_endian(value.data(), 8);
+    if (name == "size" && value.size() == 4) fields.chunk_size = load_little_endian(value.data(), 4);
     if (name == "compression") fields.compression = value;
   }
   return "";
@@ -80,14 +75,14 @@ class RecordWalk {
       if (end - at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
       in_.seekg(static_cast<std::streamoff>(at));
       in_.read(length_bytes, 4);
-      const std::uint64_t header_bytes = little_endian(length_bytes, 4);
+      const std::uint64_t header_bytes = load_little_endian(length_bytes, 4);
       if (header_bytes > end - at - 4) return beyond(at, "header", header_bytes, end);
       std::string header(header_bytes, '\0');
       in_.read(header.data(), static_cast<std::streamsize>(header_bytes));
       const std::uint64_t data_len_at = at + 4 + header_bytes;
       if (end - data_len_at < 4) return "the record at byte " + std::to_string(at) + " is cut short";
       in_.read(length_bytes, 4);
-      const std::uint64_t data_bytes = little_endian(length_bytes, 4);
+      const std::uint64_t data_bytes = load_little_endian(length_bytes, 4);
       if (!in_) return "the record at byte " + std::to_string(at) + " could not be read";
       if (data_bytes > end - data_len_at - 4) return beyond(at, "data", data_bytes, end);
       const std::uint64_t data_at = data_len_at + 4;

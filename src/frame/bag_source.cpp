@@ -118,7 +118,7 @@ struct BagSource::Impl {
     for (const rosbag::ConnectionInfo* c : all.getConnections()) {
       if (std::find(seen.begin(), seen.end(), c->topic) != seen.end()) continue;
       seen.push_back(c->topic);
-      TopicInfo t{c->topic, c->datatype, "", "", 0, 0};
+      TopicInfo t{c->topic, c->datatype, "", "", 0, 0, ""};
       rosbag::View one(bag, rosbag::TopicQuery(c->topic));
       if (c->datatype == kCompressedType && one.begin() != one.end()) {
         CompressedPtr image = one.begin()->instantiate<sensor_msgs::CompressedImage>();
@@ -395,21 +395,23 @@ struct BagSource::Impl {
                Decode decode) const {
     const auto out = decode(path + ": topic " + topic + ": image " + std::to_string(index), image.format,
                             image.data.data(), image.data.size());
-    if (out.cols != camera.width_px || out.rows != camera.height_px) {
-      fail_topic(topic, "image " + std::to_string(index) + " is " + std::to_string(out.cols) + "x" +
-                            std::to_string(out.rows) + ", the camera model " + camera.describe());
-    }
+    check_size(topic, out.cols, out.rows, index);
     return out;
+  }
+
+  /// An image must be of the camera model's size.
+  void check_size(const std::string& topic, std::int64_t cols, std::int64_t rows, std::int64_t index) const {
+    if (cols != camera.width_px || rows != camera.height_px) {
+      fail_topic(topic, "image " + std::to_string(index) + " is " + std::to_string(cols) + "x" + std::to_string(rows) +
+                            ", the camera model " + camera.describe());
+    }
   }
 
   /// Checks an image's byte order, size (the camera model's) and data length (step x height).
   void check_image(const std::string& topic, const sensor_msgs::Image& image, std::size_t bytes_per_pixel,
                    std::int64_t index) const {
     if (image.is_bigendian) fail_topic(topic, "big-endian images are not read");
-    if (static_cast<int>(image.width) != camera.width_px || static_cast<int>(image.height) != camera.height_px) {
-      fail_topic(topic, "image " + std::to_string(index) + " is " + std::to_string(image.width) + "x" +
-                            std::to_string(image.height) + ", the camera model " + camera.describe());
-    }
+    check_size(topic, image.width, image.height, index);
     if (image.step < image.width * bytes_per_pixel ||
         image.data.size() < static_cast<std::size_t>(image.step) * image.height) {
       fail_topic(topic, "image " + std::to_string(index) + " holds " + std::to_string(image.data.size()) +

@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "rdsf/core/byte_order.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/depth_units.hpp"
 #include "rdsf/frame/png_decoder.hpp"
@@ -19,13 +20,8 @@ constexpr std::size_t kHeaderBytes = 12;  // int32 kind, float32 A, float32 B
 constexpr std::uint32_t kMaxSidePx = 16384;
 constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 26;
 
-std::uint32_t little_endian_u32(const std::uint8_t* p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-}
-
 float little_endian_f32(const std::uint8_t* p) {
-  const std::uint32_t bits = little_endian_u32(p);
+  const std::uint32_t bits = load_little_endian_u32(p);
   float value;
   std::memcpy(&value, &bits, sizeof value);
   return value;
@@ -43,7 +39,7 @@ class RvlValues {
       if (shift > 30) fail(where_, "RVL value longer than 33 bits (a damaged stream)");
       if (groups_left_ == 0) {
         if (size_ - position_ < 4) fail(where_, "RVL stream ends before the image is complete");
-        word_ = little_endian_u32(data_ + position_);
+        word_ = load_little_endian_u32(data_ + position_);
         position_ += 4;
         groups_left_ = 8;
       }
@@ -66,7 +62,7 @@ class RvlValues {
 // The 16-bit samples of an RVL image: uint32 columns, uint32 rows, the stream.
 cv::Mat1w decode_rvl(const std::string& where, const std::uint8_t* data, std::size_t size) {
   if (size < 8) fail(where, "RVL image without its size (" + std::to_string(size) + " bytes)");
-  const std::uint32_t cols = little_endian_u32(data), rows = little_endian_u32(data + 4);
+  const std::uint32_t cols = load_little_endian_u32(data), rows = load_little_endian_u32(data + 4);
   if (cols == 0 || rows == 0 || cols > kMaxSidePx || rows > kMaxSidePx ||
       static_cast<std::uint64_t>(cols) * rows > kMaxPixels) {
     fail(where, "RVL image of " + std::to_string(cols) + "x" + std::to_string(rows) + " pixels: not a depth image");
@@ -126,7 +122,7 @@ cv::Mat1w decode_compressed_depth(const std::string& where, const std::string& f
     fail(where, "compressedDepth compression '" + compression + "' (png or rvl are read)");
   }
   if (size < kHeaderBytes) fail(where, "compressedDepth of " + std::to_string(size) + " bytes has no header");
-  const std::uint32_t kind = little_endian_u32(data);
+  const std::uint32_t kind = load_little_endian_u32(data);
   const float a = little_endian_f32(data + 4), b = little_endian_f32(data + 8);
   const std::uint8_t* image = data + kHeaderBytes;
   const std::size_t image_bytes = size - kHeaderBytes;
@@ -137,11 +133,7 @@ cv::Mat1w decode_compressed_depth(const std::string& where, const std::string& f
     // The PNG's own size (IHDR, big-endian after the 8-byte signature and the chunk's length and type) is
     // checked before anything of that size is made.
     if (image_bytes >= 24) {
-      const auto big_endian = [&](std::size_t at) {
-        return static_cast<std::uint32_t>(image[at]) << 24 | static_cast<std::uint32_t>(image[at + 1]) << 16 |
-               static_cast<std::uint32_t>(image[at + 2]) << 8 | static_cast<std::uint32_t>(image[at + 3]);
-      };
-      const std::uint32_t cols = big_endian(16), rows = big_endian(20);
+      const std::uint32_t cols = load_big_endian_u32(image + 16), rows = load_big_endian_u32(image + 20);
       if (cols > kMaxSidePx || rows > kMaxSidePx || static_cast<std::uint64_t>(cols) * rows > kMaxPixels) {
         fail(where, "compressedDepth PNG of " + std::to_string(cols) + "x" + std::to_string(rows) +
                         " pixels: not a depth image");

@@ -19,6 +19,7 @@
 #endif
 #include <opencv2/imgcodecs.hpp>
 
+#include "rdsf/core/byte_order.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/yaml_guard.hpp"
 
@@ -26,10 +27,6 @@ namespace rdsf {
 namespace {
 
 const unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-
-std::uint32_t big_endian(const unsigned char* p) {
-  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | p[3];
-}
 
 bool chunk_is(const unsigned char* type, const char* name) { return std::memcmp(type, name, 4) == 0; }
 
@@ -52,13 +49,13 @@ PngLayout walk_chunks(const std::string& path, const unsigned char* bytes, std::
     if (at + 12 > size) {
       fail(path, "truncated PNG (file ends at byte " + std::to_string(size) + " before the IEND chunk)");
     }
-    const std::size_t length = big_endian(&bytes[at]);
+    const std::size_t length = load_big_endian_u32(&bytes[at]);
     if (length > size - at - 12) {
       fail(path, "truncated PNG (chunk at byte " + std::to_string(at) + " runs past the end of the file)");
     }
     const unsigned char* type = &bytes[at + 4];
     const std::uint32_t crc = static_cast<std::uint32_t>(libdeflate_crc32(0, type, length + 4));
-    if (crc != big_endian(&bytes[at + 8 + length])) {
+    if (crc != load_big_endian_u32(&bytes[at + 8 + length])) {
       fail(path, "corrupt PNG (CRC error in " + one_line(std::string(reinterpret_cast<const char*>(type), 4)) +
                      " chunk at byte " + std::to_string(at) + ")");
     }
@@ -67,8 +64,8 @@ PngLayout walk_chunks(const std::string& path, const unsigned char* bytes, std::
       if (!chunk_is(type, "IHDR") || length != 13) {
         layout.direct = false;
       } else {
-        layout.width = big_endian(data);
-        layout.height = big_endian(data + 4);
+        layout.width = load_big_endian_u32(data);
+        layout.height = load_big_endian_u32(data + 4);
         layout.bit_depth = data[8];
         layout.colour_type = data[9];
         const bool plain = data[10] == 0 && data[11] == 0 && data[12] == 0;  // deflate, filter 0, no interlace
