@@ -9,4 +9,6 @@ build_dir="${RDSF_BUILD_DIR:-build}"
 scripts/train-default-model.sh --quick
 # ... and on the four-camera mix (docs/sensors.md): the four cameras' samples reach both sets.
 scripts/train-default-model.sh --quick --cameras mix
+# ... and people-near's (docs/quality.md, "people-near"): its near rooms' sets reach the training.
+scripts/train-default-model.sh --quick --near-people
 ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc 2>/dev/null || echo 2)" --timeout 900

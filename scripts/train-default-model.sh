@@ -35,6 +35,11 @@
 # people and noise; not the default's rooms through another camera): the rendering costs about what the
 # default's does. Mining reads the four empty folders, labelling adds the four people folders to one set, the
 # training is the default's. Without the option the script runs exactly as before.
+# --near-people (docs/quality.md, "people-near: a model for a camera close to people") trains people-near/v1
+# instead: v4's recipe and rooms plus 300 rooms whose people stand 0.8-3 m from the camera (seed 211, 4,500
+# frames; 2,400 of them empty for negatives), labelled and mined into sets of their own (sets/people-near,
+# sets/negatives-near) added to the default's; --install copies it to models/people-near/v1.yml. About 12
+# minutes more than the default's run.
 # --seed N (rdsf-train's seed: another feature pool and other folds, the recipe's spread) and --sets-from DIR
 # (train on DIR/sets, an earlier run's work folder such as out/default-model/a, without rendering, mining or
 # labelling) retrain a recipe's sets with another seed (scripts/candidate-recipe-report.sh); neither is for
@@ -47,7 +52,7 @@ usage() {
   cat <<USAGE
 Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick] [--people-version 2|3|4]
                                       [--candidates 'OPTIONS'] [--synth-variety 'OPTIONS']
-                                      [--cameras kinect1|mix] [--seed N] [--sets-from DIR]
+                                      [--cameras kinect1|mix] [--near-people] [--seed N] [--sets-from DIR]
   --out DIR    work folder (default out/default-model): data/, sets/, models/people/vN.yml
   --install    copy the trained model to models/people/vN.yml
   --force      with --install: replace an existing models/people/vN.yml
@@ -63,14 +68,16 @@ Usage: scripts/train-default-model.sh [--out DIR] [--install [--force]] [--quick
   --cameras C  kinect1 (default): every room through the Kinect v1; mix: a quarter of the rooms (and of the
                empty ones) each through Kinect v1, Kinect v2 512x424, D435 848x480 and Orbbec 640x400 (seeds
                11-14); use another --out, and not with --install
+  --near-people  train people-near/v1: v4's recipe plus 300 rooms of people 0.8-3 m from the camera (for a
+               camera close to people; not the default model); with --people-version 4 only
   --seed N     rdsf-train's seed (default 1: the shipped model's); another is not for --install
   --sets-from DIR  train on DIR/sets (an earlier run's work folder, e.g. out/default-model/a) instead of
                rendering, mining and labelling (default none)
 USAGE
 }
-out=out/default-model install=0 force=0 quick=0 candidates="" synth_variety="" cameras=kinect1 trainer_seed=1 sets_from=""
+out=out/default-model install=0 force=0 quick=0 candidates="" synth_variety="" cameras=kinect1 trainer_seed=1 sets_from="" near_people=0
 people_version=4
-script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --people-version=people_version --candidates=candidates --synth-variety=synth_variety --cameras=cameras --seed=trainer_seed --sets-from=sets_from -- "$@"
+script_options train-default-model --out=out --install=install=1 --force=force=1 --quick=quick=1 --people-version=people_version --candidates=candidates --synth-variety=synth_variety --cameras=cameras --near-people=near_people=1 --seed=trainer_seed --sets-from=sets_from -- "$@"
 # What each version's recipe adds to the renderings and to rdsf-train; the file this script trains and installs.
 case "$people_version" in
   4) recipe_synth=(--furniture-dropout 0) recipe_train=(--operating-tar 0.8 --detection-options local-front=70) ;;
@@ -78,7 +85,13 @@ case "$people_version" in
   2) recipe_synth=() recipe_train=() ;;
   *) echo "train-default-model: --people-version takes 2, 3 or 4" >&2; exit 2 ;;
 esac
-target=models/people/v$people_version.yml
+model_name=people model_version=$people_version
+if ((near_people)); then
+  if [ "$people_version" != 4 ]; then echo "train-default-model: --near-people takes --people-version 4's recipe" >&2; exit 2; fi
+  if [ "$cameras" != kinect1 ]; then echo "train-default-model: --near-people renders through the Kinect v1 only" >&2; exit 2; fi
+  model_name=people-near model_version=1
+fi
+target=models/$model_name/v$model_version.yml
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
 if [ -n "$synth_variety" ] && ((install)); then echo "train-default-model: --synth-variety models are not for --install" >&2; exit 2; fi
@@ -94,6 +107,10 @@ if [ -n "$sets_from" ] && ! [ -f "$sets_from/sets/people/manifest.yml" -a -f "$s
   echo "train-default-model: $sets_from/sets holds no people and negatives sets (--sets-from)" >&2
   exit 1
 fi
+if [ -n "$sets_from" ] && ((near_people)) && ! [ -f "$sets_from/sets/people-near/manifest.yml" -a -f "$sets_from/sets/negatives-near/manifest.yml" ]; then
+  echo "train-default-model: $sets_from/sets holds no people-near and negatives-near sets (--sets-from --near-people)" >&2
+  exit 1
+fi
 read -r -a candidate_options <<<"$candidates"
 read -r -a synth_options <<<"$synth_variety"
 if ((install && !force)) && [ -e "$target" ]; then
@@ -105,12 +122,15 @@ scripts/setup.sh >&2
 bin=${RDSF_BUILD_DIR:-build}
 export SOURCE_DATE_EPOCH=1764547200  # 2025-12-01T00:00:00Z: the files' "created" times
 if ((quick)); then
-  frames_train=120 frames_empty=120 rounds=8 folds=2 group_frames=15
+  frames_train=120 frames_empty=120 rounds=8 folds=2 group_frames=15 frames_near=60 frames_near_empty=30
   out=$(mktemp -d)
   trap 'rm -rf "$out"' EXIT
 else
-  frames_train=18000 frames_empty=9600 rounds=100 folds=5 group_frames=30
+  frames_train=18000 frames_empty=9600 rounds=100 folds=5 group_frames=30 frames_near=4500 frames_near_empty=2400
 fi
+# --near-people's rooms: people 0.8-3 m from the camera (heads and feet cut by the image: boxes.csv holds the
+# visible box, people under half visible are left unanswered), rendered, labelled and mined apart.
+near_synth=(--people 1..4 --seed 211 --clip-frames 15 --people-distance 0.8..3 "${recipe_synth[@]}" "${synth_options[@]}")
 
 # The cameras the rooms are rendered through, name:seed:rdsf-synth camera options, the frames split evenly
 # between them (clips stay whole: 120, 18,000 and 9600 are multiples of 4 x 15). The default is one camera
@@ -147,6 +167,16 @@ train_once() {  # work folder -> prints the model path
   # Several cameras make one set from their folders (rdsf-label adds a source's frames to an existing set),
   # started again from nothing, so that a killed run cannot leave a set with some cameras twice.
   ((n == 1)) || rm -rf "$w/sets/people"
+  if ((near_people)); then
+    [ -f "$w/data/near-train/synth.yml" ] ||
+      "$bin/synth/rdsf-synth" --out "$w/data/near-train" --force --frames "$frames_near" "${near_synth[@]}" >&2
+    [ -f "$w/data/near-empty/synth.yml" ] ||
+      "$bin/synth/rdsf-synth" --out "$w/data/near-empty" --force --frames "$frames_near_empty" --empty "${near_synth[@]}" >&2
+    "$bin/miner/rdsf-mine" --source "$w/data/near-empty" --out "$w/sets/negatives-near" --threads 2 "${candidate_options[@]}" >&2
+    "$bin/labeler/rdsf-label" --source "$w/data/near-train" --out "$w/sets/people-near" \
+      --truth "$w/data/near-train/boxes.csv" --answers /dev/null --keep-rejected --fit-across-head-cut 0 \
+      "${candidate_options[@]}" >&2
+  fi
   # --fit-across-head-cut 0: the candidates v2 was labelled with. The default since (docs/candidates.md)
   # makes 15 more of these candidates positives (11,609 instead of 11,594) and so another model; the miner
   # does not read the fitted box, so its negatives are the same either way.
@@ -161,12 +191,13 @@ train_model() {  # work folder, folder of the sets people and negatives -> print
   local w=$1 sets=$2
   # The shipped versions before it beside it, so that the model trained is version N of 'people' in its own
   # file too.
-  rm -rf "$w/models/people"
-  mkdir -p "$w/models/people"
-  local v
-  for ((v = 1; v < people_version; v++)); do cp "models/people/v$v.yml" "$w/models/people/v$v.yml"; done
-  "$bin/trainer/rdsf-train" --models-dir "$w/models" --name people --pos "$sets/people" \
-    --neg "$sets/negatives" "$sets/people" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
+  rm -rf "$w/models/$model_name"
+  mkdir -p "$w/models/$model_name"
+  local v pos=("$sets/people") neg=("$sets/negatives" "$sets/people")
+  for ((v = 1; v < model_version; v++)); do cp "models/$model_name/v$v.yml" "$w/models/$model_name/v$v.yml"; done
+  if ((near_people)); then pos+=("$sets/people-near") neg+=("$sets/negatives-near" "$sets/people-near"); fi
+  "$bin/trainer/rdsf-train" --models-dir "$w/models" --name "$model_name" --pos "${pos[@]}" \
+    --neg "${neg[@]}" --rounds "$rounds" --bins 32 --folds "$folds" --group-by block \
     --group-frames "$group_frames" --seed "$trainer_seed" "${recipe_train[@]}" \
     --threads 2 >&2
   echo "$w/$target"
@@ -206,7 +237,17 @@ if ((quick)); then
       fi
     done
   fi
+  if ((near_people)); then
+    # The near rooms' sets were trained on: the model file records them beside the default's.
+    for set in people-near negatives-near; do
+      if ! grep -q "$out/a/sets/$set[\",]" "$model"; then
+        echo "train-default-model: --near-people: $model was not trained on sets/$set" >&2
+        exit 1
+      fi
+    done
+  fi
   suffix=""; [ "$cameras" = mix ] && suffix=", the four cameras' samples in both sets"
+  ((near_people)) && suffix=", the near rooms' sets trained on"
   echo "train-default-model: quick runs agree byte for byte ($(wc -c <"$model") bytes$suffix)"
   exit 0
 fi
