@@ -1,6 +1,7 @@
 // sensor_msgs/CompressedImage payloads decoded without ROS (rdsf/frame/compressed_image.hpp): compressedDepth
 // as PNG and RVL, 16UC1 and 32FC1, compressed colour (png, jpeg; channel order), and the faults as one-line
 // errors naming the message. Bags of such topics: test_bag_compressed.cpp.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -17,10 +18,10 @@ namespace {
 
 // The 12-byte compressedDepth header (kind 0, A, B) followed by `body`.
 std::vector<std::uint8_t> with_header(const std::vector<std::uint8_t>& body, float a = 0, float b = 0) {
-  std::vector<std::uint8_t> out(12, 0);
+  std::vector<std::uint8_t> out(12 + body.size(), 0);
   std::memcpy(out.data() + 4, &a, 4);  // this machine is little-endian, as the format
   std::memcpy(out.data() + 8, &b, 4);
-  out.insert(out.end(), body.begin(), body.end());
+  std::copy(body.begin(), body.end(), out.begin() + 12);
   return out;
 }
 

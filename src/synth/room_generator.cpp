@@ -528,6 +528,44 @@ void add_clutter(Rng& rng, const RoomParams& params, const RoomKind& kind, Room&
   }
 }
 
+// Moves what was added to `room` since (shapes, footprints, seats) by (dx, dz) on the floor plan.
+void move_added(Room& room, std::size_t shapes, std::size_t footprints, std::size_t seats, double dx, double dz) {
+  const Vec3 d{dx, 0, dz};
+  for (std::size_t i = shapes; i < room.furniture.size(); ++i) {
+    Shape& s = room.furniture[i];
+    s.a = s.a + d, s.b = s.b + d, s.centre = s.centre + d;
+  }
+  for (std::size_t i = footprints; i < room.footprints.size(); ++i) room.footprints[i].x += dx, room.footprints[i].z += dz;
+  for (std::size_t i = seats; i < room.seats.size(); ++i) room.seats[i].x += dx, room.seats[i].z += dz;
+}
+
+// RoomParams::near_clutter_max: each piece is placed as anywhere in the room, then moved so that its
+// footprint's centre stands 0.6-1.6 m from the camera within 20 degrees of its heading (overlapping what
+// stands there: the nearest surface is what the camera sees).
+void add_near_clutter(Rng& rng, const RoomParams& params, const CameraPose& camera, Room& room) {
+  using Adder = void (*)(Rng&, Room&);
+  static const Adder adders[] = {
+      add_boxes, add_small_thing, add_plant, add_stacked_chairs, add_desk, add_cupboard, add_panel,
+      add_coat_rack, add_cabinet, add_shelf, add_service_robot, add_table,
+  };
+  constexpr int kAdders = static_cast<int>(sizeof adders / sizeof adders[0]);
+  const int count = rng.integer(1, params.near_clutter_max);
+  for (int k = 0; k < count; ++k) {
+    const std::size_t shapes = room.furniture.size(), footprints = room.footprints.size(), seats = room.seats.size();
+    const int pick = rng.integer(0, kAdders);  // kAdders: a chair
+    if (pick == kAdders) {
+      add_chair(rng, room, params.clutter);
+    } else {
+      adders[pick](rng, room);
+    }
+    if (room.footprints.size() == footprints) continue;  // no free spot for it anywhere
+    const double distance_m = rng.uniform(0.6, 1.6), heading = camera.yaw_rad + rng.uniform(-20.0, 20.0) * pi / 180.0;
+    const Footprint& f = room.footprints[footprints];
+    move_added(room, shapes, footprints, seats, camera.x_m + distance_m * std::sin(heading) - f.x,
+               camera.z_m + distance_m * std::cos(heading) - f.z);
+  }
+}
+
 }  // namespace
 
 Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
@@ -541,6 +579,7 @@ Room generate_room(Rng& rng, const RoomParams& params, CameraPose& camera) {
   add_furniture(rng, params, kind, room);
   if (params.clutter) add_clutter(rng, params, kind, room);
   if (camera_spot) room.footprints.erase(room.footprints.begin());  // the camera's spot: people may walk there
+  if (params.near_clutter_max > 0) add_near_clutter(rng, params, camera, room);
   // materials: dark, glossy or finely structured surfaces lose some readings in patches
   for (Shape& shape : room.furniture) {
     shape.dropout = std::max(shape.dropout, static_cast<float>(rng.uniform(0.0, params.furniture_dropout_max)));

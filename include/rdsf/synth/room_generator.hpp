@@ -22,6 +22,10 @@ struct RoomParams {
   int furniture_min = 5, furniture_max = 12;    ///< pieces of furniture (x1.6 open plan, x0.6 corridors)
   bool clutter = true;                          ///< desks, cupboards, plants, lamps, doors, coat racks...
   int clutter_min = 3, clutter_max = 9;         ///< extra clutter pieces (with clutter)
+  /// Pieces of furniture and clutter moved 0.6-1.6 m in front of the camera, within 20 degrees of its heading:
+  /// 1..this many a room (0: none, the default). A camera close to people is close to things too (a box, a
+  /// desk, a chair back filling the image); docs/quality.md, "people-near".
+  int near_clutter_max = 0;
   bool room_kinds = true;                       ///< corridors and open-plan offices besides rooms
   double corridor_share = 0.15, open_plan_share = 0.2;
   double floor_dropout_max = 0.1, wall_dropout_max = 0.02, furniture_dropout_max = 0.3;
