@@ -75,6 +75,7 @@ expect 1 "^candidate-recipe-report: $empty holds no train/ and empty/ renderings
 expect 2 "--cameras mix models are not for --install" scripts/train-default-model.sh --cameras mix --install
 expect 2 "--near-people takes --people-version 4's recipe" scripts/train-default-model.sh --near-people --people-version 3
 expect 2 "--near-people renders through the Kinect v1 only" scripts/train-default-model.sh --near-people --cameras mix
+expect 2 "--near-people models are not for --install" scripts/train-default-model.sh --near-people --install
 expect 1 "^regularisation-sweep: $empty has no quality report's data" scripts/regularisation-sweep.sh --out "$empty"
 [ -z "$(ls -A "$empty")" ] || fail "regularisation-sweep wrote into $empty although it refused it"
 # candidate-crops.py: its help, a usage error before any work, and a picture of one row from a frame of its own.

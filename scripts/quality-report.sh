@@ -9,10 +9,10 @@
 #      in turn (thesis baseline, group validation + calibration, regularisation, trees, augmentation,
 #      iterated hard-negative bootstrapping), each evaluated on the held-out sequence and on real frames
 #   4. the recipes table: the four recipes with the chosen defaults, evaluated the same way
-#   5. the shipped models (models/people/v*.yml and models/people-near/v*.yml, trained by
-#      scripts/train-default-model.sh on their own synthetic rooms), evaluated the same way (whole runs and
-#      --only shipped); a model that states detection options (people/v4: --local-front 70) runs with them
-#      and so scores other candidates: it is evaluated on its own, the models stating none together
+#   5. the shipped default models (models/people/v*.yml, trained by scripts/train-default-model.sh on their
+#      own synthetic rooms), evaluated the same way (whole runs and --only shipped); a model that states
+#      detection options (people/v4: --local-front 70) runs with them and so scores other candidates: it is
+#      evaluated on its own, the models stating none together
 #   6. the peer row: PCL's ground-based people detector (peers/pcl_people, rdsf-pcl-people; libpcl-dev is
 #      installed here, CI does not need it) on the real frames with colour, beside the shipped models on the
 #      same frames (whole runs and --only shipped; --no-peer skips it)
@@ -296,21 +296,20 @@ if [ -z "$only" ] || [ "$only" = shipped ]; then
   # A model that states detection options (model file format 4) runs with them and scores other candidates
   # than the rest, which rdsf-detect will not score side by side: each such model has a table of its own.
   plain=() stating=()
-  for m in models/people/v*.yml models/people-near/v*.yml; do
+  for m in models/people/v*.yml; do
     if grep -q '^detection_options:' "$m"; then stating+=("$m"); else plain+=("$m"); fi
   done
   with_colour=1
   ((${#plain[@]})) && evaluate "$run/shipped" "${plain[@]}"
   declare -A states=()  # model file -> its options as rdsf-detect printed them ("--local-front 70")
-  shipped_name() { echo "$(basename "$(dirname "$1")")/$(basename "$1" .yml)"; }  # models/NAME/vN.yml -> NAME/vN
   for m in "${stating[@]}"; do
-    evaluate "$run/shipped-$(shipped_name "$m" | tr / -)" "$m"
+    evaluate "$run/shipped-$(basename "$m" .yml)" "$m"
     states[$m]=$(sed -n 's/.*states its detection options (\([^)]*\)).*/\1/p' "$logs/detect-synthetic.log" | head -1)
   done
   with_colour=0
   ((${#plain[@]})) && table_of "$run/shipped" "The shipped default models stating no detection options (scripts/train-default-model.sh: their own synthetic rooms, seed 11)" >> "$report"
   for m in "${stating[@]}"; do
-    table_of "$run/shipped-$(shipped_name "$m" | tr / -)" "The shipped model $(shipped_name "$m"), with the detection options it states (${states[$m]})" >> "$report"
+    table_of "$run/shipped-$(basename "$m" .yml)" "The shipped default model people/$(basename "$m" .yml), with the detection options it states (${states[$m]})" >> "$report"
   done
 fi
 

@@ -3,12 +3,10 @@
 // Package.InstallAndBuildTheExample).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <string>
 
-#include "rdsf/classifier/boosted_model.hpp"
 #include "rdsf/classifier/model_registry.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/shipped_data.hpp"
@@ -34,7 +32,6 @@ TEST(ShippedModels, BuildTreeProgramsUseTheSourceTreeModels) {
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v2.yml"));
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v3.yml"));
   EXPECT_TRUE(fs::is_regular_file(expected / rdsf::kDefaultModelName / "v4.yml"));
-  EXPECT_TRUE(fs::is_regular_file(expected / "people-near" / "v1.yml"));  // for cameras close to people
 }
 
 TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
@@ -45,25 +42,6 @@ TEST(ShippedModels, DefaultModelResolvesFromAnyWorkingFolder) {
   EXPECT_NO_THROW(resolved = rdsf::resolve_model(rdsf::kDefaultModelName));
   fs::current_path(before);
   EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / rdsf::kDefaultModelName / "v4.yml");  // the newest
-}
-
-// people-near (docs/quality.md, "people-near"), shipped beside the default for cameras close to people: found by
-// its name from any folder, read at its own operating point, with the detection option v4 states.
-TEST(ShippedModels, PeopleNearResolvesAndStatesWhatItWasMeasuredWith) {
-  rdsf::test::TempDir dir;
-  const fs::path before = fs::current_path();
-  fs::current_path(dir.path());
-  std::string resolved;
-  EXPECT_NO_THROW(resolved = rdsf::resolve_model("people-near"));
-  fs::current_path(before);
-  EXPECT_EQ(fs::path(resolved), fs::path(RDSF_SOURCE_DIR) / "models" / "people-near" / "v1.yml");
-  const rdsf::BoostedModel model = rdsf::BoostedModel::load(resolved);
-  EXPECT_EQ(model.format_version(), 4);
-  ASSERT_TRUE(model.operating_point().has_value());
-  EXPECT_DOUBLE_EQ(model.operating_point()->probability, 0.26);
-  const auto& stated = model.detection_options();
-  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
-            stated.end());
 }
 
 // NAME/vN too: `--model people/v1` from any folder that has no models/people of its own; a folder that has

@@ -148,21 +148,3 @@ TEST(RealData, DefaultModelFindsAtLeast40OfThe49PeopleWithFewFalsePositives) {
   EXPECT_EQ(f.empty.n_frames, 9);
   EXPECT_LE(f.empty.n_fp, 7);
 }
-
-// people-near/v1 (docs/quality.md, "people-near"): people/v4's recipe plus rendered rooms of people 0.8-3 m from
-// the camera, shipped beside the default for cameras close to people. At its operating point (P >= 0.26, with
-// the --local-front 70 it states) it finds 43 of the 49 people with 2 false positives in the 46 frames, and
-// makes 8 detections in the 9 empty rooms: its price, 3 more than people/v4 (a box and a laptop filling the
-// image 0.83 m away in floor_1..3, taken for a close person).
-TEST(RealData, PeopleNearModelFindsTheRealPeopleAndPaysInTheEmptyRooms) {
-  RDSF_REQUIRE_REALDATA();
-  const std::string path = resolve_model("people-near", (test::realdata_dir() / "no-models-here").string());
-  EXPECT_NE(path.find("people-near/v1.yml"), std::string::npos) << path;
-  const RealFigures f = real_figures(path);
-  EXPECT_EQ(f.people.n_people, 49);
-  EXPECT_GE(f.people.n_det, 40);
-  EXPECT_LE(f.people.n_fp, 5);
-  EXPECT_EQ(f.empty.n_frames, 9);
-  EXPECT_LE(f.empty.n_fp, 9);
-  EXPECT_GE(f.empty.n_fp, 1);  // the floor frames' close box: if none is taken, the price above has changed
-}
