@@ -1,16 +1,23 @@
 #!/usr/bin/env bash
-# The default model's recipe retrained on candidates made with other options, against the shipped people/v2
-# (docs/quality.md, "A people version trained with the two rules"):
+# A default model's recipe retrained on candidates made with other options, against the shipped model of that
+# version (docs/quality.md, "A people version trained with the two rules", with people/v2):
 #
 #   scripts/candidate-recipe-report.sh [--out DIR] [--recipes 'NAME=OPTIONS;...'] [--seeds "1 2"]
 #                                      [--sets "lab home seed31 ..."] [--data DIR] [--real DIR] [--shipped-only]
+#                                      [--people-version 2|3|4]
 #
-# For each recipe NAME=OPTIONS (rdsf-detect's candidate options; empty: the defaults, people/v2's own recipe),
+# --people-version N (default 2, the version the documented tables were made with): the recipe
+# scripts/train-default-model.sh --people-version N trains, and the shipped people/vN it is compared with. From
+# 2026-12-06, when train-default-model.sh's default version became 3 (then 4), until 2026-12-07 this script
+# read people/v2.yml beside the model trained (the shipped file, copied there as an earlier version), so its
+# "trained" rows were people/v2's; it now names the version for both.
+#
+# For each recipe NAME=OPTIONS (rdsf-detect's candidate options; empty: the defaults, people/vN's own recipe),
 # scripts/train-default-model.sh --candidates OPTIONS mines and labels the shipped recipe's rendered frames
 # with them and trains with the first seed; each other seed retrains the same sets (train-default-model.sh
 # --sets-from --seed: another feature pool and other folds, the recipe's spread). The frames are rendered once
 # under --out, or taken from --data DIR (a train-default-model work folder's data/, e.g.
-# out/default-model/a/data). Every model is evaluated with its own options, and the shipped people/v2 with
+# out/default-model/a/data). Every model is evaluated with its own options, and the shipped people/vN with
 # each recipe's options, by rdsf-detect --truth on each set (TAR at FPPF <= 0.1 with its 95 % interval, at
 # FPPF <= 0.5, candidate AUC, people without a candidate):
 #   lab, home    ../shared/realdata/people's UC3M sources (scripts/real-sources.sh; skipped without --real)
@@ -21,7 +28,7 @@
 # --local-front 70', --seeds "1 2", --sets "lab home seed31 seed81 seed91 seed37 walls71 close72 close74",
 # --real ../shared/realdata/people. Runs already made are reused. About 20 minutes of rendering (none with
 # --data), 9 minutes a recipe and 5 an extra seed on 2 cores, and 10-40 s a set and model.
-# --shipped-only trains nothing: people/v2 with each recipe's options on every set (a candidate option judged
+# --shipped-only trains nothing: people/vN with each recipe's options on every set (a candidate option judged
 # on several renderings and both real sources in minutes; docs/quality.md, "The 16 rooms of seed 31 as the
 # judge": --recipes 'off=;narrow=--narrow-fitted-width 20'). Writes DIR/table.md and prints it.
 set -euo pipefail
@@ -30,9 +37,10 @@ cd "$(dirname "$0")/.."
 . scripts/real-sources.sh
 out=out/candidate-recipes recipes='v2=;v3b=--border-height 25;v3bf=--border-height 25 --local-front 70'
 seeds="1 2" sets="lab home seed31 seed81 seed91 seed37 walls71 close72 close74" data="" real=../shared/realdata/people
-shipped_only=0
+shipped_only=0 people_version=2
 script_options candidate-recipe-report --out=out --recipes=recipes --seeds=seeds --sets=sets --data=data \
-  --real=real --shipped-only=shipped_only=1 -- "$@"
+  --real=real --shipped-only=shipped_only=1 --people-version=people_version -- "$@"
+case "$people_version" in 2|3|4) ;; *) echo "candidate-recipe-report: --people-version takes 2, 3 or 4" >&2; exit 2 ;; esac
 [[ "$seeds" =~ ^[0-9]+( [0-9]+)*$ ]] || { echo "candidate-recipe-report: --seeds takes numbers" >&2; exit 2; }
 for set in $sets; do
   [[ "$set" =~ ^(lab|home|seed[0-9]+|walls[0-9]+|close[0-9]+)$ ]] ||
@@ -62,15 +70,15 @@ for r in "${recipe_list[@]}"; do
   mkdir -p "$work/a"
   [ -e "$work/a/data" ] || ln -s "$data" "$work/a/data"
   if [ ! -f "$out/models/$name-s$first_seed.yml" ]; then
-    scripts/train-default-model.sh --out "$work" --candidates "$options" --seed "$first_seed" > "$work.log" 2>&1 ||
-      { tail -3 "$work.log" >&2; exit 1; }
-    cp "$work/a/models/people/v2.yml" "$out/models/$name-s$first_seed.yml"
+    scripts/train-default-model.sh --out "$work" --candidates "$options" --seed "$first_seed" \
+      --people-version "$people_version" > "$work.log" 2>&1 || { tail -3 "$work.log" >&2; exit 1; }
+    cp "$work/a/models/people/v$people_version.yml" "$out/models/$name-s$first_seed.yml"
   fi
   for seed in $seeds; do
     [ -f "$out/models/$name-s$seed.yml" ] && continue
-    scripts/train-default-model.sh --out "$work-s$seed" --sets-from "$work/a" --seed "$seed" > "$work-s$seed.log" 2>&1 ||
-      { tail -3 "$work-s$seed.log" >&2; exit 1; }
-    cp "$work-s$seed/a/models/people/v2.yml" "$out/models/$name-s$seed.yml"
+    scripts/train-default-model.sh --out "$work-s$seed" --sets-from "$work/a" --seed "$seed" \
+      --people-version "$people_version" > "$work-s$seed.log" 2>&1 || { tail -3 "$work-s$seed.log" >&2; exit 1; }
+    cp "$work-s$seed/a/models/people/v$people_version.yml" "$out/models/$name-s$seed.yml"
   done
 done
 
@@ -126,7 +134,7 @@ row() {  # LABEL MODEL OPTIONS SET: one evaluation, printed as a table row
   for r in "${recipe_list[@]}"; do
     name=${r%%=*} options=${r#*=}
     for set in $sets; do
-      row "people-v2+$name" people/v2 "$options" "$set"
+      row "people-v$people_version+$name" "people/v$people_version" "$options" "$set"
       for seed in $seeds; do row "$name-s$seed" "$out/models/$name-s$seed.yml" "$options" "$set"; done
     done
   done

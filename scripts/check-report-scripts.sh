@@ -70,6 +70,7 @@ expect 2 "--seeds takes numbers" scripts/candidate-recipe-report.sh --seeds "1 x
 expect 2 "^loso-report: --judges '31 x': 'x' is not a seed" scripts/loso-report.sh --judges "31 x"
 expect 2 "^loso-report: --judges is empty" scripts/loso-report.sh --judges ""
 expect 2 "unknown set 'bogus'" scripts/candidate-recipe-report.sh --sets "lab bogus"
+expect 2 "--people-version takes 2, 3 or 4" scripts/candidate-recipe-report.sh --people-version 5
 expect 2 "a recipe is NAME=OPTIONS, not 'v3'" scripts/candidate-recipe-report.sh --recipes "v3"
 expect 1 "^candidate-recipe-report: $empty holds no train/ and empty/ renderings" scripts/candidate-recipe-report.sh --data "$empty" --out "$empty/o"
 expect 2 "--cameras mix models are not for --install" scripts/train-default-model.sh --cameras mix --install
