@@ -90,13 +90,13 @@ if ((near_people)); then
   if [ "$people_version" != 4 ]; then echo "train-default-model: --near-people takes --people-version 4's recipe" >&2; exit 2; fi
   if [ "$cameras" != kinect1 ]; then echo "train-default-model: --near-people renders through the Kinect v1 only" >&2; exit 2; fi
   model_name=people-near model_version=1
-  if ((install)); then echo "train-default-model: --near-people models are not for --install (measured, not shipped)" >&2; exit 2; fi
 fi
 target=models/$model_name/v$model_version.yml
 if ((quick && install)); then echo "train-default-model: --quick models are not for --install" >&2; exit 2; fi
 if [ -n "$candidates" ] && ((install)); then echo "train-default-model: --candidates models are not for --install" >&2; exit 2; fi
 if [ -n "$synth_variety" ] && ((install)); then echo "train-default-model: --synth-variety models are not for --install" >&2; exit 2; fi
 case "$cameras" in kinect1|mix) ;; *) echo "train-default-model: --cameras takes kinect1 or mix" >&2; exit 2 ;; esac
+if ((near_people && install)); then echo "train-default-model: --near-people models are not for --install (measured, not shipped)" >&2; exit 2; fi
 if [ "$cameras" = mix ] && ((install)); then echo "train-default-model: --cameras mix models are not for --install" >&2; exit 2; fi
 if ! [[ "$trainer_seed" =~ ^[0-9]+$ ]]; then echo "train-default-model: --seed takes a whole number" >&2; exit 2; fi
 if [ "$trainer_seed" != 1 ] && ((install)); then
@@ -165,9 +165,6 @@ train_once() {  # work folder -> prints the model path
     label_folders+=("$w/data/train$folder")
   done
   "$bin/miner/rdsf-mine" "${mine_sources[@]}" --out "$w/sets/negatives" --threads 2 "${candidate_options[@]}" >&2
-  # Several cameras make one set from their folders (rdsf-label adds a source's frames to an existing set),
-  # started again from nothing, so that a killed run cannot leave a set with some cameras twice.
-  ((n == 1)) || rm -rf "$w/sets/people"
   if ((near_people)); then
     [ -f "$w/data/near-train/synth.yml" ] ||
       "$bin/synth/rdsf-synth" --out "$w/data/near-train" --force --frames "$frames_near" "${near_synth[@]}" >&2
@@ -178,6 +175,9 @@ train_once() {  # work folder -> prints the model path
       --truth "$w/data/near-train/boxes.csv" --answers /dev/null --keep-rejected --fit-across-head-cut 0 \
       "${candidate_options[@]}" >&2
   fi
+  # Several cameras make one set from their folders (rdsf-label adds a source's frames to an existing set),
+  # started again from nothing, so that a killed run cannot leave a set with some cameras twice.
+  ((n == 1)) || rm -rf "$w/sets/people"
   # --fit-across-head-cut 0: the candidates v2 was labelled with. The default since (docs/candidates.md)
   # makes 15 more of these candidates positives (11,609 instead of 11,594) and so another model; the miner
   # does not read the fitted box, so its negatives are the same either way.

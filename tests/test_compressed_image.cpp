@@ -1,9 +1,9 @@
 // sensor_msgs/CompressedImage payloads decoded without ROS (rdsf/frame/compressed_image.hpp): compressedDepth
 // as PNG and RVL, 16UC1 and 32FC1, compressed colour (png, jpeg; channel order), and the faults as one-line
 // errors naming the message. Bags of such topics: test_bag_compressed.cpp.
-#include <algorithm>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 

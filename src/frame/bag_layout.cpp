@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rdsf/core/byte_order.hpp"
+
 namespace rdsf {
 namespace {
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "rdsf/synth/angle.hpp"
 
@@ -543,21 +544,16 @@ void move_added(Room& room, std::size_t shapes, std::size_t footprints, std::siz
 // footprint's centre stands 0.6-1.6 m from the camera within 20 degrees of its heading (overlapping what
 // stands there: the nearest surface is what the camera sees).
 void add_near_clutter(Rng& rng, const RoomParams& params, const CameraPose& camera, Room& room) {
-  using Adder = void (*)(Rng&, Room&);
-  static const Adder adders[] = {
+  const std::function<void(Rng&, Room&)> adders[] = {
       add_boxes, add_small_thing, add_plant, add_stacked_chairs, add_desk, add_cupboard, add_panel,
       add_coat_rack, add_cabinet, add_shelf, add_service_robot, add_table,
+      [&params](Rng& r, Room& m) { add_chair(r, m, params.clutter); },
   };
   constexpr int kAdders = static_cast<int>(sizeof adders / sizeof adders[0]);
   const int count = rng.integer(1, params.near_clutter_max);
   for (int k = 0; k < count; ++k) {
     const std::size_t shapes = room.furniture.size(), footprints = room.footprints.size(), seats = room.seats.size();
-    const int pick = rng.integer(0, kAdders);  // kAdders: a chair
-    if (pick == kAdders) {
-      add_chair(rng, room, params.clutter);
-    } else {
-      adders[pick](rng, room);
-    }
+    adders[rng.integer(0, kAdders - 1)](rng, room);
     if (room.footprints.size() == footprints) continue;  // no free spot for it anywhere
     const double distance_m = rng.uniform(0.6, 1.6), heading = camera.yaw_rad + rng.uniform(-20.0, 20.0) * pi / 180.0;
     const Footprint& f = room.footprints[footprints];
