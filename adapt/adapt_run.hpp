@@ -13,11 +13,15 @@
 //                 recording where the model and the tracker see nobody (pipeline/room_presence.hpp)
 //   2. answers    the model answers what it is sure of, the person the rest, most uncertain first, one
 //                 answer per track, within --budget (rdsf-label --ask uncertain --per-track)
+//      check      with --holdout-check on: a trial model trained on the earlier half of the room's frames against
+//                 the model as given on the later half's labelled candidates (pipeline/holdout_check.hpp)
 //   3. train      the room's samples with the base sets, continuing the model (--init) or from nothing
 //                 (rdsf-train), saved as a new version of --name with the room, answers and base recorded,
 //                 stating the analyser options the steps ran with (--detection-options)
 //   4. report     before / after on held-out frames with --truth and --eval (rdsf-detect), else the
 //                 answers spent and the new model's validation
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +40,12 @@ namespace rdsf {
 /// 34 fewer over the five (docs/adapting-to-your-room.md, "Fewer rounds" and "Fewer still, none, and two fresh
 /// renderings").
 inline constexpr int kContinuedRounds = 3;
+
+/// --holdout-check auto is on for a base of at most this many samples: it was measured with the small base
+/// (6,155 samples, rdsf-adapt's own, where the trial trains in about a second) and costs one more training of the
+/// base's size, 50 s at the default model's (180,131 samples), which would take the time from the last answer to
+/// the room's model past a minute; no base (--base-frames 0) was not measured: off.
+inline constexpr std::size_t kHoldoutCheckMaxBaseSamples = 20000;
 
 struct AdaptOptions {
   std::string source;   ///< the room recording (frames with people)
@@ -66,6 +76,11 @@ struct AdaptOptions {
   /// the budget's answers, all of them at most half the budget.
   bool try_switches = true;
   int trial_budget = 3;
+  /// Before training (the "check" step): a trial model of the earlier half of the room's frames against the
+  /// model as given on the labelled candidates of the later half; the trial finding fewer people keeps the model
+  /// as given (pipeline/holdout_check.hpp). Unset ("auto"): on when the base sets hold 1 to
+  /// kHoldoutCheckMaxBaseSamples samples.
+  std::optional<bool> holdout_check;
   int threads = 0;
   /// The frame analyser's options (segmentation, candidates) and which were given: every step runs with the
   /// given ones, the model's stated ones for the rest (pipeline/stated_options.hpp), and the adapted model

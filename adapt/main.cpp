@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   return rdsf::cli::run(kProgram.name, [&] {
     namespace po = rdsf::cli::po;
     rdsf::AdaptOptions o;
-    std::string chart, chart_png;
+    std::string chart, chart_png, holdout_check;
     po::options_description options(kProgram.name);
     options.add_options()
         ("source", po::value(&o.source), "the room recording, with people (folder, list file, .oni, ROS 1 .bag; any resolution, with its camera model)")
@@ -55,6 +55,13 @@ int main(int argc, char** argv) {
          "--border-height 25, --narrow-fitted-width 20, --hole-gap 20) in the room first: the person is asked about "
          "the candidates only it adds, likeliest first; one confirmed person turns it on for every step and the "
          "adapted model")
+        ("holdout-check", po::value(&holdout_check)->default_value("auto"),
+         ("auto, on or off: before training, train a trial model on the earlier half of the room's frames and "
+         "compare it with --model (stating the switches taken) on the labelled candidates of the later half; when "
+         "the trial finds fewer people at 0.1 false positives per frame, the room's model is --model as given (no "
+         "round added). auto: on when the base sets hold 1 to " + std::to_string(rdsf::kHoldoutCheckMaxBaseSamples) +
+         " samples (the small base rendered here: about 1 s more), off for larger ones (a second training of their "
+         "size) and without a base").c_str())
         ("trial-budget", po::value(&o.trial_budget)->default_value(o.trial_budget),
          "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)");
     rdsf::cli::add_per_place_option(options, o.per_place);
@@ -82,6 +89,8 @@ int main(int argc, char** argv) {
     if (o.rounds < 0) throw rdsf::cli::UsageError("--rounds must be 0 (the default) or more");
     if (o.room_weight < 1) throw rdsf::cli::UsageError("--room-weight must be at least 1");
     if (o.base_frames < 0) throw rdsf::cli::UsageError("--base-frames must be 0 (no base) or more");
+    if (holdout_check == "on" || holdout_check == "off") o.holdout_check = holdout_check == "on";
+    else if (holdout_check != "auto") throw rdsf::cli::UsageError("--holdout-check takes auto, on or off, not '" + holdout_check + "'");
     if (o.trial_budget < 1) throw rdsf::cli::UsageError("--trial-budget must be at least 1 (--try-switches off tries none)");
     return rdsf::run_adapt(o);
   });

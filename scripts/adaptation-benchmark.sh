@@ -8,7 +8,8 @@
 #                   default until 2026-12-07, kept so that the tables of this row compare)
 #   per candidate   rdsf-adapt --per-candidate --budget B (every candidate the model is unsure of is asked)
 #   per track       rdsf-adapt --budget B (one answer per track), continuing the base model (rdsf-adapt's
-#                   default rounds: 3, 10 until 2026-12-07)
+#                   default rounds: 3, 10 until 2026-12-07; its held-out check on, --holdout-check auto with this
+#                   small base, since 2026-12-07: --adapt-args "--holdout-check off" for the rows before)
 #   retrain         per track at the largest budget, trained from nothing (100 rounds) instead
 # A synthetic room whose later half has no counted person (all out of view or less than half visible) has no
 # TAR: it is left out and the next room taken, so --synthetic N rooms are evaluated.

@@ -151,8 +151,8 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   std::filesystem::copy_file(models_dir() + "/people/v2.yml", models / "people/v2.yml");
   const std::string common = adapt() + " --source " + test::quote(dir / "room") + " --empty " + test::quote(dir / "empty") +
                              " --truth " + test::quote(dir / "room/boxes.csv") + " --out " + test::quote(dir / "out") +
-                             " --name room --budget 6 --rounds 3 --threads 2 --base-frames 60 --models-dir " +
-                             test::quote(models.string());
+                             " --name room --budget 6 --rounds 3 --threads 2 --base-frames 60 --holdout-check off" +
+                             " --models-dir " + test::quote(models.string());
   // The first run fails at training (a base set that does not exist), after its negatives and answers.
   test::RunResult r = test::run(common + " --base-pos " + test::quote(dir / "missing"));
   ASSERT_EQ(r.exit_code, 1) << r.err;
@@ -264,6 +264,50 @@ TEST(Adapt, ARoomOfAnotherCameraIsAdapted) {
     EXPECT_LE(rec.strict_box.x + rec.strict_box.width, 512) << rec.frame;
     EXPECT_LE(rec.strict_box.y + rec.strict_box.height, 424) << rec.frame;
   }
+  // With the small base rendered here the held-out check is on (--holdout-check auto): the trial's sets hold the
+  // samples of the earlier 45 frames, the negatives mined from the room's own frames split with them (the frames
+  // taken as empty are among the last, so they all fall in the later half and are scored there).
+  EXPECT_NE(report.find("held-out check (the trial trained in "), std::string::npos) << report;
+  EXPECT_NE(report.find("later 45 frames, "), std::string::npos) << report;
+  const SampleSet earlier = SampleSet::open_read(dir / "out/check/earlier-room");
+  EXPECT_GT(earlier.records().size(), 0u);
+  EXPECT_LT(earlier.records().size(), room.records().size());
+  for (const SampleRecord& rec : earlier.records()) EXPECT_LT(std::stoi(rec.frame), 45);
+  const SampleSet earlier_negatives = SampleSet::open_read(dir / "out/check/earlier-room-negatives");
+  EXPECT_LT(earlier_negatives.records().size(), negatives.records().size());
+  for (const SampleRecord& rec : earlier_negatives.records()) EXPECT_LT(std::stoi(rec.frame), 45);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/check/models/trial/v1.yml"));
+}
+
+// The held-out check asked for with no base: the trial of the earlier half against people/v2 on the later
+// half's labelled candidates decides the room's model, which is either trained (v2's rounds and 3 more) or
+// people/v2 itself stating the room (every weak classifier inherited, so scored as v2 is). The choice is pinned.
+TEST(Adapt, TheHoldoutCheckDecidesBetweenTheTrialAndTheModelAsGiven) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
+  const SmallRoomRun run = small_room_run(dir, 8);
+  test::RunResult r = test::run(run.command + " --holdout-check on");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("rdsf-adapt: check: later 30 frames, "), std::string::npos) << r.err;
+  const std::string state = test::file_text(dir / "out/adapt-state.tsv");
+  const bool base_kept = state.find("check\tbase kept") != std::string::npos;
+  EXPECT_TRUE(base_kept || state.find("check\ttrial kept") != std::string::npos) << state;
+  const SampleSet earlier = SampleSet::open_read(dir / "out/check/earlier-room");
+  EXPECT_GT(earlier.records().size(), 0u);
+  for (const SampleRecord& rec : earlier.records()) EXPECT_LT(std::stoi(rec.frame), 30);
+  const BoostedModel v2 = BoostedModel::load(models_dir() + "/people/v2.yml");
+  const BoostedModel room = BoostedModel::load((run.models / "room/v1.yml").string());
+  EXPECT_TRUE(room.training().adapted_to_a_room());
+  EXPECT_EQ(room.weak_classifiers().size(), v2.weak_classifiers().size() + (base_kept ? 0 : 3)) << state;
+  const auto& p = room.training().parameters;
+  EXPECT_EQ(std::count_if(p.begin(), p.end(), [](const auto& kv) { return kv.first == "adapted_check"; }),
+            base_kept ? 1 : 0);
+  r = test::run(run.command + " --holdout-check off");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("adapts holdout_check 'on', not 'off'"), std::string::npos) << r.err;
+  r = test::run(run.command + " --holdout-check maybe");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--holdout-check takes auto, on or off, not 'maybe'"), std::string::npos) << r.err;
 }
 
 // Analyser options given to rdsf-adapt reach every step's program (their logs hold the command lines) and

@@ -19,23 +19,9 @@
 #include "rdsf/pipeline/people_pipeline.hpp"
 
 using namespace rdsf;
+using rdsf::test::person_crop;
 
 namespace {
-
-// Masked person-like crops: background 0, a body with a ragged edge at 1.5-4 m, holes and odd readings.
-cv::Mat1w person_crop(unsigned seed) {
-  std::mt19937 random(seed);
-  cv::Mat1w crop(128, 64, std::uint16_t{0});
-  const int depth = 1500 + static_cast<int>(random() % 2500);
-  for (int y = 4; y < 126; ++y) {
-    const int half = (y < 24 ? 7 : 15) + static_cast<int>(random() % 4);
-    for (int x = 32 - half; x < 32 + half; ++x) {
-      crop(y, x) = static_cast<std::uint16_t>(depth + (x - 32) * (x - 32) / 2 + static_cast<int>(random() % 40));
-      if (random() % 23 == 0) crop(y, x) = 0;
-    }
-  }
-  return crop;
-}
 
 BoostedModel random_model(const FeatureSpec& spec, int rounds, unsigned seed) {
   std::mt19937 random(seed);

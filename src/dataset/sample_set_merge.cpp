@@ -19,7 +19,8 @@ std::vector<unsigned char> read_bytes(const std::string& path) {
 
 }  // namespace
 
-MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, SampleSetWriter& out) {
+MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, SampleSetWriter& out,
+                              const std::function<bool(const SampleRecord&)>& keep) {
   const FeatureSpec& spec = out.manifest().feature_spec;
   std::vector<SampleSet> inputs;
   for (const std::string& dir : input_dirs) {
@@ -45,6 +46,7 @@ MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, Sample
     std::unique_ptr<FeatureVectorFile> vectors;
     for (std::size_t i = 0; i < set.records().size(); ++i) {
       const SampleRecord& record = set.records()[i];
+      if (keep && !keep(record)) continue;
       if (out.is_duplicate(record)) {
         ++result.duplicates;
         continue;

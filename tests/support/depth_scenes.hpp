@@ -1,6 +1,7 @@
 #pragma once
 // Hand-built depth maps whose segmentation, candidates and features can be worked out by hand.
 #include <filesystem>
+#include <random>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -9,6 +10,21 @@
 #include "rdsf/frame/depth_png.hpp"
 
 namespace rdsf::test {
+
+/// Masked person-like crops: background 0, a body with a ragged edge at 1.5-4 m, holes and odd readings.
+inline cv::Mat1w person_crop(unsigned seed) {
+  std::mt19937 random(seed);
+  cv::Mat1w crop(128, 64, std::uint16_t{0});
+  const int depth = 1500 + static_cast<int>(random() % 2500);
+  for (int y = 4; y < 126; ++y) {
+    const int half = (y < 24 ? 7 : 15) + static_cast<int>(random() % 4);
+    for (int x = 32 - half; x < 32 + half; ++x) {
+      crop(y, x) = static_cast<std::uint16_t>(depth + (x - 32) * (x - 32) / 2 + static_cast<int>(random() % 40));
+      if (random() % 23 == 0) crop(y, x) = 0;
+    }
+  }
+  return crop;
+}
 
 /// A 640x480 frame filled with `wall_mm` (Kinect v1 camera, no colour).
 inline DepthFrame wall_frame(int wall_mm) {

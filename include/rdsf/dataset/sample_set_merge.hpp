@@ -3,6 +3,7 @@
 // appended to the output in input order (new ids), crops and stored vectors copied, exact duplicates
 // skipped. All inputs must have the output's feature spec.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,9 @@ struct MergeResult {
 };
 
 /// Checks every input's manifest first (feature spec equal to the output's; throws Error naming the input
-/// and both hashes otherwise), then copies.
-MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, SampleSetWriter& out);
+/// and both hashes otherwise), then copies the samples `keep` takes (every sample when it is empty;
+/// rdsf-adapt's held-out check keeps those of the earlier frames).
+MergeResult merge_sample_sets(const std::vector<std::string>& input_dirs, SampleSetWriter& out,
+                              const std::function<bool(const SampleRecord&)>& keep = {});
 
 }  // namespace rdsf
