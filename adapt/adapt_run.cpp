@@ -19,12 +19,12 @@
 #include "rdsf/core/atomic_file.hpp"
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/evaluation/ground_truth.hpp"
 #include "rdsf/frame/camera_file.hpp"
 #include "rdsf/frame/depth_units.hpp"
 #include "rdsf/frame/frame_source.hpp"
 #include "rdsf/frame/png_folder_source.hpp"
-#include "rdsf/dataset/sample_set.hpp"
 #include "rdsf/labeling/answer_journal.hpp"
 #include "rdsf/pipeline/candidate_switches.hpp"
 #include "rdsf/pipeline/holdout_check.hpp"
@@ -44,9 +44,9 @@ struct Paths {
         logs((fs::path(out) / "logs").string()),
         base((fs::path(out) / "base").string()),
         root(out) {}
-  /// The sample set of the trial of a candidate switch (its option's name).
   /// The held-out check's folder (its earlier-half sets and trial model).
   std::string check = (fs::path(root) / "check").string();
+  /// The sample set of the trial of a candidate switch (its option's name).
   std::string trial(const std::string& option) const { return (fs::path(root) / "sets" / ("trial-" + option)).string(); }
   std::string base_part(const std::string& part) const { return (fs::path(base) / part).string(); }
   std::string log(const std::string& step) const { return (fs::path(logs) / (step + ".log")).string(); }
@@ -394,8 +394,7 @@ void room_answers(const AdaptOptions& o, const StepOptions& step, AdaptState& st
 }
 
 // What a room's model records of how it was made, beside rdsf-train's own record.
-RecordedParameters room_provenance(const AdaptOptions& o, const BoostedModel& model,
-                                                                const AdaptState& state) {
+RecordedParameters room_provenance(const AdaptOptions& o, const BoostedModel& model, const AdaptState& state) {
   std::string base;
   for (const std::string& s : o.base_pos) base += (base.empty() ? "" : " ") + s;
   for (const std::string& s : o.base_neg) base += (base.empty() ? "" : " ") + s;
@@ -437,7 +436,8 @@ std::pair<std::string, std::string> train_with_base(const AdaptOptions& o, const
   const int rounds = o.rounds > 0 ? o.rounds : o.retrain ? 100 : kContinuedRounds;
   // One held-out fifth for validation and calibration (--folds 0): K fold models would cost K trainings.
   args.insert(args.end(), {"--rounds", std::to_string(rounds), "--folds", "0"});
-  // The model as given, by the name given when saved beside it (the model file records it so).
+  // The model as given: as the user named it when the room's model is saved beside it (the model file records
+  // that text), by its path from the check's own models folder.
   if (!o.retrain) args.insert(args.end(), {"--init", models_dir == o.models_dir ? o.model : model.path()});
   // The room's model states no operating point and is read at P >= 0.5 of its own calibration, whatever its
   // base states: choosing its point by the base's rule (--operating-tar 0.8 for people/v3) on its one held-out
