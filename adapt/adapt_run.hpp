@@ -41,10 +41,11 @@ namespace rdsf {
 /// renderings").
 inline constexpr int kContinuedRounds = 3;
 
-/// --holdout-check auto is on for a base of at most this many samples: it was measured with the small base
-/// (6,155 samples, rdsf-adapt's own, where the trial trains in about a second) and costs one more training of the
-/// base's size, 50 s at the default model's (180,131 samples), which would take the time from the last answer to
-/// the room's model past a minute; no base (--base-frames 0) was not measured: off.
+/// --holdout-check auto is on for a base of at most this many samples: it was judged with the small base (6,155
+/// samples, rdsf-adapt's own, where the trial trains in about a second: 2 of 4 lost people kept over 47 rooms).
+/// It costs one more training of the base's size, 28-42 s at the default model's (180,131 samples), where it
+/// changed nothing on two renderings and would take the time from the last answer to the room's model past a
+/// minute; no base (--base-frames 0) was not measured: off.
 inline constexpr std::size_t kHoldoutCheckMaxBaseSamples = 20000;
 
 struct AdaptOptions {
