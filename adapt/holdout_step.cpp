@@ -1,8 +1,8 @@
 #include "adapt/holdout_step.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
-#include <algorithm>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -34,30 +34,43 @@ std::string earlier_part(const std::string& input, const std::set<std::string>& 
   return out;
 }
 
-// The labelled candidates of `sets` in the frames `later`, each place (frame, strict box) once.
-void labelled_in(const std::vector<std::string>& sets, const std::set<std::string>& later,
-                 std::vector<cv::Mat1w>& crops, std::vector<int>& labels) {
+// Scores of the labelled candidates of `sets` in the frames `later`, each place (frame, strict box) once, by the
+// model as given and by the trial, split by label; crops read and scored in batches (a long recording's later
+// half may hold tens of thousands).
+struct LaterScores {
+  std::vector<double> base_people, base_others, trial_people, trial_others;
+};
+LaterScores score_later(const std::vector<std::string>& sets, const std::set<std::string>& later,
+                        const BoostedModel& base, const BoostedModel& trial) {
+  constexpr std::size_t kBatch = 512;
+  const PipelineParams params;  // the detector's defaults: mirror scoring
+  LaterScores out;
+  std::vector<cv::Mat1w> crops;
+  std::vector<int> labels;
+  const auto flush = [&] {
+    const std::vector<double> b = detector_scores(base, params, crops), t = detector_scores(trial, params, crops);
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      (labels[i] == 1 ? out.base_people : out.base_others).push_back(b[i]);
+      (labels[i] == 1 ? out.trial_people : out.trial_others).push_back(t[i]);
+    }
+    crops.clear();
+    labels.clear();
+  };
   std::set<std::tuple<std::string, int, int, int, int>> seen;
   for (const std::string& dir : sets) {
     const SampleSet set = SampleSet::open_read(dir);
     for (std::size_t i = 0; i < set.records().size(); ++i) {
       const SampleRecord& r = set.records()[i];
       if (!r.has_crop || later.count(r.frame) == 0) continue;
-      const cv::Rect& b = r.strict_box;
-      if (!seen.insert({r.frame, b.x, b.y, b.width, b.height}).second) continue;
+      const cv::Rect& box = r.strict_box;
+      if (!seen.insert({r.frame, box.x, box.y, box.width, box.height}).second) continue;
       crops.push_back(set.depth_crop(i));
       labels.push_back(r.label);
+      if (crops.size() == kBatch) flush();
     }
   }
-}
-
-// People found at FPPF <= 0.1 by `model` among the labelled candidates.
-std::size_t found_by(const BoostedModel& model, const std::vector<cv::Mat1w>& crops, const std::vector<int>& labels,
-                     std::size_t frames) {
-  const std::vector<double> scores = detector_scores(model, PipelineParams{}, crops);
-  std::vector<double> people, others;
-  for (std::size_t i = 0; i < labels.size(); ++i) (labels[i] == 1 ? people : others).push_back(scores[i]);
-  return people_found_at_fppf(people, others, frames, 0.1);
+  flush();
+  return out;
 }
 
 }  // namespace
@@ -82,15 +95,13 @@ void run_holdout_check(const HoldoutInputs& in, const BoostedModel& model, Adapt
 
   std::vector<std::string> scored = in.room_sets;
   if (in.negatives_from_room && !in.negatives.empty()) scored.push_back(in.negatives);
-  std::vector<cv::Mat1w> crops;
-  std::vector<int> labels;
-  labelled_in(scored, later, crops, labels);
+  const LaterScores scores = score_later(scored, later, model, BoostedModel::load(trial));
   HoldoutFigures f;
   f.frames = later.size();
-  f.people = static_cast<std::size_t>(std::count(labels.begin(), labels.end(), 1));
-  f.others = labels.size() - f.people;
-  f.base_found = found_by(model, crops, labels, f.frames);
-  f.trial_found = found_by(BoostedModel::load(trial), crops, labels, f.frames);
+  f.people = scores.base_people.size();
+  f.others = scores.base_others.size();
+  f.base_found = people_found_at_fppf(scores.base_people, scores.base_others, f.frames, 0.1);
+  f.trial_found = people_found_at_fppf(scores.trial_people, scores.trial_others, f.frames, 0.1);
   const std::string figures = "later " + std::to_string(f.frames) + " frames, " + std::to_string(f.people) +
                               " labelled people, " + std::to_string(f.others) + " other candidates: at FPPF <= 0.1 " +
                               model_reference(model) + " finds " + std::to_string(f.base_found) +
