@@ -38,14 +38,14 @@ using Clock = std::chrono::steady_clock;
 
 struct Paths {
   std::string negatives, room, logs, base, root;
+  std::string check;  ///< the held-out check's folder (its earlier-half sets and trial model)
   explicit Paths(const std::string& out)
       : negatives((fs::path(out) / "sets" / "room-negatives").string()),
         room((fs::path(out) / "sets" / "room").string()),
         logs((fs::path(out) / "logs").string()),
         base((fs::path(out) / "base").string()),
-        root(out) {}
-  /// The held-out check's folder (its earlier-half sets and trial model).
-  std::string check = (fs::path(root) / "check").string();
+        root(out),
+        check((fs::path(out) / "check").string()) {}
   /// The sample set of the trial of a candidate switch (its option's name).
   std::string trial(const std::string& option) const { return (fs::path(root) / "sets" / ("trial-" + option)).string(); }
   std::string base_part(const std::string& part) const { return (fs::path(base) / part).string(); }

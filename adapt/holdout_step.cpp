@@ -21,15 +21,14 @@ namespace fs = std::filesystem;
 
 void say(const std::string& line) { std::cerr << "rdsf-adapt: check: " << line << "\n"; }
 
-// `input`'s samples outside the frames `later` (all of them when `split` is false) copied into a set in `dir`.
-std::string earlier_part(const std::string& input, const std::set<std::string>& later, bool split,
-                         const std::string& dir) {
+// `input`'s samples outside the frames `later`, copied into a set in `dir`: its path.
+std::string earlier_part(const std::string& input, const std::set<std::string>& later, const std::string& dir) {
   const SampleSet set = SampleSet::open_read(input);
   const std::string out = (fs::path(dir) / ("earlier-" + fs::path(input).filename().string())).string();
   SampleSetWriter writer = SampleSetWriter::open_or_create(out, set.feature_spec(), set.manifest().camera,
                                                            "rdsf-adapt --holdout-check", set.manifest().crops,
                                                            set.manifest().analyser_options);
-  merge_sample_sets({input}, writer, [&](const SampleRecord& r) { return !split || later.count(r.frame) == 0; });
+  merge_sample_sets({input}, writer, [&](const SampleRecord& r) { return later.count(r.frame) == 0; });
   writer.sync();
   return out;
 }
@@ -87,9 +86,11 @@ void run_holdout_check(const HoldoutInputs& in, const BoostedModel& model, Adapt
   const std::set<std::string> later(later_names.begin(), later_names.end());
   fs::remove_all(in.dir);
   std::vector<std::string> sets;
-  for (const std::string& s : in.room_sets) sets.push_back(earlier_part(s, later, true, in.dir));
-  const std::string negatives =
-      in.negatives.empty() ? std::string() : earlier_part(in.negatives, later, in.negatives_from_room, in.dir);
+  for (const std::string& s : in.room_sets) sets.push_back(earlier_part(s, later, in.dir));
+  // Negatives of another recording (--empty) are all the trial's: their set as it is.
+  const std::string negatives = in.negatives.empty() || !in.negatives_from_room
+                                    ? in.negatives
+                                    : earlier_part(in.negatives, later, in.dir);
   const auto [trial, seconds] = train(sets, negatives);
   state.set("check_train_seconds", seconds);
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
+#include "rdsf/classifier/roc_metrics.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/pipeline/mirror_scoring.hpp"
 #include "rdsf/pipeline/model_scorer.hpp"
@@ -19,13 +19,16 @@ std::size_t people_found_at_fppf(const std::vector<double>& person_scores, const
                                  std::size_t frames, double max_fppf) {
   if (frames < 1) throw Error("people_found_at_fppf: no frames");
   const auto allowed = static_cast<std::size_t>(std::floor(max_fppf * static_cast<double>(frames) + 1e-9));
-  if (other_scores.size() <= allowed) return person_scores.size();
-  std::vector<double> others = other_scores;
-  std::nth_element(others.begin(), others.begin() + static_cast<std::ptrdiff_t>(allowed), others.end(),
-                   std::greater<double>());
-  const double threshold = others[allowed];  // the (allowed + 1)-th highest: every threshold must pass above it
-  return static_cast<std::size_t>(
-      std::count_if(person_scores.begin(), person_scores.end(), [&](double s) { return s > threshold; }));
+  if (other_scores.size() <= allowed) return person_scores.size();  // roc_curve needs both classes
+  if (person_scores.empty()) return 0;
+  // At most `allowed` others accepted is FAR <= allowed / others on the candidates' ROC curve.
+  std::vector<double> scores = person_scores;
+  scores.insert(scores.end(), other_scores.begin(), other_scores.end());
+  std::vector<int> labels(person_scores.size(), 1);
+  labels.resize(scores.size(), 0);
+  const double tar = tar_at_far(roc_curve(scores, labels),
+                                static_cast<double>(allowed) / static_cast<double>(other_scores.size()));
+  return static_cast<std::size_t>(std::lround(tar * static_cast<double>(person_scores.size())));
 }
 
 std::vector<double> detector_scores(const BoostedModel& model, const PipelineParams& params,

@@ -6,8 +6,9 @@
 // negatives there) as the detector scores them (MirrorScoring). Each finds
 //   people_found_at_fppf = #{person scores > s_(a+1)},  a = floor(max_fppf x frames + 1e-9),
 // s_(a+1) the (a+1)-th highest score of the other candidates (every person when there are at most a others):
-// the most people a threshold finds while accepting at most a of the others, i.e. TAR x people at FPPF <=
-// max_fppf of the exact curve over the labelled candidates (candidates nobody labelled count for neither).
+// the most people a threshold finds while accepting at most a of the others, i.e. TAR x people at FAR <= a /
+// others of the labelled candidates' ROC curve (classifier/roc_metrics.hpp; candidates nobody labelled count
+// for neither).
 // The trial replaces the base only when it finds at least as many (HoldoutFigures::trial_kept).
 #include <cstddef>
 #include <string>
@@ -46,8 +47,8 @@ struct HoldoutFigures {
   std::size_t others = 0;         ///< labelled other candidates there
   std::size_t base_found = 0;     ///< people_found_at_fppf of the base model
   std::size_t trial_found = 0;    ///< of the trial model
-  /// The trial (the room's model) replaces the base: it finds at least as many, or nobody is labelled there.
-  bool trial_kept() const { return people == 0 || trial_found >= base_found; }
+  /// The trial (the room's model) replaces the base: it finds at least as many (both 0 when nobody is labelled).
+  bool trial_kept() const { return trial_found >= base_found; }
 };
 
 }  // namespace rdsf
