@@ -564,13 +564,15 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
             const Paths& paths) {
   const BoostedModel adapted = BoostedModel::load(state.get("model"));
   const RocSummary& v = adapted.training().validation.summary;
+  const std::string trained = state.get("check") == "base kept"
+                                  ? "no round trained (the model as given, kept by the held-out check)"
+                                  : "trained in " + state.get("train_seconds") + " s";
   char line[400];
   std::snprintf(line, sizeof line,
-                "%s: %s answers, %s labels propagated (%s more along the model's tracks), trained in %s s; validation "
+                "%s: %s answers, %s labels propagated (%s more along the model's tracks), %s; validation "
                 "AUC %.4f, TAR %.3f at FAR 1%%",
                 state.get("model").c_str(), state.get("answers.human").c_str(), state.get("answers.propagated").c_str(),
-                state.get("answers.model_track").c_str(),
-                state.get("train_seconds").c_str(), v.auc, v.tar_at_far_1);
+                state.get("answers.model_track").c_str(), trained.c_str(), v.auc, v.tar_at_far_1);
   std::string text = std::string(line) + "\n";
   if (!state.get("check.figures").empty()) {
     text += "held-out check (the trial trained in " + state.get("check_train_seconds") + " s): " +
