@@ -8,6 +8,9 @@ install(TARGETS rdsf EXPORT rdsfTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(TARGET rdsf_image_codecs)  # OpenCV's image codecs, opened by librdsf at their first use: beside it
+  install(TARGETS rdsf_image_codecs LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 # Public headers: include/rdsf/<area>/*.hpp and the generated rdsf/version.hpp. The OpenNI2 frame source's
 # header only when the library has it.
 set(rdsf_header_excludes)

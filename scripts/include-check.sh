@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Checks that every #include points the way docs/architecture.md says: a library folder includes only the
 # folders to its left in the flow (and itself), the library never includes a program, cli/ or gui/ (nor
-# Boost.ProgramOptions or highgui), and a program folder includes the library, cli/, gui/ and itself, never
-# another program. Prints one line per wrong include and exits 1 when there is one (CTest: include_direction).
+# Boost.ProgramOptions or highgui, nor OpenCV's imgcodecs outside frame/image_codecs_module.cpp), and a
+# program folder includes the library, cli/, gui/ and itself, never another program. Prints one line per wrong include and exits 1 when there is one (CTest: include_direction).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -40,6 +40,8 @@ for file in src/*/*.cpp include/rdsf/*/*.hpp; do
         [[ "$allowed" == *" $to "* ]] || complain "$file" "includes $target: $area may include only: $(echo $allowed)"
         ;;
       boost/program_options*|opencv2/highgui*) complain "$file" "includes $target: the library has no command line and no window" ;;
+      opencv2/imgcodecs*) [ "$file" = src/frame/image_codecs_module.cpp ] ||
+        complain "$file" "includes $target: OpenCV's image codecs are called through rdsf/frame/image_codecs.hpp" ;;
       cli/*|gui/*) complain "$file" "includes $target: the library never includes cli/ or gui/" ;;
       */*.hpp) to="${target%%/*}"
         [[ " $programs " == *" $to "* ]] && complain "$file" "includes $target: the library never includes a program" ;;

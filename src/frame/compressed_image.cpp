@@ -5,12 +5,12 @@
 #include <cstring>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "rdsf/core/byte_order.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/depth_units.hpp"
+#include "rdsf/frame/image_codecs.hpp"
 #include "rdsf/frame/png_decoder.hpp"
 
 namespace rdsf {
@@ -174,7 +174,7 @@ cv::Mat3b decode_compressed_colour(const std::string& where, const std::string& 
   }
   cv::Mat decoded;
   try {
-    decoded = cv::imdecode(cv::Mat(1, static_cast<int>(size), CV_8UC1, const_cast<std::uint8_t*>(data)), cv::IMREAD_COLOR);
+    decoded = opencv_decode_image(data, size, DecodedAs::colour);
   } catch (const cv::Exception& e) {
     fail(where, "compressed colour image cannot be decoded (" + e.err + ")");
   }

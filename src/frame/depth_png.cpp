@@ -2,11 +2,11 @@
 
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
+#include "rdsf/frame/image_codecs.hpp"
 #include "rdsf/frame/png_decoder.hpp"
 
 namespace rdsf {
@@ -43,7 +43,7 @@ cv::Mat3b read_colour_png(const std::string& path, cv::Size expected) {
 
 void write_png_atomically(const std::string& path, const cv::Mat& image) {
   std::vector<unsigned char> bytes;
-  if (!cv::imencode(".png", image, bytes)) fail(path, "cannot encode image as PNG");
+  if (!opencv_encode_png(image, bytes, kOpenCvDefaultPngParams)) fail(path, "cannot encode image as PNG");
   write_file_durably(path, bytes);
 }
 

@@ -17,11 +17,10 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
-#include <opencv2/imgcodecs.hpp>
-
 #include "rdsf/core/byte_order.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/yaml_guard.hpp"
+#include "rdsf/frame/image_codecs.hpp"
 
 namespace rdsf {
 namespace {
@@ -490,8 +489,7 @@ cv::Mat decode_png(const std::string& path, const unsigned char* data, std::size
   }
   cv::Mat image;
   try {
-    image = cv::imdecode(cv::Mat(1, static_cast<int>(size), CV_8U, const_cast<unsigned char*>(data)),
-                         cv::IMREAD_UNCHANGED);
+    image = opencv_decode_image(data, size, DecodedAs::unchanged);
   } catch (const cv::Exception&) {
     image.release();
   }

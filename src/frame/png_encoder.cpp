@@ -13,9 +13,9 @@
 #include <memory>
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "rdsf/core/error.hpp"
+#include "rdsf/frame/image_codecs.hpp"
 
 namespace rdsf {
 namespace {
@@ -340,10 +340,9 @@ std::vector<unsigned char> encode_png(const cv::Mat& image, const PngEncodeOptio
     }
   }
   std::vector<unsigned char> bytes;
-  const std::vector<int> params = {cv::IMWRITE_PNG_COMPRESSION, options.zlib_level};
   bool ok = false;
   try {
-    ok = !image.empty() && cv::imencode(".png", image, bytes, params);
+    ok = !image.empty() && opencv_encode_png(image, bytes, options.zlib_level);
   } catch (const cv::Exception&) {
     ok = false;
   }

@@ -6,11 +6,10 @@
 #include <sstream>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "rdsf/core/durable_io.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/camera_file.hpp"
+#include "rdsf/frame/depth_png.hpp"
 
 namespace rdsf::synth {
 namespace fs = std::filesystem;
@@ -19,13 +18,6 @@ namespace {
 
 bool ends_with(const std::string& text, const std::string& tail) {
   return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-/// PNG through core/durable_io (synced, renamed, folder synced).
-void write_png_durably(const std::string& path, const cv::Mat& image) {
-  std::vector<unsigned char> bytes;
-  if (!cv::imencode(".png", image, bytes)) fail(path, "cannot encode image as PNG");
-  write_file_durably(path, bytes);
 }
 
 }  // namespace
@@ -85,8 +77,8 @@ void SynthWriter::add_clip(const ClipDescription& c) {
 
 void SynthWriter::write(const SynthFrame& frame) {
   const fs::path base = fs::path(dir_) / frame.name;
-  write_png_durably(base.string() + ".depth.png", frame.depth_mm);
-  if (!frame.bgr.empty()) write_png_durably(base.string() + ".rgb.png", frame.bgr);
+  write_png_atomically(base.string() + ".depth.png", frame.depth_mm);
+  if (!frame.bgr.empty()) write_png_atomically(base.string() + ".rgb.png", frame.bgr);
   std::ostream& out = boxes_->stream();
   for (const PersonTruth& p : frame.people) {
     char fraction[32];
