@@ -95,6 +95,7 @@ TEST(ImageCodecs, CallsGiveWhatOpenCvGives) {
   EXPECT_EQ(colour.type(), CV_8UC3);
   const unsigned char junk[] = {'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g', 'e'};
   EXPECT_TRUE(opencv_decode_image(junk, sizeof junk, DecodedAs::unchanged).empty());
+  EXPECT_NO_THROW(open_image_codecs());  // open (or linked) already: nothing more
   // The module sits beside the shared library that opens it.
   const std::string module = image_codecs_module_path();
   if (!module.empty()) {

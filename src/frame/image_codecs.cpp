@@ -63,6 +63,8 @@ bool opencv_encode_png(const cv::Mat& image, std::vector<unsigned char>& bytes, 
   return table().encode_png(image, bytes, compression_level);
 }
 
+void open_image_codecs() { (void)table(); }
+
 std::string image_codecs_module_path() {
 #ifdef RDSF_IMAGE_CODECS_MODULE
   return module_path();

@@ -35,6 +35,10 @@ cv::Mat opencv_decode_image(const unsigned char* data, std::size_t size, Decoded
 constexpr int kOpenCvDefaultPngParams = -1;
 bool opencv_encode_png(const cv::Mat& image, std::vector<unsigned char>& bytes, int compression_level);
 
+/// Opens OpenCV's codecs now (nothing when they are open or linked): a live program that will need them
+/// (the ROS node on compressed topics) pays their loading (about 150 ms) at its start, not at a frame.
+void open_image_codecs();
+
 /// The file OpenCV's codecs are called through: the module's path, or "" with a static librdsf.
 std::string image_codecs_module_path();
 
