@@ -16,6 +16,9 @@ packages=(
   xvfb xauth xdotool x11-apps
   # ROS 1 bags: the bag frame source (librosbag-dev, libsensor-msgs-dev) and scripts/frames-to-bag.py
   librosbag-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs python3-numpy python3-png
+  # ... JPEG colour topics of the test bags (scripts/frames-to-bag.py --compressed-colour jpeg): the path on
+  # which the library opens OpenCV's image codecs (frame/image_codecs.hpp)
+  python3-opencv
 )
 # The ROS 1 node rdsf_people (ros/, docs/ros.md) and its test: libraries, the message generator and the
 # definitions it reads, roscore, rosbag play, and what scripts/frames-to-bag.py needs to write the test's bag.

@@ -175,7 +175,8 @@ TEST(BagCompressed, RawTopicsAreChosenOverTheirCompressedTwins) {
 }
 
 // JPEG colour (the usual `.../image_raw/compressed`): read close to the PNG folder's colour, the depth exact.
-// The script needs python3-opencv for JPEG (not in scripts/setup.sh: skipped without it).
+// The script needs python3-opencv for JPEG (scripts/setup.sh installs it; skipped without it). The JPEG is
+// decoded by OpenCV's codecs, which the library opens at their first use (frame/image_codecs.hpp).
 TEST(BagCompressed, JpegColourReadsCloseToTheFolders) {
   RDSF_REQUIRE_BAG_WRITER();
   if (test::run("/usr/bin/python3 -c 'import cv2'").exit_code != 0) {
