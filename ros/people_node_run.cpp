@@ -48,8 +48,9 @@ class PeopleNode {
         diagnostics_topic_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10)),
         live_(detector.pipeline(), {resolve_thread_count(o.threads)}, clock_,
               [this](const DepthFrame& f, PipelineFrame& r, std::int64_t) { publish(f, r); }) {
-    // A compressed image outside the library's own PNG decoding (a JPEG colour image) needs OpenCV's codecs:
-    // opened before the first frame, whose latency would otherwise hold their loading.
+    // A compressed image the library's own PNG decoder leaves to OpenCV's codecs (a JPEG colour image, a PNG
+    // outside its plain subset) needs them: opened before the first frame, whose latency would otherwise
+    // hold their loading.
     if (o.compressed_depth || (o.colour && o.compressed_colour)) open_image_codecs();
     subscribe_depth(nh, o.compressed_depth);
     if (o.colour) subscribe_colour(nh, o.compressed_colour);

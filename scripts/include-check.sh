@@ -2,7 +2,8 @@
 # Checks that every #include points the way docs/architecture.md says: a library folder includes only the
 # folders to its left in the flow (and itself), the library never includes a program, cli/ or gui/ (nor
 # Boost.ProgramOptions or highgui, nor OpenCV's imgcodecs outside frame/image_codecs_module.cpp), and a
-# program folder includes the library, cli/, gui/ and itself, never another program. Prints one line per wrong include and exits 1 when there is one (CTest: include_direction).
+# program folder includes the library, cli/, gui/ and itself, never another program. Prints one line per
+# wrong include and exits 1 when there is one (CTest: include_direction).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

@@ -3,6 +3,7 @@
 // direct path opens the module beside librdsf and gives what it gave before; the calls are OpenCV's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,9 +11,8 @@
 #include <libdeflate.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "rdsf/frame/depth_png.hpp"
+#include "rdsf/core/durable_io.hpp"
 #include "rdsf/frame/image_codecs.hpp"
-#include "rdsf/frame/png_decoder.hpp"
 #include "rdsf/frame/png_encoder.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/test_support.hpp"
@@ -36,11 +36,6 @@ Bytes with_private_chunk(const Bytes& png) {
   return out;
 }
 
-void write_bytes(const std::string& path, const Bytes& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                              static_cast<std::streamsize>(bytes.size()));
-}
-
 /// rdsf-detect on `folder` with the loader's trace (glibc's LD_DEBUG=files) on standard error.
 test::RunResult detect_traced(const std::string& folder, const std::string& csv) {
   return test::run("LD_DEBUG=files " + test::quote(test::program("rdsf-detect")) + " --source " +
@@ -57,8 +52,8 @@ TEST(ImageCodecs, ProgramsOpenOpenCvsCodecsOnlyForAFileOutsideTheDirectPath) {
   const Bytes plain = encode_png(frame.depth_mm);
   std::filesystem::create_directories(dir / "plain");
   std::filesystem::create_directories(dir / "other");
-  write_bytes(dir / "plain/scene.depth.png", plain);
-  write_bytes(dir / "other/scene.depth.png", with_private_chunk(plain));
+  write_file_durably(dir / "plain/scene.depth.png", plain);
+  write_file_durably(dir / "other/scene.depth.png", with_private_chunk(plain));
 
   const test::RunResult direct = detect_traced(dir / "plain", dir / "plain.csv");
   ASSERT_EQ(direct.exit_code, 0) << direct.err.substr(direct.err.size() > 2000 ? direct.err.size() - 2000 : 0);

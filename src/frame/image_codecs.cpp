@@ -1,15 +1,14 @@
 #include "rdsf/frame/image_codecs.hpp"
 
-#include <cstring>
-
 #ifdef RDSF_IMAGE_CODECS_MODULE
 #include <dlfcn.h>
 
+#include <cstring>
 #include <filesystem>
-#endif
 
 #include "rdsf/core/error.hpp"
 #include "rdsf/version.hpp"
+#endif
 
 namespace rdsf {
 namespace {

@@ -17,6 +17,7 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
+
 #include "rdsf/core/byte_order.hpp"
 #include "rdsf/core/error.hpp"
 #include "rdsf/core/yaml_guard.hpp"

@@ -13,7 +13,6 @@
 #include <memory>
 #include <string>
 
-
 #include "rdsf/core/error.hpp"
 #include "rdsf/frame/image_codecs.hpp"
 

@@ -43,8 +43,8 @@ void open_image_codecs();
 std::string image_codecs_module_path();
 
 /// What the module gives librdsf (src/frame/image_codecs_module.cpp; not for callers): its C entry
-/// rdsf_image_codecs() returns this table, whose version is kImageCodecsVersion of the librdsf it was built
-/// with (a module of another version is refused).
+/// rdsf_image_codecs() returns this table, whose version is the RDSF_VERSION_STRING of the librdsf it was
+/// built with (a module of another version is refused).
 struct ImageCodecsTable {
   const char* version;
   cv::Mat (*decode)(const unsigned char* data, std::size_t size, DecodedAs as);
