@@ -71,6 +71,44 @@ TEST(ImageCodecs, ProgramsOpenOpenCvsCodecsOnlyForAFileOutsideTheDirectPath) {
   EXPECT_EQ(test::file_text(dir / "other.csv"), rows);
 }
 
+// A librdsf without its module beside it (a copy moved alone): the first PNG OpenCV must write is a one-line
+// error naming the module's path, and the program exits 1; plain PNGs are still read without it.
+TEST(ImageCodecs, AMissingModuleIsAOneLineErrorNamingIt) {
+  const std::string module = image_codecs_module_path();
+  if (module.empty()) GTEST_SKIP() << "a static librdsf links OpenCV's codecs";
+  test::TempDir dir;
+  const std::filesystem::path library_dir = std::filesystem::path(module).parent_path();
+  const std::filesystem::path lib = dir.path() / "lib";
+  std::filesystem::create_directories(lib);
+  for (const auto& entry : std::filesystem::directory_iterator(library_dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("librdsf.so.", 0) == 0 && !entry.is_symlink()) {
+      std::filesystem::copy_file(entry.path(), lib / name);
+      std::filesystem::create_symlink(name, lib / name.substr(0, name.rfind('.')));
+    }
+  }
+  // LD_LIBRARY_PATH comes before the programs' RUNPATH: the copy is the librdsf they load.
+  const std::string run_alone = "LD_LIBRARY_PATH=" + test::quote(lib.string()) + " ";
+  const test::RunResult synth = test::run(run_alone + test::quote(test::program("rdsf-synth")) + " --out " +
+                                          test::quote(dir / "synth") + " --frames 1 --seed 1");
+  EXPECT_EQ(synth.exit_code, 1) << synth.err;
+  const std::string missing = (lib / "librdsf_image_codecs.so").string();
+  EXPECT_NE(synth.err.find("rdsf-synth: error: " + missing + ": cannot load OpenCV's image codecs ("),
+            std::string::npos) << synth.err;
+  EXPECT_EQ(synth.err.find(missing, synth.err.find(missing) + 1), std::string::npos) << "named twice: " << synth.err;
+  EXPECT_EQ(std::count(synth.err.begin(), synth.err.end(), '\n'), 2) << synth.err;  // its start line and the error
+
+  DepthFrame frame = test::wall_frame(4000);
+  test::paint(frame, {300, 100, 40, 360}, 2000);
+  std::filesystem::create_directories(dir / "plain");
+  write_file_durably(dir / "plain/scene.depth.png", encode_png(frame.depth_mm));
+  const test::RunResult detect =
+      test::run(run_alone + test::quote(test::program("rdsf-detect")) + " --source " + test::quote(dir / "plain") +
+                " --candidates-only --out " + test::quote(dir / "p.csv"));
+  EXPECT_EQ(detect.exit_code, 0) << detect.err;  // (the copy finds no shipped model: candidates only)
+  EXPECT_NE(test::file_text(dir / "p.csv").find("scene,0,"), std::string::npos);
+}
+
 TEST(ImageCodecs, CallsGiveWhatOpenCvGives) {
   DepthFrame frame = test::wall_frame(3000);
   test::paint(frame, {100, 50, 80, 300}, 1500);

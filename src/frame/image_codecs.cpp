@@ -29,8 +29,10 @@ const ImageCodecsTable& load_table() {
   // Kept open for the process's life: the table points into it.
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
-    const char* why = dlerror();
-    fail(path, std::string("cannot load OpenCV's image codecs (") + (why != nullptr ? why : "dlopen failed") + ")");
+    const char* error = dlerror();
+    std::string why = error != nullptr ? error : "dlopen failed";
+    if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);  // dlerror names the file too
+    fail(path, "cannot load OpenCV's image codecs (" + why + ")");
   }
   auto entry = reinterpret_cast<const ImageCodecsTable* (*)()>(dlsym(handle, "rdsf_image_codecs"));
   const ImageCodecsTable* table = entry != nullptr ? entry() : nullptr;
