@@ -20,6 +20,8 @@
 # 300 empty), mined and labelled in assisted mode, far smaller than the shipped model's 18,000 frames.
 # --camera 'OPTIONS' renders the held-out rooms through another camera (rdsf-synth's --size and --fov, e.g.
 # a Kinect v2's 512x424 at 70.6 x 60 degrees; the base stays Kinect v1, as the shipped model's training).
+# --people-distance MIN..MAX renders the held-out rooms with their people that far from the camera (rdsf-synth's
+# option, in metres; e.g. 0.8..2.5: issue 34's office, people passing close to a camera at chest height).
 # --base DIR takes the base from a folder of sample sets instead (DIR/people and DIR/negatives, e.g. the sets
 # scripts/train-default-model.sh makes for the shipped model: the default model's size, its positives from
 # people/ and its negatives from both, as that script trains); --modes picks rows.
@@ -32,7 +34,8 @@ cd "$(dirname "$0")/.."
 usage() {
   cat <<USAGE
 Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B ..."] [--real DIR] [--base DIR]
-                                      [--modes "M ..."] [--camera 'OPTIONS'] [--people-version N]
+                                      [--modes "M ..."] [--camera 'OPTIONS'] [--people-distance MIN..MAX]
+                                      [--people-version N] [--seed N]
   --out DIR        work folder (default out/adaptation)
   --synthetic N    synthetic held-out rooms to use, 0-16 (default 4)
   --budgets "..."  answer budgets of the per-candidate and per-track runs (default "10 50")
@@ -43,6 +46,9 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
   --adapt-args ".." more options for every rdsf-adapt run, e.g. "--propagate-model-answers on" (default none)
   --camera '...'   rdsf-synth options of the camera the synthetic held-out rooms are seen by, e.g.
                    '--size 512x424 --fov 70.6x60' (a Kinect v2); the base stays Kinect v1 (default none: Kinect v1)
+  --people-distance MIN..MAX  the synthetic held-out rooms' people this far from the camera, in metres
+                   (rdsf-synth's option; e.g. 0.8..2.5, people passing close to the camera; default: the rooms'
+                   own spread)
   --people-version N  the shipped people/vN every room starts from and is judged against (default 2: the
                    tables' model; 4: today's default); one version per work folder
   --seed N         rdsf-synth's seed of the 16 synthetic held-out rooms (default 31: the quality report's;
@@ -50,8 +56,8 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
 USAGE
 }
 out=out/adaptation synthetic=4 budgets="10 50" real=../shared/realdata/people base="" modes="track candidate retrain negatives"
-adapt_args_text="" camera_text="" people_version=2 seed=31
-script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text --camera=camera_text --people-version=people_version --seed=seed -- "$@"
+adapt_args_text="" camera_text="" people_distance="" people_version=2 seed=31
+script_options adaptation-benchmark --out=out --synthetic=synthetic --budgets=budgets --real=real --base=base --modes=modes --adapt-args=adapt_args_text --camera=camera_text --people-distance=people_distance --people-version=people_version --seed=seed -- "$@"
 case "$seed" in ''|*[!0-9]*) echo "adaptation-benchmark: --seed takes a whole number" >&2; exit 2 ;; esac
 [ -f "models/people/v$people_version.yml" ] || { echo "adaptation-benchmark: --people-version: no models/people/v$people_version.yml" >&2; exit 2; }
 read -r -a adapt_args <<<"$adapt_args_text"
@@ -59,10 +65,17 @@ read -r -a camera <<<"$camera_text"
 for c in "${camera[@]}"; do
   case "$c" in --size|--fov|[0-9]*x[0-9]*|kinect) ;; *) echo "adaptation-benchmark: --camera takes rdsf-synth's --size WxH and --fov HxV, not '$c'" >&2; exit 2 ;; esac
 done
-# The held-out rooms of another camera are rendered into folders of their own.
+distance=()
+if [ -n "$people_distance" ]; then
+  [[ "$people_distance" =~ ^[0-9.]+\.\.[0-9.]+$ ]] ||
+    { echo "adaptation-benchmark: --people-distance takes MIN..MAX in metres, e.g. 0.8..2.5, not '$people_distance'" >&2; exit 2; }
+  distance=(--people-distance "$people_distance")
+fi
+# The held-out rooms of another camera or people distance are rendered into folders of their own.
 heldout=heldout
 [ "$seed" = 31 ] || heldout=heldout-seed$seed
 [ -z "$camera_text" ] || heldout=$heldout-$(echo "${camera[*]}" | md5sum | cut -c1-8)
+[ -z "$people_distance" ] || heldout=$heldout-near$people_distance
 case "$synthetic" in ''|*[!0-9]*) echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2 ;; esac
 ((synthetic <= 16)) || { echo "adaptation-benchmark: --synthetic takes 0-16" >&2; exit 2; }
 for m in $modes; do
@@ -99,10 +112,11 @@ base_synth=()
     "${base_synth[@]}" >/dev/null 2>&1
 if ((synthetic > 0)); then
   [ -f "$data/$heldout/synth.yml" ] ||
-    "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed "$seed" --clip-frames 60 "${camera[@]}" >/dev/null 2>&1
+    "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed "$seed" --clip-frames 60 "${camera[@]}" \
+      "${distance[@]}" >/dev/null 2>&1
   [ -f "$data/$heldout-empty/synth.yml" ] ||
     "$synth" --out "$data/$heldout-empty" --force --frames 960 --people 1..4 --seed "$seed" --empty --clip-frames 60 \
-      "${camera[@]}" >/dev/null 2>&1
+      "${camera[@]}" "${distance[@]}" >/dev/null 2>&1
 fi
 [ -n "$base" ] || [ -f "$sets/base-neg/manifest.yml" ] || "$mine" --source "$data/base-empty" --out "${base_neg[0]}" --threads $threads 2>/dev/null
 [ -n "$base" ] || [ -f "$sets/base-pos/manifest.yml" ] ||
@@ -237,6 +251,7 @@ step "report"
   echo "contradicted by the truth); train s = rdsf-train"
   echo "wall time (from the last answer to the model)."
   [ -z "$camera_text" ] || echo "The synthetic rooms are seen through rdsf-synth $camera_text (the base: Kinect v1)."
+  [ -z "$people_distance" ] || echo "The synthetic rooms' people stand $people_distance m from the camera (rdsf-synth --people-distance)."
   echo
   echo "| room | mode | budget | answers | propagated (wrong) | TAR | train s |"
   echo "| --- | --- | --- | --- | --- | --- | --- |"
