@@ -56,6 +56,7 @@ expect 2 "--test-frames takes a positive number" scripts/quality-report.sh --tes
 expect 2 "--synthetic takes 0-16" scripts/adaptation-benchmark.sh --synthetic 17
 expect 2 "--camera takes rdsf-synth's --size WxH and --fov HxV, not '--rgb'" scripts/adaptation-benchmark.sh --camera "--size 512x424 --rgb"
 expect 2 "--seed takes a whole number" scripts/adaptation-benchmark.sh --seed x1
+expect 2 "--people-distance takes MIN..MAX in metres" scripts/adaptation-benchmark.sh --people-distance 2.5
 expect 2 "--frames takes a positive number" scripts/propagation-report.sh --frames 0
 expect 2 "--seeds takes numbers" scripts/propagation-report.sh --seeds "31 x"
 expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only levers
