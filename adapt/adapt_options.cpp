@@ -50,7 +50,10 @@ po::options_description adapt_options(const std::string& caption, AdaptOptions& 
        " samples (the small base rendered here: about 1 s more), off for larger ones (a second training of their "
        "size) and without a base").c_str())
       ("trial-budget", po::value(&o.trial_budget)->default_value(o.trial_budget),
-       "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)");
+       "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)")
+      ("switch-rule", po::value(&text.switch_rule)->default_value(text.switch_rule),
+       "--try-switches: one (each switch tried alone; one confirmed person takes it) or majority (each tried on "
+       "the switches taken before it; taken when the answers confirm more people than they reject)");
   cli::add_per_place_option(options, o.per_place);
   cli::add_propagate_model_option(options, o.propagate_model);
   cli::add_threads_option(options, o.threads, "threads of each step");
@@ -78,6 +81,8 @@ void check_options(const AdaptOptionText& text, AdaptOptions& o) {
   if (o.base_frames < 0) throw cli::UsageError("--base-frames must be 0 (no base) or more");
   if (text.holdout_check == "on" || text.holdout_check == "off") o.holdout_check = text.holdout_check == "on";
   else if (text.holdout_check != "auto") throw cli::UsageError("--holdout-check takes auto, on or off, not '" + text.holdout_check + "'");
+  if (text.switch_rule == "one" || text.switch_rule == "majority") o.switch_majority = text.switch_rule == "majority";
+  else throw cli::UsageError("--switch-rule takes one or majority, not '" + text.switch_rule + "'");
   if (o.trial_budget < 1) throw cli::UsageError("--trial-budget must be at least 1 (--try-switches off tries none)");
 }
 

@@ -12,12 +12,13 @@ namespace rdsf {
 struct AdaptOptionText {
   std::string chart, chart_png;         ///< --chart, --chart-png: draw a benchmark's results instead
   std::string holdout_check = "auto";   ///< --holdout-check auto|on|off
+  std::string switch_rule = "one";      ///< --switch-rule one|majority
 };
 
 /// rdsf-adapt's options, in --help's order, writing into `o` and `text`.
 cli::po::options_description adapt_options(const std::string& caption, AdaptOptions& o, AdaptOptionText& text);
 
-/// After parsing: --holdout-check into `o`, and every rule between options (cli::UsageError naming the option).
+/// After parsing: --holdout-check and --switch-rule into `o`, and every rule between options (cli::UsageError naming the option).
 /// With --chart only --chart-png is needed.
 void check_options(const AdaptOptionText& text, AdaptOptions& o);
 

@@ -278,6 +278,7 @@ void room_negatives(const AdaptOptions& o, const BoostedModel& model, const Step
 struct Answers {
   long human = 0, propagated = 0;  ///< the person's answers, and the labels their tracks and places gave
   long human_people = 0;           ///< of the person's answers, the y
+  long human_others = 0;           ///< ... and the n
   long by_model_track = 0;         ///< labels along the model's own sure answers' tracks (no person's answer)
 };
 
@@ -289,6 +290,7 @@ Answers count_answers(const std::string& room_set) {
   for (const JournalEntry& e : answers.in_force()) {
     a.human += e.by == "human" ? 1 : 0;
     a.human_people += e.by == "human" && e.answer == 'y' ? 1 : 0;
+    a.human_others += e.by == "human" && e.answer == 'n' ? 1 : 0;
     a.propagated += e.by.rfind("track ", 0) == 0 || e.by.rfind("place ", 0) == 0 ? 1 : 0;
     a.by_model_track += e.by.rfind("model-track ", 0) == 0 ? 1 : 0;
   }
@@ -317,6 +319,11 @@ AdaptOptions with_switch(AdaptOptions o, const CandidateSwitch& sw) {
   return o;
 }
 
+// Whether a trial's answers take its switch (AdaptOptions::switch_majority).
+bool takes_switch(const AdaptOptions& o, const Answers& a) {
+  return o.switch_majority ? a.human_people > a.human_others : a.human_people > 0;
+}
+
 // Step "switches": each switch tried in the room; its state row says on or off, answers.trials the answers.
 void try_switches(const AdaptOptions& o, const BoostedModel& model, AdaptState& state, const Paths& paths) {
   if (state.done("base") || state.done("negatives") || state.done("answers")) {  // a folder begun before trials
@@ -325,6 +332,7 @@ void try_switches(const AdaptOptions& o, const BoostedModel& model, AdaptState& 
   }
   long spent = 0;
   const long most = o.budget / 2;  // the trials never take more than half the budget: the room's questions come
+  AdaptOptions before = o;         // the options a trial adds its switch to: with the majority rule, those taken
   for (const CandidateSwitch& sw : switches_to_try(o, model)) {
     const std::string set = paths.trial(sw.option);
     const long left = std::min<long>(o.trial_budget, most - spent) - count_answers(set).human;
@@ -338,15 +346,19 @@ void try_switches(const AdaptOptions& o, const BoostedModel& model, AdaptState& 
                                     std::to_string(o.threads)};
       if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
       if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
-      args = with_options(args, step_options(with_switch(o, sw), model));  // the switch on, once among them
+      args = with_options(args, step_options(with_switch(before, sw), model));  // the switch on, once among them
       const bool window = o.truth.empty() && o.answers.empty();
       run_step_program("rdsf-label", args, window ? std::string() : paths.log("switches"));
     }
     const Answers a = count_answers(set);  // the person's own y decide, not the labels their tracks gave
     spent += a.human;
-    state.set("switch." + sw.option, a.human_people > 0 ? "on" : "off");
+    const bool take = takes_switch(o, a);
+    state.set("switch." + sw.option, take ? "on" : "off");
+    if (take && o.switch_majority) before = with_switch(std::move(before), sw);
     say("--" + sw.option + " " + sw.on + ": " + std::to_string(a.human_people) + " of " + std::to_string(a.human) +
-        " answers confirmed a person only it finds: " + (a.human_people > 0 ? "on" : "off"));
+        " answers confirmed a person only it finds" +
+        (o.switch_majority ? ", " + std::to_string(a.human_others) + " rejected one" : std::string()) + ": " +
+        (take ? "on" : "off"));
   }
   state.set("answers.trials", std::to_string(spent));
 }
@@ -639,6 +651,7 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("name", given.name);
   state.pin("analyser_options", option_words(departures_from_defaults(stated_options(tried.analyser))));
   state.pin("try_switches", given.try_switches ? "on" : "off");
+  state.pin("switch_rule", given.switch_majority ? "majority" : "one");
   state.pin("holdout_check", !given.holdout_check ? "auto" : *given.holdout_check ? "on" : "off");
   const Paths paths(given.out);
   fs::create_directories(paths.logs);

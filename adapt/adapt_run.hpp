@@ -77,6 +77,11 @@ struct AdaptOptions {
   /// the budget's answers, all of them at most half the budget.
   bool try_switches = true;
   int trial_budget = 3;
+  /// How a trial decides (--switch-rule). false ("one"): each switch is tried alone with the model's options and
+  /// one person the person confirms among the candidates only it adds takes it. true ("majority"): each is
+  /// tried with the switches taken before it on (what it adds to them is asked), and it is taken when the
+  /// person's answers there confirm more people than they reject (y > n; skips count for neither).
+  bool switch_majority = false;
   /// Before training (the "check" step): a trial model of the earlier half of the room's frames against the
   /// model as given on the labelled candidates of the later half; the trial finding fewer people keeps the model
   /// as given (pipeline/holdout_check.hpp). Unset ("auto"): on when the base sets hold 1 to

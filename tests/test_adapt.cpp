@@ -392,7 +392,9 @@ TEST(Adapt, AKilledRunResumes) {
 }
 
 // `dir`/room: 20 frames of a person 25 cm before a wall at 3 m, moving right, and its boxes.csv.
-void write_room_before_a_wall(const test::TempDir& dir) {
+// With `cupboard`, a narrow cupboard stands 25 cm before the wall too, on the right, where nobody goes: not a
+// person (the truth names only the one who moves), and like the person a candidate of --local-front only.
+void write_room_before_a_wall(const test::TempDir& dir, bool cupboard = false) {
   std::filesystem::create_directories(dir / "room");
   std::ofstream boxes(dir / "room/boxes.csv");
   boxes << "frame,person,x,y,w,h\n";
@@ -401,6 +403,7 @@ void write_room_before_a_wall(const test::TempDir& dir) {
     const cv::Rect body(200 + 8 * i, 100, 60, 330);
     test::paint(frame, {body.x + 18, body.y, 24, 40}, 2750);  // the head
     test::paint(frame, {body.x, body.y + 40, body.width, body.height - 40}, 2750);
+    if (cupboard) test::paint(frame, {540, 120, 70, 310}, 2750);
     char name[16];
     std::snprintf(name, sizeof name, "%06d", i);
     write_png_atomically(dir / (std::string("room/") + name + ".depth.png"), frame.depth_mm);
@@ -446,6 +449,55 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   EXPECT_NE(off.err.find("no positives to train with"), std::string::npos) << off.err;
   EXPECT_EQ(test::file_text(dir / "off/adapt-state.tsv").find("switch."), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "off/logs/switches.log"));
+}
+
+// --switch-rule majority: a switch is taken when the person's answers on what it adds confirm more people than
+// they reject. Here --local-front adds the person and a cupboard before the same wall: one y, one n, so the
+// majority leaves it off where the rule of one person takes it. Each later switch is tried with the switches
+// taken before it on; the state pins the rule (a folder resumed with the other rule is refused).
+TEST(Adapt, TheMajorityRuleLeavesASwitchOffWhenItAddsAsManyFalseCandidatesAsPeople) {
+  test::TempDir dir;
+  write_room_before_a_wall(dir, /*cupboard=*/true);
+  const SmallRoomRun run = small_room_run(dir, 8);
+  const test::RunResult one = test::run(run.command + " --trial-budget 2 --switch-rule one");
+  const test::RunResult r = test::run(
+      replace(replace(run.command, "--name room", "--name majority"), test::quote(dir / "out"), test::quote(dir / "maj")) +
+      " --trial-budget 2 --switch-rule majority");
+  EXPECT_NE(one.err.find("--local-front 70: 1 of 2 answers confirmed a person only it finds: on"), std::string::npos)
+      << one.err;
+  EXPECT_NE(r.err.find("--local-front 70: 1 of 2 answers confirmed a person only it finds, 1 rejected one: off"),
+            std::string::npos)
+      << r.err;
+  const std::string state = test::file_text(dir / "maj/adapt-state.tsv");
+  EXPECT_NE(state.find("switch.local-front\toff"), std::string::npos) << state;
+  EXPECT_NE(state.find("switch_rule\tmajority"), std::string::npos) << state;
+  const test::RunResult other = test::run(
+      replace(replace(run.command, "--name room", "--name majority"), test::quote(dir / "out"), test::quote(dir / "maj")) +
+      " --trial-budget 2 --switch-rule one");
+  EXPECT_NE(other.exit_code, 0);
+  EXPECT_NE(other.err.find("switch_rule 'majority', not 'one'"), std::string::npos) << other.err;
+  const test::RunResult bad = test::run(run.command + " --switch-rule most");
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--switch-rule takes one or majority, not 'most'"), std::string::npos) << bad.err;
+}
+
+// With the majority rule a switch taken stays on in the trials after it: the wall room's person is found by
+// --local-front alone (one y: taken), and --border-height's trial then runs with the front on.
+TEST(Adapt, TheMajorityRuleTriesEachSwitchOnThoseTakenBeforeIt) {
+  test::TempDir dir;
+  write_room_before_a_wall(dir);
+  const SmallRoomRun run = small_room_run(dir, 8);
+  const test::RunResult r = test::run(run.command + " --trial-budget 1 --switch-rule majority");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("--local-front 70: 1 of 1 answers confirmed a person only it finds, 0 rejected one: on"),
+            std::string::npos)
+      << r.err;
+  const std::string trials = test::file_text(dir / "out/logs/switches.log");
+  const std::size_t border = trials.find("--only-added-by border-height");
+  ASSERT_NE(border, std::string::npos) << trials;
+  const std::size_t line_start = trials.rfind('\n', border) + 1;
+  const std::string command = trials.substr(line_start, trials.find('\n', border) - line_start);
+  EXPECT_NE(command.find("--local-front 70"), std::string::npos) << command;
 }
 
 // people/v4 states --local-front 70 (and every other option at its default): the room's steps run with the
