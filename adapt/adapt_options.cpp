@@ -49,6 +49,10 @@ po::options_description adapt_options(const std::string& caption, AdaptOptions& 
        "round added). auto: on when the base sets hold 1 to " + std::to_string(kHoldoutCheckMaxBaseSamples) +
        " samples (the small base rendered here: about 1 s more), off for larger ones (a second training of their "
        "size) and without a base").c_str())
+      ("check-as-given", po::value(&o.check_as_given)->default_value(o.check_as_given, o.check_as_given ? "on" : "off"),
+       "on or off: with switches taken, the held-out check also judges --model without them on its own candidates "
+       "of the later half; when it finds more people than both the trial and --model stating the switches, the "
+       "room's model is --model as given, the switches dropped")
       ("trial-budget", po::value(&o.trial_budget)->default_value(o.trial_budget),
        "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)")
       ("switch-rule", po::value(&text.switch_rule)->default_value(text.switch_rule),

@@ -372,6 +372,9 @@ std::vector<CandidateSwitch> switches_taken(const AdaptState& state) {
   return out;
 }
 
+// The held-out check found the model as given better without the switches than with them and than the trial.
+bool switches_dropped(const AdaptState& state) { return state.get("check") == "as given kept"; }
+
 // The options after the switches' trials: those taken given as if on the command line (every later step runs
 // with them and the adapted model states them).
 AdaptOptions with_switches_taken(const AdaptOptions& o, const AdaptState& state) {
@@ -473,10 +476,12 @@ std::pair<std::string, std::string> train_with_base(const AdaptOptions& o, const
   return {wrote.back().substr(std::string("rdsf-train: wrote ").size()), seconds};
 }
 
-// Step 2b (--holdout-check): the trial trained as the room's model is, into the check's own folder.
-void check_room_model(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
-                      const Paths& paths) {
+// Step 2b (--holdout-check): the trial trained as the room's model is, into the check's own folder; with switches
+// taken, the model as given with `tried`'s options (without them) is judged too.
+void check_room_model(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step,
+                      const StepOptions& tried, AdaptState& state, const Paths& paths) {
   HoldoutInputs in;
+  if (o.check_as_given && !switches_taken(state).empty()) in.as_given = tried.analyser;
   in.source = o.source;
   in.room_sets = room_sets(state, paths);
   if (!state.get("negatives").empty()) in.negatives = paths.negatives;
@@ -490,10 +495,11 @@ void check_room_model(const AdaptOptions& o, const BoostedModel& model, const St
 }
 
 // Step 3: the room's samples with the base sets; the new model's path goes to the state. After a held-out check
-// the base won, the room's model is the model as given, stating the switches taken (no round added).
+// the base won, the room's model is the model as given, stating `step`'s options (the switches taken, or none when
+// the check dropped them) with no round added.
 void train_room_model(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
                       const Paths& paths) {
-  if (state.get("check") == "base kept") {
+  if (state.get("check") == "base kept" || state.get("check") == "as given kept") {
     RecordedParameters provenance = room_provenance(o, model, state);
     provenance.emplace_back("adapted_check", "the model as given kept: " + state.get("check.figures"));
     BoostedModel kept = base_as_room_model(model, step.stated, provenance);
@@ -576,9 +582,10 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
             const Paths& paths) {
   const BoostedModel adapted = BoostedModel::load(state.get("model"));
   const RocSummary& v = adapted.training().validation.summary;
-  const std::string trained = state.get("check") == "base kept"
-                                  ? "no round trained (the model as given, kept by the held-out check)"
-                                  : "trained in " + state.get("train_seconds") + " s";
+  const std::string trained =
+      state.get("check") == "base kept"       ? "no round trained (the model as given, kept by the held-out check)"
+      : switches_dropped(state) ? "no round trained (the model as given, without the switches, kept by the held-out check)"
+                                : "trained in " + state.get("train_seconds") + " s";
   char line[400];
   std::snprintf(line, sizeof line,
                 "%s: %s answers, %s labels propagated (%s more along the model's tracks), %s; validation "
@@ -594,8 +601,10 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
     const BeforeAfter b = compare_on_eval(o, step, state.get("model"), (fs::path(o.out) / "report").string(), paths);
     state.set("tar_after", b.after);
     state.set("tar_difference", b.difference);
-    RecordedParameters switched;  // the switches the trials took
-    for (const CandidateSwitch& sw : switches_taken(state)) switched.emplace_back(parameter_key(sw.option), sw.on);
+    RecordedParameters switched;  // the switches the trials took, unless the check dropped them
+    if (!switches_dropped(state)) {
+      for (const CandidateSwitch& sw : switches_taken(state)) switched.emplace_back(parameter_key(sw.option), sw.on);
+    }
     const std::string taken = option_words(switched);
     if (taken.empty()) {
       state.set("tar_before", b.before);
@@ -653,6 +662,7 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("try_switches", given.try_switches ? "on" : "off");
   state.pin("switch_rule", given.switch_majority ? "majority" : "one");
   state.pin("holdout_check", !given.holdout_check ? "auto" : *given.holdout_check ? "on" : "off");
+  state.pin("check_as_given", given.check_as_given ? "on" : "off");
   const Paths paths(given.out);
   fs::create_directories(paths.logs);
   step(state, "switches", [&] { try_switches(given, model, state, paths); });
@@ -666,9 +676,12 @@ int run_adapt(const AdaptOptions& given) {
   }
   step(state, "negatives", [&] { room_negatives(o, model, options, state, paths); });
   step(state, "answers", [&] { room_answers(o, options, state, paths); });
-  if (holdout_check_on(with_base)) step(state, "check", [&] { check_room_model(with_base, model, options, state, paths); });
-  step(state, "train", [&] { train_room_model(with_base, model, options, state, paths); });
-  step(state, "report", [&] { report(o, tried, options, state, paths); });
+  if (holdout_check_on(with_base)) {
+    step(state, "check", [&] { check_room_model(with_base, model, options, tried, state, paths); });
+  }
+  const StepOptions& room = switches_dropped(state) ? tried : options;  // the options the room's model states
+  step(state, "train", [&] { train_room_model(with_base, model, room, state, paths); });
+  step(state, "report", [&] { report(o, tried, room, state, paths); });
   return 0;
 }
 

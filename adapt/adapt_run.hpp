@@ -87,6 +87,9 @@ struct AdaptOptions {
   /// as given (pipeline/holdout_check.hpp). Unset ("auto"): on when the base sets hold 1 to
   /// kHoldoutCheckMaxBaseSamples samples.
   std::optional<bool> holdout_check;
+  /// With switches taken, the held-out check also judges the model as given without them, which wins when it
+  /// finds more than both others: the switches are dropped (pipeline/holdout_check.hpp).
+  bool check_as_given = false;
   int threads = 0;
   /// The frame analyser's options (segmentation, candidates) and which were given: every step runs with the
   /// given ones, the model's stated ones for the rest (pipeline/stated_options.hpp), and the adapted model

@@ -500,6 +500,25 @@ TEST(Adapt, TheMajorityRuleTriesEachSwitchOnThoseTakenBeforeIt) {
   EXPECT_NE(command.find("--local-front 70"), std::string::npos) << command;
 }
 
+// --check-as-given on: with a switch taken, the held-out check also scores the model as given without it on its
+// own candidates of the later half. In the wall room the person has no candidate without --local-front, so the
+// model without the switch finds nobody there and the switch stays.
+TEST(Adapt, TheHoldoutCheckJudgesTheModelWithoutTheSwitchesOnItsOwnCandidates) {
+  test::TempDir dir;
+  write_room_before_a_wall(dir);
+  const SmallRoomRun run = small_room_run(dir, 8);
+  const test::RunResult r = test::run(run.command + " --trial-budget 1 --holdout-check on --check-as-given on");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string state = test::file_text(dir / "out/adapt-state.tsv");
+  EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
+  EXPECT_NE(state.find("check_as_given\ton"), std::string::npos) << state;
+  EXPECT_NE(r.err.find(" finds 0 without the switches, "), std::string::npos) << r.err;
+  EXPECT_EQ(state.find("check\tas given kept"), std::string::npos) << state;
+  const RecordedParameters stated = BoostedModel::load((run.models / "room/v1.yml").string()).detection_options();
+  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
+            stated.end());
+}
+
 // people/v4 states --local-front 70 (and every other option at its default): the room's steps run with the
 // front, so the wall room's person has a candidate without any trial; --local-front is not tried (the model
 // turns it on), the other switches are, each named once on its trial's command line (a stating model's step

@@ -50,6 +50,29 @@ TEST(HoldoutCheck, PeopleFoundAreThoseAboveTheHighestOtherCandidateTheFalsePosit
   EXPECT_THROW(people_found_at_fppf(people, {}, 0, 0.1), Error);
 }
 
+// Who becomes the room's model: the trial on a tie with the model as given; with switches taken, the model as
+// given without them only when it finds more people than both (a tie keeps the others' decision).
+TEST(HoldoutCheck, TheModelWithoutTheSwitchesWinsOnlyWhenItFindsMoreThanBoth) {
+  HoldoutFigures f;
+  f.base_found = 4;
+  f.trial_found = 4;
+  EXPECT_TRUE(f.trial_kept());
+  EXPECT_FALSE(f.as_given_kept());
+  f.as_given_found = 4;  // a tie with both: the trial
+  EXPECT_TRUE(f.trial_kept());
+  EXPECT_FALSE(f.as_given_kept());
+  f.as_given_found = 5;
+  EXPECT_TRUE(f.as_given_kept());
+  EXPECT_FALSE(f.trial_kept());
+  f.trial_found = 5;  // the trial as good: it stays
+  EXPECT_FALSE(f.as_given_kept());
+  EXPECT_TRUE(f.trial_kept());
+  f.trial_found = 3;
+  f.as_given_found = 4;  // the base stating the switches wins over the trial; as given only ties with it
+  EXPECT_FALSE(f.as_given_kept());
+  EXPECT_FALSE(f.trial_kept());
+}
+
 // The detector's score of a stored crop: the shipped model is mirror-averaged whole; the model as given made a
 // room's model scores every crop the same, bit for bit, while it says it was adapted and states the options.
 TEST(HoldoutCheck, TheModelAsGivenKeptForTheRoomScoresAsTheModelAsGiven) {

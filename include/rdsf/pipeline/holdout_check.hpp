@@ -10,7 +10,15 @@
 // others of the labelled candidates' ROC curve (classifier/roc_metrics.hpp; candidates nobody labelled count
 // for neither).
 // The trial replaces the base only when it finds at least as many (HoldoutFigures::trial_kept).
+// When the room's trials took candidate switches, the base scores the switched candidates: a third figure is then
+// the model as given with its own options, without the switches (its own candidates of the later half, each
+// labelled by the labelled candidate of its frame its strict box overlaps most, IoU >= 0.5; a labelled person
+// none of them overlaps is missed; a candidate that overlaps no labelled one counts for neither), and it wins
+// only when it finds more people than both others (HoldoutFigures::as_given_kept): the switches are then dropped
+// with the training.
+#include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,8 +55,13 @@ struct HoldoutFigures {
   std::size_t others = 0;         ///< labelled other candidates there
   std::size_t base_found = 0;     ///< people_found_at_fppf of the base model
   std::size_t trial_found = 0;    ///< of the trial model
-  /// The trial (the room's model) replaces the base: it finds at least as many (both 0 when nobody is labelled).
-  bool trial_kept() const { return trial_found >= base_found; }
+  /// With switches taken: people_found_at_fppf of the model as given without them (header comment).
+  std::optional<std::size_t> as_given_found;
+  /// The model as given, without the switches, finds more than the base stating them and the trial.
+  bool as_given_kept() const { return as_given_found && *as_given_found > std::max(base_found, trial_found); }
+  /// The trial (the room's model) replaces the base: it finds at least as many (both 0 when nobody is labelled),
+  /// and the model as given without the switches does not win.
+  bool trial_kept() const { return !as_given_kept() && trial_found >= base_found; }
 };
 
 }  // namespace rdsf
