@@ -70,6 +70,13 @@ SmallRoomRun small_room_run(const test::TempDir& dir, int budget, const std::str
   return run;
 }
 
+// Whether the model file states --local-front 70 among its detection options.
+bool states_local_front(const std::filesystem::path& model) {
+  const RecordedParameters stated = BoostedModel::load(model.string()).detection_options();
+  return std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))) !=
+         stated.end();
+}
+
 // `text` with its one `from` replaced by `to`.
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
@@ -437,9 +444,7 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   ASSERT_TRUE(std::regex_search(state, m, human)) << state;
   EXPECT_LE(std::stoi(m[1]), 8);
   EXPECT_GE(std::stoi(m[1]), 1);
-  const RecordedParameters stated = BoostedModel::load((run.models / "room/v1.yml").string()).detection_options();
-  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
-            stated.end());
+  EXPECT_TRUE(states_local_front(run.models / "room/v1.yml"));
 
   const test::RunResult off = test::run(
       replace(replace(run.command, "--name room", "--name plain"), test::quote(dir / "out"), test::quote(dir / "off")) +
@@ -514,9 +519,7 @@ TEST(Adapt, TheHoldoutCheckJudgesTheModelWithoutTheSwitchesOnItsOwnCandidates) {
   EXPECT_NE(state.find("check_as_given\ton"), std::string::npos) << state;
   EXPECT_NE(r.err.find(" finds 0 without the switches, "), std::string::npos) << r.err;
   EXPECT_EQ(state.find("check\tas given kept"), std::string::npos) << state;
-  const RecordedParameters stated = BoostedModel::load((run.models / "room/v1.yml").string()).detection_options();
-  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
-            stated.end());
+  EXPECT_TRUE(states_local_front(run.models / "room/v1.yml"));
 }
 
 // people/v4 states --local-front 70 (and every other option at its default): the room's steps run with the
@@ -543,7 +546,5 @@ TEST(Adapt, ASwitchTheModelTurnsOnIsNotTriedTheOthersAre) {
   }
   EXPECT_EQ(named, 1u) << first_command;
   EXPECT_NE(test::file_text(dir / "out/logs/answers.log").find("--local-front 70"), std::string::npos);
-  const RecordedParameters stated = BoostedModel::load((run.models / "room/v1.yml").string()).detection_options();
-  EXPECT_NE(std::find(stated.begin(), stated.end(), std::make_pair(std::string("local_front"), std::string("70"))),
-            stated.end());
+  EXPECT_TRUE(states_local_front(run.models / "room/v1.yml"));
 }
