@@ -25,7 +25,8 @@
 # --base DIR takes the base from a folder of sample sets instead (DIR/people and DIR/negatives, e.g. the sets
 # scripts/train-default-model.sh makes for the shipped model: the default model's size, its positives from
 # people/ and its negatives from both, as that script trains); --modes picks rows.
-# Writes out/adaptation/REPORT.md (a table) and curve.png (answers against TAR); rerunning reuses the
+# Writes out/adaptation/REPORT.md (a table, the same in people found: scripts/adaptation-compare.py, which also
+# compares two runs) and curve.png (answers against TAR); rerunning reuses the
 # recordings and sets, and each rdsf-adapt run resumes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -258,5 +259,7 @@ step "report"
   awk -F'\t' 'NR > 1 { printf "| %s | %s | %s | %s | %s (%s) | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, $8 }' "$results"
   echo
   echo "![answers against TAR](curve.png)"
+  echo
+  scripts/adaptation-compare.py "$out"
 } > "$out/REPORT.md"
 cat "$out/REPORT.md"

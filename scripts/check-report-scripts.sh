@@ -57,6 +57,20 @@ expect 2 "--synthetic takes 0-16" scripts/adaptation-benchmark.sh --synthetic 17
 expect 2 "--camera takes rdsf-synth's --size WxH and --fov HxV, not '--rgb'" scripts/adaptation-benchmark.sh --camera "--size 512x424 --rgb"
 expect 2 "--seed takes a whole number" scripts/adaptation-benchmark.sh --seed x1
 expect 2 "--people-distance takes MIN..MAX in metres" scripts/adaptation-benchmark.sh --people-distance 2.5
+expect 0 "default track" scripts/adaptation-compare.py --help
+expect 2 "adaptation-compare: /nonexistent/results.tsv: No such file" scripts/adaptation-compare.py /nonexistent
+expect 2 "give one run, or two to compare" scripts/adaptation-compare.py a b c
+# A run of two rooms: people found = TAR x people, and lost = what the model as given found that adapting lost.
+run=$(mktemp -d); trap 'rm -rf "$empty" "$run"' EXIT
+mkdir -p "$run/rooms/lab/report-people" "$run/rooms/synthetic-1/report-people" "$run/rooms/synthetic-1/track-50"
+printf 'room\tmode\tbudget\tanswers\tpropagated\tpropagated_wrong\ttar\ttrain_s\n%s\n%s\n%s\n%s\n' \
+  $'lab\tnone\t0\t0\t0\t0\t1.000\t0' $'lab\ttrack\t50\t20\t5\t0\t0.750\t1.0' \
+  $'synthetic-1\tnone\t0\t0\t0\t0\t0.500\t0' $'synthetic-1\ttrack\t50\t30\t9\t0\t0.900\t1.0' > "$run/results.tsv"
+echo "Model people v4: 12 frames, 12 people, 0 segmentation errors" > "$run/rooms/lab/report-people/summary.txt"
+echo "Model people v4: 30 frames, 30 people, 0 segmentation errors" > "$run/rooms/synthetic-1/report-people/summary.txt"
+printf 'switch.hole-gap\ton\nswitch.border-height\toff\n' > "$run/rooms/synthetic-1/track-50/adapt-state.tsv"
+expect 0 '^\| synthetic-1 \| 30 \| 15 \| 27 \[hole-gap\] \|$' scripts/adaptation-compare.py "$run"
+expect 0 '^\| real: 1 rooms \| 12 \| 12 \| \*\*9\*\* \(lost 3\) \|$' scripts/adaptation-compare.py "$run"
 expect 2 "--frames takes a positive number" scripts/propagation-report.sh --frames 0
 expect 2 "--seeds takes numbers" scripts/propagation-report.sh --seeds "31 x"
 expect 2 "--docs needs the whole report" scripts/quality-report.sh --docs --only levers
