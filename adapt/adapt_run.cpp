@@ -597,15 +597,21 @@ void report(const AdaptOptions& o, const StepOptions& tried, const StepOptions& 
     text += "held-out check (the trial trained in " + state.get("check_train_seconds") + " s): " +
             state.get("check.figures") + ": " + state.get("check") + "\n";
   }
+  RecordedParameters switched;  // the switches the trials took, unless the check dropped them
+  if (!switches_dropped(state)) {
+    for (const CandidateSwitch& sw : switches_taken(state)) switched.emplace_back(parameter_key(sw.option), sw.on);
+  }
+  const std::string taken = option_words(switched);
+  if (!taken.empty()) {  // what the switches can cost (docs/adapting-to-your-room.md, "A room of close people")
+    text += "the room's model states the switches its trials took (" + taken + "); in a few rooms of people close "
+            "to the camera switches cost people the model as given found: to compare, adapt again with "
+            "--try-switches off into another --out and --name, and run rdsf-detect --truth on frames you labelled "
+            "with both models\n";
+  }
   if (!o.truth.empty() && !o.eval.empty()) {
     const BeforeAfter b = compare_on_eval(o, step, state.get("model"), (fs::path(o.out) / "report").string(), paths);
     state.set("tar_after", b.after);
     state.set("tar_difference", b.difference);
-    RecordedParameters switched;  // the switches the trials took, unless the check dropped them
-    if (!switches_dropped(state)) {
-      for (const CandidateSwitch& sw : switches_taken(state)) switched.emplace_back(parameter_key(sw.option), sw.on);
-    }
-    const std::string taken = option_words(switched);
     if (taken.empty()) {
       state.set("tar_before", b.before);
       text += "TAR at FPPF <= 0.1 on " + o.eval + ": before " + b.before + " (" + o.model + "), after " + b.after +

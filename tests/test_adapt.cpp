@@ -435,6 +435,7 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   const std::string report = test::file_text(dir / "out/report.txt");
   EXPECT_NE(report.find(": before 0.000 ("), std::string::npos) << report;
   EXPECT_NE(report.find(", with the switches taken (--local-front 70) "), std::string::npos) << report;
+  EXPECT_NE(report.find("adapt again with --try-switches off into another --out"), std::string::npos) << report;
   EXPECT_NE(state.find("tar_with_switches\t"), std::string::npos) << state;
   EXPECT_NE(r.err.find("--local-front 70: 1 of 1 answers confirmed a person only it finds: on"), std::string::npos) << r.err;
   EXPECT_NE(test::file_text(dir / "out/logs/switches.log").find("--only-added-by local-front"), std::string::npos);
