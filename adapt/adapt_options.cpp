@@ -53,10 +53,6 @@ po::options_description adapt_options(const std::string& caption, AdaptOptions& 
        "on or off: with switches taken, the held-out check also judges --model without them on its own candidates "
        "of the later half; when it finds more people than both the trial and --model stating the switches, the "
        "room's model is --model as given, the switches dropped")
-      ("verify", po::value(&o.verify)->default_value(o.verify),
-       "after training, ask about the room's model's likeliest candidates nobody answered (its surest detections), "
-       "one answer per track, at most this many of the answers --budget has left; a rejection among them trains "
-       "the room's model again (0: off)")
       ("trial-budget", po::value(&o.trial_budget)->default_value(o.trial_budget),
        "--try-switches: answers at most per switch (of --budget; the trials take at most half of it)")
       ("switch-rule", po::value(&text.switch_rule)->default_value(text.switch_rule),
@@ -91,7 +87,6 @@ void check_options(const AdaptOptionText& text, AdaptOptions& o) {
   else if (text.holdout_check != "auto") throw cli::UsageError("--holdout-check takes auto, on or off, not '" + text.holdout_check + "'");
   if (text.switch_rule == "one" || text.switch_rule == "majority") o.switch_majority = text.switch_rule == "majority";
   else throw cli::UsageError("--switch-rule takes one or majority, not '" + text.switch_rule + "'");
-  if (o.verify < 0) throw cli::UsageError("--verify must be 0 (off) or more");
   if (o.trial_budget < 1) throw cli::UsageError("--trial-budget must be at least 1 (--try-switches off tries none)");
 }
 

@@ -517,43 +517,6 @@ void train_room_model(const AdaptOptions& o, const BoostedModel& model, const St
   say("trained " + path + " in " + seconds + " s (" + (o.retrain ? "from nothing" : "continuing " + o.model) + ")");
 }
 
-// Step 3b (--verify N): the room's model, just trained, is asked about: its likeliest candidates of the room's
-// frames that nobody answered (the detections it is surest of: a false one there costs the most at a low false
-// positive rate), one answer per track, at most N of the answers the budget has left. A rejection among them
-// trains the room's model again with every answer (its next version); confirmations alone leave it as it is.
-void verify_room_model(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
-                       const Paths& paths) {
-  const long spent = std::atol(state.get("answers.human").c_str());
-  const long left = std::min<long>(o.verify, o.budget - spent);
-  if (left <= 0 || state.get("check") == "base kept" || switches_dropped(state)) {
-    say("verify: nothing to ask (" + std::string(left <= 0 ? "no answer left" : "no round trained") + ")");
-    state.set("answers.verify", "0");
-    return;
-  }
-  const Answers before = count_answers(paths.room);
-  std::vector<std::string> args{"--source", o.source, "--out", paths.room, "--model", state.get("model"),
-                                "--models-dir", o.models_dir, "--ask", "likely", "--no-model-answers", "--per-track",
-                                "--per-place", o.per_place ? "on" : "off", "--keep-rejected", "--budget",
-                                std::to_string(left), "--threads", std::to_string(o.threads)};
-  if (!o.truth.empty()) args.insert(args.end(), {"--truth", o.truth, "--truth-oracle"});
-  if (!o.answers.empty()) args.insert(args.end(), {"--answers", o.answers});
-  const bool window = o.truth.empty() && o.answers.empty();
-  run_step_program("rdsf-label", with_options(args, step), window ? std::string() : paths.log("verify"));
-  const Answers after = count_answers(paths.room);
-  const long asked = after.human - before.human, rejected = after.human_others - before.human_others;
-  state.set("answers.verify", std::to_string(asked));
-  state.set("answers.human", std::to_string(spent + asked));
-  state.set("answers.propagated", std::to_string(after.propagated));
-  say("verify: " + std::to_string(asked) + " answers on the room's model's likeliest candidates, " +
-      std::to_string(rejected) + " of them not a person" + (rejected > 0 ? ": trained again" : ""));
-  if (rejected == 0) return;
-  const auto [path, seconds] = train_with_base(o, model, step, state, room_sets(state, paths),
-                                               state.get("negatives").empty() ? std::string() : paths.negatives,
-                                               o.models_dir, o.name, paths.log("verify"));
-  state.set("model", path);
-  state.set("verify_train_seconds", seconds);
-}
-
 // TAR at FPPF <= 0.1 of the base model and of the adapted one on the eval frames, and the adapted minus the
 // base with its 95 % interval paired over the frames' clips: one rdsf-detect run of both models (its
 // summary.txt holds each model's exact-curve line in order, then the paired differences).
@@ -706,7 +669,6 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("switch_rule", given.switch_majority ? "majority" : "one");
   state.pin("holdout_check", !given.holdout_check ? "auto" : *given.holdout_check ? "on" : "off");
   state.pin("check_as_given", given.check_as_given ? "on" : "off");
-  state.pin("verify", std::to_string(given.verify));
   const Paths paths(given.out);
   fs::create_directories(paths.logs);
   step(state, "switches", [&] { try_switches(given, model, state, paths); });
@@ -725,7 +687,6 @@ int run_adapt(const AdaptOptions& given) {
   }
   const StepOptions& room = switches_dropped(state) ? tried : options;  // the options the room's model states
   step(state, "train", [&] { train_room_model(with_base, model, room, state, paths); });
-  if (o.verify > 0) step(state, "verify", [&] { verify_room_model(with_base, model, room, state, paths); });
   step(state, "report", [&] { report(o, tried, room, state, paths); });
   return 0;
 }

@@ -90,10 +90,6 @@ struct AdaptOptions {
   /// With switches taken, the held-out check also judges the model as given without them, which wins when it
   /// finds more than both others: the switches are dropped (pipeline/holdout_check.hpp).
   bool check_as_given = false;
-  /// After training: the room's model's likeliest candidates that nobody answered (the detections it is surest
-  /// of) are asked, one answer per track, at most this many of the answers the budget has left; a rejection
-  /// among them trains the room's model again with the answers. 0: off.
-  int verify = 0;
   int threads = 0;
   /// The frame analyser's options (segmentation, candidates) and which were given: every step runs with the
   /// given ones, the model's stated ones for the rest (pipeline/stated_options.hpp), and the adapted model

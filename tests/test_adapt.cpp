@@ -317,34 +317,6 @@ TEST(Adapt, TheHoldoutCheckDecidesBetweenTheTrialAndTheModelAsGiven) {
   EXPECT_NE(r.err.find("--holdout-check takes auto, on or off, not 'maybe'"), std::string::npos) << r.err;
 }
 
-// --verify N: after training, the room's model's likeliest unanswered candidates are asked (one answer per track,
-// at most N, within what the budget left); a rejection among them trains the room's model again (its next version).
-TEST(Adapt, VerifyAsksAboutTheRoomModelsSurestDetectionsAndTrainsAgainOnARejection) {
-  test::TempDir dir;
-  ASSERT_EQ(render(dir / "room", "--frames 60").exit_code, 0);
-  const SmallRoomRun run = small_room_run(dir, 20);
-  test::RunResult r = test::run(run.command + " --verify 3 --try-switches off");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string state = test::file_text(dir / "out/adapt-state.tsv");
-  EXPECT_NE(state.find("done.verify\tyes"), std::string::npos) << state;
-  const std::regex verify("answers.verify\t([0-9]+)"), human("answers.human\t([0-9]+)");
-  std::smatch m;
-  ASSERT_TRUE(std::regex_search(state, m, verify)) << state;
-  EXPECT_LE(std::stoi(m[1]), 3);
-  ASSERT_TRUE(std::regex_search(state, m, human)) << state;
-  EXPECT_LE(std::stoi(m[1]), 20);
-  const std::string log = test::file_text(dir / "out/logs/verify.log");
-  EXPECT_NE(log.find("--ask likely --no-model-answers"), std::string::npos) << log;
-  EXPECT_NE(log.find((run.models / "room/v1.yml").string()), std::string::npos) << log;
-  const bool again = r.err.find(": trained again") != std::string::npos;
-  EXPECT_EQ(std::filesystem::exists(run.models / "room/v2.yml"), again) << r.err;
-  EXPECT_NE(state.find("model\t" + (run.models / (again ? "room/v2.yml" : "room/v1.yml")).string()), std::string::npos)
-      << state;
-  r = test::run(run.command + " --verify -1");
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("--verify must be 0 (off) or more"), std::string::npos) << r.err;
-}
-
 // Analyser options given to rdsf-adapt reach every step's program (their logs hold the command lines) and
 // the adapted model states them (format 4), so rdsf-detect runs it with them; a rerun in the same folder with
 // another value is refused before anything is done.
