@@ -28,6 +28,9 @@
 # Writes out/adaptation/REPORT.md (a table, the same in people found: scripts/adaptation-compare.py, which also
 # compares two runs) and curve.png (answers against TAR); rerunning reuses the
 # recordings and sets, and each rdsf-adapt run resumes.
+# The whole script is one block, read before any of it runs: a run takes many minutes, and bash reads a plain
+# script as it goes, so editing this file during a run would change what the run does next.
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
@@ -263,3 +266,5 @@ step "report"
   scripts/adaptation-compare.py "$out"
 } > "$out/REPORT.md"
 cat "$out/REPORT.md"
+exit
+}
