@@ -9,6 +9,9 @@
 # Everything goes under one folder (default out/main-job). Recordings and sample sets are reused by a rerun
 # (rendering is deterministic, mining and labelling resume), models get new versions, and every run's
 # report goes to its own runs/<time>/ folder: a rerun never clobbers an earlier run's models or report.
+# The whole script is one block, read before any of it runs (a run takes minutes; bash reads a plain script as it
+# goes, so editing this file during a run would change what the run does next).
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
@@ -135,3 +138,5 @@ cat "$run/synthetic/summary.md"
 if ((have_real)); then echo; echo "Real frames ($real):"; cat "$run/real/summary.md"; fi
 echo
 echo "main-job: done in $(( $(date +%s) - started )) s. Report: $report"
+exit
+}

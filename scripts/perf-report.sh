@@ -8,6 +8,9 @@
 #
 # The report at the default place is the project's latest table and is replaced on every full run; any
 # other --out is refused when it exists unless --force is given. Build folder: $RDSF_BUILD_DIR or build.
+# The whole script is one block, read before any of it runs (a run takes minutes; bash reads a plain script as it
+# goes, so editing this file during a run would change what the run does next).
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
@@ -39,3 +42,5 @@ fi
 
 echo "perf-report: load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
 "$program" --out "$out" "${args[@]}"
+exit
+}

@@ -24,6 +24,9 @@
 # validation predicts at its operating point (P >= 0.5 unless the model states one) and the TAR measured on
 # the held-out candidates.
 # Everything goes under out/quality (--out); the tables are collected in REPORT.md there.
+# The whole script is one block, read before any of it runs (a run takes minutes; bash reads a plain script as it
+# goes, so editing this file during a run would change what the run does next).
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
@@ -357,3 +360,5 @@ if ((docs)); then
   echo "quality-report: wrote docs/quality-report.md" >&2
 fi
 echo "quality-report: done in $(( $(date +%s) - started )) s. Report: $report" >&2
+exit
+}

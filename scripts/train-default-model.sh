@@ -44,6 +44,9 @@
 # (train on DIR/sets, an earlier run's work folder such as out/default-model/a, without rendering, mining or
 # labelling) retrain a recipe's sets with another seed (scripts/candidate-recipe-report.sh); neither is for
 # --install unless the seed is 1.
+# The whole script is one block, read before any of it runs (a run takes minutes; bash reads a plain script as it
+# goes, so editing this file during a run would change what the run does next).
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/lib/options.sh
@@ -260,3 +263,5 @@ if ((install)); then
   mv "$target.tmp" "$target"
   echo "train-default-model: installed $target"
 fi
+exit
+}
