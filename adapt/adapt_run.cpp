@@ -499,7 +499,7 @@ void check_room_model(const AdaptOptions& o, const BoostedModel& model, const St
 // the check dropped them) with no round added.
 void train_room_model(const AdaptOptions& o, const BoostedModel& model, const StepOptions& step, AdaptState& state,
                       const Paths& paths) {
-  if (state.get("check") == "base kept" || state.get("check") == "as given kept") {
+  if (state.get("check") == "base kept" || switches_dropped(state)) {
     RecordedParameters provenance = room_provenance(o, model, state);
     provenance.emplace_back("adapted_check", "the model as given kept: " + state.get("check.figures"));
     BoostedModel kept = base_as_room_model(model, step.stated, provenance);

@@ -83,19 +83,21 @@ LaterScores score_later(const std::vector<std::string>& sets, const std::set<std
   return out;
 }
 
-// The model as given with the analyser `as_given` (no switches) on the later half's frames of `source`: its own
-// candidates scored as the detector scores them, each labelled place taking the highest score among the
-// candidates of its frame whose strict box overlaps it at IoU >= 0.5; people_found_at_fppf of those (a person no
-// candidate overlaps is missed; candidates that overlap no labelled place count for neither).
-std::size_t as_given_found(const std::string& source, const std::set<std::string>& later,
-                           const AnalyserParams& as_given, const BoostedModel& model,
-                           const std::vector<LabelledPlace>& places) {
+// The model as given with the analyser `as_given` (no switches) on the later half's frames of `source` (`names`:
+// its frame names in order; the earlier half is read past, not decoded): its own candidates scored as the
+// detector scores them, each labelled place taking the highest score among the candidates of its frame whose
+// strict box overlaps it at IoU >= 0.5; people_found_at_fppf of those (a person no candidate overlaps is missed;
+// candidates that overlap no labelled place count for neither).
+std::size_t as_given_found(const std::string& source, const std::vector<std::string>& names,
+                           const std::set<std::string>& later, const AnalyserParams& as_given,
+                           const BoostedModel& model, const std::vector<LabelledPlace>& places) {
   std::map<std::string, std::vector<std::pair<cv::Rect, double>>> scored;  // frame -> (strict box, score)
   const FrameAnalyser analyser(as_given);
   const std::unique_ptr<FrameSource> frames = open_frame_source(source);
-  DepthFrame frame;
-  while (frames->next(frame)) {
-    if (later.count(frame.name) == 0) continue;
+  FrameDecode decode;
+  for (std::size_t at = 0; at < names.size() && frames->next_deferred(decode); ++at) {
+    if (later.count(names[at]) == 0) continue;
+    const DepthFrame frame = decode();
     const FrameAnalysis analysis = analyser.analyse(frame, /*with_features=*/false, CropColour::later);
     std::vector<cv::Mat1w> crops;
     for (const Candidate& c : analysis.candidates) crops.push_back(c.depth_crop);
@@ -106,8 +108,11 @@ std::size_t as_given_found(const std::string& source, const std::set<std::string
   std::vector<double> people, others;
   for (const LabelledPlace& p : places) {
     std::optional<double> best;
-    for (const auto& [box, score] : scored[p.frame]) {
-      if (iou(box, p.strict_box) >= 0.5 && (!best || score > *best)) best = score;
+    const auto in_frame = scored.find(p.frame);
+    if (in_frame != scored.end()) {
+      for (const auto& [box, score] : in_frame->second) {
+        if (iou(box, p.strict_box) >= 0.5 && (!best || score > *best)) best = score;
+      }
     }
     if (p.label == 1) people.push_back(best.value_or(-std::numeric_limits<double>::infinity()));
     else if (best) others.push_back(*best);
@@ -146,7 +151,7 @@ void run_holdout_check(const HoldoutInputs& in, const BoostedModel& model, Adapt
   f.others = scores.base_others.size();
   f.base_found = people_found_at_fppf(scores.base_people, scores.base_others, f.frames, 0.1);
   f.trial_found = people_found_at_fppf(scores.trial_people, scores.trial_others, f.frames, 0.1);
-  if (in.as_given) f.as_given_found = as_given_found(in.source, later, *in.as_given, model, scores.places);
+  if (in.as_given) f.as_given_found = as_given_found(in.source, *names, later, *in.as_given, model, scores.places);
   const std::string figures =
       "later " + std::to_string(f.frames) + " frames, " + std::to_string(f.people) + " labelled people, " +
       std::to_string(f.others) + " other candidates: at FPPF <= 0.1 " + model_reference(model) +

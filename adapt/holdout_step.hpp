@@ -5,8 +5,7 @@
 // candidates, and with switches taken the model as given without them its own candidates. The state says which
 // becomes the room's model: "check" = "trial kept" (the room's model is trained on everything), "base kept" (the
 // model as given, stating the switches taken), "as given kept" (the model as given, the switches dropped) or
-// "none" (the room's
-// frames have no names in order: no check); "check.figures" and "check_train_seconds" say why.
+// "none" (the room's frames have no names in order: no check); "check.figures" and "check_train_seconds" say why.
 #include <functional>
 #include <optional>
 #include <string>

@@ -81,10 +81,8 @@ def main():
     budget = a.budget if a.budget is not None else (budgets[-1] if budgets else 0)
     rooms = [r["room"] for r in runs[0] if r["mode"] == "none"]
     if len(runs) == 1:
-        modes = [m for m in dict.fromkeys(r["mode"] for r in runs[0]) if m != "none"]
-        columns = [(0, m) for m in modes]
+        columns = [(0, m) for m in dict.fromkeys(r["mode"] for r in runs[0]) if m != "none"]
     else:
-        modes = [a.mode]
         columns = [(0, a.mode), (1, a.mode)]
     names = [f"{os.path.basename(a.runs[i].rstrip('/'))} {m}" for i, m in columns]
     print(f"People found at FPPF <= 0.1 on the rooms' later frames (budget {budget}; lost: people the model as given "

@@ -11,9 +11,10 @@
 // for neither).
 // The trial replaces the base only when it finds at least as many (HoldoutFigures::trial_kept).
 // When the room's trials took candidate switches, the base scores the switched candidates: a third figure is then
-// the model as given with its own options, without the switches (its own candidates of the later half, each
-// labelled by the labelled candidate of its frame its strict box overlaps most, IoU >= 0.5; a labelled person
-// none of them overlaps is missed; a candidate that overlaps no labelled one counts for neither), and it wins
+// the model as given with its own options, without the switches (its own candidates of the later half scored as
+// the detector scores them; each labelled place takes the highest score of those whose strict box overlaps it at
+// IoU >= 0.5, a labelled person none overlaps is missed, a candidate that overlaps no labelled place counts for
+// neither), and it wins
 // only when it finds more people than both others (HoldoutFigures::as_given_kept): the switches are then dropped
 // with the training.
 #include <algorithm>
