@@ -35,7 +35,14 @@ po::options_description adapt_options(const std::string& caption, AdaptOptions& 
       ("base-neg", po::value(&o.base_neg)->multitoken(), "the synthetic base's negative sample set(s)")
       ("base-frames", po::value(&o.base_frames)->default_value(o.base_frames),
        "without --base-pos/--base-neg: render a synthetic base of this many frames with people (and half as "
-       "many empty) in DIR/base, once; 0: train on the room's samples alone (they can make the model worse)");
+       "many empty) in DIR/base, once; 0: train on the room's samples alone (they can make the model worse)")
+      ("base-cache", po::value(&o.base_cache),
+       "without --base-pos/--base-neg: keep the rendered base in this folder instead of DIR/base (frames by their "
+       "count, sets by the count and the analyser options they were cut with) and reuse what another run made "
+       "there; default: DIR/base")
+      ("base-switches", po::value(&o.base_switches)->default_value(o.base_switches, o.base_switches ? "on" : "off"),
+       "on or off: the base rendered here is cut with the switches the trials took (on) or with the options given "
+       "and stated by --model alone (off); the room's own samples have the switches either way");
   options.add_options()
       ("try-switches", po::value(&o.try_switches)->default_value(o.try_switches, o.try_switches ? "on" : "off"),
        "on or off: try each candidate switch not given nor turned on by the model (--local-front 70, "
@@ -83,6 +90,9 @@ void check_options(const AdaptOptionText& text, AdaptOptions& o) {
   if (o.rounds < 0) throw cli::UsageError("--rounds must be 0 (the default) or more");
   if (o.room_weight < 1) throw cli::UsageError("--room-weight must be at least 1");
   if (o.base_frames < 0) throw cli::UsageError("--base-frames must be 0 (no base) or more");
+  if (!o.base_cache.empty() && (!o.base_pos.empty() || !o.base_neg.empty() || o.base_frames == 0)) {
+    throw cli::UsageError("--base-cache keeps the base rendered here: not with --base-pos, --base-neg or --base-frames 0");
+  }
   if (text.holdout_check == "on" || text.holdout_check == "off") o.holdout_check = text.holdout_check == "on";
   else if (text.holdout_check != "auto") throw cli::UsageError("--holdout-check takes auto, on or off, not '" + text.holdout_check + "'");
   if (text.switch_rule == "one" || text.switch_rule == "majority") o.switch_majority = text.switch_rule == "majority";

@@ -1,6 +1,7 @@
 #include "adapt/adapt_run.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,8 @@
 #include <map>
 #include <iostream>
 #include <set>
+
+#include <unistd.h>
 
 #include "adapt/adapt_state.hpp"
 #include "adapt/holdout_step.hpp"
@@ -208,35 +211,78 @@ void check_empty_recording(const AdaptOptions& o, const BoostedModel& model, con
       std::to_string(presence.longest_confident_track) + ")");
 }
 
-// Step 0, without base sets: the benchmark's small synthetic base (docs/adapting-to-your-room.md, "The
-// base"): rdsf-synth's seed 11, --base-frames frames of 1-4 people in rooms of 15 frames and half as many of
-// the same rooms empty; its people labelled from the generator's truth (assisted, no question asked) and its
-// empty frames mined. The same options give the same sets.
-void render_base(const AdaptOptions& o, const StepOptions& step, const Paths& paths) {
-  const std::string frames = paths.base_part("frames"), empty = paths.base_part("empty");
+// Step 0, without base sets: the small synthetic base (docs/adapting-to-your-room.md, "The base"): rdsf-synth's
+// seed 11, --base-frames frames of 1-4 people in rooms of 15 frames and half as many of the same rooms empty, the
+// furniture without dropout holes (as the shipped model's training since people/v3); its people labelled from the
+// generator's truth (no question asked) and its empty frames mined, both with the steps' analyser options. The
+// same options give the same sets. In OUT/base, or with --base-cache in that folder: the frames as frames-N and
+// empty-N (N frames with people) and the sets as sets-N-OPTIONS/{people,negatives} (OPTIONS: the analyser options'
+// departures from the defaults, e.g. local-front-70_border-height-25), each made once under a temporary name and
+// renamed into place, so that a folder under its name is whole and runs sharing the cache reuse it.
+struct BaseSets {
+  std::string people, negatives;
+};
+
+// `folder`, made by `make` into a temporary name beside it and renamed into place, unless it is there.
+void make_folder_once(const std::string& folder, const std::function<void(const std::string&)>& make) {
+  if (fs::exists(folder)) return;
+  const std::string part = folder + ".part-" + std::to_string(::getpid());
+  fs::remove_all(part);
+  fs::create_directories(fs::path(part).parent_path());
+  make(part);
+  std::error_code error;
+  fs::rename(part, folder, error);
+  if (!error) return;
+  fs::remove_all(part);  // another run sharing the cache made it first
+  if (!fs::exists(folder)) throw Error(folder + ": cannot rename " + part + " into place: " + error.message());
+}
+
+// The analyser options' departures from the defaults as a folder name's part: "local-front-70_border-height-25".
+std::string options_name(const StepOptions& step) {
+  std::string name;
+  for (const auto& [key, text] : departures_from_defaults(stated_options(step.analyser))) {
+    std::string word = key + "-" + text;
+    for (char& c : word) c = std::isalnum(static_cast<unsigned char>(c)) || c == '.' ? c : '-';
+    name += (name.empty() ? "" : "_") + word;
+  }
+  return name.empty() ? "defaults" : name;
+}
+
+BaseSets render_base(const AdaptOptions& o, const StepOptions& step, const Paths& paths) {
   const std::string count = std::to_string(o.base_frames), empty_count = std::to_string(std::max(1, o.base_frames / 2));
-  const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15", "--force"};
-  say("base: rendering " + count + " frames with people and " + empty_count + " empty (rdsf-synth; about 50 s on 2 cores; "
-      "progress in " + paths.log("base") + ")");
-  std::vector<std::string> args{"--out", frames, "--frames", count};
-  args.insert(args.end(), scene.begin(), scene.end());
-  run_step_program("rdsf-synth", args, paths.log("base"));
-  args = {"--out", empty, "--frames", empty_count, "--empty"};
-  args.insert(args.end(), scene.begin(), scene.end());
-  run_step_program("rdsf-synth", args, paths.log("base"));
-  say("base: labelling its people from the generator's truth (rdsf-label) and mining its empty frames (rdsf-mine)");
-  run_step_program("rdsf-label",
-                   with_options({"--source", frames, "--out", paths.base_part("people"), "--truth",
-                                 (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null", "--keep-rejected",
-                                 "--threads", std::to_string(o.threads)},
-                                step),
-                   paths.log("base"));
-  run_step_program("rdsf-mine",
-                   with_options({"--source", empty, "--out", paths.base_part("negatives"), "--threads",
-                                 std::to_string(o.threads)},
-                                step),
-                   paths.log("base"));
-  say("a synthetic base rendered in " + paths.base + " (" + count + " frames with people, " + empty_count + " empty)");
+  const fs::path dir = o.base_cache.empty() ? fs::path(paths.base) : fs::path(o.base_cache);
+  const std::string tag = o.base_cache.empty() ? std::string() : "-" + count;
+  const std::string frames = (dir / ("frames" + tag)).string(), empty = (dir / ("empty" + tag)).string();
+  const fs::path sets = o.base_cache.empty() ? dir : dir / ("sets" + tag + "-" + options_name(step));
+  const BaseSets out{(sets / "people").string(), (sets / "negatives").string()};
+  const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15",
+                                       "--furniture-dropout", "0", "--force"};
+  const auto render = [&](const std::string& folder, std::vector<std::string> args) {
+    make_folder_once(folder, [&](const std::string& part) {
+      say("base: rendering " + folder + " (rdsf-synth; about 50 s on 2 cores for 600 and 300 frames; progress in " +
+          paths.log("base") + ")");
+      args.insert(args.begin(), {"--out", part});
+      args.insert(args.end(), scene.begin(), scene.end());
+      run_step_program("rdsf-synth", args, paths.log("base"));
+    });
+  };
+  render(frames, {"--frames", count});
+  render(empty, {"--frames", empty_count, "--empty"});
+  const auto cut = [&](const std::string& set, const std::string& program, std::vector<std::string> args) {
+    make_folder_once(set, [&](const std::string& part) {
+      args.insert(args.end(), {"--out", part, "--threads", std::to_string(o.threads)});
+      run_step_program(program, with_options(args, step), paths.log("base"));
+    });
+  };
+  say("base: its sets cut with the analyser options " + options_name(step) + " (people labelled from the generator's "
+      "truth by rdsf-label, empty frames mined by rdsf-mine; reused when there)");
+  cut(out.people, "rdsf-label",
+      {"--source", frames, "--truth", (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null",
+       "--keep-rejected"});
+  cut(out.negatives, "rdsf-mine", {"--source", empty});
+  say("a synthetic base rendered in " + dir.string() + ": " + out.people + " and " + out.negatives + " (" + count +
+      " frames with people, " + empty_count + " empty)");
+  return out;
 }
 
 // Step 1: the room's negatives, the model's false positives first.
@@ -669,6 +715,7 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("switch_rule", given.switch_majority ? "majority" : "one");
   state.pin("holdout_check", !given.holdout_check ? "auto" : *given.holdout_check ? "on" : "off");
   state.pin("check_as_given", given.check_as_given ? "on" : "off");
+  state.pin("base_switches", given.base_switches ? "on" : "off");
   const Paths paths(given.out);
   fs::create_directories(paths.logs);
   step(state, "switches", [&] { try_switches(given, model, state, paths); });
@@ -676,9 +723,14 @@ int run_adapt(const AdaptOptions& given) {
   const StepOptions options = step_options(o, model);
   AdaptOptions with_base = o;
   if (o.base_pos.empty() && o.base_neg.empty() && o.base_frames > 0) {
-    step(state, "base", [&] { render_base(o, options, paths); });
-    with_base.base_pos = {paths.base_part("people")};
-    with_base.base_neg = {paths.base_part("negatives")};
+    step(state, "base", [&] {
+      const BaseSets base = render_base(o, o.base_switches ? options : tried, paths);
+      state.set("base.people", base.people);
+      state.set("base.negatives", base.negatives);
+    });
+    const std::string people = state.get("base.people"), negatives = state.get("base.negatives");  // none before
+    with_base.base_pos = {people.empty() ? paths.base_part("people") : people};                  // 2026-12-08
+    with_base.base_neg = {negatives.empty() ? paths.base_part("negatives") : negatives};
   }
   step(state, "negatives", [&] { room_negatives(o, model, options, state, paths); });
   step(state, "answers", [&] { room_answers(o, options, state, paths); });

@@ -7,7 +7,8 @@
 //                 track, --trial-budget answers each, at most half the --budget in all); a switch with a person
 //                 confirmed among them is on for every later step and the adapted model
 //      base       without --base-pos/--base-neg: a small synthetic base rendered and labelled here (rdsf-synth,
-//                 rdsf-label from its truth, rdsf-mine), so that the room's few samples never train alone
+//                 rdsf-label from its truth, rdsf-mine; in --base-cache when given, shared by the runs given it),
+//                 so that the room's few samples never train alone
 //   1. negatives  the room's people-free frames mined (rdsf-mine): the --empty recording, the shipped
 //                 model's false positives (hard negatives) first; without one, the stretches of the room
 //                 recording where the model and the tracker see nobody (pipeline/room_presence.hpp)
@@ -41,8 +42,9 @@ namespace rdsf {
 /// renderings").
 inline constexpr int kContinuedRounds = 3;
 
-/// --holdout-check auto is on for a base of at most this many samples: it was judged with the small base (6,155
-/// samples, rdsf-adapt's own, where the trial trains in about a second: 2 of 4 lost people kept over 47 rooms).
+/// --holdout-check auto is on for a base of at most this many samples: it was judged with the benchmark's small base
+/// of then (6,155 samples; rdsf-adapt's own with people/v4's options and no switch holds 7,063), where the trial
+/// trains in about a second (2 of 4 lost people kept over 47 rooms).
 /// It costs one more training of the base's size, 28-42 s at the default model's (180,131 samples), where it
 /// changed nothing on two renderings and would take the time from the last answer to the room's model past a
 /// minute; no base (--base-frames 0) was not measured: off.
@@ -73,6 +75,13 @@ struct AdaptOptions {
   /// Without base sets: frames with people of the base rendered here (and half as many empty); 0: no base
   /// (the room's samples alone).
   int base_frames = 600;
+  /// Without base sets: the base is kept in this folder instead of the work folder, its frames named by their
+  /// count and its sets by the count and the analyser options they were cut with, and every run given the same
+  /// folder reuses what is there (the benchmark's rooms share one). Empty: in the work folder (OUT/base).
+  std::string base_cache;
+  /// The base rendered here is cut (its people labelled, its empty frames mined) with the switches the trials took
+  /// (true) or with the options given and stated by the model alone (false).
+  bool base_switches = true;
   /// Try the candidate switches in the room (the "switches" step); each trial spends at most trial_budget of
   /// the budget's answers, all of them at most half the budget.
   bool try_switches = true;

@@ -16,8 +16,11 @@
 # Rooms: the real ones in ../shared/realdata/people (lab: 24 frames in name order, 12 + 12, its two empty
 # frames as --empty; home: 22 frames, 11 + 11, no empty recording) and the first --synthetic N of the 16
 # held-out synthetic rooms of the quality report (seed 31, 60 frames each: 30 + 30, the same rooms rendered
-# empty as --empty). The base: the synthetic recording of seed 11 (--base-frames, default 600 frames, and
-# 300 empty), mined and labelled in assisted mode, far smaller than the shipped model's 18,000 frames.
+# empty as --empty). The base: rdsf-adapt's own small base (600 frames of seed 11 and 300 empty, its people
+# labelled from the truth and its empty frames mined with the room's analyser options: the switches it took),
+# far smaller than the shipped model's 18,000 frames; rendered once into OUT/base-cache (rdsf-adapt
+# --base-cache), its sets once per set of analyser options, so that every room is adapted as rdsf-adapt adapts
+# by default (until 2026-12-08 the benchmark rendered a base of its own, cut with the detector's default options).
 # --camera 'OPTIONS' renders the held-out rooms through another camera (rdsf-synth's --size and --fov, e.g.
 # a Kinect v2's 512x424 at 70.6 x 60 degrees; the base stays Kinect v1, as the shipped model's training).
 # --people-distance MIN..MAX renders the held-out rooms with their people that far from the camera (rdsf-synth's
@@ -44,8 +47,8 @@ Usage: scripts/adaptation-benchmark.sh [--out DIR] [--synthetic N] [--budgets "B
   --synthetic N    synthetic held-out rooms to use, 0-16 (default 4)
   --budgets "..."  answer budgets of the per-candidate and per-track runs (default "10 50")
   --real DIR       real frames with boxes.csv (default ../shared/realdata/people; its ../empty for the lab)
-  --base DIR       the synthetic base's sample sets DIR/people and DIR/negatives (default: render and label a
-                   small one, seed 11, 600 frames and 300 empty, under the work folder)
+  --base DIR       the synthetic base's sample sets DIR/people and DIR/negatives (default: rdsf-adapt's own small
+                   base, seed 11, 600 frames and 300 empty, kept in OUT/base-cache)
   --modes "..."    rows to run besides "none", of: track candidate retrain negatives (default all four)
   --adapt-args ".." more options for every rdsf-adapt run, e.g. "--propagate-model-answers on" (default none)
   --camera '...'   rdsf-synth options of the camera the synthetic held-out rooms are seen by, e.g.
@@ -100,20 +103,11 @@ mkdir -p "$data" "$sets" "$models" "$rooms"
 threads=2
 step() { printf '\n== %s\n' "$1" >&2; }
 
-step "the synthetic base and held-out rooms (reused when present)"
+step "the held-out rooms (reused when present)"
 # With --base, the negatives are both sets' (the people set's candidates that are nobody included), as
-# scripts/train-default-model.sh trains the shipped model; the small base gives its mined negatives only.
-base_pos=$sets/base-pos base_neg=("$sets/base-neg")
-[ -z "$base" ] || { base_pos=$base/people base_neg=("$base/negatives" "$base/people"); }
-# The small base is rendered as the base model's own training was (v3: furniture without dropout holes).
-base_synth=()
-((people_version >= 3)) && base_synth=(--furniture-dropout 0)
-[ -n "$base" ] || [ -f "$data/base-train/synth.yml" ] ||
-  "$synth" --out "$data/base-train" --force --frames 600 --people 1..4 --seed 11 --clip-frames 15 "${base_synth[@]}" \
-    >/dev/null 2>&1
-[ -n "$base" ] || [ -f "$data/base-empty/synth.yml" ] ||
-  "$synth" --out "$data/base-empty" --force --frames 300 --people 1..4 --seed 11 --empty --clip-frames 15 \
-    "${base_synth[@]}" >/dev/null 2>&1
+# scripts/train-default-model.sh trains the shipped model; rdsf-adapt's small base gives its mined negatives only.
+base_args=(--base-cache "$out/base-cache")
+[ -z "$base" ] || base_args=(--base-pos "$base/people" --base-neg "$base/negatives" "$base/people")
 if ((synthetic > 0)); then
   [ -f "$data/$heldout/synth.yml" ] ||
     "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed "$seed" --clip-frames 60 "${camera[@]}" \
@@ -122,10 +116,6 @@ if ((synthetic > 0)); then
     "$synth" --out "$data/$heldout-empty" --force --frames 960 --people 1..4 --seed "$seed" --empty --clip-frames 60 \
       "${camera[@]}" "${distance[@]}" >/dev/null 2>&1
 fi
-[ -n "$base" ] || [ -f "$sets/base-neg/manifest.yml" ] || "$mine" --source "$data/base-empty" --out "${base_neg[0]}" --threads $threads 2>/dev/null
-[ -n "$base" ] || [ -f "$sets/base-pos/manifest.yml" ] ||
-  "$label" --source "$data/base-train" --out "$base_pos" --truth "$data/base-train/boxes.csv" --answers /dev/null \
-    --keep-rejected 2>/dev/null
 
 # A room: NAME, then files adapt.txt, eval.txt, truth.csv and optionally empty.txt in $rooms/NAME.
 list() {  # folder, frame names... -> absolute paths, one a line
@@ -206,7 +196,7 @@ for room in "${room_names[@]}"; do
       [ "$mode" = candidate ] && flags=(--per-candidate)
       "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
         --name "$room-$mode-$budget" --models-dir "$models" --budget "$budget" --threads $threads \
-        --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${flags[@]}" "${adapt_args[@]}" 2>"$run.log" ||
+        "${base_args[@]}" "${flags[@]}" "${adapt_args[@]}" 2>"$run.log" ||
         { tail -3 "$run.log" >&2; exit 1; }
       state=$run/adapt-state.tsv
       # propagated: along the people's tracks and places, and along the model's sure answers' tracks; wrong: the
@@ -225,16 +215,20 @@ for room in "${room_names[@]}"; do
     budget=${budgets##* } run=$w/retrain-${budgets##* }
     "$adapt" --source "$w/adapt.txt" "${empty[@]}" --truth "$w/truth.csv" --eval "$w/eval.txt" --out "$run" \
       --name "$room-retrain-$budget" --models-dir "$models" --budget "$budget" --threads $threads --retrain \
-      --base-pos "$base_pos" --base-neg "${base_neg[@]}" "${adapt_args[@]}" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
+      "${base_args[@]}" "${adapt_args[@]}" 2>"$run.log" || { tail -3 "$run.log" >&2; exit 1; }
     state=$run/adapt-state.tsv
     printf '%s\tretrain\t%s\t%s\t%s\t0\t%s\t%s\n' "$room" "$budget" "$(field "$state" answers.human)" \
       "$(( $(field "$state" answers.propagated) + $(field "$state" answers.model_track) ))" "$(field "$state" tar_after)" \
       "$(field "$state" train_seconds)" >> "$results"
   fi
-  # Negatives only: the same training on the room's negatives (mined by the per-track run) and the base.
+  # Negatives only: the same training on the room's negatives (mined by the per-track run) and the base (without
+  # --base: the one the per-track run trained with).
   wants negatives || continue
   negatives=$w/track-${budgets%% *}/sets/room-negatives
   if [ -f "$negatives/manifest.yml" ]; then
+    base_pos=$base/people base_neg=("$base/negatives" "$base/people")
+    [ -n "$base" ] || { state=$w/track-${budgets%% *}/adapt-state.tsv;
+      base_pos=$(field "$state" base.people) base_neg=("$(field "$state" base.negatives)"); }
     start=$(date +%s.%N)
     "$train" --models-dir "$models" --name "$room-negatives" --init people --rounds 10 --folds 0 \
       --pos "$base_pos" --neg "$negatives" "${base_neg[@]}" >/dev/null 2>"$w/negatives-train.log"

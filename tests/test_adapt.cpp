@@ -231,6 +231,48 @@ TEST(Adapt, AStoppedRunResumesWithoutAskingAgain) {
   EXPECT_EQ(test::file_text(dir / "out/logs/train.log").rfind("$ ", 0), 0u);
 }
 
+// --base-cache: the base is rendered once into the cache and its sets cut once per set of analyser options; a second
+// run (another work folder) renders nothing and trains with the same sets. Both runs' states name them.
+TEST(Adapt, RunsSharingABaseCacheRenderItOnce) {
+  test::TempDir dir;
+  ASSERT_EQ(render(dir / "room", "--frames 40").exit_code, 0);
+  const SmallRoomRun run = small_room_run(dir, 4);
+  const std::string cache = dir / "cache";
+  const std::string common = replace(run.command, "--base-frames 0", "--base-frames 60 --base-cache " + test::quote(cache)) +
+                             " --holdout-check off --try-switches off --hole-gap 20";
+  test::RunResult r = test::run(common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::filesystem::path sets = std::filesystem::path(cache) / "sets-60-hole-gap-20";
+  EXPECT_NE(r.err.find("base: rendering"), std::string::npos) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(sets / "people/manifest.yml"));
+  ASSERT_TRUE(std::filesystem::exists(sets / "negatives/manifest.yml"));
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(cache) / "frames-60/boxes.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/base"));  // nothing in the work folder
+  EXPECT_NE(test::file_text(dir / "out/adapt-state.tsv").find((sets / "people").string()), std::string::npos);
+  const auto rendered = std::filesystem::last_write_time(std::filesystem::path(cache) / "frames-60");
+  const std::size_t people = SampleSet::open_read((sets / "people").string()).records().size();
+
+  r = test::run(replace(replace(common, "--out " + test::quote(dir / "out"), "--out " + test::quote(dir / "out2")),
+                        "--name room", "--name room2"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("base: rendering"), std::string::npos) << r.err;  // reused, not rendered again
+  EXPECT_EQ(std::filesystem::last_write_time(std::filesystem::path(cache) / "frames-60"), rendered);
+  EXPECT_EQ(SampleSet::open_read((sets / "people").string()).records().size(), people);  // not cut again
+  int base_as_pos = 0;
+  const BoostedModel second = BoostedModel::load(run.models / "room2/v1.yml");
+  for (const SampleSetUse& use : second.training().sample_sets) {
+    base_as_pos += use.role == "pos" && use.path == (sets / "people").string() ? 1 : 0;
+  }
+  EXPECT_EQ(base_as_pos, 1);
+  for (const auto& entry : std::filesystem::directory_iterator(cache)) {  // no folder left half made
+    EXPECT_EQ(entry.path().filename().string().find(".part-"), std::string::npos) << entry.path();
+  }
+  // With base sets of one's own, the cache has nothing to keep: a usage error naming it.
+  r = test::run(common + " --base-pos " + test::quote(sets / "people"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--base-cache"), std::string::npos) << r.err;
+}
+
 // Any resolution (issue 36): a room seen by a Kinect v2-size camera (512x424, 70.6 x 60 degrees: the
 // camera.yml rdsf-synth writes beside the frames) is adapted like a Kinect v1 room: every step cuts its crops
 // by the room's camera model, and the room's samples train with the Kinect v1 base. Without --empty the
@@ -455,6 +497,37 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   EXPECT_NE(off.err.find("no positives to train with"), std::string::npos) << off.err;
   EXPECT_EQ(test::file_text(dir / "off/adapt-state.tsv").find("switch."), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "off/logs/switches.log"));
+}
+
+// --base-switches: the base rendered here is cut with the switches the trials took (on, the default) or without
+// them (off); the room's own samples and model have the switch either way. With --base-cache both cuts stand
+// side by side, named by their options; a folder resumed with the other value is refused.
+TEST(Adapt, TheBaseIsCutWithTheSwitchesTakenUnlessTold) {
+  test::TempDir dir;
+  write_room_before_a_wall(dir);
+  const SmallRoomRun run = small_room_run(dir, 8);
+  const std::filesystem::path cache = dir.path() / "cache";
+  const std::string command = replace(run.command, "--base-frames 0", "--base-frames 60 --base-cache " +
+                                      test::quote(cache.string())) + " --trial-budget 1 --holdout-check off";
+  test::RunResult r = test::run(command);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string state = test::file_text(dir / "out/adapt-state.tsv");
+  EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
+  EXPECT_NE(state.find((cache / "sets-60-local-front-70/people").string()), std::string::npos) << state;
+  EXPECT_FALSE(std::filesystem::exists(cache / "sets-60-defaults"));
+
+  r = test::run(replace(replace(command, test::quote(dir / "out"), test::quote(dir / "off")), "--name room", "--name room2") +
+                " --base-switches off");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  state = test::file_text(dir / "off/adapt-state.tsv");
+  EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
+  EXPECT_NE(state.find((cache / "sets-60-defaults/people").string()), std::string::npos) << state;
+  EXPECT_TRUE(std::filesystem::exists(cache / "sets-60-defaults/negatives/manifest.yml"));
+  EXPECT_TRUE(states_local_front(run.models / "room2/v1.yml"));  // the room's model has the switch
+
+  r = test::run(command + " --base-switches off");  // the first folder, resumed with the other value
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("base_switches 'on', not 'off'"), std::string::npos) << r.err;
 }
 
 // --switch-rule majority: a switch is taken when the person's answers on what it adds confirm more people than
