@@ -40,9 +40,10 @@ po::options_description adapt_options(const std::string& caption, AdaptOptions& 
        "without --base-pos/--base-neg: keep the rendered base in this folder instead of DIR/base (frames by their "
        "count, sets by the count and the analyser options they were cut with) and reuse what another run made "
        "there; default: DIR/base")
-      ("base-switches", po::value(&o.base_switches)->default_value(o.base_switches, o.base_switches ? "on" : "off"),
-       "on or off: the base rendered here is cut with the switches the trials took (on) or with the options given "
-       "and stated by --model alone (off); the room's own samples have the switches either way");
+      ("base-cut", po::value(&text.base_cut)->default_value(text.base_cut),
+       "the analyser options the base rendered here is cut with: defaults (the detector's, as the shipped model's "
+       "training), stated (given and stated by --model) or steps (those and the switches the trials took); the "
+       "room's own samples have the steps' options either way");
   options.add_options()
       ("try-switches", po::value(&o.try_switches)->default_value(o.try_switches, o.try_switches ? "on" : "off"),
        "on or off: try each candidate switch not given nor turned on by the model (--local-front 70, "
@@ -95,6 +96,10 @@ void check_options(const AdaptOptionText& text, AdaptOptions& o) {
   }
   if (text.holdout_check == "on" || text.holdout_check == "off") o.holdout_check = text.holdout_check == "on";
   else if (text.holdout_check != "auto") throw cli::UsageError("--holdout-check takes auto, on or off, not '" + text.holdout_check + "'");
+  if (text.base_cut == "steps") o.base_cut = AdaptOptions::BaseCut::steps;
+  else if (text.base_cut == "stated") o.base_cut = AdaptOptions::BaseCut::stated;
+  else if (text.base_cut == "defaults") o.base_cut = AdaptOptions::BaseCut::defaults;
+  else throw cli::UsageError("--base-cut takes steps, stated or defaults, not '" + text.base_cut + "'");
   if (text.switch_rule == "one" || text.switch_rule == "majority") o.switch_majority = text.switch_rule == "majority";
   else throw cli::UsageError("--switch-rule takes one or majority, not '" + text.switch_rule + "'");
   if (o.trial_budget < 1) throw cli::UsageError("--trial-budget must be at least 1 (--try-switches off tries none)");

@@ -13,6 +13,7 @@ struct AdaptOptionText {
   std::string chart, chart_png;         ///< --chart, --chart-png: draw a benchmark's results instead
   std::string holdout_check = "auto";   ///< --holdout-check auto|on|off
   std::string switch_rule = "one";      ///< --switch-rule one|majority
+  std::string base_cut = "defaults";    ///< --base-cut steps|stated|defaults
 };
 
 /// rdsf-adapt's options, in --help's order, writing into `o` and `text`.

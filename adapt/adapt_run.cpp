@@ -715,7 +715,9 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("switch_rule", given.switch_majority ? "majority" : "one");
   state.pin("holdout_check", !given.holdout_check ? "auto" : *given.holdout_check ? "on" : "off");
   state.pin("check_as_given", given.check_as_given ? "on" : "off");
-  state.pin("base_switches", given.base_switches ? "on" : "off");
+  state.pin("base_cut", given.base_cut == AdaptOptions::BaseCut::steps    ? "steps"
+                       : given.base_cut == AdaptOptions::BaseCut::stated ? "stated"
+                                                                          : "defaults");
   const Paths paths(given.out);
   fs::create_directories(paths.logs);
   step(state, "switches", [&] { try_switches(given, model, state, paths); });
@@ -724,7 +726,12 @@ int run_adapt(const AdaptOptions& given) {
   AdaptOptions with_base = o;
   if (o.base_pos.empty() && o.base_neg.empty() && o.base_frames > 0) {
     step(state, "base", [&] {
-      const BaseSets base = render_base(o, o.base_switches ? options : tried, paths);
+      const StepOptions defaults;  // the detector's own: no option given, none taken from a model
+      const BaseSets base = render_base(o,
+                                        o.base_cut == AdaptOptions::BaseCut::steps    ? options
+                                        : o.base_cut == AdaptOptions::BaseCut::stated ? tried
+                                                                                      : defaults,
+                                        paths);
       state.set("base.people", base.people);
       state.set("base.negatives", base.negatives);
     });

@@ -17,10 +17,10 @@
 # frames as --empty; home: 22 frames, 11 + 11, no empty recording) and the first --synthetic N of the 16
 # held-out synthetic rooms of the quality report (seed 31, 60 frames each: 30 + 30, the same rooms rendered
 # empty as --empty). The base: rdsf-adapt's own small base (600 frames of seed 11 and 300 empty, its people
-# labelled from the truth and its empty frames mined with the room's analyser options: the switches it took),
-# far smaller than the shipped model's 18,000 frames; rendered once into OUT/base-cache (rdsf-adapt
-# --base-cache), its sets once per set of analyser options, so that every room is adapted as rdsf-adapt adapts
-# by default (until 2026-12-08 the benchmark rendered a base of its own, cut with the detector's default options).
+# labelled from the truth and its empty frames mined, cut as --base-cut says: by default with the detector's
+# default options), far smaller than the shipped model's 18,000 frames; rendered once into OUT/base-cache
+# (rdsf-adapt --base-cache), its sets once per set of analyser options, so that every room is adapted as
+# rdsf-adapt adapts by default (until 2026-12-08 the benchmark rendered a base of its own).
 # --camera 'OPTIONS' renders the held-out rooms through another camera (rdsf-synth's --size and --fov, e.g.
 # a Kinect v2's 512x424 at 70.6 x 60 degrees; the base stays Kinect v1, as the shipped model's training).
 # --people-distance MIN..MAX renders the held-out rooms with their people that far from the camera (rdsf-synth's

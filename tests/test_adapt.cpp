@@ -239,7 +239,7 @@ TEST(Adapt, RunsSharingABaseCacheRenderItOnce) {
   const SmallRoomRun run = small_room_run(dir, 4);
   const std::string cache = dir / "cache";
   const std::string common = replace(run.command, "--base-frames 0", "--base-frames 60 --base-cache " + test::quote(cache)) +
-                             " --holdout-check off --try-switches off --hole-gap 20";
+                             " --holdout-check off --try-switches off --hole-gap 20 --base-cut stated";
   test::RunResult r = test::run(common);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::filesystem::path sets = std::filesystem::path(cache) / "sets-60-hole-gap-20";
@@ -499,10 +499,11 @@ TEST(Adapt, ASwitchThatFindsAPersonTheDefaultsMissIsTakenForTheRoom) {
   EXPECT_FALSE(std::filesystem::exists(dir / "off/logs/switches.log"));
 }
 
-// --base-switches: the base rendered here is cut with the switches the trials took (on, the default) or without
-// them (off); the room's own samples and model have the switch either way. With --base-cache both cuts stand
-// side by side, named by their options; a folder resumed with the other value is refused.
-TEST(Adapt, TheBaseIsCutWithTheSwitchesTakenUnlessTold) {
+// --base-cut: the base rendered here is cut with the detector's defaults (the default), with the options given and
+// stated by the model (stated) or with those and the switches the trials took (steps); the room's own samples and
+// model have the switch either way. With --base-cache the cuts stand side by side, named by their options; a
+// folder resumed with another value is refused.
+TEST(Adapt, TheBaseIsCutWithTheDetectorsDefaultsUnlessTold) {
   test::TempDir dir;
   write_room_before_a_wall(dir);
   const SmallRoomRun run = small_room_run(dir, 8);
@@ -513,21 +514,25 @@ TEST(Adapt, TheBaseIsCutWithTheSwitchesTakenUnlessTold) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::string state = test::file_text(dir / "out/adapt-state.tsv");
   EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
-  EXPECT_NE(state.find((cache / "sets-60-local-front-70/people").string()), std::string::npos) << state;
-  EXPECT_FALSE(std::filesystem::exists(cache / "sets-60-defaults"));
-
-  r = test::run(replace(replace(command, test::quote(dir / "out"), test::quote(dir / "off")), "--name room", "--name room2") +
-                " --base-switches off");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  state = test::file_text(dir / "off/adapt-state.tsv");
-  EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
   EXPECT_NE(state.find((cache / "sets-60-defaults/people").string()), std::string::npos) << state;
-  EXPECT_TRUE(std::filesystem::exists(cache / "sets-60-defaults/negatives/manifest.yml"));
-  EXPECT_TRUE(states_local_front(run.models / "room2/v1.yml"));  // the room's model has the switch
+  EXPECT_FALSE(std::filesystem::exists(cache / "sets-60-local-front-70"));
+  EXPECT_TRUE(states_local_front(run.models / "room/v1.yml"));  // the room's model has the switch
 
-  r = test::run(command + " --base-switches off");  // the first folder, resumed with the other value
+  r = test::run(replace(replace(command, test::quote(dir / "out"), test::quote(dir / "steps")), "--name room", "--name room2") +
+                " --base-cut steps");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  state = test::file_text(dir / "steps/adapt-state.tsv");
+  EXPECT_NE(state.find("switch.local-front\ton"), std::string::npos) << state;
+  EXPECT_NE(state.find((cache / "sets-60-local-front-70/people").string()), std::string::npos) << state;
+  EXPECT_TRUE(std::filesystem::exists(cache / "sets-60-local-front-70/negatives/manifest.yml"));
+  EXPECT_TRUE(states_local_front(run.models / "room2/v1.yml"));
+
+  r = test::run(command + " --base-cut steps");  // the first folder, resumed with another value
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find("base_switches 'on', not 'off'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("base_cut 'defaults', not 'steps'"), std::string::npos) << r.err;
+  r = test::run(command + " --base-cut all");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--base-cut takes steps, stated or defaults, not 'all'"), std::string::npos) << r.err;
 }
 
 // --switch-rule majority: a switch is taken when the person's answers on what it adds confirm more people than
