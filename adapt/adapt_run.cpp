@@ -257,25 +257,26 @@ BaseSets render_base(const AdaptOptions& o, const StepOptions& step, const Paths
   const BaseSets out{(sets / "people").string(), (sets / "negatives").string()};
   const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15",
                                        "--furniture-dropout", "0", "--force"};
-  const auto render = [&](const std::string& folder, std::vector<std::string> args) {
+  const auto render = [&](const std::string& folder, std::vector<std::string> args, const std::string& what) {
     make_folder_once(folder, [&](const std::string& part) {
-      say("base: rendering " + folder + " (rdsf-synth; about 50 s on 2 cores for 600 and 300 frames; progress in " +
-          paths.log("base") + ")");
+      say("base: rendering " + what + " into " + folder + " (rdsf-synth; progress in " + paths.log("base") + ")");
       args.insert(args.begin(), {"--out", part});
       args.insert(args.end(), scene.begin(), scene.end());
       run_step_program("rdsf-synth", args, paths.log("base"));
     });
   };
-  render(frames, {"--frames", count});
-  render(empty, {"--frames", empty_count, "--empty"});
+  render(frames, {"--frames", count}, count + " frames with people");
+  render(empty, {"--frames", empty_count, "--empty"}, empty_count + " frames of the same rooms empty");
   const auto cut = [&](const std::string& set, const std::string& program, std::vector<std::string> args) {
     make_folder_once(set, [&](const std::string& part) {
       args.insert(args.end(), {"--out", part, "--threads", std::to_string(o.threads)});
       run_step_program(program, with_options(args, step), paths.log("base"));
     });
   };
-  say("base: its sets cut with the analyser options " + options_name(step) + " (people labelled from the generator's "
-      "truth by rdsf-label, empty frames mined by rdsf-mine; reused when there)");
+  const std::string cut_with = options_name(step);
+  say("base: its sets cut with " + (cut_with == "defaults" ? "the detector's default options" : "the options " + cut_with) +
+      " (people labelled from the generator's truth by rdsf-label, empty frames mined by rdsf-mine; about 50 s in all "
+      "for 600 frames on 2 cores; reused when there)");
   cut(out.people, "rdsf-label",
       {"--source", frames, "--truth", (fs::path(frames) / "boxes.csv").string(), "--answers", "/dev/null",
        "--keep-rejected"});
