@@ -214,11 +214,13 @@ void check_empty_recording(const AdaptOptions& o, const BoostedModel& model, con
 // Step 0, without base sets: the small synthetic base (docs/adapting-to-your-room.md, "The base"): rdsf-synth's
 // seed 11, --base-frames frames of 1-4 people in rooms of 15 frames and half as many of the same rooms empty, the
 // furniture without dropout holes (as the shipped model's training since people/v3); its people labelled from the
-// generator's truth (no question asked) and its empty frames mined, both with the steps' analyser options. The
-// same options give the same sets. In OUT/base, or with --base-cache in that folder: the frames as frames-N and
-// empty-N (N frames with people) and the sets as sets-N-OPTIONS/{people,negatives} (OPTIONS: the analyser options'
-// departures from the defaults, e.g. local-front-70_border-height-25), each made once under a temporary name and
-// renamed into place, so that a folder under its name is whole and runs sharing the cache reuse it.
+// generator's truth (no question asked) and its empty frames mined, both with the analyser options `step`
+// (--base-cut: the detector's defaults unless told). The same options give the same sets. In OUT/base, or with
+// --base-cache in that folder: the frames as frames-N and empty-N (N frames with people; a change of this recipe
+// must rename them, or old caches would be reused) and the sets as sets-N-OPTIONS/{people,negatives} (OPTIONS: the
+// options' departures from the defaults, e.g. local-front-70_border-height-25, or "defaults"), each made once
+// under a temporary name and renamed into place, so that a folder under its name is whole and runs sharing the
+// cache reuse it.
 struct BaseSets {
   std::string people, negatives;
 };
