@@ -215,12 +215,12 @@ void check_empty_recording(const AdaptOptions& o, const BoostedModel& model, con
 // seed 11, --base-frames frames of 1-4 people in rooms of 15 frames and half as many of the same rooms empty, the
 // furniture without dropout holes (as the shipped model's training since people/v3); its people labelled from the
 // generator's truth (no question asked) and its empty frames mined, both with the analyser options `step`
-// (--base-cut: the detector's defaults unless told). The same options give the same sets. In OUT/base, or with
-// --base-cache in that folder: the frames as frames-N and empty-N (N frames with people; a change of this recipe
-// must rename them, or old caches would be reused) and the sets as sets-N-OPTIONS/{people,negatives} (OPTIONS: the
-// options' departures from the defaults, e.g. local-front-70_border-height-25, or "defaults"), each made once
-// under a temporary name and renamed into place, so that a folder under its name is whole and runs sharing the
-// cache reuse it.
+// (--base-cut: the detector's defaults unless told). The same options give the same sets. The frames as frames-N
+// and empty-N (N frames with people; a change of this recipe must rename them, or old caches would be reused) in
+// OUT/base, or with --base-cache in that folder, and the sets as OUT/base/{people,negatives} or in the cache as
+// sets-N-OPTIONS/{people,negatives} (OPTIONS: the options' departures from the defaults, e.g.
+// local-front-70_border-height-25, or "defaults"), each made once under a temporary name and renamed into place,
+// so that a folder under its name is whole and runs sharing the cache reuse it.
 struct BaseSets {
   std::string people, negatives;
 };
@@ -253,9 +253,10 @@ std::string options_name(const StepOptions& step) {
 BaseSets render_base(const AdaptOptions& o, const StepOptions& step, const Paths& paths) {
   const std::string count = std::to_string(o.base_frames), empty_count = std::to_string(std::max(1, o.base_frames / 2));
   const fs::path dir = o.base_cache.empty() ? fs::path(paths.base) : fs::path(o.base_cache);
-  const std::string tag = o.base_cache.empty() ? std::string() : "-" + count;
-  const std::string frames = (dir / ("frames" + tag)).string(), empty = (dir / ("empty" + tag)).string();
-  const fs::path sets = o.base_cache.empty() ? dir : dir / ("sets" + tag + "-" + options_name(step));
+  // The frames' folder names are the same in both places: rdsf-train's validation groups are named by the folder a
+  // sample's frame came from (sample_groups.hpp), so that a run with a cache and one without train the same model.
+  const std::string frames = (dir / ("frames-" + count)).string(), empty = (dir / ("empty-" + count)).string();
+  const fs::path sets = o.base_cache.empty() ? dir : dir / ("sets-" + count + "-" + options_name(step));
   const BaseSets out{(sets / "people").string(), (sets / "negatives").string()};
   const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15",
                                        "--furniture-dropout", "0", "--force"};

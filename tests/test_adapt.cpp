@@ -267,6 +267,15 @@ TEST(Adapt, RunsSharingABaseCacheRenderItOnce) {
   for (const auto& entry : std::filesystem::directory_iterator(cache)) {  // no folder left half made
     EXPECT_EQ(entry.path().filename().string().find(".part-"), std::string::npos) << entry.path();
   }
+  // A run without the cache renders the same base into its work folder and trains the same model (the base's
+  // frames are named alike in both places, and validation groups are named by that folder).
+  r = test::run(replace(replace(replace(common, "--out " + test::quote(dir / "out"), "--out " + test::quote(dir / "out3")),
+                                "--name room", "--name room3"),
+                        "--base-cache " + test::quote(cache), ""));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out3/base/frames-60/boxes.csv"));
+  EXPECT_EQ(BoostedModel::load(run.models / "room3/v1.yml").weak_classifiers(),
+            BoostedModel::load(run.models / "room/v1.yml").weak_classifiers());
   // With base sets of one's own, the cache has nothing to keep: a usage error naming it.
   r = test::run(common + " --base-pos " + test::quote(sets / "people"));
   EXPECT_EQ(r.exit_code, 2) << r.err;
