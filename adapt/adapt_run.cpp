@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -11,6 +13,7 @@
 #include <iostream>
 #include <set>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include "adapt/adapt_state.hpp"
@@ -225,12 +228,21 @@ struct BaseSets {
   std::string people, negatives;
 };
 
-// `folder`, made by `make` into a temporary name beside it and renamed into place, unless it is there.
+// `folder`, made by `make` into a temporary name beside it (FOLDER.part-PID) and renamed into place, unless it is
+// there. What a killed run left under such a name (its process gone) is removed first.
 void make_folder_once(const std::string& folder, const std::function<void(const std::string&)>& make) {
   if (fs::exists(folder)) return;
+  const fs::path parent = fs::path(folder).parent_path();
+  fs::create_directories(parent);
+  const std::string prefix = fs::path(folder).filename().string() + ".part-";
+  for (const fs::directory_entry& entry : fs::directory_iterator(parent)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove_all(entry.path());
+  }
   const std::string part = folder + ".part-" + std::to_string(::getpid());
   fs::remove_all(part);
-  fs::create_directories(fs::path(part).parent_path());
   make(part);
   std::error_code error;
   fs::rename(part, folder, error);

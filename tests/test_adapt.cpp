@@ -240,7 +240,11 @@ TEST(Adapt, RunsSharingABaseCacheRenderItOnce) {
   const std::string cache = dir / "cache";
   const std::string common = replace(run.command, "--base-frames 0", "--base-frames 60 --base-cache " + test::quote(cache)) +
                              " --holdout-check off --try-switches off --hole-gap 20 --base-cut stated";
+  // What a killed run left half made (its process gone: no such process id) is removed, not reused.
+  const std::filesystem::path left = std::filesystem::path(cache) / "frames-60.part-2147483646";
+  std::filesystem::create_directories(left);
   test::RunResult r = test::run(common);
+  EXPECT_FALSE(std::filesystem::exists(left));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::filesystem::path sets = std::filesystem::path(cache) / "sets-60-hole-gap-20";
   EXPECT_NE(r.err.find("base: rendering"), std::string::npos) << r.err;
