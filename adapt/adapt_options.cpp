@@ -1,5 +1,7 @@
 #include "adapt/adapt_options.hpp"
 
+#include <optional>
+
 #include "cli/common_options.hpp"
 
 namespace rdsf {
@@ -96,10 +98,13 @@ void check_options(const AdaptOptionText& text, AdaptOptions& o) {
   }
   if (text.holdout_check == "on" || text.holdout_check == "off") o.holdout_check = text.holdout_check == "on";
   else if (text.holdout_check != "auto") throw cli::UsageError("--holdout-check takes auto, on or off, not '" + text.holdout_check + "'");
-  if (text.base_cut == "steps") o.base_cut = AdaptOptions::BaseCut::steps;
-  else if (text.base_cut == "stated") o.base_cut = AdaptOptions::BaseCut::stated;
-  else if (text.base_cut == "defaults") o.base_cut = AdaptOptions::BaseCut::defaults;
-  else throw cli::UsageError("--base-cut takes steps, stated or defaults, not '" + text.base_cut + "'");
+  using BaseCut = AdaptOptions::BaseCut;
+  std::optional<BaseCut> cut;
+  for (const BaseCut c : {BaseCut::steps, BaseCut::stated, BaseCut::defaults}) {
+    if (text.base_cut == AdaptOptions::base_cut_name(c)) cut = c;
+  }
+  if (!cut) throw cli::UsageError("--base-cut takes steps, stated or defaults, not '" + text.base_cut + "'");
+  o.base_cut = *cut;
   if (text.switch_rule == "one" || text.switch_rule == "majority") o.switch_majority = text.switch_rule == "majority";
   else throw cli::UsageError("--switch-rule takes one or majority, not '" + text.switch_rule + "'");
   if (o.trial_budget < 1) throw cli::UsageError("--trial-budget must be at least 1 (--try-switches off tries none)");

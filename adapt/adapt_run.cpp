@@ -268,7 +268,8 @@ BaseSets render_base(const AdaptOptions& o, const StepOptions& step, const Paths
   // The frames' folder names are the same in both places: rdsf-train's validation groups are named by the folder a
   // sample's frame came from (sample_groups.hpp), so that a run with a cache and one without train the same model.
   const std::string frames = (dir / ("frames-" + count)).string(), empty = (dir / ("empty-" + count)).string();
-  const fs::path sets = o.base_cache.empty() ? dir : dir / ("sets-" + count + "-" + options_name(step));
+  const std::string cut_with = options_name(step);
+  const fs::path sets = o.base_cache.empty() ? dir : dir / ("sets-" + count + "-" + cut_with);
   const BaseSets out{(sets / "people").string(), (sets / "negatives").string()};
   const std::vector<std::string> scene{"--people", "1..4", "--seed", "11", "--clip-frames", "15",
                                        "--furniture-dropout", "0", "--force"};
@@ -288,7 +289,6 @@ BaseSets render_base(const AdaptOptions& o, const StepOptions& step, const Paths
       run_step_program(program, with_options(args, step), paths.log("base"));
     });
   };
-  const std::string cut_with = options_name(step);
   say("base: its sets cut with " + (cut_with == "defaults" ? "the detector's default options" : "the options " + cut_with) +
       " (people labelled from the generator's truth by rdsf-label, empty frames mined by rdsf-mine; about 50 s in all "
       "for 600 frames on 2 cores; reused when there)");
@@ -731,9 +731,7 @@ int run_adapt(const AdaptOptions& given) {
   state.pin("switch_rule", given.switch_majority ? "majority" : "one");
   state.pin("holdout_check", !given.holdout_check ? "auto" : *given.holdout_check ? "on" : "off");
   state.pin("check_as_given", given.check_as_given ? "on" : "off");
-  state.pin("base_cut", given.base_cut == AdaptOptions::BaseCut::steps    ? "steps"
-                       : given.base_cut == AdaptOptions::BaseCut::stated ? "stated"
-                                                                          : "defaults");
+  state.pin("base_cut", AdaptOptions::base_cut_name(given.base_cut));
   const Paths paths(given.out);
   fs::create_directories(paths.logs);
   step(state, "switches", [&] { try_switches(given, model, state, paths); });

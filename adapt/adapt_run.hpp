@@ -89,6 +89,10 @@ struct AdaptOptions {
     defaults,  ///< the detector's defaults
   };
   BaseCut base_cut = BaseCut::defaults;
+  /// The word of --base-cut and of the state file for each BaseCut.
+  static const char* base_cut_name(BaseCut cut) {
+    return cut == BaseCut::steps ? "steps" : cut == BaseCut::stated ? "stated" : "defaults";
+  }
   /// Try the candidate switches in the room (the "switches" step); each trial spends at most trial_budget of
   /// the budget's answers, all of them at most half the budget.
   bool try_switches = true;

@@ -107,7 +107,10 @@ step "the held-out rooms (reused when present)"
 # With --base, the negatives are both sets' (the people set's candidates that are nobody included), as
 # scripts/train-default-model.sh trains the shipped model; rdsf-adapt's small base gives its mined negatives only.
 base_args=(--base-cache "$out/base-cache")
-[ -z "$base" ] || base_args=(--base-pos "$base/people" --base-neg "$base/negatives" "$base/people")
+if [ -n "$base" ]; then
+  base_pos=$base/people base_neg=("$base/negatives" "$base/people")
+  base_args=(--base-pos "$base_pos" --base-neg "${base_neg[@]}")
+fi
 if ((synthetic > 0)); then
   [ -f "$data/$heldout/synth.yml" ] ||
     "$synth" --out "$data/$heldout" --force --frames 960 --people 1..4 --seed "$seed" --clip-frames 60 "${camera[@]}" \
@@ -226,7 +229,6 @@ for room in "${room_names[@]}"; do
   wants negatives || continue
   negatives=$w/track-${budgets%% *}/sets/room-negatives
   if [ -f "$negatives/manifest.yml" ]; then
-    base_pos=$base/people base_neg=("$base/negatives" "$base/people")
     [ -n "$base" ] || { state=$w/track-${budgets%% *}/adapt-state.tsv;
       base_pos=$(field "$state" base.people) base_neg=("$(field "$state" base.negatives)"); }
     start=$(date +%s.%N)
